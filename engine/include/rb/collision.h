@@ -1,0 +1,57 @@
+/* Narrow phase: contact manifolds between two shapes.
+ *
+ * Pure functions of two shapes and their body transforms. The manifold
+ * normal points from shape A to shape B; each point lies midway between
+ * the two surfaces, its separation is the signed gap along the normal
+ * (negative when the shapes overlap), and its feature id names the pair
+ * of geometric features that made it, so a solver can carry impulses
+ * from frame to frame. Points are reported while the separation is at
+ * most `speculative_distance` (m, >= 0): a solver can then stop bodies
+ * that would meet during the next step (speculative contact).
+ */
+#ifndef RB_COLLISION_H
+#define RB_COLLISION_H
+
+#include <stdint.h>
+
+#include "rb/geometry.h"
+
+#define RB_MAX_MANIFOLD_POINTS 2
+
+typedef struct rb_manifold_point {
+    rb_vec2 point;          /* m, world, midway between the two surfaces */
+    double separation;      /* m, negative when overlapping */
+    uint32_t id;            /* feature id, see rb_feature_id */
+    double normal_impulse;  /* N·s, impulse the solver applied along the normal in the last step */
+    double tangent_impulse; /* N·s, friction impulse of the last step */
+} rb_manifold_point;
+
+typedef struct rb_manifold {
+    rb_vec2 normal; /* unit, world, from shape A to shape B */
+    rb_manifold_point points[RB_MAX_MANIFOLD_POINTS];
+    int point_count; /* 0 .. 2 */
+} rb_manifold;
+
+/* A feature id packs which features met: for a polygon clip point the
+ * reference edge and the incident vertex (or the reference side plane
+ * that clipped the incident edge), and whether shape B held the
+ * reference face. Ids compare equal exactly when the same features meet. */
+enum {
+    RB_FEATURE_VERTEX = 0, /* an incident vertex that survived clipping */
+    RB_FEATURE_CLIP = 1,   /* a point cut by a side plane of the reference face */
+};
+static inline uint32_t rb_feature_id(int flip, int reference_edge, int kind, int index)
+{
+    return ((uint32_t)flip << 24) | ((uint32_t)reference_edge << 16) | ((uint32_t)kind << 8) | (uint32_t)index;
+}
+
+rb_manifold rb_collide_circles(const rb_circle *a, rb_transform xfa, const rb_circle *b, rb_transform xfb,
+                               double speculative_distance);
+
+rb_manifold rb_collide_polygon_and_circle(const rb_polygon *a, rb_transform xfa, const rb_circle *b,
+                                          rb_transform xfb, double speculative_distance);
+
+rb_manifold rb_collide_polygons(const rb_polygon *a, rb_transform xfa, const rb_polygon *b, rb_transform xfb,
+                                double speculative_distance);
+
+#endif

@@ -1,0 +1,53 @@
+/* Debug drawing through callbacks: the engine says what to draw, the
+ * caller draws it (Cairo figure, GTK viewer, a test that counts calls).
+ * Every callback may be NULL. Colours are 0xRRGGBB.
+ */
+#ifndef RB_DEBUG_DRAW_H
+#define RB_DEBUG_DRAW_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "rb/math.h"
+#include "rb/world.h"
+
+typedef struct rb_debug_draw {
+    /* A closed convex polygon in world coordinates. */
+    void (*draw_polygon)(const rb_vec2 *vertices, int count, uint32_t color, void *context);
+    /* A circle; `axis` is a unit vector showing the body's rotation. */
+    void (*draw_circle)(rb_vec2 center, double radius, rb_vec2 axis, uint32_t color, void *context);
+    void (*draw_segment)(rb_vec2 p1, rb_vec2 p2, uint32_t color, void *context);
+    /* A point of `size` pixels. */
+    void (*draw_point)(rb_vec2 p, double size, uint32_t color, void *context);
+    /* A frame: the x axis red, the y axis green. */
+    void (*draw_transform)(rb_transform xf, void *context);
+
+    bool draw_shapes;
+    bool draw_aabbs;
+    bool draw_mass;             /* centre of mass as a transform */
+    bool draw_contact_points;
+    bool draw_contact_normals;
+    bool draw_contact_impulses; /* normal impulse as a segment along the normal */
+    double impulse_scale;       /* m per N·s for impulses, default 0.1 */
+    double normal_length;       /* m, default 0.1 */
+    void *context;
+} rb_debug_draw;
+
+rb_debug_draw rb_default_debug_draw(void);
+
+/* Colours used, so a test or a legend can name them. */
+enum {
+    RB_COLOR_STATIC = 0x80e080,
+    RB_COLOR_KINEMATIC = 0x8080e0,
+    RB_COLOR_DYNAMIC = 0xe6b380,
+    RB_COLOR_SLEEPING = 0x999999,
+    RB_COLOR_SENSOR = 0xe0e040,
+    RB_COLOR_AABB = 0xe050e0,
+    RB_COLOR_CONTACT_POINT = 0xff3030,
+    RB_COLOR_CONTACT_NORMAL = 0x30a0ff,
+    RB_COLOR_CONTACT_IMPULSE = 0xffff40,
+};
+
+rb_status rb_world_draw(const rb_world *world, const rb_debug_draw *draw);
+
+#endif

@@ -1,0 +1,37 @@
+/* Handles to the objects of a world.
+ *
+ * An id is a slot index, the generation of the slot (bumped each time
+ * the slot is freed) and the serial number of the world that made it.
+ * Passing a destroyed object's id gives RB_ERR_STALE_ID; an id of another
+ * world, or the null id, gives RB_ERR_FOREIGN_ID.
+ */
+#ifndef RB_ID_H
+#define RB_ID_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+typedef struct rb_body_id {
+    int32_t index;
+    uint16_t world;
+    uint16_t generation;
+} rb_body_id;
+
+typedef struct rb_shape_id {
+    int32_t index;
+    uint16_t world;
+    uint16_t generation;
+} rb_shape_id;
+
+static inline bool rb_body_id_is_null(rb_body_id id) { return id.generation == 0; }
+static inline bool rb_shape_id_is_null(rb_shape_id id) { return id.generation == 0; }
+static inline bool rb_body_id_equals(rb_body_id a, rb_body_id b)
+{
+    return a.index == b.index && a.world == b.world && a.generation == b.generation;
+}
+static inline bool rb_shape_id_equals(rb_shape_id a, rb_shape_id b)
+{
+    return a.index == b.index && a.world == b.world && a.generation == b.generation;
+}
+
+#endif

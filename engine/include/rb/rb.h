@@ -1,0 +1,15 @@
+/* sinew rigid-body engine: the whole public API. */
+#ifndef RB_RB_H
+#define RB_RB_H
+
+#include "rb/base.h"
+#include "rb/body.h"
+#include "rb/collision.h"
+#include "rb/debug_draw.h"
+#include "rb/geometry.h"
+#include "rb/id.h"
+#include "rb/math.h"
+#include "rb/shape.h"
+#include "rb/world.h"
+
+#endif

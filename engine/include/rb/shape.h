@@ -1,0 +1,71 @@
+/* Shapes: the geometry, material and collision filter attached to a body.
+ *
+ * Mixing rules when two shapes touch: friction is the geometric mean
+ * sqrt(f_a·f_b) (so a frictionless shape slides on anything), restitution
+ * the larger of the two (so one bouncy ball bounces on any floor).
+ */
+#ifndef RB_SHAPE_H
+#define RB_SHAPE_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "rb/geometry.h"
+#include "rb/id.h"
+#include "rb/world.h"
+
+/* Which shapes may touch. Two shapes collide when they share a non-zero
+ * group index that is positive (always) — a negative shared group never
+ * collides — and otherwise when each one's category is in the other's
+ * mask. */
+typedef struct rb_filter {
+    uint32_t category_bits; /* default 1 */
+    uint32_t mask_bits;     /* default all bits */
+    int32_t group_index;    /* default 0 */
+} rb_filter;
+
+typedef struct rb_shape_def {
+    double friction;    /* >= 0, Coulomb coefficient, default 0.6 */
+    double restitution; /* 0 .. 1, default 0 */
+    double density;     /* kg/m², >= 0, default 1; must be > 0 on a dynamic body without a mass override */
+    bool is_sensor;     /* reports overlaps with non-sensor shapes, never pushes */
+    rb_filter filter;
+    void *user_data;
+} rb_shape_def;
+
+rb_filter rb_default_filter(void);
+rb_shape_def rb_default_shape_def(void);
+
+rb_status rb_shape_create_circle(rb_world *world, rb_body_id body, const rb_shape_def *def, const rb_circle *circle,
+                                 rb_shape_id *out);
+rb_status rb_shape_create_polygon(rb_world *world, rb_body_id body, const rb_shape_def *def,
+                                  const rb_polygon *polygon, rb_shape_id *out);
+rb_status rb_shape_destroy(rb_world *world, rb_shape_id shape);
+bool rb_shape_is_valid(const rb_world *world, rb_shape_id shape);
+
+rb_shape_type rb_shape_type_of(const rb_world *world, rb_shape_id shape);
+rb_body_id rb_shape_body(const rb_world *world, rb_shape_id shape);
+rb_circle rb_shape_circle(const rb_world *world, rb_shape_id shape);
+rb_polygon rb_shape_polygon(const rb_world *world, rb_shape_id shape);
+/* The shape's bounding box at the end of the last step (or creation). */
+rb_aabb rb_shape_aabb(const rb_world *world, rb_shape_id shape);
+
+rb_status rb_shape_set_friction(rb_world *world, rb_shape_id shape, double friction);
+double rb_shape_friction(const rb_world *world, rb_shape_id shape);
+rb_status rb_shape_set_restitution(rb_world *world, rb_shape_id shape, double restitution);
+double rb_shape_restitution(const rb_world *world, rb_shape_id shape);
+/* Changes the density and recomputes the body's mass. */
+rb_status rb_shape_set_density(rb_world *world, rb_shape_id shape, double density);
+double rb_shape_density(const rb_world *world, rb_shape_id shape);
+bool rb_shape_is_sensor(const rb_world *world, rb_shape_id shape);
+rb_status rb_shape_set_filter(rb_world *world, rb_shape_id shape, rb_filter filter);
+rb_filter rb_shape_filter(const rb_world *world, rb_shape_id shape);
+rb_status rb_shape_set_user_data(rb_world *world, rb_shape_id shape, void *user_data);
+void *rb_shape_user_data(const rb_world *world, rb_shape_id shape);
+
+/* For a sensor: the non-sensor shapes overlapping it after the last step,
+ * in deterministic order. Returns how many it copied (at most capacity),
+ * or -1 with an error when `sensor` is not a valid sensor shape. */
+int rb_shape_sensor_overlaps(const rb_world *world, rb_shape_id sensor, rb_shape_id *out, int capacity);
+
+#endif

@@ -1,0 +1,78 @@
+/* Engine scenes, defined once and shared by the tests, the benchmarks and
+ * the `sinew` tool. Each builds its bodies in an existing world (whose
+ * gravity and solver settings the caller chooses) and reports the ids a
+ * caller needs to measure it. Every function validates its arguments and
+ * returns an rb_status with rb_last_error() set on failure.
+ */
+#ifndef SCENES_SCENES_H
+#define SCENES_SCENES_H
+
+#include <stdint.h>
+
+#include "rb/rb.h"
+
+/* Vertical stack of `count` (1 .. 1000) square boxes of half-extent 0.5 m,
+ * density 1 kg/m², friction 0.6, on a static ground box of half-extents
+ * (20, 1) centred at (0, -1); box i (0-based) starts at (0, 0.5 + i). */
+typedef struct scene_stack {
+    rb_body_id ground;
+    rb_body_id top;
+    int count;
+} scene_stack;
+rb_status scene_stack_create(rb_world *world, int count, scene_stack *out);
+
+/* The pyramid of shared/peers/README.md: ground box of half-extents
+ * (100, 1) at (0, -1); square boxes of half-extent 0.5, density 1,
+ * friction 0.6, restitution 0; row i (0-based) has base - i boxes at
+ * y = (2i + 1)·0.5 and x = (i + 1)·0.5 + 2(j - i)·0.5 - 0.5·base for
+ * j = i .. base - 1. base is 1 .. 1000. */
+typedef struct scene_pyramid {
+    rb_body_id ground;
+    rb_body_id top;
+    int box_count;
+    rb_body_id first_box; /* bodies are created in row order: first_box.index .. + box_count - 1 */
+} scene_pyramid;
+rb_status scene_pyramid_create(rb_world *world, int base, scene_pyramid *out);
+
+/* The seed's balls box (shared/spec/models.md, "balls"): a closed box
+ * 2.44 m × 1.22 m of static walls with its lower-left inner corner at the
+ * origin, `count` circles (1 .. SCENE_BALLS_MAX) of radius U(0.01, 0.1) m at
+ * random non-overlapping positions, mass 0.16 kg × U(0.5, 1.5),
+ * restitution U(0.5, 1), friction 0.2, each kicked by an impulse of
+ * U(2, 70) N × 1/60 s at an angle U(20°, 160°) from +x. The random
+ * numbers come from a 64-bit generator seeded with `seed`, so a run can be
+ * repeated. The caller sets gravity (0, -9.81) and calls
+ * scene_balls_apply_drag before every step. */
+#define SCENE_BALLS_MAX 1000
+#define SCENE_BALLS_DRAG 0.05 /* N·s/m: the seed's linear drag F = -0.05·v */
+typedef struct scene_balls {
+    rb_body_id walls;
+    rb_body_id balls[SCENE_BALLS_MAX];
+    int count;
+} scene_balls;
+rb_status scene_balls_create(rb_world *world, int count, uint64_t seed, scene_balls *out);
+/* Applies the seed's drag force -0.05·v to every ball. */
+rb_status scene_balls_apply_drag(rb_world *world, const scene_balls *balls);
+
+/* A static plank tilted by `angle` (rad, 0 .. 1.4) through the origin, and
+ * a box of half-extent 0.25 m and density 1 resting on it, its bottom face
+ * on the plank's top face at 1 m up the slope from the origin. Both
+ * shapes get `friction` (>= 0), so the mixed coefficient is `friction`. */
+typedef struct scene_incline {
+    rb_body_id plank;
+    rb_body_id box;
+    rb_vec2 slope_direction; /* unit, down the slope */
+} scene_incline;
+rb_status scene_incline_create(rb_world *world, double angle, double friction, scene_incline *out);
+
+/* A ball of radius 0.1 m and density 1 whose lowest point starts `height`
+ * m (> 0) above a static ground box whose top face is y = 0; both shapes
+ * have restitution `restitution` (0 .. 1) and friction 0.6. */
+typedef struct scene_drop {
+    rb_body_id ground;
+    rb_body_id ball;
+    double radius;
+} scene_drop;
+rb_status scene_drop_create(rb_world *world, double height, double restitution, scene_drop *out);
+
+#endif
