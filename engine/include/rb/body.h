@@ -20,20 +20,20 @@ typedef enum rb_body_type {
 } rb_body_type;
 
 typedef struct rb_body_def {
-    rb_body_type type;         /* default RB_BODY_STATIC */
-    rb_vec2 position;          /* m, world position of the body origin */
-    double angle;              /* rad */
-    rb_vec2 linear_velocity;   /* m/s, of the centre of mass */
-    double angular_velocity;   /* rad/s */
+    rb_body_type type;       /* default RB_BODY_STATIC */
+    rb_vec2 position;        /* m, world position of the body origin */
+    double angle;            /* rad */
+    rb_vec2 linear_velocity; /* m/s, of the centre of mass */
+    double angular_velocity; /* rad/s */
     /* Damping: each (sub)step of length h the velocities are divided by
      * (1 + h·c), the backward-Euler step of dv/dt = -c·v, stable for any
      * c and h; over a time t it decays as exp(-c·t) when h·c << 1. */
-    double linear_damping;     /* 1/s, >= 0, default 0 */
-    double angular_damping;    /* 1/s, >= 0, default 0 */
-    double gravity_scale;      /* multiplies the world's gravity, default 1 */
-    bool fixed_rotation;       /* never rotates (infinite rotational inertia) */
-    bool awake;                /* default true; a sleeping body is not simulated */
-    bool bullet;               /* fast body: continuous collision (see issue 5) */
+    double linear_damping;  /* 1/s, >= 0, default 0 */
+    double angular_damping; /* 1/s, >= 0, default 0 */
+    double gravity_scale;   /* multiplies the world's gravity, default 1 */
+    bool fixed_rotation;    /* never rotates (infinite rotational inertia) */
+    bool awake;             /* default true; a sleeping body is not simulated */
+    bool bullet;            /* fast body: continuous collision (see issue 5) */
     void *user_data;
 } rb_body_def;
 
@@ -48,8 +48,8 @@ rb_body_type rb_body_type_of(const rb_world *world, rb_body_id body);
 rb_status rb_body_set_type(rb_world *world, rb_body_id body, rb_body_type type);
 
 /* Pose. */
-rb_vec2 rb_body_position(const rb_world *world, rb_body_id body);   /* m, origin */
-double rb_body_angle(const rb_world *world, rb_body_id body);       /* rad, continuous (not wrapped) */
+rb_vec2 rb_body_position(const rb_world *world, rb_body_id body); /* m, origin */
+double rb_body_angle(const rb_world *world, rb_body_id body);     /* rad, continuous (not wrapped) */
 rb_rot rb_body_rotation(const rb_world *world, rb_body_id body);
 rb_transform rb_body_transform(const rb_world *world, rb_body_id body);
 rb_vec2 rb_body_world_center(const rb_world *world, rb_body_id body); /* m, centre of mass */

@@ -48,8 +48,8 @@ static inline uint32_t rb_feature_id(int flip, int reference_edge, int kind, int
 rb_manifold rb_collide_circles(const rb_circle *a, rb_transform xfa, const rb_circle *b, rb_transform xfb,
                                double speculative_distance);
 
-rb_manifold rb_collide_polygon_and_circle(const rb_polygon *a, rb_transform xfa, const rb_circle *b,
-                                          rb_transform xfb, double speculative_distance);
+rb_manifold rb_collide_polygon_and_circle(const rb_polygon *a, rb_transform xfa, const rb_circle *b, rb_transform xfb,
+                                          double speculative_distance);
 
 rb_manifold rb_collide_polygons(const rb_polygon *a, rb_transform xfa, const rb_polygon *b, rb_transform xfb,
                                 double speculative_distance);

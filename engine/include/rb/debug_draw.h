@@ -24,7 +24,7 @@ typedef struct rb_debug_draw {
 
     bool draw_shapes;
     bool draw_aabbs;
-    bool draw_mass;             /* centre of mass as a transform */
+    bool draw_mass; /* centre of mass as a transform */
     bool draw_contact_points;
     bool draw_contact_normals;
     bool draw_contact_impulses; /* normal impulse as a segment along the normal */

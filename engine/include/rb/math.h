@@ -55,7 +55,10 @@ static inline rb_vec2 rb_right_perp(rb_vec2 a) { return (rb_vec2){a.y, -a.x}; }
 static inline double rb_length_squared(rb_vec2 a) { return a.x * a.x + a.y * a.y; }
 static inline double rb_length(rb_vec2 a) { return sqrt(a.x * a.x + a.y * a.y); }
 static inline double rb_distance(rb_vec2 a, rb_vec2 b) { return rb_length(rb_sub(b, a)); }
-static inline rb_vec2 rb_lerp(rb_vec2 a, rb_vec2 b, double t) { return (rb_vec2){a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}; }
+static inline rb_vec2 rb_lerp(rb_vec2 a, rb_vec2 b, double t)
+{
+    return (rb_vec2){a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+}
 static inline rb_vec2 rb_vmin(rb_vec2 a, rb_vec2 b) { return (rb_vec2){fmin(a.x, b.x), fmin(a.y, b.y)}; }
 static inline rb_vec2 rb_vmax(rb_vec2 a, rb_vec2 b) { return (rb_vec2){fmax(a.x, b.x), fmax(a.y, b.y)}; }
 
@@ -79,11 +82,17 @@ static inline double rb_rot_angle(rb_rot q) { return atan2(q.s, q.c); }
 /* q applied to v. */
 static inline rb_vec2 rb_rotate(rb_rot q, rb_vec2 v) { return (rb_vec2){q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y}; }
 /* The inverse of q applied to v. */
-static inline rb_vec2 rb_inv_rotate(rb_rot q, rb_vec2 v) { return (rb_vec2){q.c * v.x + q.s * v.y, -q.s * v.x + q.c * v.y}; }
+static inline rb_vec2 rb_inv_rotate(rb_rot q, rb_vec2 v)
+{
+    return (rb_vec2){q.c * v.x + q.s * v.y, -q.s * v.x + q.c * v.y};
+}
 /* q then r: the rotation r*q. */
 static inline rb_rot rb_mul_rot(rb_rot r, rb_rot q) { return (rb_rot){r.c * q.c - r.s * q.s, r.s * q.c + r.c * q.s}; }
 /* The rotation from q to r: inverse(q)*r. */
-static inline rb_rot rb_inv_mul_rot(rb_rot q, rb_rot r) { return (rb_rot){q.c * r.c + q.s * r.s, q.c * r.s - q.s * r.c}; }
+static inline rb_rot rb_inv_mul_rot(rb_rot q, rb_rot r)
+{
+    return (rb_rot){q.c * r.c + q.s * r.s, q.c * r.s - q.s * r.c};
+}
 
 static inline rb_transform rb_transform_identity(void) { return (rb_transform){{0.0, 0.0}, {1.0, 0.0}}; }
 /* The world point of a point given in the transform's local frame. */

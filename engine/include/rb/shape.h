@@ -38,8 +38,8 @@ rb_shape_def rb_default_shape_def(void);
 
 rb_status rb_shape_create_circle(rb_world *world, rb_body_id body, const rb_shape_def *def, const rb_circle *circle,
                                  rb_shape_id *out);
-rb_status rb_shape_create_polygon(rb_world *world, rb_body_id body, const rb_shape_def *def,
-                                  const rb_polygon *polygon, rb_shape_id *out);
+rb_status rb_shape_create_polygon(rb_world *world, rb_body_id body, const rb_shape_def *def, const rb_polygon *polygon,
+                                  rb_shape_id *out);
 rb_status rb_shape_destroy(rb_world *world, rb_shape_id shape);
 bool rb_shape_is_valid(const rb_world *world, rb_shape_id shape);
 

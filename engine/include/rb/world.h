@@ -25,29 +25,29 @@ typedef enum rb_position_correction {
 
 /* Solver settings, held by the world; see rb_world_set_solver_settings. */
 typedef struct rb_solver_settings {
-    int velocity_iterations;     /* 1 .. 1000, default 8 */
-    int position_iterations;     /* 0 .. 1000, default 3 (NGS only) */
-    int substeps;                /* 1 .. 1000, default 1: the step dt is split into this many substeps */
-    bool warm_starting;          /* default true: start from last step's impulses */
-    bool block_solver;           /* default true: solve two-point manifolds as one 2x2 LCP */
+    int velocity_iterations;                    /* 1 .. 1000, default 8 */
+    int position_iterations;                    /* 0 .. 1000, default 3 (NGS only) */
+    int substeps;                               /* 1 .. 1000, default 1: the step dt is split into this many substeps */
+    bool warm_starting;                         /* default true: start from last step's impulses */
+    bool block_solver;                          /* default true: solve two-point manifolds as one 2x2 LCP */
     rb_position_correction position_correction; /* default RB_CORRECTION_NGS */
-    double baumgarte;            /* 0 .. 1, fraction of the error removed per (sub)step, default 0.2 */
-    double linear_slop;          /* m, 0 .. 0.1: penetration allowed without correction, default 0.005 */
-    double max_linear_correction;/* m, > 0: largest position correction per iteration, default 0.2 */
-    double restitution_threshold;/* m/s, >= 0: slower impacts do not bounce, default 1 */
+    double baumgarte;                           /* 0 .. 1, fraction of the error removed per (sub)step, default 0.2 */
+    double linear_slop;                         /* m, 0 .. 0.1: penetration allowed without correction, default 0.005 */
+    double max_linear_correction;               /* m, > 0: largest position correction per iteration, default 0.2 */
+    double restitution_threshold;               /* m/s, >= 0: slower impacts do not bounce, default 1 */
 } rb_solver_settings;
 
 typedef struct rb_world_def {
-    rb_vec2 gravity;            /* m/s², default (0, -9.8) as the seed */
-    rb_solver_settings solver;  /* default rb_default_solver_settings() */
+    rb_vec2 gravity;           /* m/s², default (0, -9.8) as the seed */
+    rb_solver_settings solver; /* default rb_default_solver_settings() */
 } rb_world_def;
 
 /* Time spent in each phase of the last step, in milliseconds. */
 typedef struct rb_profile {
     double step;
-    double pairs;               /* broad phase: find overlapping bounding boxes */
-    double collide;             /* narrow phase: manifolds, impulse carry-over */
-    double prepare;             /* constraint set-up */
+    double pairs;   /* broad phase: find overlapping bounding boxes */
+    double collide; /* narrow phase: manifolds, impulse carry-over */
+    double prepare; /* constraint set-up */
     double integrate_velocities;
     double warm_start;
     double solve_velocities;
@@ -55,19 +55,19 @@ typedef struct rb_profile {
     double correct_positions;
     double restitution;
     double store_impulses;
-    double finalize;            /* transforms, bounding boxes, clearing forces */
+    double finalize; /* transforms, bounding boxes, clearing forces */
 } rb_profile;
 
 /* Counters of the last step. */
 typedef struct rb_statistics {
     int body_count;
     int shape_count;
-    int pair_count;              /* shape pairs whose bounding boxes overlap */
-    int contact_count;           /* pairs with at least one manifold point */
+    int pair_count;    /* shape pairs whose bounding boxes overlap */
+    int contact_count; /* pairs with at least one manifold point */
     int manifold_point_count;
-    int velocity_iterations;     /* done in the last step, summed over substeps */
-    int position_iterations;     /* done in the last step, summed over substeps */
-    double max_penetration;      /* m, >= 0: deepest overlap left after the step */
+    int velocity_iterations; /* done in the last step, summed over substeps */
+    int position_iterations; /* done in the last step, summed over substeps */
+    double max_penetration;  /* m, >= 0: deepest overlap left after the step */
 } rb_statistics;
 
 rb_solver_settings rb_default_solver_settings(void);
@@ -103,9 +103,9 @@ uint64_t rb_world_state_hash(const rb_world *world);
 typedef struct rb_contact_data {
     rb_shape_id shape_a, shape_b;
     rb_body_id body_a, body_b;
-    bool touching;               /* some point has separation <= 0 */
-    bool sensor;                 /* one shape is a sensor: overlap only, no response */
-    rb_manifold manifold;        /* world-space manifold, normal from A to B */
+    bool touching;        /* some point has separation <= 0 */
+    bool sensor;          /* one shape is a sensor: overlap only, no response */
+    rb_manifold manifold; /* world-space manifold, normal from A to B */
 } rb_contact_data;
 
 int rb_world_contact_count(const rb_world *world);

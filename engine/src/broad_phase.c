@@ -1,0 +1,121 @@
+/* Broad phase by sort and sweep (Baraff 1992): sort the shapes' boxes by
+ * their lower x bound, then sweep: each box can only overlap the boxes
+ * that start before it ends. O(n log n + overlaps in x) per step.
+ *
+ * Each box is enlarged by how far the shape may travel relative to its
+ * neighbours during the step, so every pair that could touch by the end
+ * of the step reaches the narrow phase and gets a speculative contact. */
+#include <stdlib.h>
+
+#include "allocator.h"
+#include "broad_phase.h"
+#include "error.h"
+
+static int compare_sweep_entries(const void *a, const void *b)
+{
+    const struct rb_sweep_entry *p = a;
+    const struct rb_sweep_entry *q = b;
+    if (p->lower_x != q->lower_x) {
+        return p->lower_x < q->lower_x ? -1 : 1;
+    }
+    return (p->shape > q->shape) - (p->shape < q->shape);
+}
+
+static int compare_pairs(const void *a, const void *b)
+{
+    const rb_pair *p = a;
+    const rb_pair *q = b;
+    if (p->body_key != q->body_key) {
+        return p->body_key < q->body_key ? -1 : 1;
+    }
+    return (p->shape_key > q->shape_key) - (p->shape_key < q->shape_key);
+}
+
+bool rb_should_collide(const rb_world *world, int shape_a, int shape_b)
+{
+    const rb_shape *a = &world->shapes[shape_a];
+    const rb_shape *b = &world->shapes[shape_b];
+    if (a->body == b->body || (a->sensor && b->sensor)) {
+        return false;
+    }
+    if (world->bodies[a->body].type != RB_BODY_DYNAMIC && world->bodies[b->body].type != RB_BODY_DYNAMIC) {
+        return false;
+    }
+    if (a->filter.group_index != 0 && a->filter.group_index == b->filter.group_index) {
+        return a->filter.group_index > 0;
+    }
+    return (a->filter.category_bits & b->filter.mask_bits) != 0 && (b->filter.category_bits & a->filter.mask_bits) != 0;
+}
+
+/* The shape's box at the start of the step, grown by the speculative
+ * distance and by the farthest its surface can move in dt: |v|·dt for
+ * the centre plus |ω|·dt·extent for the rotation about it. */
+static rb_aabb swept_aabb(const rb_world *world, int index, double dt, double speculative_distance)
+{
+    const rb_shape *shape = &world->shapes[index];
+    const rb_body_state *state = &world->states[shape->body];
+    double travel = dt * (rb_length(state->linear_velocity) + fabs(state->angular_velocity) * shape->extent);
+    double margin = speculative_distance + travel;
+    rb_aabb box = rb_shape_tight_aabb(world, index);
+    box.lower = rb_sub(box.lower, rb_v2(margin, margin));
+    box.upper = rb_add(box.upper, rb_v2(margin, margin));
+    return box;
+}
+
+static rb_status add_pair(rb_world *world, int shape_a, int shape_b)
+{
+    if (rb_grow_array((void **)&world->pairs, &world->pair_capacity, world->pair_count + 1, sizeof *world->pairs) !=
+        0) {
+        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for shape pairs");
+    }
+    int body_a = world->shapes[shape_a].body;
+    int body_b = world->shapes[shape_b].body;
+    if (body_a > body_b || (body_a == body_b && shape_a > shape_b)) {
+        int t = shape_a;
+        shape_a = shape_b;
+        shape_b = t;
+        t = body_a;
+        body_a = body_b;
+        body_b = t;
+    }
+    world->pairs[world->pair_count++] = (rb_pair){
+        .body_key = ((uint64_t)(uint32_t)body_a << 32) | (uint32_t)body_b,
+        .shape_key = ((uint64_t)(uint32_t)shape_a << 32) | (uint32_t)shape_b,
+        .shape_a = shape_a,
+        .shape_b = shape_b,
+    };
+    return RB_OK;
+}
+
+rb_status rb_broad_phase_update_pairs(rb_world *world, double dt)
+{
+    double speculative_distance = RB_SPECULATIVE_SLOPS * world->settings.linear_slop;
+    if (rb_grow_array((void **)&world->sweep, &world->sweep_capacity, world->shape_count, sizeof *world->sweep) != 0) {
+        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for the broad phase");
+    }
+    int count = 0;
+    for (int i = 0; i < world->shape_slots; ++i) {
+        rb_shape *shape = &world->shapes[i];
+        if (!shape->in_use) {
+            continue;
+        }
+        shape->aabb = swept_aabb(world, i, dt, speculative_distance);
+        world->sweep[count++] = (struct rb_sweep_entry){shape->aabb.lower.x, i};
+    }
+    qsort(world->sweep, (size_t)count, sizeof *world->sweep, compare_sweep_entries);
+
+    world->pair_count = 0;
+    for (int i = 0; i < count; ++i) {
+        int a = world->sweep[i].shape;
+        rb_aabb box_a = world->shapes[a].aabb;
+        for (int j = i + 1; j < count && world->sweep[j].lower_x <= box_a.upper.x; ++j) {
+            int b = world->sweep[j].shape;
+            rb_aabb box_b = world->shapes[b].aabb;
+            if (box_a.lower.y <= box_b.upper.y && box_b.lower.y <= box_a.upper.y && rb_should_collide(world, a, b)) {
+                RB_TRY(add_pair(world, a, b));
+            }
+        }
+    }
+    qsort(world->pairs, (size_t)world->pair_count, sizeof *world->pairs, compare_pairs);
+    return RB_OK;
+}

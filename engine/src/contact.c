@@ -1,0 +1,148 @@
+/* Contacts: created and dropped as broad-phase pairs come and go, given
+ * a manifold each step, and carrying solver impulses between steps. */
+#include "allocator.h"
+#include "contact.h"
+#include "error.h"
+
+static int compare_pair_keys(const rb_pair *p, const rb_pair *q)
+{
+    if (p->body_key != q->body_key) {
+        return p->body_key < q->body_key ? -1 : 1;
+    }
+    return (p->shape_key > q->shape_key) - (p->shape_key < q->shape_key);
+}
+
+static rb_contact new_contact(const rb_world *world, const rb_pair *pair)
+{
+    const rb_shape *a = &world->shapes[pair->shape_a];
+    const rb_shape *b = &world->shapes[pair->shape_b];
+    return (rb_contact){
+        .pair = *pair,
+        .body_a = a->body,
+        .body_b = b->body,
+        .sensor = a->sensor || b->sensor,
+    };
+}
+
+/* Both lists are sorted by key, so one merge pass matches them. */
+rb_status rb_contacts_update(rb_world *world)
+{
+    if (rb_grow_array((void **)&world->spare_contacts, &world->spare_capacity, world->pair_count,
+                      sizeof *world->spare_contacts) != 0) {
+        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for contacts");
+    }
+    int old = 0;
+    for (int i = 0; i < world->pair_count; ++i) {
+        const rb_pair *pair = &world->pairs[i];
+        while (old < world->contact_count && compare_pair_keys(&world->contacts[old].pair, pair) < 0) {
+            ++old;
+        }
+        bool kept = old < world->contact_count && compare_pair_keys(&world->contacts[old].pair, pair) == 0;
+        world->spare_contacts[i] = kept ? world->contacts[old] : new_contact(world, pair);
+    }
+    rb_contact *swap = world->contacts;
+    int swap_capacity = world->contact_capacity;
+    world->contacts = world->spare_contacts;
+    world->contact_capacity = world->spare_capacity;
+    world->spare_contacts = swap;
+    world->spare_capacity = swap_capacity;
+    world->contact_count = world->pair_count;
+    return RB_OK;
+}
+
+static rb_manifold flip_manifold(rb_manifold m)
+{
+    m.normal = rb_neg(m.normal);
+    return m;
+}
+
+static rb_manifold compute_manifold(const rb_world *world, const rb_contact *contact, double speculative_distance)
+{
+    const rb_shape *a = &world->shapes[contact->pair.shape_a];
+    const rb_shape *b = &world->shapes[contact->pair.shape_b];
+    rb_transform xfa = rb_body_origin_transform(world, a->body);
+    rb_transform xfb = rb_body_origin_transform(world, b->body);
+    if (a->type == RB_SHAPE_CIRCLE && b->type == RB_SHAPE_CIRCLE) {
+        return rb_collide_circles(&a->geometry.circle, xfa, &b->geometry.circle, xfb, speculative_distance);
+    }
+    if (a->type == RB_SHAPE_POLYGON && b->type == RB_SHAPE_CIRCLE) {
+        return rb_collide_polygon_and_circle(&a->geometry.polygon, xfa, &b->geometry.circle, xfb, speculative_distance);
+    }
+    if (a->type == RB_SHAPE_CIRCLE && b->type == RB_SHAPE_POLYGON) {
+        return flip_manifold(
+            rb_collide_polygon_and_circle(&b->geometry.polygon, xfb, &a->geometry.circle, xfa, speculative_distance));
+    }
+    return rb_collide_polygons(&a->geometry.polygon, xfa, &b->geometry.polygon, xfb, speculative_distance);
+}
+
+/* How close the two shapes must be for a speculative point: the base
+ * distance plus how far their surfaces can approach in dt. */
+static double contact_speculative_distance(const rb_world *world, const rb_contact *contact, double dt)
+{
+    const rb_body_state *sa = &world->states[contact->body_a];
+    const rb_body_state *sb = &world->states[contact->body_b];
+    double extent_a = world->shapes[contact->pair.shape_a].extent;
+    double extent_b = world->shapes[contact->pair.shape_b].extent;
+    double approach = rb_length(rb_sub(sb->linear_velocity, sa->linear_velocity)) +
+                      fabs(sa->angular_velocity) * extent_a + fabs(sb->angular_velocity) * extent_b;
+    return RB_SPECULATIVE_SLOPS * world->settings.linear_slop + dt * approach;
+}
+
+/* Copies the impulses of old points onto new points with the same feature. */
+static void carry_impulses(const rb_manifold *old, rb_manifold *fresh)
+{
+    for (int i = 0; i < fresh->point_count; ++i) {
+        for (int j = 0; j < old->point_count; ++j) {
+            if (fresh->points[i].id == old->points[j].id) {
+                fresh->points[i].normal_impulse = old->points[j].normal_impulse;
+                fresh->points[i].tangent_impulse = old->points[j].tangent_impulse;
+                break;
+            }
+        }
+    }
+}
+
+void rb_contacts_collide(rb_world *world, double dt)
+{
+    bool warm = world->settings.warm_starting;
+    for (int i = 0; i < world->contact_count; ++i) {
+        rb_contact *contact = &world->contacts[i];
+        rb_manifold fresh = compute_manifold(world, contact, contact_speculative_distance(world, contact, dt));
+        if (warm) {
+            carry_impulses(&contact->manifold, &fresh);
+        }
+        contact->manifold = fresh;
+        const rb_shape *a = &world->shapes[contact->pair.shape_a];
+        const rb_shape *b = &world->shapes[contact->pair.shape_b];
+        /* Mixing rules: geometric mean of frictions, larger restitution. */
+        contact->friction = sqrt(a->friction * b->friction);
+        contact->restitution = fmax(a->restitution, b->restitution);
+        contact->touching = false;
+        for (int j = 0; j < fresh.point_count; ++j) {
+            contact->touching = contact->touching || fresh.points[j].separation <= 0.0;
+        }
+
+        /* A moving body that reaches a sleeping one wakes it. */
+        rb_body *body_a = &world->bodies[contact->body_a];
+        rb_body *body_b = &world->bodies[contact->body_b];
+        if (!contact->sensor && fresh.point_count > 0 && body_a->awake != body_b->awake) {
+            bool a_moves = body_a->awake && body_a->type != RB_BODY_STATIC;
+            bool b_moves = body_b->awake && body_b->type != RB_BODY_STATIC;
+            if (a_moves || b_moves) {
+                body_a->awake = body_b->awake = true;
+            }
+        }
+    }
+}
+
+void rb_contacts_remove_shape(rb_world *world, int shape)
+{
+    int kept = 0;
+    for (int i = 0; i < world->contact_count; ++i) {
+        const rb_contact *c = &world->contacts[i];
+        if (c->pair.shape_a != shape && c->pair.shape_b != shape) {
+            world->contacts[kept++] = *c;
+        }
+    }
+    world->contact_count = kept;
+}

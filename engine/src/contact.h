@@ -1,0 +1,17 @@
+/* Contacts: their life from broad-phase pairs, and the narrow phase that
+ * gives each its manifold. */
+#ifndef RB_CONTACT_H
+#define RB_CONTACT_H
+
+#include "world_internal.h"
+
+/* Makes world->contacts match world->pairs: keeps contacts whose pair
+ * remains (with their impulses), adds the new pairs, drops the rest. */
+rb_status rb_contacts_update(rb_world *world);
+
+/* Computes every contact's manifold for a step of dt seconds, carries the
+ * last step's impulses to points with the same feature id, and wakes a
+ * sleeping body touched by a moving one. */
+void rb_contacts_collide(rb_world *world, double dt);
+
+#endif

@@ -1,0 +1,396 @@
+/* Sequential impulses on contacts (Catto, "Iterative Dynamics with
+ * Temporal Coherence", GDC 2005; "Fast and Simple Physics using
+ * Sequential Impulses", GDC 2006).
+ *
+ * For a point with anchors rA, rB and normal n, the relative normal
+ * velocity is vn = n·(vB + ωB×rB − vA − ωA×rA). An impulse λ along n
+ * changes it by λ/m_n, where the effective mass is
+ *     1/m_n = 1/mA + 1/mB + (rA×n)²/IA + (rB×n)²/IB.
+ * Each iteration sets λ so that vn reaches its lower bound, then clamps
+ * the accumulated impulse to λ ≥ 0 (contacts push, never pull): this is
+ * projected Gauss-Seidel on the velocity-level LCP. Friction is the same
+ * along the tangent, clamped to the Coulomb cone |λt| ≤ μ·λn.
+ */
+#include "allocator.h"
+#include "contact_solver.h"
+#include "error.h"
+
+/* The block solver is used while cond(K) stays below this (Box2D uses the
+ * same bound): beyond it the two points are nearly redundant and the 2x2
+ * solve would amplify round-off. */
+#define MAX_BLOCK_CONDITION 1000.0
+
+/* NGS stops early once no point is deeper than this many slops. */
+#define NGS_TOLERANCE_SLOPS 3.0
+
+static rb_vec2 tangent_of(rb_vec2 normal) { return rb_right_perp(normal); }
+
+static double effective_mass(double inv_mass_sum, double inv_ia, double inv_ib, rb_vec2 ra, rb_vec2 rb,
+                             rb_vec2 direction)
+{
+    double rna = rb_cross(ra, direction);
+    double rnb = rb_cross(rb, direction);
+    double k = inv_mass_sum + inv_ia * rna * rna + inv_ib * rnb * rnb;
+    return k > 0.0 ? 1.0 / k : 0.0;
+}
+
+/* Relative velocity of the contact point on B with respect to A. */
+static rb_vec2 relative_velocity(const rb_body_state *a, const rb_body_state *b, rb_vec2 ra, rb_vec2 rb)
+{
+    rb_vec2 vb = rb_add(b->linear_velocity, rb_cross_sv(b->angular_velocity, rb));
+    rb_vec2 va = rb_add(a->linear_velocity, rb_cross_sv(a->angular_velocity, ra));
+    return rb_sub(vb, va);
+}
+
+static bool is_solvable(const rb_world *world, const rb_contact *contact)
+{
+    if (contact->sensor || contact->manifold.point_count == 0) {
+        return false;
+    }
+    const rb_body *a = &world->bodies[contact->body_a];
+    const rb_body *b = &world->bodies[contact->body_b];
+    return (a->type == RB_BODY_DYNAMIC && a->awake) || (b->type == RB_BODY_DYNAMIC && b->awake);
+}
+
+static void prepare_block(rb_contact_constraint *c)
+{
+    const rb_constraint_point *p1 = &c->points[0];
+    const rb_constraint_point *p2 = &c->points[1];
+    double inv_mass_sum = c->inv_mass_a + c->inv_mass_b;
+    double rn1a = rb_cross(p1->anchor_a, c->normal);
+    double rn1b = rb_cross(p1->anchor_b, c->normal);
+    double rn2a = rb_cross(p2->anchor_a, c->normal);
+    double rn2b = rb_cross(p2->anchor_b, c->normal);
+    c->k11 = inv_mass_sum + c->inv_inertia_a * rn1a * rn1a + c->inv_inertia_b * rn1b * rn1b;
+    c->k22 = inv_mass_sum + c->inv_inertia_a * rn2a * rn2a + c->inv_inertia_b * rn2b * rn2b;
+    c->k12 = inv_mass_sum + c->inv_inertia_a * rn1a * rn2a + c->inv_inertia_b * rn1b * rn2b;
+    double det = c->k11 * c->k22 - c->k12 * c->k12;
+    c->use_block = c->k11 * c->k11 < MAX_BLOCK_CONDITION * det;
+    if (c->use_block) {
+        double inv_det = 1.0 / det;
+        c->inv_k11 = inv_det * c->k22;
+        c->inv_k22 = inv_det * c->k11;
+        c->inv_k12 = -inv_det * c->k12;
+    }
+}
+
+int rb_contact_solver_prepare(rb_world *world)
+{
+    int count = 0;
+    for (int i = 0; i < world->contact_count; ++i) {
+        count += is_solvable(world, &world->contacts[i]) ? 1 : 0;
+    }
+    if (rb_grow_array((void **)&world->constraints, &world->constraint_capacity, count, sizeof *world->constraints) !=
+        0) {
+        world->constraint_count = 0;
+        return -1;
+    }
+    bool warm = world->settings.warm_starting;
+    bool block = world->settings.block_solver;
+    int n = 0;
+    for (int i = 0; i < world->contact_count; ++i) {
+        const rb_contact *contact = &world->contacts[i];
+        if (!is_solvable(world, contact)) {
+            continue;
+        }
+        const rb_body *body_a = &world->bodies[contact->body_a];
+        const rb_body *body_b = &world->bodies[contact->body_b];
+        const rb_body_state *sa = &world->states[contact->body_a];
+        const rb_body_state *sb = &world->states[contact->body_b];
+        rb_contact_constraint *c = &world->constraints[n++];
+        c->contact = i;
+        c->body_a = contact->body_a;
+        c->body_b = contact->body_b;
+        c->inv_mass_a = body_a->awake ? body_a->inv_mass : 0.0;
+        c->inv_inertia_a = body_a->awake ? body_a->inv_inertia : 0.0;
+        c->inv_mass_b = body_b->awake ? body_b->inv_mass : 0.0;
+        c->inv_inertia_b = body_b->awake ? body_b->inv_inertia : 0.0;
+        c->normal = contact->manifold.normal;
+        c->friction = contact->friction;
+        c->restitution = contact->restitution;
+        c->point_count = contact->manifold.point_count;
+        rb_vec2 tangent = tangent_of(c->normal);
+        double inv_mass_sum = c->inv_mass_a + c->inv_mass_b;
+        for (int j = 0; j < c->point_count; ++j) {
+            const rb_manifold_point *mp = &contact->manifold.points[j];
+            rb_constraint_point *p = &c->points[j];
+            p->anchor_a = rb_sub(mp->point, sa->center);
+            p->anchor_b = rb_sub(mp->point, sb->center);
+            p->local_anchor_a = rb_inv_rotate(sa->rotation, p->anchor_a);
+            p->local_anchor_b = rb_inv_rotate(sb->rotation, p->anchor_b);
+            /* The separation later is this constant plus the gap between
+             * the anchors along the normal as the bodies move. */
+            p->adjusted_separation = mp->separation - rb_dot(c->normal, rb_sub(rb_add(sb->center, p->anchor_b),
+                                                                               rb_add(sa->center, p->anchor_a)));
+            p->normal_mass =
+                effective_mass(inv_mass_sum, c->inv_inertia_a, c->inv_inertia_b, p->anchor_a, p->anchor_b, c->normal);
+            p->tangent_mass =
+                effective_mass(inv_mass_sum, c->inv_inertia_a, c->inv_inertia_b, p->anchor_a, p->anchor_b, tangent);
+            p->normal_impulse = warm ? mp->normal_impulse : 0.0;
+            p->tangent_impulse = warm ? mp->tangent_impulse : 0.0;
+            p->max_normal_impulse = 0.0;
+            p->relative_velocity = rb_dot(c->normal, relative_velocity(sa, sb, p->anchor_a, p->anchor_b));
+            p->min_normal_velocity = 0.0;
+        }
+        c->use_block = false;
+        if (block && c->point_count == 2) {
+            prepare_block(c);
+        }
+    }
+    world->constraint_count = n;
+    return n;
+}
+
+/* The separation of a point with the bodies where they are now: the
+ * anchors turn with their bodies; the normal is held from the narrow
+ * phase (a good approximation within one step). */
+static double current_separation(const rb_contact_constraint *c, const rb_constraint_point *p, const rb_body_state *sa,
+                                 const rb_body_state *sb)
+{
+    rb_vec2 pa = rb_add(sa->center, rb_rotate(sa->rotation, p->local_anchor_a));
+    rb_vec2 pb = rb_add(sb->center, rb_rotate(sb->rotation, p->local_anchor_b));
+    return rb_dot(c->normal, rb_sub(pb, pa)) + p->adjusted_separation;
+}
+
+/* Lower bound of the normal velocity for a substep of length h:
+ * - a gap s > 0 may close, but not more: vn >= -s/h (speculative);
+ * - with Baumgarte, overlap beyond the slop is pushed out at a fraction
+ *   beta of it per substep: vn >= beta·(-s - slop)/h, capped;
+ * - with NGS, the velocity solve only stops approach: vn >= 0. */
+void rb_contact_solver_update_bounds(rb_world *world, double h)
+{
+    const rb_solver_settings *settings = &world->settings;
+    bool baumgarte = settings->position_correction == RB_CORRECTION_BAUMGARTE;
+    double inv_h = 1.0 / h;
+    for (int i = 0; i < world->constraint_count; ++i) {
+        rb_contact_constraint *c = &world->constraints[i];
+        const rb_body_state *sa = &world->states[c->body_a];
+        const rb_body_state *sb = &world->states[c->body_b];
+        for (int j = 0; j < c->point_count; ++j) {
+            rb_constraint_point *p = &c->points[j];
+            double s = current_separation(c, p, sa, sb);
+            if (s > 0.0) {
+                p->min_normal_velocity = -s * inv_h;
+            } else if (baumgarte) {
+                double push =
+                    fmin(settings->baumgarte * fmax(-s - settings->linear_slop, 0.0), settings->max_linear_correction);
+                p->min_normal_velocity = push * inv_h;
+            } else {
+                p->min_normal_velocity = 0.0;
+            }
+        }
+    }
+}
+
+/* Applies impulse P at anchors rA, rB: -P to A, +P to B. */
+static void apply_impulse(const rb_contact_constraint *c, rb_body_state *a, rb_body_state *b, rb_vec2 ra, rb_vec2 rb,
+                          rb_vec2 impulse)
+{
+    a->linear_velocity = rb_mul_sub(a->linear_velocity, c->inv_mass_a, impulse);
+    a->angular_velocity -= c->inv_inertia_a * rb_cross(ra, impulse);
+    b->linear_velocity = rb_mul_add(b->linear_velocity, c->inv_mass_b, impulse);
+    b->angular_velocity += c->inv_inertia_b * rb_cross(rb, impulse);
+}
+
+void rb_contact_solver_warm_start(rb_world *world)
+{
+    for (int i = 0; i < world->constraint_count; ++i) {
+        const rb_contact_constraint *c = &world->constraints[i];
+        rb_body_state *a = &world->states[c->body_a];
+        rb_body_state *b = &world->states[c->body_b];
+        rb_vec2 tangent = tangent_of(c->normal);
+        for (int j = 0; j < c->point_count; ++j) {
+            const rb_constraint_point *p = &c->points[j];
+            rb_vec2 impulse = rb_add(rb_scale(p->normal_impulse, c->normal), rb_scale(p->tangent_impulse, tangent));
+            apply_impulse(c, a, b, p->anchor_a, p->anchor_b, impulse);
+        }
+    }
+}
+
+static void solve_friction(rb_contact_constraint *c, rb_body_state *a, rb_body_state *b)
+{
+    rb_vec2 tangent = tangent_of(c->normal);
+    for (int j = 0; j < c->point_count; ++j) {
+        rb_constraint_point *p = &c->points[j];
+        double vt = rb_dot(tangent, relative_velocity(a, b, p->anchor_a, p->anchor_b));
+        double limit = c->friction * p->normal_impulse;
+        double accumulated = fmin(fmax(p->tangent_impulse - p->tangent_mass * vt, -limit), limit);
+        double delta = accumulated - p->tangent_impulse;
+        p->tangent_impulse = accumulated;
+        apply_impulse(c, a, b, p->anchor_a, p->anchor_b, rb_scale(delta, tangent));
+    }
+}
+
+static void solve_normal_point(rb_contact_constraint *c, rb_constraint_point *p, rb_body_state *a, rb_body_state *b)
+{
+    double vn = rb_dot(c->normal, relative_velocity(a, b, p->anchor_a, p->anchor_b));
+    double accumulated = fmax(p->normal_impulse - p->normal_mass * (vn - p->min_normal_velocity), 0.0);
+    double delta = accumulated - p->normal_impulse;
+    p->normal_impulse = accumulated;
+    p->max_normal_impulse = fmax(p->max_normal_impulse, accumulated);
+    apply_impulse(c, a, b, p->anchor_a, p->anchor_b, rb_scale(delta, c->normal));
+}
+
+/* Both normal impulses at once: find x >= 0 with w = K·x + b >= 0 and
+ * x_i·w_i = 0, where w is each point's normal velocity above its bound
+ * and b is w with the impulses removed. The 2x2 linear complementarity
+ * problem is solved by trying its four cases in turn (Murty, "Linear
+ * Complementarity", 1988, ch. 1): both points pushing, only the first,
+ * only the second, neither. If round-off defeats all four, the impulses
+ * stay as they were. */
+static void solve_normal_block(rb_contact_constraint *c, rb_body_state *a, rb_body_state *b)
+{
+    rb_constraint_point *p1 = &c->points[0];
+    rb_constraint_point *p2 = &c->points[1];
+    double x1_old = p1->normal_impulse;
+    double x2_old = p2->normal_impulse;
+    double w1 = rb_dot(c->normal, relative_velocity(a, b, p1->anchor_a, p1->anchor_b)) - p1->min_normal_velocity;
+    double w2 = rb_dot(c->normal, relative_velocity(a, b, p2->anchor_a, p2->anchor_b)) - p2->min_normal_velocity;
+    double b1 = w1 - (c->k11 * x1_old + c->k12 * x2_old);
+    double b2 = w2 - (c->k12 * x1_old + c->k22 * x2_old);
+
+    double x1;
+    double x2;
+    /* Case 1: both push, w = 0. */
+    x1 = -(c->inv_k11 * b1 + c->inv_k12 * b2);
+    x2 = -(c->inv_k12 * b1 + c->inv_k22 * b2);
+    if (!(x1 >= 0.0 && x2 >= 0.0)) {
+        /* Case 2: only the first pushes. */
+        x1 = -b1 / c->k11;
+        x2 = 0.0;
+        if (!(x1 >= 0.0 && c->k12 * x1 + b2 >= 0.0)) {
+            /* Case 3: only the second pushes. */
+            x1 = 0.0;
+            x2 = -b2 / c->k22;
+            if (!(x2 >= 0.0 && c->k12 * x2 + b1 >= 0.0)) {
+                /* Case 4: neither pushes; valid when both separate. */
+                x1 = 0.0;
+                x2 = 0.0;
+                if (!(b1 >= 0.0 && b2 >= 0.0)) {
+                    return;
+                }
+            }
+        }
+    }
+    p1->normal_impulse = x1;
+    p2->normal_impulse = x2;
+    p1->max_normal_impulse = fmax(p1->max_normal_impulse, x1);
+    p2->max_normal_impulse = fmax(p2->max_normal_impulse, x2);
+    apply_impulse(c, a, b, p1->anchor_a, p1->anchor_b, rb_scale(x1 - x1_old, c->normal));
+    apply_impulse(c, a, b, p2->anchor_a, p2->anchor_b, rb_scale(x2 - x2_old, c->normal));
+}
+
+void rb_contact_solver_solve_velocities(rb_world *world)
+{
+    for (int i = 0; i < world->constraint_count; ++i) {
+        rb_contact_constraint *c = &world->constraints[i];
+        rb_body_state *a = &world->states[c->body_a];
+        rb_body_state *b = &world->states[c->body_b];
+        /* Friction first: its bound uses the normal impulse, and the
+         * normal constraint, solved last, matters more for stacking. */
+        solve_friction(c, a, b);
+        if (c->use_block) {
+            solve_normal_block(c, a, b);
+        } else {
+            for (int j = 0; j < c->point_count; ++j) {
+                solve_normal_point(c, &c->points[j], a, b);
+            }
+        }
+    }
+}
+
+/* Moves a body's pose by a position-level impulse. */
+static void displace(rb_body_state *s, double inv_mass, double inv_inertia, rb_vec2 r, rb_vec2 impulse)
+{
+    s->center = rb_mul_add(s->center, inv_mass, impulse);
+    if (inv_inertia > 0.0) {
+        s->angle += inv_inertia * rb_cross(r, impulse);
+        s->rotation = rb_rot_from_angle(s->angle);
+    }
+}
+
+/* Non-linear Gauss-Seidel (Catto, Box2D 2.x): for each point, C is the
+ * overlap beyond the slop scaled by beta and capped; the position
+ * impulse -C/K along the normal moves the two bodies apart directly,
+ * with K the effective mass at the anchors as they are now. */
+int rb_contact_solver_correct_positions(rb_world *world)
+{
+    const rb_solver_settings *settings = &world->settings;
+    int iteration = 0;
+    while (iteration < settings->position_iterations) {
+        ++iteration;
+        double deepest = 0.0;
+        for (int i = 0; i < world->constraint_count; ++i) {
+            const rb_contact_constraint *c = &world->constraints[i];
+            rb_body_state *a = &world->states[c->body_a];
+            rb_body_state *b = &world->states[c->body_b];
+            for (int j = 0; j < c->point_count; ++j) {
+                const rb_constraint_point *p = &c->points[j];
+                double s = current_separation(c, p, a, b);
+                deepest = fmin(deepest, s);
+                double error = fmin(
+                    fmax(settings->baumgarte * (s + settings->linear_slop), -settings->max_linear_correction), 0.0);
+                if (error == 0.0) {
+                    continue;
+                }
+                rb_vec2 ra = rb_rotate(a->rotation, p->local_anchor_a);
+                rb_vec2 rb = rb_rotate(b->rotation, p->local_anchor_b);
+                double mass = effective_mass(c->inv_mass_a + c->inv_mass_b, c->inv_inertia_a, c->inv_inertia_b, ra, rb,
+                                             c->normal);
+                rb_vec2 impulse = rb_scale(-error * mass, c->normal);
+                displace(a, -c->inv_mass_a, -c->inv_inertia_a, ra, impulse);
+                displace(b, c->inv_mass_b, c->inv_inertia_b, rb, impulse);
+            }
+        }
+        if (deepest >= -NGS_TOLERANCE_SLOPS * settings->linear_slop) {
+            break;
+        }
+    }
+    return iteration;
+}
+
+/* Restitution after the step (as Box2D v3 does): a point that was
+ * approaching faster than the threshold when the step began, and that
+ * the solver pushed, gets the normal velocity -e·(its approach speed). */
+void rb_contact_solver_apply_restitution(rb_world *world)
+{
+    double threshold = world->settings.restitution_threshold;
+    for (int i = 0; i < world->constraint_count; ++i) {
+        rb_contact_constraint *c = &world->constraints[i];
+        if (c->restitution == 0.0) {
+            continue;
+        }
+        rb_body_state *a = &world->states[c->body_a];
+        rb_body_state *b = &world->states[c->body_b];
+        for (int j = 0; j < c->point_count; ++j) {
+            rb_constraint_point *p = &c->points[j];
+            if (p->relative_velocity > -threshold || p->max_normal_impulse == 0.0) {
+                continue;
+            }
+            double vn = rb_dot(c->normal, relative_velocity(a, b, p->anchor_a, p->anchor_b));
+            double target = -c->restitution * p->relative_velocity;
+            double accumulated = fmax(p->normal_impulse - p->normal_mass * (vn - target), 0.0);
+            double delta = accumulated - p->normal_impulse;
+            p->normal_impulse = accumulated;
+            p->max_normal_impulse = fmax(p->max_normal_impulse, accumulated);
+            apply_impulse(c, a, b, p->anchor_a, p->anchor_b, rb_scale(delta, c->normal));
+        }
+    }
+}
+
+double rb_contact_solver_store_impulses(rb_world *world)
+{
+    double deepest = 0.0;
+    for (int i = 0; i < world->constraint_count; ++i) {
+        const rb_contact_constraint *c = &world->constraints[i];
+        rb_manifold *m = &world->contacts[c->contact].manifold;
+        const rb_body_state *a = &world->states[c->body_a];
+        const rb_body_state *b = &world->states[c->body_b];
+        for (int j = 0; j < c->point_count; ++j) {
+            m->points[j].normal_impulse = c->points[j].normal_impulse;
+            m->points[j].tangent_impulse = c->points[j].tangent_impulse;
+            deepest = fmax(deepest, -current_separation(c, &c->points[j], a, b));
+        }
+    }
+    return deepest;
+}

@@ -1,0 +1,48 @@
+/* Sequential impulses on contacts: non-penetration with speculative
+ * margin, Coulomb friction, restitution, and position correction by
+ * Baumgarte bias or non-linear Gauss-Seidel. */
+#ifndef RB_CONTACT_SOLVER_H
+#define RB_CONTACT_SOLVER_H
+
+#include "world_internal.h"
+
+typedef struct rb_constraint_point {
+    rb_vec2 anchor_a, anchor_b;             /* m, from each centre of mass to the point, at prepare time */
+    rb_vec2 local_anchor_a, local_anchor_b; /* the same in each body's frame, to follow rotation */
+    double adjusted_separation;             /* m, separation minus the anchors' gap along the normal */
+    double normal_mass, tangent_mass;       /* kg, effective masses along the normal and the tangent */
+    double normal_impulse, tangent_impulse; /* N·s, accumulated */
+    double max_normal_impulse;              /* N·s, largest accumulated normal impulse of the step */
+    double relative_velocity;               /* m/s, normal approach speed at prepare (negative approaching) */
+    double min_normal_velocity;             /* m/s, the velocity solve's lower bound for this substep */
+} rb_constraint_point;
+
+struct rb_contact_constraint {
+    int contact;        /* index in world->contacts */
+    int body_a, body_b; /* indices in world->states */
+    double inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
+    rb_vec2 normal;
+    double friction, restitution;
+    int point_count;
+    rb_constraint_point points[RB_MAX_MANIFOLD_POINTS];
+    bool use_block;                   /* the 2x2 normal mass matrix is well conditioned */
+    double k11, k12, k22;             /* normal mass matrix K (1/kg) */
+    double inv_k11, inv_k12, inv_k22; /* its inverse (kg) */
+};
+
+/* Builds one constraint per touching, non-sensor contact that has a
+ * dynamic body; carries the impulses of the last step if warm starting. */
+int rb_contact_solver_prepare(rb_world *world);
+/* Separations at the start of a substep of length h, and from them the
+ * lower bound of each point's normal velocity. */
+void rb_contact_solver_update_bounds(rb_world *world, double h);
+void rb_contact_solver_warm_start(rb_world *world);
+void rb_contact_solver_solve_velocities(rb_world *world);
+/* Non-linear Gauss-Seidel; returns the number of iterations done. */
+int rb_contact_solver_correct_positions(rb_world *world);
+void rb_contact_solver_apply_restitution(rb_world *world);
+/* Writes the impulses back to the manifolds for the next step; returns
+ * the deepest penetration left (m, >= 0). */
+double rb_contact_solver_store_impulses(rb_world *world);
+
+#endif

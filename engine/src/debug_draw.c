@@ -1,0 +1,110 @@
+/* Debug drawing: walks the world and calls the caller's callbacks. */
+#include "error.h"
+#include "rb/debug_draw.h"
+#include "world_internal.h"
+
+rb_debug_draw rb_default_debug_draw(void)
+{
+    return (rb_debug_draw){
+        .draw_shapes = true,
+        .impulse_scale = 0.1,
+        .normal_length = 0.1,
+    };
+}
+
+static uint32_t shape_color(const rb_body *body, const rb_shape *shape)
+{
+    if (shape->sensor) {
+        return RB_COLOR_SENSOR;
+    }
+    if (!body->awake) {
+        return RB_COLOR_SLEEPING;
+    }
+    switch (body->type) {
+    case RB_BODY_STATIC:
+        return RB_COLOR_STATIC;
+    case RB_BODY_KINEMATIC:
+        return RB_COLOR_KINEMATIC;
+    case RB_BODY_DYNAMIC:
+        break;
+    }
+    return RB_COLOR_DYNAMIC;
+}
+
+static void draw_shape(const rb_world *world, int index, const rb_debug_draw *draw)
+{
+    const rb_shape *shape = &world->shapes[index];
+    const rb_body *body = &world->bodies[shape->body];
+    rb_transform xf = rb_body_origin_transform(world, shape->body);
+    uint32_t color = shape_color(body, shape);
+    if (shape->type == RB_SHAPE_CIRCLE) {
+        if (draw->draw_circle != NULL) {
+            draw->draw_circle(rb_transform_point(xf, shape->geometry.circle.center), shape->geometry.circle.radius,
+                              rb_rotate(xf.q, rb_v2(1.0, 0.0)), color, draw->context);
+        }
+    } else if (draw->draw_polygon != NULL) {
+        rb_vec2 vertices[RB_MAX_POLYGON_VERTICES];
+        const rb_polygon *polygon = &shape->geometry.polygon;
+        for (int i = 0; i < polygon->count; ++i) {
+            vertices[i] = rb_transform_point(xf, polygon->vertices[i]);
+        }
+        draw->draw_polygon(vertices, polygon->count, color, draw->context);
+    }
+}
+
+static void draw_aabb(rb_aabb box, const rb_debug_draw *draw)
+{
+    rb_vec2 corners[4] = {box.lower, {box.upper.x, box.lower.y}, box.upper, {box.lower.x, box.upper.y}};
+    draw->draw_polygon(corners, 4, RB_COLOR_AABB, draw->context);
+}
+
+static void draw_contacts(const rb_world *world, const rb_debug_draw *draw)
+{
+    for (int i = 0; i < world->contact_count; ++i) {
+        const rb_manifold *m = &world->contacts[i].manifold;
+        for (int j = 0; j < m->point_count; ++j) {
+            rb_vec2 p = m->points[j].point;
+            if (draw->draw_contact_points && draw->draw_point != NULL) {
+                draw->draw_point(p, 5.0, RB_COLOR_CONTACT_POINT, draw->context);
+            }
+            if (draw->draw_contact_normals && draw->draw_segment != NULL) {
+                draw->draw_segment(p, rb_mul_add(p, draw->normal_length, m->normal), RB_COLOR_CONTACT_NORMAL,
+                                   draw->context);
+            }
+            if (draw->draw_contact_impulses && draw->draw_segment != NULL) {
+                double length = draw->impulse_scale * m->points[j].normal_impulse;
+                draw->draw_segment(p, rb_mul_add(p, length, m->normal), RB_COLOR_CONTACT_IMPULSE, draw->context);
+            }
+        }
+    }
+}
+
+rb_status rb_world_draw(const rb_world *world, const rb_debug_draw *draw)
+{
+    rb_clear_error();
+    RB_TRY(rb_check_pointer("rb_world_draw", "world", world));
+    RB_TRY(rb_check_pointer("rb_world_draw", "draw", draw));
+    RB_TRY(rb_check_finite("rb_world_draw", "impulse_scale", draw->impulse_scale));
+    RB_TRY(rb_check_finite("rb_world_draw", "normal_length", draw->normal_length));
+    for (int i = 0; i < world->shape_slots; ++i) {
+        if (!world->shapes[i].in_use) {
+            continue;
+        }
+        if (draw->draw_shapes) {
+            draw_shape(world, i, draw);
+        }
+        if (draw->draw_aabbs && draw->draw_polygon != NULL) {
+            draw_aabb(world->shapes[i].aabb, draw);
+        }
+    }
+    if (draw->draw_mass && draw->draw_transform != NULL) {
+        for (int i = 0; i < world->body_slots; ++i) {
+            if (world->bodies[i].in_use) {
+                const rb_body_state *s = &world->states[i];
+                draw->draw_transform((rb_transform){s->center, s->rotation}, draw->context);
+            }
+        }
+    }
+    draw_contacts(world, draw);
+    return RB_OK;
+}

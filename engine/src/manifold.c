@@ -1,0 +1,254 @@
+/* Narrow phase: contact manifolds by the separating axis theorem.
+ *
+ * Polygons: the axis of least penetration among both polygons' edge
+ * normals names a reference face; the incident face is the other
+ * polygon's edge most opposed to it; the incident edge is clipped to the
+ * reference face's side planes and every clipped point within the
+ * speculative distance becomes a manifold point (Gottschalk 1996 for
+ * SAT; face clipping as in Catto, "Contact Manifolds", GDC 2007).
+ * Everything is computed in shape A's frame and moved to the world at
+ * the end.
+ */
+#include "rb/collision.h"
+
+/* How much deeper shape B's best axis must be than shape A's before B
+ * holds the reference face (m). Without this margin two nearly equal
+ * axes would swap from frame to frame, and with them the feature ids
+ * that carry impulses. */
+#define REFERENCE_FACE_TOLERANCE 0.5e-3
+
+/* Below this centre distance two circles have no defined normal (m). */
+#define COINCIDENT_DISTANCE 1e-12
+
+static rb_manifold empty_manifold(void)
+{
+    rb_manifold m = {0};
+    return m;
+}
+
+/* Moves a manifold computed in xf's local frame to the world. */
+static rb_manifold to_world(rb_manifold local, rb_transform xf)
+{
+    rb_manifold m = local;
+    m.normal = rb_rotate(xf.q, local.normal);
+    for (int i = 0; i < m.point_count; ++i) {
+        m.points[i].point = rb_transform_point(xf, local.points[i].point);
+    }
+    return m;
+}
+
+static void add_point(rb_manifold *m, rb_vec2 point, double separation, uint32_t id)
+{
+    rb_manifold_point *p = &m->points[m->point_count++];
+    *p = (rb_manifold_point){0};
+    p->point = point;
+    p->separation = separation;
+    p->id = id;
+}
+
+rb_manifold rb_collide_circles(const rb_circle *a, rb_transform xfa, const rb_circle *b, rb_transform xfb,
+                               double speculative_distance)
+{
+    rb_vec2 ca = rb_transform_point(xfa, a->center);
+    rb_vec2 cb = rb_transform_point(xfb, b->center);
+    rb_vec2 d = rb_sub(cb, ca);
+    double distance = rb_length(d);
+    double separation = distance - a->radius - b->radius;
+    rb_manifold m = empty_manifold();
+    if (separation > speculative_distance) {
+        return m;
+    }
+    /* Coincident centres: any direction separates them equally; take +y. */
+    m.normal = distance > COINCIDENT_DISTANCE ? rb_scale(1.0 / distance, d) : rb_v2(0.0, 1.0);
+    rb_vec2 surface_a = rb_mul_add(ca, a->radius, m.normal);
+    rb_vec2 surface_b = rb_mul_sub(cb, b->radius, m.normal);
+    add_point(&m, rb_lerp(surface_a, surface_b, 0.5), separation, 0);
+    return m;
+}
+
+rb_manifold rb_collide_polygon_and_circle(const rb_polygon *a, rb_transform xfa, const rb_circle *b, rb_transform xfb,
+                                          double speculative_distance)
+{
+    rb_vec2 c = rb_inv_transform_point(xfa, rb_transform_point(xfb, b->center));
+    double radius = b->radius;
+
+    /* The face whose plane the centre is farthest outside of. */
+    int face = 0;
+    double face_separation = -INFINITY;
+    for (int i = 0; i < a->count; ++i) {
+        double s = rb_dot(a->normals[i], rb_sub(c, a->vertices[i]));
+        if (s > face_separation) {
+            face_separation = s;
+            face = i;
+        }
+    }
+    rb_manifold m = empty_manifold();
+    if (face_separation - radius > speculative_distance) {
+        return m;
+    }
+
+    rb_vec2 v1 = a->vertices[face];
+    rb_vec2 v2 = a->vertices[face + 1 < a->count ? face + 1 : 0];
+    rb_vec2 normal = a->normals[face];
+    rb_vec2 surface_a;
+    double distance;
+    uint32_t id;
+    /* Outside the face's plane, the centre is in a vertex region when it
+     * projects beyond an end of the face; otherwise (and always when the
+     * centre is inside the polygon) the face normal separates. */
+    if (face_separation > 0.0 && rb_dot(rb_sub(c, v1), rb_sub(v2, v1)) <= 0.0) {
+        distance = rb_distance(v1, c);
+        normal = rb_normalize(rb_sub(c, v1));
+        surface_a = v1;
+        id = rb_feature_id(0, face, RB_FEATURE_VERTEX, 0);
+    } else if (face_separation > 0.0 && rb_dot(rb_sub(c, v2), rb_sub(v1, v2)) <= 0.0) {
+        distance = rb_distance(v2, c);
+        normal = rb_normalize(rb_sub(c, v2));
+        surface_a = v2;
+        id = rb_feature_id(0, face, RB_FEATURE_VERTEX, 1);
+    } else {
+        distance = face_separation;
+        surface_a = rb_mul_sub(c, face_separation, normal);
+        id = rb_feature_id(0, face, RB_FEATURE_CLIP, 0);
+    }
+    double separation = distance - radius;
+    if (separation > speculative_distance) {
+        return m;
+    }
+    m.normal = normal;
+    rb_vec2 surface_b = rb_mul_sub(c, radius, normal);
+    add_point(&m, rb_lerp(surface_a, surface_b, 0.5), separation, id);
+    return to_world(m, xfa);
+}
+
+/* A polygon's vertices and normals moved into another frame. */
+typedef struct placed_polygon {
+    rb_vec2 vertices[RB_MAX_POLYGON_VERTICES];
+    rb_vec2 normals[RB_MAX_POLYGON_VERTICES];
+    int count;
+} placed_polygon;
+
+static placed_polygon place_polygon(const rb_polygon *polygon, rb_transform xf)
+{
+    placed_polygon placed;
+    placed.count = polygon->count;
+    for (int i = 0; i < polygon->count; ++i) {
+        placed.vertices[i] = rb_transform_point(xf, polygon->vertices[i]);
+        placed.normals[i] = rb_rotate(xf.q, polygon->normals[i]);
+    }
+    return placed;
+}
+
+/* The edge of `p` along whose normal `q` reaches least far below it:
+ * the separation of the two polygons on that axis. */
+static double max_edge_separation(const placed_polygon *p, const placed_polygon *q, int *edge)
+{
+    double best = -INFINITY;
+    *edge = 0;
+    for (int i = 0; i < p->count; ++i) {
+        double deepest = INFINITY;
+        for (int j = 0; j < q->count; ++j) {
+            double s = rb_dot(p->normals[i], rb_sub(q->vertices[j], p->vertices[i]));
+            deepest = s < deepest ? s : deepest;
+        }
+        if (deepest > best) {
+            best = deepest;
+            *edge = i;
+        }
+    }
+    return best;
+}
+
+typedef struct clip_vertex {
+    rb_vec2 point;
+    uint32_t kind;
+    int index;
+} clip_vertex;
+
+/* Keeps the part of segment `in` where dot(normal, p) <= offset. A point
+ * created by the cut takes the feature (RB_FEATURE_CLIP, side). Returns
+ * the number of points kept (2 unless the segment lies wholly outside). */
+static int clip_segment(const clip_vertex in[2], clip_vertex out[2], rb_vec2 normal, double offset, int side)
+{
+    double d0 = rb_dot(normal, in[0].point) - offset;
+    double d1 = rb_dot(normal, in[1].point) - offset;
+    int count = 0;
+    if (d0 <= 0.0) {
+        out[count++] = in[0];
+    }
+    if (d1 <= 0.0) {
+        out[count++] = in[1];
+    }
+    if (d0 * d1 < 0.0) {
+        double t = d0 / (d0 - d1);
+        out[count++] = (clip_vertex){rb_lerp(in[0].point, in[1].point, t), RB_FEATURE_CLIP, side};
+    }
+    return count;
+}
+
+rb_manifold rb_collide_polygons(const rb_polygon *a, rb_transform xfa, const rb_polygon *b, rb_transform xfb,
+                                double speculative_distance)
+{
+    placed_polygon pa = place_polygon(a, rb_transform_identity());
+    placed_polygon pb = place_polygon(b, rb_inv_mul_transforms(xfa, xfb));
+    rb_manifold m = empty_manifold();
+
+    int edge_a;
+    double separation_a = max_edge_separation(&pa, &pb, &edge_a);
+    if (separation_a > speculative_distance) {
+        return m;
+    }
+    int edge_b;
+    double separation_b = max_edge_separation(&pb, &pa, &edge_b);
+    if (separation_b > speculative_distance) {
+        return m;
+    }
+
+    int flip = separation_b > separation_a + REFERENCE_FACE_TOLERANCE;
+    const placed_polygon *reference = flip ? &pb : &pa;
+    const placed_polygon *incident = flip ? &pa : &pb;
+    int reference_edge = flip ? edge_b : edge_a;
+    rb_vec2 reference_normal = reference->normals[reference_edge];
+
+    /* The incident edge: the one whose normal opposes the reference normal most. */
+    int incident_edge = 0;
+    double most_opposed = INFINITY;
+    for (int i = 0; i < incident->count; ++i) {
+        double d = rb_dot(reference_normal, incident->normals[i]);
+        if (d < most_opposed) {
+            most_opposed = d;
+            incident_edge = i;
+        }
+    }
+    int i1 = incident_edge;
+    int i2 = incident_edge + 1 < incident->count ? incident_edge + 1 : 0;
+    clip_vertex segment[2] = {
+        {incident->vertices[i1], RB_FEATURE_VERTEX, i1},
+        {incident->vertices[i2], RB_FEATURE_VERTEX, i2},
+    };
+
+    rb_vec2 v1 = reference->vertices[reference_edge];
+    rb_vec2 v2 = reference->vertices[reference_edge + 1 < reference->count ? reference_edge + 1 : 0];
+    rb_vec2 tangent = rb_normalize(rb_sub(v2, v1));
+    clip_vertex clipped_once[2];
+    clip_vertex clipped[2];
+    if (clip_segment(segment, clipped_once, rb_neg(tangent), -rb_dot(tangent, v1), 0) < 2 ||
+        clip_segment(clipped_once, clipped, tangent, rb_dot(tangent, v2), 1) < 2) {
+        return m;
+    }
+
+    /* The manifold normal points from A to B. */
+    m.normal = flip ? rb_neg(reference_normal) : reference_normal;
+    for (int i = 0; i < 2; ++i) {
+        double separation = rb_dot(reference_normal, rb_sub(clipped[i].point, v1));
+        if (separation <= speculative_distance) {
+            /* The clipped point lies on the incident surface; the
+             * reference surface is `separation` behind it along the
+             * reference normal: report the midpoint. */
+            rb_vec2 midpoint = rb_mul_sub(clipped[i].point, 0.5 * separation, reference_normal);
+            add_point(&m, midpoint, separation,
+                      rb_feature_id(flip, reference_edge, (int)clipped[i].kind, clipped[i].index));
+        }
+    }
+    return to_world(m, xfa);
+}

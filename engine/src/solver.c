@@ -1,0 +1,112 @@
+/* The solver's step, as a script of named phases:
+ *
+ *   prepare contact constraints (anchors, effective masses, impulses carried over)
+ *   for each substep of length h = dt / substeps:
+ *       integrate velocities   v += h·(g·gravity_scale + F/m), ω += h·τ/I, then damping
+ *       warm start             apply the accumulated impulses again
+ *       solve velocities       velocity_iterations passes of sequential impulses
+ *       integrate positions    x += h·v, θ += h·ω   (semi-implicit Euler)
+ *       correct positions      NGS passes, when the world uses NGS
+ *   apply restitution
+ *   store impulses for the next step
+ *
+ * Semi-implicit (symplectic) Euler updates the velocity first and moves
+ * the position with the new velocity; unlike explicit Euler it does not
+ * pump energy into oscillators (Hairer, Lubich, Wanner, "Geometric
+ * Numerical Integration", 2006, §VI.3).
+ */
+#include "contact_solver.h"
+#include "solver.h"
+#include "timer.h"
+
+static bool is_simulated(const rb_body *body) { return body->in_use && body->awake; }
+
+/* Damping: v ← v / (1 + h·c) is the backward-Euler step of dv/dt = −c·v:
+ * it never reverses the velocity however large h·c, and it matches
+ * exp(−c·h) to first order. */
+static void integrate_velocities(rb_world *world, double h)
+{
+    rb_vec2 gravity = world->gravity;
+    for (int i = 0; i < world->body_slots; ++i) {
+        const rb_body *body = &world->bodies[i];
+        if (!is_simulated(body) || body->type != RB_BODY_DYNAMIC) {
+            continue;
+        }
+        rb_body_state *state = &world->states[i];
+        rb_vec2 acceleration = rb_mul_add(rb_scale(body->gravity_scale, gravity), body->inv_mass, body->force);
+        rb_vec2 v = rb_mul_add(state->linear_velocity, h, acceleration);
+        double w = state->angular_velocity + h * body->inv_inertia * body->torque;
+        state->linear_velocity = rb_scale(1.0 / (1.0 + h * body->linear_damping), v);
+        state->angular_velocity = w / (1.0 + h * body->angular_damping);
+    }
+}
+
+static void integrate_positions(rb_world *world, double h)
+{
+    for (int i = 0; i < world->body_slots; ++i) {
+        const rb_body *body = &world->bodies[i];
+        if (!is_simulated(body) || body->type == RB_BODY_STATIC) {
+            continue;
+        }
+        rb_body_state *state = &world->states[i];
+        state->center = rb_mul_add(state->center, h, state->linear_velocity);
+        if (state->angular_velocity != 0.0) {
+            state->angle += h * state->angular_velocity;
+            state->rotation = rb_rot_from_angle(state->angle);
+        }
+    }
+}
+
+void rb_solver_step(rb_world *world, double dt)
+{
+    rb_profile *profile = &world->profile;
+    const rb_solver_settings *settings = &world->settings;
+    int substeps = settings->substeps;
+    double h = dt / substeps;
+    bool ngs = settings->position_correction == RB_CORRECTION_NGS;
+    int velocity_iterations = 0;
+    int position_iterations = 0;
+
+    double t = rb_now_ms();
+    rb_contact_solver_prepare(world);
+    profile->prepare = rb_now_ms() - t;
+
+    for (int substep = 0; substep < substeps; ++substep) {
+        t = rb_now_ms();
+        integrate_velocities(world, h);
+        profile->integrate_velocities += rb_now_ms() - t;
+
+        t = rb_now_ms();
+        rb_contact_solver_update_bounds(world, h);
+        rb_contact_solver_warm_start(world);
+        profile->warm_start += rb_now_ms() - t;
+
+        t = rb_now_ms();
+        for (int iteration = 0; iteration < settings->velocity_iterations; ++iteration) {
+            rb_contact_solver_solve_velocities(world);
+        }
+        velocity_iterations += settings->velocity_iterations;
+        profile->solve_velocities += rb_now_ms() - t;
+
+        t = rb_now_ms();
+        integrate_positions(world, h);
+        profile->integrate_positions += rb_now_ms() - t;
+
+        if (ngs) {
+            t = rb_now_ms();
+            position_iterations += rb_contact_solver_correct_positions(world);
+            profile->correct_positions += rb_now_ms() - t;
+        }
+    }
+
+    t = rb_now_ms();
+    rb_contact_solver_apply_restitution(world);
+    profile->restitution = rb_now_ms() - t;
+
+    t = rb_now_ms();
+    world->statistics.max_penetration = rb_contact_solver_store_impulses(world);
+    profile->store_impulses = rb_now_ms() - t;
+
+    world->statistics.velocity_iterations = velocity_iterations;
+    world->statistics.position_iterations = position_iterations;
+}

@@ -1,0 +1,327 @@
+/* The world: creation, destruction, settings, id look-ups and the step. */
+#include <float.h>
+#include <stdatomic.h>
+#include <string.h>
+
+#include "allocator.h"
+#include "broad_phase.h"
+#include "contact.h"
+#include "contact_solver.h"
+#include "error.h"
+#include "solver.h"
+#include "timer.h"
+#include "world_internal.h"
+
+/* Serial numbers tell the ids of different worlds apart; 0 is never used,
+ * so the all-zero id is null. */
+static atomic_uint next_world_serial = 1;
+
+rb_solver_settings rb_default_solver_settings(void)
+{
+    return (rb_solver_settings){
+        .velocity_iterations = 8,
+        .position_iterations = 3,
+        .substeps = 1,
+        .warm_starting = true,
+        .block_solver = true,
+        .position_correction = RB_CORRECTION_NGS,
+        .baumgarte = 0.2,
+        .linear_slop = 0.005,
+        .max_linear_correction = 0.2,
+        .restitution_threshold = 1.0,
+    };
+}
+
+rb_world_def rb_default_world_def(void)
+{
+    return (rb_world_def){.gravity = {0.0, -9.8}, .solver = rb_default_solver_settings()};
+}
+
+static rb_status check_settings(const rb_solver_settings *s, const char *function)
+{
+    RB_TRY(rb_check_pointer(function, "settings", s));
+    RB_TRY(rb_check_range(function, "velocity_iterations", s->velocity_iterations, 1, 1000));
+    RB_TRY(rb_check_range(function, "position_iterations", s->position_iterations, 0, 1000));
+    RB_TRY(rb_check_range(function, "substeps", s->substeps, 1, 1000));
+    if (s->position_correction != RB_CORRECTION_BAUMGARTE && s->position_correction != RB_CORRECTION_NGS) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: position_correction is %d, expected %s or %s", function,
+                               (int)s->position_correction, "RB_CORRECTION_BAUMGARTE", "RB_CORRECTION_NGS");
+    }
+    RB_TRY(rb_check_range(function, "baumgarte", s->baumgarte, 0.0, 1.0));
+    RB_TRY(rb_check_range(function, "linear_slop", s->linear_slop, 0.0, 0.1));
+    RB_TRY(rb_check_range(function, "max_linear_correction", s->max_linear_correction, DBL_MIN, DBL_MAX));
+    RB_TRY(rb_check_range(function, "restitution_threshold", s->restitution_threshold, 0.0, DBL_MAX));
+    return RB_OK;
+}
+
+rb_status rb_world_create(const rb_world_def *def, rb_world **out)
+{
+    rb_clear_error();
+    RB_TRY(rb_check_pointer("rb_world_create", "out", out));
+    *out = NULL;
+    RB_TRY(rb_check_pointer("rb_world_create", "def", def));
+    RB_TRY(rb_check_vec2("rb_world_create", "gravity", def->gravity));
+    RB_TRY(check_settings(&def->solver, "rb_world_create"));
+    rb_world *world = rb_alloc(sizeof *world);
+    if (world == NULL) {
+        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_create: out of memory");
+    }
+    memset(world, 0, sizeof *world);
+    unsigned serial = atomic_fetch_add(&next_world_serial, 1);
+    world->serial = (uint16_t)(serial % 0xffffu + 1u);
+    world->gravity = def->gravity;
+    world->settings = def->solver;
+    world->body_free = -1;
+    world->shape_free = -1;
+    *out = world;
+    return RB_OK;
+}
+
+void rb_world_destroy(rb_world *world)
+{
+    if (world == NULL) {
+        return;
+    }
+    rb_free_array((void **)&world->bodies, &world->body_capacity, sizeof *world->bodies);
+    rb_free_array((void **)&world->states, &world->state_capacity, sizeof *world->states);
+    rb_free_array((void **)&world->shapes, &world->shape_capacity, sizeof *world->shapes);
+    rb_free_array((void **)&world->contacts, &world->contact_capacity, sizeof *world->contacts);
+    rb_free_array((void **)&world->spare_contacts, &world->spare_capacity, sizeof *world->spare_contacts);
+    rb_free_array((void **)&world->pairs, &world->pair_capacity, sizeof *world->pairs);
+    rb_free_array((void **)&world->sweep, &world->sweep_capacity, sizeof *world->sweep);
+    rb_free_array((void **)&world->constraints, &world->constraint_capacity, sizeof *world->constraints);
+    rb_free(world, sizeof *world);
+}
+
+/* ---- settings ------------------------------------------------------------ */
+
+rb_status rb_world_set_gravity(rb_world *world, rb_vec2 gravity)
+{
+    rb_clear_error();
+    RB_TRY(rb_check_pointer("rb_world_set_gravity", "world", world));
+    RB_TRY(rb_world_check_unlocked(world, "rb_world_set_gravity"));
+    RB_TRY(rb_check_vec2("rb_world_set_gravity", "gravity", gravity));
+    world->gravity = gravity;
+    return RB_OK;
+}
+
+rb_vec2 rb_world_gravity(const rb_world *world) { return world != NULL ? world->gravity : rb_v2(0.0, 0.0); }
+
+rb_status rb_world_set_solver_settings(rb_world *world, const rb_solver_settings *settings)
+{
+    rb_clear_error();
+    RB_TRY(rb_check_pointer("rb_world_set_solver_settings", "world", world));
+    RB_TRY(rb_world_check_unlocked(world, "rb_world_set_solver_settings"));
+    RB_TRY(check_settings(settings, "rb_world_set_solver_settings"));
+    world->settings = *settings;
+    return RB_OK;
+}
+
+rb_solver_settings rb_world_solver_settings(const rb_world *world)
+{
+    return world != NULL ? world->settings : rb_default_solver_settings();
+}
+
+rb_profile rb_world_profile(const rb_world *world) { return world != NULL ? world->profile : (rb_profile){0}; }
+
+rb_statistics rb_world_statistics(const rb_world *world)
+{
+    return world != NULL ? world->statistics : (rb_statistics){0};
+}
+
+size_t rb_world_bytes_in_use(const rb_world *world)
+{
+    if (world == NULL) {
+        return 0;
+    }
+    return sizeof *world + (size_t)world->body_capacity * sizeof *world->bodies +
+           (size_t)world->state_capacity * sizeof *world->states +
+           (size_t)world->shape_capacity * sizeof *world->shapes +
+           (size_t)world->contact_capacity * sizeof *world->contacts +
+           (size_t)world->spare_capacity * sizeof *world->spare_contacts +
+           (size_t)world->pair_capacity * sizeof *world->pairs + (size_t)world->sweep_capacity * sizeof *world->sweep +
+           (size_t)world->constraint_capacity * sizeof *world->constraints;
+}
+
+/* ---- ids ----------------------------------------------------------------- */
+
+rb_status rb_world_check_unlocked(const rb_world *world, const char *function)
+{
+    if (world->locked) {
+        return rb_report_error(RB_ERR_LOCKED, "%s: the world is stepping; change it between steps", function);
+    }
+    return RB_OK;
+}
+
+static rb_status find_slot(const rb_world *world, int32_t index, uint16_t id_world, uint16_t generation,
+                           const char *function, const char *kind, int slots, bool in_use, uint16_t slot_generation)
+{
+    if (world == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: world is NULL", function);
+    }
+    if (generation == 0) {
+        return rb_report_error(RB_ERR_FOREIGN_ID, "%s: the %s id is null", function, kind);
+    }
+    if (id_world != world->serial || index < 0 || index >= slots) {
+        return rb_report_error(RB_ERR_FOREIGN_ID, "%s: the %s id (index %d) belongs to another world", function, kind,
+                               (int)index);
+    }
+    if (!in_use || slot_generation != generation) {
+        return rb_report_error(RB_ERR_STALE_ID, "%s: the %s id (index %d, generation %u) refers to a destroyed %s",
+                               function, kind, (int)index, (unsigned)generation, kind);
+    }
+    return RB_OK;
+}
+
+rb_status rb_world_find_body(const rb_world *world, rb_body_id id, const char *function, int *index)
+{
+    bool valid_index = world != NULL && id.index >= 0 && id.index < world->body_slots;
+    const rb_body *body = valid_index ? &world->bodies[id.index] : NULL;
+    RB_TRY(find_slot(world, id.index, id.world, id.generation, function, "body", world != NULL ? world->body_slots : 0,
+                     body != NULL && body->in_use, body != NULL ? body->generation : 0));
+    *index = id.index;
+    return RB_OK;
+}
+
+rb_status rb_world_find_shape(const rb_world *world, rb_shape_id id, const char *function, int *index)
+{
+    bool valid_index = world != NULL && id.index >= 0 && id.index < world->shape_slots;
+    const rb_shape *shape = valid_index ? &world->shapes[id.index] : NULL;
+    RB_TRY(find_slot(world, id.index, id.world, id.generation, function, "shape",
+                     world != NULL ? world->shape_slots : 0, shape != NULL && shape->in_use,
+                     shape != NULL ? shape->generation : 0));
+    *index = id.index;
+    return RB_OK;
+}
+
+rb_body_id rb_make_body_id(const rb_world *world, int index)
+{
+    return (rb_body_id){index, world->serial, world->bodies[index].generation};
+}
+
+rb_shape_id rb_make_shape_id(const rb_world *world, int index)
+{
+    return (rb_shape_id){index, world->serial, world->shapes[index].generation};
+}
+
+/* ---- the step ------------------------------------------------------------ */
+
+/* Clears the forces applied for this step and refreshes the counters. */
+static void finalize_step(rb_world *world)
+{
+    for (int i = 0; i < world->body_slots; ++i) {
+        rb_body *body = &world->bodies[i];
+        body->force = rb_v2(0.0, 0.0);
+        body->torque = 0.0;
+    }
+    rb_statistics *stats = &world->statistics;
+    stats->body_count = world->body_count;
+    stats->shape_count = world->shape_count;
+    stats->pair_count = world->pair_count;
+    stats->contact_count = 0;
+    stats->manifold_point_count = 0;
+    for (int i = 0; i < world->contact_count; ++i) {
+        const rb_contact *contact = &world->contacts[i];
+        stats->contact_count += contact->manifold.point_count > 0 ? 1 : 0;
+        stats->manifold_point_count += contact->manifold.point_count;
+    }
+}
+
+rb_status rb_world_step(rb_world *world, double dt)
+{
+    rb_clear_error();
+    RB_TRY(rb_check_pointer("rb_world_step", "world", world));
+    RB_TRY(rb_world_check_unlocked(world, "rb_world_step"));
+    if (!(dt > 0.0 && dt <= 10.0)) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "rb_world_step: dt is %g s, expected 0 < dt <= 10", dt);
+    }
+    world->locked = true;
+    rb_profile *profile = &world->profile;
+    *profile = (rb_profile){0};
+    double start = rb_now_ms();
+
+    double t = rb_now_ms();
+    rb_status status = rb_broad_phase_update_pairs(world, dt);
+    if (status == RB_OK) {
+        status = rb_contacts_update(world);
+    }
+    if (status != RB_OK) {
+        world->locked = false;
+        return status;
+    }
+    profile->pairs = rb_now_ms() - t;
+
+    t = rb_now_ms();
+    rb_contacts_collide(world, dt);
+    profile->collide = rb_now_ms() - t;
+
+    rb_solver_step(world, dt);
+
+    t = rb_now_ms();
+    finalize_step(world);
+    profile->finalize = rb_now_ms() - t;
+
+    profile->step = rb_now_ms() - start;
+    world->locked = false;
+    return RB_OK;
+}
+
+/* ---- inspection ---------------------------------------------------------- */
+
+/* FNV-1a, 64 bits (Fowler, Noll, Vo), over the bytes of each value. */
+static uint64_t hash_bytes(uint64_t hash, const void *data, size_t size)
+{
+    const unsigned char *bytes = data;
+    for (size_t i = 0; i < size; ++i) {
+        hash ^= bytes[i];
+        hash *= 1099511628211ull;
+    }
+    return hash;
+}
+
+uint64_t rb_world_state_hash(const rb_world *world)
+{
+    uint64_t hash = 14695981039346656037ull;
+    if (world == NULL) {
+        return hash;
+    }
+    for (int i = 0; i < world->body_slots; ++i) {
+        if (!world->bodies[i].in_use) {
+            continue;
+        }
+        const rb_body_state *s = &world->states[i];
+        const double values[6] = {s->center.x,          s->center.y,          s->angle,
+                                  s->linear_velocity.x, s->linear_velocity.y, s->angular_velocity};
+        hash = hash_bytes(hash, values, sizeof values);
+    }
+    return hash;
+}
+
+int rb_world_contact_count(const rb_world *world) { return world != NULL ? world->contact_count : 0; }
+
+int rb_world_contacts(const rb_world *world, rb_contact_data *out, int capacity)
+{
+    rb_clear_error();
+    if (world == NULL || (out == NULL && capacity > 0)) {
+        rb_report_error(RB_ERR_INVALID_ARGUMENT, "rb_world_contacts: world or out is NULL");
+        return 0;
+    }
+    int count = world->contact_count < capacity ? world->contact_count : capacity;
+    for (int i = 0; i < count; ++i) {
+        const rb_contact *c = &world->contacts[i];
+        bool touching = false;
+        for (int j = 0; j < c->manifold.point_count; ++j) {
+            touching = touching || c->manifold.points[j].separation <= 0.0;
+        }
+        out[i] = (rb_contact_data){
+            .shape_a = rb_make_shape_id(world, c->pair.shape_a),
+            .shape_b = rb_make_shape_id(world, c->pair.shape_b),
+            .body_a = rb_make_body_id(world, c->body_a),
+            .body_b = rb_make_body_id(world, c->body_b),
+            .touching = touching,
+            .sensor = c->sensor,
+            .manifold = c->manifold,
+        };
+    }
+    return count;
+}

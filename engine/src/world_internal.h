@@ -1,0 +1,150 @@
+/* The world's private data: object pools, contacts, solver scratch. The
+ * per-body data the solver touches every iteration (velocities and pose)
+ * lives apart from the rest in a compact `states` array, indexed like
+ * `bodies`, so the hot loops stream through 64 bytes per body. */
+#ifndef RB_WORLD_INTERNAL_H
+#define RB_WORLD_INTERNAL_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "rb/body.h"
+#include "rb/collision.h"
+#include "rb/shape.h"
+#include "rb/world.h"
+
+/* Manifold points are reported this many linear slops before the shapes
+ * touch, so resting contacts stay in the solver without flickering. */
+#define RB_SPECULATIVE_SLOPS 4.0
+
+typedef struct rb_body_state {
+    rb_vec2 linear_velocity; /* m/s, of the centre of mass */
+    double angular_velocity; /* rad/s */
+    rb_vec2 center;          /* m, world centre of mass */
+    rb_rot rotation;         /* cos and sin of `angle` */
+    double angle;            /* rad, continuous */
+} rb_body_state;
+
+typedef struct rb_body {
+    int next_free; /* free-list link while the slot is unused */
+    uint16_t generation;
+    bool in_use;
+    rb_body_type type;
+    rb_vec2 local_center;        /* m, centre of mass in the body frame */
+    rb_vec2 force;               /* N, accumulated for the next step */
+    double torque;               /* N·m, accumulated for the next step */
+    double mass, inv_mass;       /* kg, 1/kg; 0 for static and kinematic bodies */
+    double inertia, inv_inertia; /* kg·m², about the centre of mass */
+    bool has_mass_override;
+    rb_mass_data mass_override;
+    double linear_damping, angular_damping, gravity_scale;
+    bool fixed_rotation, awake, bullet;
+    void *user_data;
+    int first_shape; /* -1 when none; shapes link through rb_shape.next_in_body */
+    int shape_count;
+} rb_body;
+
+typedef struct rb_shape {
+    int next_free;
+    uint16_t generation;
+    bool in_use;
+    int body;
+    int next_in_body;
+    rb_shape_type type;
+    union {
+        rb_circle circle;
+        rb_polygon polygon;
+    } geometry;
+    double friction, restitution, density;
+    bool sensor;
+    rb_filter filter;
+    void *user_data;
+    double extent; /* m, farthest point of the shape from the body's centre of mass */
+    rb_aabb aabb;  /* m, world box enlarged by the step's speculative margin */
+} rb_shape;
+
+/* A pair of shapes whose boxes overlap. Contacts are kept sorted by
+ * (body_key, shape_key): the lower body index first, so the solver meets
+ * them in the same order on every run. */
+typedef struct rb_pair {
+    uint64_t body_key;
+    uint64_t shape_key;
+    int shape_a, shape_b; /* shape_a belongs to the body of lower index */
+} rb_pair;
+
+/* A shape in the broad phase's sorted sweep. */
+struct rb_sweep_entry {
+    double lower_x; /* m, lower x bound of the shape's enlarged box */
+    int shape;
+};
+
+typedef struct rb_contact {
+    rb_pair pair;
+    int body_a, body_b;
+    rb_manifold manifold;
+    double friction, restitution; /* mixed from the two shapes */
+    bool sensor;
+    bool touching;
+} rb_contact;
+
+typedef struct rb_contact_constraint rb_contact_constraint;
+
+struct rb_world {
+    uint16_t serial;
+    bool locked; /* inside rb_world_step */
+    rb_vec2 gravity;
+    rb_solver_settings settings;
+
+    rb_body *bodies;
+    rb_body_state *states;
+    int body_capacity;
+    int state_capacity; /* equals body_capacity once a body exists */
+    int body_slots;     /* slots ever used: live bodies have index < body_slots */
+    int body_free;      /* head of the free list, -1 when empty */
+    int body_count;
+
+    rb_shape *shapes;
+    int shape_capacity;
+    int shape_slots;
+    int shape_free;
+    int shape_count;
+
+    rb_contact *contacts;
+    int contact_count, contact_capacity;
+    rb_contact *spare_contacts; /* the merge in the collide phase writes here, then swaps */
+    int spare_capacity;
+    rb_pair *pairs;
+    int pair_count, pair_capacity;
+    struct rb_sweep_entry *sweep; /* broad-phase scratch */
+    int sweep_capacity;
+
+    rb_contact_constraint *constraints;
+    int constraint_count, constraint_capacity;
+
+    rb_profile profile;
+    rb_statistics statistics;
+};
+
+/* Looks up a live object; on failure records an error naming `function`. */
+rb_status rb_world_find_body(const rb_world *world, rb_body_id id, const char *function, int *index);
+rb_status rb_world_find_shape(const rb_world *world, rb_shape_id id, const char *function, int *index);
+/* Also fails with RB_ERR_LOCKED while the world is stepping. */
+rb_status rb_world_check_unlocked(const rb_world *world, const char *function);
+
+rb_body_id rb_make_body_id(const rb_world *world, int index);
+rb_shape_id rb_make_shape_id(const rb_world *world, int index);
+
+/* The body's pose as a transform of its origin. */
+rb_transform rb_body_origin_transform(const rb_world *world, int body);
+
+/* Recomputes mass, centre and inertia from the shapes (or the override),
+ * keeping the origin in place; also refreshes every shape's extent. */
+void rb_body_update_mass(rb_world *world, int body);
+
+/* The shape's tight world box at the body's current pose. */
+rb_aabb rb_shape_tight_aabb(const rb_world *world, int shape);
+
+/* Removes every contact that involves the shape. */
+void rb_contacts_remove_shape(rb_world *world, int shape);
+
+#endif

@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# Installs the Debian packages sinew needs to build, test and check itself.
+#
+#   tools/setup.sh           the project's packages
+#   tools/setup.sh --peers   also what ../shared/peers needs (Box2D, Chipmunk2D, C++)
+#
+# Idempotent: when every package is installed it does nothing (no apt-get
+# update) and says so. Needs root, or sudo for a normal user.
+set -euo pipefail
+
+# ---- The project's packages: add new dependencies here, one list. ----------
+packages=(
+    build-essential  # gcc, make, libc headers
+    cmake            # >= 3.25 (CMakePresets.json version 6)
+    pkg-config       # finds criterion and gsl
+    libgsl-dev       # GNU Scientific Library
+    libcriterion-dev # unit tests (tests/)
+    clang-format     # formatting check in tools/check.sh
+    valgrind         # memory and cache profiling
+)
+# ---- Only with --peers: the peer engines' benchmark harnesses. ------------
+peer_packages=(
+    g++             # box2d24_bench is C++
+    libbox2d-dev    # Box2D 2.4.1
+    libchipmunk-dev # Chipmunk2D 7.0.3
+)
+# ---------------------------------------------------------------------------
+
+usage()
+{
+    sed -n '2,8s/^# \{0,1\}//p' "$0"
+}
+
+want=("${packages[@]}")
+for arg in "$@"; do
+    case "$arg" in
+    --peers) want+=("${peer_packages[@]}") ;;
+    -h | --help)
+        usage
+        exit 0
+        ;;
+    *)
+        echo "setup.sh: unknown argument '$arg'" >&2
+        usage >&2
+        exit 2
+        ;;
+    esac
+done
+
+if ! command -v dpkg-query >/dev/null 2>&1 || ! command -v apt-get >/dev/null 2>&1; then
+    echo "setup.sh: dpkg-query/apt-get not found: this script needs Debian or a derivative (Debian 12 is the reference)." >&2
+    echo "setup.sh: install by hand: ${want[*]}" >&2
+    exit 1
+fi
+
+missing=()
+for pkg in "${want[@]}"; do
+    status=$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null || true)
+    if [[ "$status" != "install ok installed" ]]; then
+        missing+=("$pkg")
+    fi
+done
+
+if ((${#missing[@]} == 0)); then
+    echo "setup.sh: all packages present"
+    exit 0
+fi
+
+echo "setup.sh: missing: ${missing[*]}"
+
+if ((EUID == 0)); then
+    as_root=()
+elif command -v sudo >/dev/null 2>&1; then
+    as_root=(sudo)
+else
+    echo "setup.sh: need root to install packages, and sudo is not available." >&2
+    echo "setup.sh: run as root: apt-get update && apt-get install -y --no-install-recommends ${missing[*]}" >&2
+    exit 1
+fi
+
+"${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update
+"${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
+echo "setup.sh: installed: ${missing[*]}"
