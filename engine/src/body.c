@@ -58,7 +58,7 @@ rb_status rb_body_create(rb_world *world, const rb_body_def *def, rb_body_id *ou
     *out = (rb_body_id){0};
     RB_TRY(rb_world_check_unlocked(world, "rb_body_create"));
     RB_TRY(check_body_def(def));
-    int index;
+    int index = -1;
     RB_TRY(allocate_body_slot(world, &index));
 
     rb_body *body = &world->bodies[index];

@@ -106,6 +106,7 @@ int rb_contact_solver_prepare(rb_world *world)
         c->inv_mass_b = body_b->awake ? body_b->inv_mass : 0.0;
         c->inv_inertia_b = body_b->awake ? body_b->inv_inertia : 0.0;
         c->normal = contact->manifold.normal;
+        c->local_normal = rb_inv_rotate(sa->rotation, c->normal);
         c->friction = contact->friction;
         c->restitution = contact->restitution;
         c->point_count = contact->manifold.point_count;
@@ -116,12 +117,12 @@ int rb_contact_solver_prepare(rb_world *world)
             rb_constraint_point *p = &c->points[j];
             p->anchor_a = rb_sub(mp->point, sa->center);
             p->anchor_b = rb_sub(mp->point, sb->center);
-            p->local_anchor_a = rb_inv_rotate(sa->rotation, p->anchor_a);
-            p->local_anchor_b = rb_inv_rotate(sb->rotation, p->anchor_b);
-            /* The separation later is this constant plus the gap between
-             * the anchors along the normal as the bodies move. */
-            p->adjusted_separation = mp->separation - rb_dot(c->normal, rb_sub(rb_add(sb->center, p->anchor_b),
-                                                                               rb_add(sa->center, p->anchor_a)));
+            /* The two surface points, half the separation either side of
+             * the manifold point, each carried by its own body. */
+            rb_vec2 surface_a = rb_mul_sub(mp->point, 0.5 * mp->separation, c->normal);
+            rb_vec2 surface_b = rb_mul_add(mp->point, 0.5 * mp->separation, c->normal);
+            p->local_surface_a = rb_inv_rotate(sa->rotation, rb_sub(surface_a, sa->center));
+            p->local_surface_b = rb_inv_rotate(sb->rotation, rb_sub(surface_b, sb->center));
             p->normal_mass =
                 effective_mass(inv_mass_sum, c->inv_inertia_a, c->inv_inertia_b, p->anchor_a, p->anchor_b, c->normal);
             p->tangent_mass =
@@ -141,15 +142,18 @@ int rb_contact_solver_prepare(rb_world *world)
     return n;
 }
 
-/* The separation of a point with the bodies where they are now: the
- * anchors turn with their bodies; the normal is held from the narrow
- * phase (a good approximation within one step). */
+/* The separation of a point with the bodies where they are now: each
+ * surface point moves with its body and the normal turns with body A,
+ * as the reference face of a resting contact does (Catto, Box2D 2.x
+ * position solver). Exact at prepare time; first-order accurate within
+ * the step. */
 static double current_separation(const rb_contact_constraint *c, const rb_constraint_point *p, const rb_body_state *sa,
-                                 const rb_body_state *sb)
+                                 const rb_body_state *sb, rb_vec2 *normal)
 {
-    rb_vec2 pa = rb_add(sa->center, rb_rotate(sa->rotation, p->local_anchor_a));
-    rb_vec2 pb = rb_add(sb->center, rb_rotate(sb->rotation, p->local_anchor_b));
-    return rb_dot(c->normal, rb_sub(pb, pa)) + p->adjusted_separation;
+    rb_vec2 pa = rb_add(sa->center, rb_rotate(sa->rotation, p->local_surface_a));
+    rb_vec2 pb = rb_add(sb->center, rb_rotate(sb->rotation, p->local_surface_b));
+    *normal = rb_rotate(sa->rotation, c->local_normal);
+    return rb_dot(*normal, rb_sub(pb, pa));
 }
 
 /* Lower bound of the normal velocity for a substep of length h:
@@ -168,7 +172,8 @@ void rb_contact_solver_update_bounds(rb_world *world, double h)
         const rb_body_state *sb = &world->states[c->body_b];
         for (int j = 0; j < c->point_count; ++j) {
             rb_constraint_point *p = &c->points[j];
-            double s = current_separation(c, p, sa, sb);
+            rb_vec2 normal;
+            double s = current_separation(c, p, sa, sb, &normal);
             if (s > 0.0) {
                 p->min_normal_velocity = -s * inv_h;
             } else if (baumgarte) {
@@ -326,18 +331,23 @@ int rb_contact_solver_correct_positions(rb_world *world)
             rb_body_state *b = &world->states[c->body_b];
             for (int j = 0; j < c->point_count; ++j) {
                 const rb_constraint_point *p = &c->points[j];
-                double s = current_separation(c, p, a, b);
+                rb_vec2 normal;
+                double s = current_separation(c, p, a, b, &normal);
                 deepest = fmin(deepest, s);
                 double error = fmin(
                     fmax(settings->baumgarte * (s + settings->linear_slop), -settings->max_linear_correction), 0.0);
                 if (error == 0.0) {
                     continue;
                 }
-                rb_vec2 ra = rb_rotate(a->rotation, p->local_anchor_a);
-                rb_vec2 rb = rb_rotate(b->rotation, p->local_anchor_b);
-                double mass = effective_mass(c->inv_mass_a + c->inv_mass_b, c->inv_inertia_a, c->inv_inertia_b, ra, rb,
-                                             c->normal);
-                rb_vec2 impulse = rb_scale(-error * mass, c->normal);
+                /* Anchors to the midpoint of the two surface points. */
+                rb_vec2 pa = rb_rotate(a->rotation, p->local_surface_a);
+                rb_vec2 pb = rb_rotate(b->rotation, p->local_surface_b);
+                rb_vec2 midpoint = rb_lerp(rb_add(a->center, pa), rb_add(b->center, pb), 0.5);
+                rb_vec2 ra = rb_sub(midpoint, a->center);
+                rb_vec2 rb = rb_sub(midpoint, b->center);
+                double mass =
+                    effective_mass(c->inv_mass_a + c->inv_mass_b, c->inv_inertia_a, c->inv_inertia_b, ra, rb, normal);
+                rb_vec2 impulse = rb_scale(-error * mass, normal);
                 displace(a, -c->inv_mass_a, -c->inv_inertia_a, ra, impulse);
                 displace(b, c->inv_mass_b, c->inv_inertia_b, rb, impulse);
             }
@@ -389,7 +399,8 @@ double rb_contact_solver_store_impulses(rb_world *world)
         for (int j = 0; j < c->point_count; ++j) {
             m->points[j].normal_impulse = c->points[j].normal_impulse;
             m->points[j].tangent_impulse = c->points[j].tangent_impulse;
-            deepest = fmax(deepest, -current_separation(c, &c->points[j], a, b));
+            rb_vec2 normal;
+            deepest = fmax(deepest, -current_separation(c, &c->points[j], a, b, &normal));
         }
     }
     return deepest;

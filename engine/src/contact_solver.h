@@ -8,8 +8,8 @@
 
 typedef struct rb_constraint_point {
     rb_vec2 anchor_a, anchor_b;             /* m, from each centre of mass to the point, at prepare time */
-    rb_vec2 local_anchor_a, local_anchor_b; /* the same in each body's frame, to follow rotation */
-    double adjusted_separation;             /* m, separation minus the anchors' gap along the normal */
+    rb_vec2 local_surface_a;                /* m, the point on A's surface, in A's frame */
+    rb_vec2 local_surface_b;                /* m, the point on B's surface, in B's frame */
     double normal_mass, tangent_mass;       /* kg, effective masses along the normal and the tangent */
     double normal_impulse, tangent_impulse; /* N·s, accumulated */
     double max_normal_impulse;              /* N·s, largest accumulated normal impulse of the step */
@@ -21,7 +21,8 @@ struct rb_contact_constraint {
     int contact;        /* index in world->contacts */
     int body_a, body_b; /* indices in world->states */
     double inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
-    rb_vec2 normal;
+    rb_vec2 normal;       /* unit, world, from A to B, at prepare time */
+    rb_vec2 local_normal; /* the same in A's frame: the normal turns with A */
     double friction, restitution;
     int point_count;
     rb_constraint_point points[RB_MAX_MANIFOLD_POINTS];

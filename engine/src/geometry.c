@@ -191,15 +191,22 @@ rb_status rb_make_polygon(const rb_vec2 *points, int count, rb_polygon *out)
     return RB_OK;
 }
 
-rb_status rb_make_offset_box(double hx, double hy, rb_vec2 center, double angle, rb_polygon *out)
+static rb_status check_box(const char *function, double hx, double hy, rb_polygon *out)
 {
-    rb_clear_error();
-    RB_TRY(rb_check_pointer("rb_make_offset_box", "out", out));
-    RB_TRY(rb_check_range("rb_make_offset_box", "hx", hx, RB_POLYGON_WELD_DISTANCE, DBL_MAX));
-    RB_TRY(rb_check_range("rb_make_offset_box", "hy", hy, RB_POLYGON_WELD_DISTANCE, DBL_MAX));
-    RB_TRY(rb_check_vec2("rb_make_offset_box", "center", center));
-    RB_TRY(rb_check_finite("rb_make_offset_box", "angle", angle));
-    rb_transform xf = {center, rb_rot_from_angle(angle)};
+    RB_TRY(rb_check_pointer(function, "out", out));
+    RB_TRY(rb_check_finite(function, "hx", hx));
+    RB_TRY(rb_check_finite(function, "hy", hy));
+    if (hx < RB_POLYGON_WELD_DISTANCE || hy < RB_POLYGON_WELD_DISTANCE) {
+        return rb_report_error(RB_ERR_DEGENERATE_SHAPE,
+                               "%s: half-extents are (%g, %g) m, expected both >= %g m (smaller boxes have no "
+                               "well-defined faces)",
+                               function, hx, hy, RB_POLYGON_WELD_DISTANCE);
+    }
+    return RB_OK;
+}
+
+static void fill_box(double hx, double hy, rb_transform xf, rb_polygon *out)
+{
     const rb_vec2 corners[4] = {{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}};
     const rb_vec2 normals[4] = {{0.0, -1.0}, {1.0, 0.0}, {0.0, 1.0}, {-1.0, 0.0}};
     out->count = 4;
@@ -207,13 +214,25 @@ rb_status rb_make_offset_box(double hx, double hy, rb_vec2 center, double angle,
         out->vertices[i] = rb_transform_point(xf, corners[i]);
         out->normals[i] = rb_rotate(xf.q, normals[i]);
     }
-    out->centroid = center;
+    out->centroid = xf.p;
+}
+
+rb_status rb_make_offset_box(double hx, double hy, rb_vec2 center, double angle, rb_polygon *out)
+{
+    rb_clear_error();
+    RB_TRY(check_box("rb_make_offset_box", hx, hy, out));
+    RB_TRY(rb_check_vec2("rb_make_offset_box", "center", center));
+    RB_TRY(rb_check_finite("rb_make_offset_box", "angle", angle));
+    fill_box(hx, hy, (rb_transform){center, rb_rot_from_angle(angle)}, out);
     return RB_OK;
 }
 
 rb_status rb_make_box(double hx, double hy, rb_polygon *out)
 {
-    return rb_make_offset_box(hx, hy, rb_v2(0.0, 0.0), 0.0, out);
+    rb_clear_error();
+    RB_TRY(check_box("rb_make_box", hx, hy, out));
+    fill_box(hx, hy, rb_transform_identity(), out);
+    return RB_OK;
 }
 
 /* ---- mass properties ----------------------------------------------------- */

@@ -92,7 +92,6 @@ rb_manifold rb_collide_polygon_and_circle(const rb_polygon *a, rb_transform xfa,
     rb_vec2 normal = a->normals[face];
     rb_vec2 surface_a;
     double distance;
-    uint32_t id;
     /* Outside the face's plane, the centre is in a vertex region when it
      * projects beyond an end of the face; otherwise (and always when the
      * centre is inside the polygon) the face normal separates. */
@@ -100,16 +99,13 @@ rb_manifold rb_collide_polygon_and_circle(const rb_polygon *a, rb_transform xfa,
         distance = rb_distance(v1, c);
         normal = rb_normalize(rb_sub(c, v1));
         surface_a = v1;
-        id = rb_feature_id(0, face, RB_FEATURE_VERTEX, 0);
     } else if (face_separation > 0.0 && rb_dot(rb_sub(c, v2), rb_sub(v1, v2)) <= 0.0) {
         distance = rb_distance(v2, c);
         normal = rb_normalize(rb_sub(c, v2));
         surface_a = v2;
-        id = rb_feature_id(0, face, RB_FEATURE_VERTEX, 1);
     } else {
         distance = face_separation;
         surface_a = rb_mul_sub(c, face_separation, normal);
-        id = rb_feature_id(0, face, RB_FEATURE_CLIP, 0);
     }
     double separation = distance - radius;
     if (separation > speculative_distance) {
@@ -117,7 +113,7 @@ rb_manifold rb_collide_polygon_and_circle(const rb_polygon *a, rb_transform xfa,
     }
     m.normal = normal;
     rb_vec2 surface_b = rb_mul_sub(c, radius, normal);
-    add_point(&m, rb_lerp(surface_a, surface_b, 0.5), separation, id);
+    add_point(&m, rb_lerp(surface_a, surface_b, 0.5), separation, 0);
     return to_world(m, xfa);
 }
 
@@ -159,31 +155,24 @@ static double max_edge_separation(const placed_polygon *p, const placed_polygon 
     return best;
 }
 
-typedef struct clip_vertex {
-    rb_vec2 point;
-    uint32_t kind;
-    int index;
-} clip_vertex;
-
-/* Keeps the part of segment `in` where dot(normal, p) <= offset. A point
- * created by the cut takes the feature (RB_FEATURE_CLIP, side). Returns
- * the number of points kept (2 unless the segment lies wholly outside). */
-static int clip_segment(const clip_vertex in[2], clip_vertex out[2], rb_vec2 normal, double offset, int side)
+/* Keeps the part of segment `in` where dot(normal, p) <= offset, in the
+ * segment's order. Returns the number of points kept (2 unless the
+ * segment lies wholly outside). */
+static int clip_segment(const rb_vec2 in[2], rb_vec2 out[2], rb_vec2 normal, double offset)
 {
-    double d0 = rb_dot(normal, in[0].point) - offset;
-    double d1 = rb_dot(normal, in[1].point) - offset;
-    int count = 0;
-    if (d0 <= 0.0) {
-        out[count++] = in[0];
+    double d0 = rb_dot(normal, in[0]) - offset;
+    double d1 = rb_dot(normal, in[1]) - offset;
+    if (d0 > 0.0 && d1 > 0.0) {
+        return 0;
     }
-    if (d1 <= 0.0) {
-        out[count++] = in[1];
+    out[0] = in[0];
+    out[1] = in[1];
+    if (d0 > 0.0) {
+        out[0] = rb_lerp(in[0], in[1], d0 / (d0 - d1));
+    } else if (d1 > 0.0) {
+        out[1] = rb_lerp(in[0], in[1], d0 / (d0 - d1));
     }
-    if (d0 * d1 < 0.0) {
-        double t = d0 / (d0 - d1);
-        out[count++] = (clip_vertex){rb_lerp(in[0].point, in[1].point, t), RB_FEATURE_CLIP, side};
-    }
-    return count;
+    return 2;
 }
 
 rb_manifold rb_collide_polygons(const rb_polygon *a, rb_transform xfa, const rb_polygon *b, rb_transform xfb,
@@ -222,32 +211,28 @@ rb_manifold rb_collide_polygons(const rb_polygon *a, rb_transform xfa, const rb_
     }
     int i1 = incident_edge;
     int i2 = incident_edge + 1 < incident->count ? incident_edge + 1 : 0;
-    clip_vertex segment[2] = {
-        {incident->vertices[i1], RB_FEATURE_VERTEX, i1},
-        {incident->vertices[i2], RB_FEATURE_VERTEX, i2},
-    };
+    rb_vec2 segment[2] = {incident->vertices[i1], incident->vertices[i2]};
 
     rb_vec2 v1 = reference->vertices[reference_edge];
     rb_vec2 v2 = reference->vertices[reference_edge + 1 < reference->count ? reference_edge + 1 : 0];
     rb_vec2 tangent = rb_normalize(rb_sub(v2, v1));
-    clip_vertex clipped_once[2];
-    clip_vertex clipped[2];
-    if (clip_segment(segment, clipped_once, rb_neg(tangent), -rb_dot(tangent, v1), 0) < 2 ||
-        clip_segment(clipped_once, clipped, tangent, rb_dot(tangent, v2), 1) < 2) {
+    rb_vec2 clipped_once[2];
+    rb_vec2 clipped[2];
+    if (clip_segment(segment, clipped_once, rb_neg(tangent), -rb_dot(tangent, v1)) < 2 ||
+        clip_segment(clipped_once, clipped, tangent, rb_dot(tangent, v2)) < 2) {
         return m;
     }
 
     /* The manifold normal points from A to B. */
     m.normal = flip ? rb_neg(reference_normal) : reference_normal;
     for (int i = 0; i < 2; ++i) {
-        double separation = rb_dot(reference_normal, rb_sub(clipped[i].point, v1));
+        double separation = rb_dot(reference_normal, rb_sub(clipped[i], v1));
         if (separation <= speculative_distance) {
             /* The clipped point lies on the incident surface; the
              * reference surface is `separation` behind it along the
              * reference normal: report the midpoint. */
-            rb_vec2 midpoint = rb_mul_sub(clipped[i].point, 0.5 * separation, reference_normal);
-            add_point(&m, midpoint, separation,
-                      rb_feature_id(flip, reference_edge, (int)clipped[i].kind, clipped[i].index));
+            rb_vec2 midpoint = rb_mul_sub(clipped[i], 0.5 * separation, reference_normal);
+            add_point(&m, midpoint, separation, rb_feature_id(flip, reference_edge, incident_edge, i));
         }
     }
     return to_world(m, xfa);

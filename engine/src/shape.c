@@ -81,7 +81,7 @@ static rb_status create_shape(rb_world *world, rb_body_id body_id, const rb_shap
                                "(kg/m²) or rb_body_set_mass_data first",
                                f, def->density);
     }
-    int index;
+    int index = -1;
     RB_TRY(allocate_shape_slot(world, &index));
     rb_shape *shape = &world->shapes[index];
     uint16_t generation = (uint16_t)(shape->generation + 1u);

@@ -32,17 +32,17 @@ typedef struct rb_manifold {
     int point_count; /* 0 .. 2 */
 } rb_manifold;
 
-/* A feature id packs which features met: for a polygon clip point the
- * reference edge and the incident vertex (or the reference side plane
- * that clipped the incident edge), and whether shape B held the
- * reference face. Ids compare equal exactly when the same features meet. */
-enum {
-    RB_FEATURE_VERTEX = 0, /* an incident vertex that survived clipping */
-    RB_FEATURE_CLIP = 1,   /* a point cut by a side plane of the reference face */
-};
-static inline uint32_t rb_feature_id(int flip, int reference_edge, int kind, int index)
+/* A feature id names the features that made a point. For two polygons:
+ * whether shape B held the reference face, the reference edge, the
+ * incident edge, and which end of the clipped incident edge (0 or 1) the
+ * point came from. It does not say whether a side plane cut the point:
+ * when two equal boxes are stacked, the incident vertices lie on the side
+ * planes and round-off decides the cut, which must not change the id.
+ * Circle points have id 0. Ids compare equal exactly when the same
+ * features meet. */
+static inline uint32_t rb_feature_id(int flip, int reference_edge, int incident_edge, int end)
 {
-    return ((uint32_t)flip << 24) | ((uint32_t)reference_edge << 16) | ((uint32_t)kind << 8) | (uint32_t)index;
+    return ((uint32_t)flip << 24) | ((uint32_t)reference_edge << 16) | ((uint32_t)incident_edge << 8) | (uint32_t)end;
 }
 
 rb_manifold rb_collide_circles(const rb_circle *a, rb_transform xfa, const rb_circle *b, rb_transform xfb,
