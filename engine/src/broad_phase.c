@@ -102,7 +102,9 @@ rb_status rb_broad_phase_update_pairs(rb_world *world, double dt)
         shape->aabb = swept_aabb(world, i, dt, speculative_distance);
         world->sweep[count++] = (struct rb_sweep_entry){shape->aabb.lower.x, i};
     }
-    qsort(world->sweep, (size_t)count, sizeof *world->sweep, compare_sweep_entries);
+    if (count > 1) {
+        qsort(world->sweep, (size_t)count, sizeof *world->sweep, compare_sweep_entries);
+    }
 
     world->pair_count = 0;
     for (int i = 0; i < count; ++i) {
@@ -116,6 +118,8 @@ rb_status rb_broad_phase_update_pairs(rb_world *world, double dt)
             }
         }
     }
-    qsort(world->pairs, (size_t)world->pair_count, sizeof *world->pairs, compare_pairs);
+    if (world->pair_count > 1) {
+        qsort(world->pairs, (size_t)world->pair_count, sizeof *world->pairs, compare_pairs);
+    }
     return RB_OK;
 }

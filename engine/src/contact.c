@@ -1,5 +1,7 @@
 /* Contacts: created and dropped as broad-phase pairs come and go, given
  * a manifold each step, and carrying solver impulses between steps. */
+#include <assert.h>
+
 #include "allocator.h"
 #include "contact.h"
 #include "error.h"
@@ -40,6 +42,7 @@ rb_status rb_contacts_update(rb_world *world)
         bool kept = old < world->contact_count && compare_pair_keys(&world->contacts[old].pair, pair) == 0;
         world->spare_contacts[i] = kept ? world->contacts[old] : new_contact(world, pair);
     }
+    assert(world->pair_count <= world->spare_capacity);
     rb_contact *swap = world->contacts;
     int swap_capacity = world->contact_capacity;
     world->contacts = world->spare_contacts;

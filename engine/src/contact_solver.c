@@ -11,6 +11,8 @@
  * projected Gauss-Seidel on the velocity-level LCP. Friction is the same
  * along the tangent, clamped to the Coulomb cone |λt| ≤ μ·λn.
  */
+#include <assert.h>
+
 #include "allocator.h"
 #include "contact_solver.h"
 #include "error.h"
@@ -97,6 +99,8 @@ int rb_contact_solver_prepare(rb_world *world)
         const rb_body *body_b = &world->bodies[contact->body_b];
         const rb_body_state *sa = &world->states[contact->body_a];
         const rb_body_state *sb = &world->states[contact->body_b];
+        assert(contact->body_a != contact->body_b);
+        assert(fabs(rb_length(contact->manifold.normal) - 1.0) < 1e-9);
         rb_contact_constraint *c = &world->constraints[n++];
         c->contact = i;
         c->body_a = contact->body_a;
@@ -130,7 +134,6 @@ int rb_contact_solver_prepare(rb_world *world)
             p->normal_impulse = warm ? mp->normal_impulse : 0.0;
             p->tangent_impulse = warm ? mp->tangent_impulse : 0.0;
             p->max_normal_impulse = 0.0;
-            p->relative_velocity = rb_dot(c->normal, relative_velocity(sa, sb, p->anchor_a, p->anchor_b));
             p->min_normal_velocity = 0.0;
         }
         c->use_block = false;
@@ -161,7 +164,7 @@ static double current_separation(const rb_contact_constraint *c, const rb_constr
  * - with Baumgarte, overlap beyond the slop is pushed out at a fraction
  *   beta of it per substep: vn >= beta·(-s - slop)/h, capped;
  * - with NGS, the velocity solve only stops approach: vn >= 0. */
-void rb_contact_solver_update_bounds(rb_world *world, double h)
+void rb_contact_solver_update_bounds(rb_world *world, double h, bool first_substep)
 {
     const rb_solver_settings *settings = &world->settings;
     bool baumgarte = settings->position_correction == RB_CORRECTION_BAUMGARTE;
@@ -172,6 +175,9 @@ void rb_contact_solver_update_bounds(rb_world *world, double h)
         const rb_body_state *sb = &world->states[c->body_b];
         for (int j = 0; j < c->point_count; ++j) {
             rb_constraint_point *p = &c->points[j];
+            if (first_substep) {
+                p->relative_velocity = rb_dot(c->normal, relative_velocity(sa, sb, p->anchor_a, p->anchor_b));
+            }
             rb_vec2 normal;
             double s = current_separation(c, p, sa, sb, &normal);
             if (s > 0.0) {
@@ -360,8 +366,9 @@ int rb_contact_solver_correct_positions(rb_world *world)
 }
 
 /* Restitution after the step (as Box2D v3 does): a point that was
- * approaching faster than the threshold when the step began, and that
- * the solver pushed, gets the normal velocity -e·(its approach speed). */
+ * approaching faster than the threshold at the start of the step (with
+ * the step's gravity in the velocity, as Box2D 2.x measures it), and
+ * that the solver pushed, gets the normal velocity -e·(that speed). */
 void rb_contact_solver_apply_restitution(rb_world *world)
 {
     double threshold = world->settings.restitution_threshold;

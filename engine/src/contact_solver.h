@@ -13,8 +13,8 @@ typedef struct rb_constraint_point {
     double normal_mass, tangent_mass;       /* kg, effective masses along the normal and the tangent */
     double normal_impulse, tangent_impulse; /* N·s, accumulated */
     double max_normal_impulse;              /* N·s, largest accumulated normal impulse of the step */
-    double relative_velocity;               /* m/s, normal approach speed at prepare (negative approaching) */
-    double min_normal_velocity;             /* m/s, the velocity solve's lower bound for this substep */
+    double relative_velocity;   /* m/s, normal velocity after the first velocity integration (< 0 approaching) */
+    double min_normal_velocity; /* m/s, the velocity solve's lower bound for this substep */
 } rb_constraint_point;
 
 struct rb_contact_constraint {
@@ -35,8 +35,10 @@ struct rb_contact_constraint {
  * dynamic body; carries the impulses of the last step if warm starting. */
 int rb_contact_solver_prepare(rb_world *world);
 /* Separations at the start of a substep of length h, and from them the
- * lower bound of each point's normal velocity. */
-void rb_contact_solver_update_bounds(rb_world *world, double h);
+ * lower bound of each point's normal velocity. On the first substep it
+ * also records each point's normal velocity, with this step's gravity
+ * and forces already in it, as the impact speed for restitution. */
+void rb_contact_solver_update_bounds(rb_world *world, double h, bool first_substep);
 void rb_contact_solver_warm_start(rb_world *world);
 void rb_contact_solver_solve_velocities(rb_world *world);
 /* Non-linear Gauss-Seidel; returns the number of iterations done. */

@@ -16,6 +16,7 @@
  * Numerical Integration", 2006, §VI.3).
  */
 #include "contact_solver.h"
+#include "error.h"
 #include "solver.h"
 #include "timer.h"
 
@@ -57,7 +58,7 @@ static void integrate_positions(rb_world *world, double h)
     }
 }
 
-void rb_solver_step(rb_world *world, double dt)
+rb_status rb_solver_step(rb_world *world, double dt)
 {
     rb_profile *profile = &world->profile;
     const rb_solver_settings *settings = &world->settings;
@@ -68,7 +69,9 @@ void rb_solver_step(rb_world *world, double dt)
     int position_iterations = 0;
 
     double t = rb_now_ms();
-    rb_contact_solver_prepare(world);
+    if (rb_contact_solver_prepare(world) < 0) {
+        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for contact constraints");
+    }
     profile->prepare = rb_now_ms() - t;
 
     for (int substep = 0; substep < substeps; ++substep) {
@@ -77,7 +80,7 @@ void rb_solver_step(rb_world *world, double dt)
         profile->integrate_velocities += rb_now_ms() - t;
 
         t = rb_now_ms();
-        rb_contact_solver_update_bounds(world, h);
+        rb_contact_solver_update_bounds(world, h, substep == 0);
         rb_contact_solver_warm_start(world);
         profile->warm_start += rb_now_ms() - t;
 
@@ -109,4 +112,5 @@ void rb_solver_step(rb_world *world, double dt)
 
     world->statistics.velocity_iterations = velocity_iterations;
     world->statistics.position_iterations = position_iterations;
+    return RB_OK;
 }

@@ -1,4 +1,5 @@
 /* The world: creation, destruction, settings, id look-ups and the step. */
+#include <assert.h>
 #include <float.h>
 #include <stdatomic.h>
 #include <string.h>
@@ -196,11 +197,13 @@ rb_status rb_world_find_shape(const rb_world *world, rb_shape_id id, const char 
 
 rb_body_id rb_make_body_id(const rb_world *world, int index)
 {
+    assert(index >= 0 && index < world->body_slots && world->bodies[index].in_use);
     return (rb_body_id){index, world->serial, world->bodies[index].generation};
 }
 
 rb_shape_id rb_make_shape_id(const rb_world *world, int index)
 {
+    assert(index >= 0 && index < world->shape_slots && world->shapes[index].in_use);
     return (rb_shape_id){index, world->serial, world->shapes[index].generation};
 }
 
@@ -245,17 +248,18 @@ rb_status rb_world_step(rb_world *world, double dt)
     if (status == RB_OK) {
         status = rb_contacts_update(world);
     }
+    profile->pairs = rb_now_ms() - t;
+
+    if (status == RB_OK) {
+        t = rb_now_ms();
+        rb_contacts_collide(world, dt);
+        profile->collide = rb_now_ms() - t;
+        status = rb_solver_step(world, dt);
+    }
     if (status != RB_OK) {
         world->locked = false;
         return status;
     }
-    profile->pairs = rb_now_ms() - t;
-
-    t = rb_now_ms();
-    rb_contacts_collide(world, dt);
-    profile->collide = rb_now_ms() - t;
-
-    rb_solver_step(world, dt);
 
     t = rb_now_ms();
     finalize_step(world);

@@ -2,7 +2,9 @@
  * the `sinew` tool. Each builds its bodies in an existing world (whose
  * gravity and solver settings the caller chooses) and reports the ids a
  * caller needs to measure it. Every function validates its arguments and
- * returns an rb_status with rb_last_error() set on failure.
+ * returns an rb_status with rb_last_error() set on failure; a scene that
+ * fails half-way may leave some of its bodies in the world, which the
+ * caller then destroys.
  */
 #ifndef SCENES_SCENES_H
 #define SCENES_SCENES_H
@@ -11,12 +13,26 @@
 
 #include "rb/rb.h"
 
+/* The k-th body (0-based) of a run of bodies whose first is `first`: the
+ * stack's and the pyramid's boxes are such runs (same world and
+ * generation, consecutive slot indices). Check the result with
+ * rb_body_is_valid() when in doubt. */
+static inline rb_body_id scene_body_at(rb_body_id first, int k)
+{
+    rb_body_id id = first;
+    id.index += k;
+    return id;
+}
+
 /* Vertical stack of `count` (1 .. 1000) square boxes of half-extent 0.5 m,
  * density 1 kg/m², friction 0.6, on a static ground box of half-extents
- * (20, 1) centred at (0, -1); box i (0-based) starts at (0, 0.5 + i). */
+ * (20, 1) centred at (0, -1); box i (0-based) starts at (0, 0.5 + i).
+ * The world must have no destroyed bodies (a fresh world), so that the
+ * boxes get consecutive ids. */
 typedef struct scene_stack {
     rb_body_id ground;
     rb_body_id top;
+    rb_body_id first_box; /* box i is scene_body_at(first_box, i), i = 0 .. count - 1 */
     int count;
 } scene_stack;
 rb_status scene_stack_create(rb_world *world, int count, scene_stack *out);
@@ -25,25 +41,34 @@ rb_status scene_stack_create(rb_world *world, int count, scene_stack *out);
  * (100, 1) at (0, -1); square boxes of half-extent 0.5, density 1,
  * friction 0.6, restitution 0; row i (0-based) has base - i boxes at
  * y = (2i + 1)·0.5 and x = (i + 1)·0.5 + 2(j - i)·0.5 - 0.5·base for
- * j = i .. base - 1. base is 1 .. 1000. */
+ * j = i .. base - 1. base is 1 .. 1000. The world must have no destroyed
+ * bodies (a fresh world), so that the boxes get consecutive ids. */
 typedef struct scene_pyramid {
     rb_body_id ground;
-    rb_body_id top;
-    int box_count;
-    rb_body_id first_box; /* bodies are created in row order: first_box.index .. + box_count - 1 */
+    rb_body_id top;       /* the single box of the last row */
+    int box_count;        /* base·(base + 1)/2 */
+    rb_body_id first_box; /* created in row order: box k is scene_body_at(first_box, k), k = 0 .. box_count - 1 */
 } scene_pyramid;
 rb_status scene_pyramid_create(rb_world *world, int base, scene_pyramid *out);
 
 /* The seed's balls box (shared/spec/models.md, "balls"): a closed box
- * 2.44 m × 1.22 m of static walls with its lower-left inner corner at the
+ * 2.44 m × 1.22 m of static walls (one body, four boxes 1 m thick so that
+ * no ball can cross one in a step) with its lower-left inner corner at the
  * origin, `count` circles (1 .. SCENE_BALLS_MAX) of radius U(0.01, 0.1) m at
  * random non-overlapping positions, mass 0.16 kg × U(0.5, 1.5),
- * restitution U(0.5, 1), friction 0.2, each kicked by an impulse of
+ * restitution U(0.5, 1), friction 0.2 (walls: friction 0.2, restitution
+ * 0, so the ball's own restitution applies), each kicked by an impulse of
  * U(2, 70) N × 1/60 s at an angle U(20°, 160°) from +x. The random
- * numbers come from a 64-bit generator seeded with `seed`, so a run can be
- * repeated. The caller sets gravity (0, -9.81) and calls
+ * numbers come from a 64-bit generator seeded with `seed` (xoshiro256**,
+ * the same on every platform), so a run can be repeated. Positions are
+ * drawn by rejection sampling, at most SCENE_BALLS_PLACEMENT_TRIES per
+ * ball; a count too large to fit fails with RB_ERR_INVALID_ARGUMENT.
+ * The caller sets gravity (0, -9.81) and calls
  * scene_balls_apply_drag before every step. */
 #define SCENE_BALLS_MAX 1000
+#define SCENE_BALLS_WIDTH 2.44  /* m, inner */
+#define SCENE_BALLS_HEIGHT 1.22 /* m, inner */
+#define SCENE_BALLS_PLACEMENT_TRIES 10000
 #define SCENE_BALLS_DRAG 0.05 /* N·s/m: the seed's linear drag F = -0.05·v */
 typedef struct scene_balls {
     rb_body_id walls;
@@ -54,24 +79,29 @@ rb_status scene_balls_create(rb_world *world, int count, uint64_t seed, scene_ba
 /* Applies the seed's drag force -0.05·v to every ball. */
 rb_status scene_balls_apply_drag(rb_world *world, const scene_balls *balls);
 
-/* A static plank tilted by `angle` (rad, 0 .. 1.4) through the origin, and
- * a box of half-extent 0.25 m and density 1 resting on it, its bottom face
- * on the plank's top face at 1 m up the slope from the origin. Both
- * shapes get `friction` (>= 0), so the mixed coefficient is `friction`. */
+/* A static plank 20 m long and 0.2 m thick, tilted by `angle` (rad,
+ * 0 .. 1.4, counter-clockwise, so the slope rises towards +x) with the
+ * middle of its top face at the origin, and a box of half-extent 0.25 m
+ * and density 1 turned by the same angle, its bottom face lying on the
+ * plank's top face and centred 1 m up the slope from the origin. Both
+ * shapes get `friction` (finite, >= 0), so the mixed coefficient is
+ * `friction`: the box stays when tan(angle) <= friction and otherwise
+ * slides with acceleration g·(sin(angle) - friction·cos(angle)). */
 typedef struct scene_incline {
     rb_body_id plank;
     rb_body_id box;
-    rb_vec2 slope_direction; /* unit, down the slope */
+    rb_vec2 slope_direction; /* unit, down the slope: -(cos angle, sin angle) */
 } scene_incline;
 rb_status scene_incline_create(rb_world *world, double angle, double friction, scene_incline *out);
 
 /* A ball of radius 0.1 m and density 1 whose lowest point starts `height`
- * m (> 0) above a static ground box whose top face is y = 0; both shapes
- * have restitution `restitution` (0 .. 1) and friction 0.6. */
+ * m (> 0, <= 1000) above a static ground box of half-extents (20, 1)
+ * whose top face is y = 0; the ball's centre starts at (0, height + 0.1).
+ * Both shapes have restitution `restitution` (0 .. 1) and friction 0.6. */
 typedef struct scene_drop {
     rb_body_id ground;
     rb_body_id ball;
-    double radius;
+    double radius; /* m, 0.1 */
 } scene_drop;
 rb_status scene_drop_create(rb_world *world, double height, double restitution, scene_drop *out);
 
