@@ -168,7 +168,7 @@ void rb_body_update_mass(rb_world *world, int index)
     body->inv_mass = data.mass > 0.0 ? 1.0 / data.mass : 0.0;
     body->inertia = data.rotational_inertia;
     body->inv_inertia = data.rotational_inertia > 0.0 && !body->fixed_rotation ? 1.0 / data.rotational_inertia : 0.0;
-    if (body->inv_inertia == 0.0) {
+    if (body->fixed_rotation && body->type == RB_BODY_DYNAMIC) {
         state->angular_velocity = 0.0;
     }
 

@@ -91,6 +91,16 @@ static double contact_speculative_distance(const rb_world *world, const rb_conta
     return RB_SPECULATIVE_SLOPS * world->settings.linear_slop + dt * approach;
 }
 
+static bool manifold_touches(const rb_manifold *m)
+{
+    for (int j = 0; j < m->point_count; ++j) {
+        if (m->points[j].separation <= 0.0) {
+            return true;
+        }
+    }
+    return false;
+}
+
 /* Copies the impulses of old points onto new points with the same feature. */
 static void carry_impulses(const rb_manifold *old, rb_manifold *fresh)
 {
@@ -120,10 +130,7 @@ void rb_contacts_collide(rb_world *world, double dt)
         /* Mixing rules: geometric mean of frictions, larger restitution. */
         contact->friction = sqrt(a->friction * b->friction);
         contact->restitution = fmax(a->restitution, b->restitution);
-        contact->touching = false;
-        for (int j = 0; j < fresh.point_count; ++j) {
-            contact->touching = contact->touching || fresh.points[j].separation <= 0.0;
-        }
+        contact->touching = manifold_touches(&fresh);
 
         /* A moving body that reaches a sleeping one wakes it. */
         rb_body *body_a = &world->bodies[contact->body_a];
@@ -134,6 +141,17 @@ void rb_contacts_collide(rb_world *world, double dt)
             if (a_moves || b_moves) {
                 body_a->awake = body_b->awake = true;
             }
+        }
+    }
+}
+
+void rb_contacts_update_sensors(rb_world *world)
+{
+    for (int i = 0; i < world->contact_count; ++i) {
+        rb_contact *contact = &world->contacts[i];
+        if (contact->sensor) {
+            contact->manifold = compute_manifold(world, contact, 0.0);
+            contact->touching = manifold_touches(&contact->manifold);
         }
     }
 }

@@ -14,4 +14,8 @@ rb_status rb_contacts_update(rb_world *world);
  * sleeping body touched by a moving one. */
 void rb_contacts_collide(rb_world *world, double dt);
 
+/* Sets `touching` on every sensor contact from the bodies' poses at the
+ * end of the step, so a sensor reports what overlaps it now. */
+void rb_contacts_update_sensors(rb_world *world);
+
 #endif

@@ -159,6 +159,19 @@ static double current_separation(const rb_contact_constraint *c, const rb_constr
     return rb_dot(*normal, rb_sub(pb, pa));
 }
 
+/* The point midway between the two surface points as the bodies are now,
+ * as offsets from each centre of mass. An impulse applied at this one
+ * world point to both bodies conserves their angular momentum. */
+static void current_anchors(const rb_constraint_point *p, const rb_body_state *sa, const rb_body_state *sb, rb_vec2 *ra,
+                            rb_vec2 *rb)
+{
+    rb_vec2 pa = rb_add(sa->center, rb_rotate(sa->rotation, p->local_surface_a));
+    rb_vec2 pb = rb_add(sb->center, rb_rotate(sb->rotation, p->local_surface_b));
+    rb_vec2 midpoint = rb_lerp(pa, pb, 0.5);
+    *ra = rb_sub(midpoint, sa->center);
+    *rb = rb_sub(midpoint, sb->center);
+}
+
 /* Lower bound of the normal velocity for a substep of length h:
  * - a gap s > 0 may close, but not more: vn >= -s/h (speculative);
  * - with Baumgarte, overlap beyond the slop is pushed out at a fraction
@@ -345,12 +358,9 @@ int rb_contact_solver_correct_positions(rb_world *world)
                 if (error == 0.0) {
                     continue;
                 }
-                /* Anchors to the midpoint of the two surface points. */
-                rb_vec2 pa = rb_rotate(a->rotation, p->local_surface_a);
-                rb_vec2 pb = rb_rotate(b->rotation, p->local_surface_b);
-                rb_vec2 midpoint = rb_lerp(rb_add(a->center, pa), rb_add(b->center, pb), 0.5);
-                rb_vec2 ra = rb_sub(midpoint, a->center);
-                rb_vec2 rb = rb_sub(midpoint, b->center);
+                rb_vec2 ra;
+                rb_vec2 rb;
+                current_anchors(p, a, b, &ra, &rb);
                 double mass =
                     effective_mass(c->inv_mass_a + c->inv_mass_b, c->inv_inertia_a, c->inv_inertia_b, ra, rb, normal);
                 rb_vec2 impulse = rb_scale(-error * mass, normal);
@@ -384,13 +394,20 @@ void rb_contact_solver_apply_restitution(rb_world *world)
             if (p->relative_velocity > -threshold || p->max_normal_impulse == 0.0) {
                 continue;
             }
-            double vn = rb_dot(c->normal, relative_velocity(a, b, p->anchor_a, p->anchor_b));
+            /* The positions have moved since prepare: act at the contact
+             * point as it is now, so the impulse conserves momentum. */
+            rb_vec2 ra;
+            rb_vec2 rb;
+            current_anchors(p, a, b, &ra, &rb);
+            double mass =
+                effective_mass(c->inv_mass_a + c->inv_mass_b, c->inv_inertia_a, c->inv_inertia_b, ra, rb, c->normal);
+            double vn = rb_dot(c->normal, relative_velocity(a, b, ra, rb));
             double target = -c->restitution * p->relative_velocity;
-            double accumulated = fmax(p->normal_impulse - p->normal_mass * (vn - target), 0.0);
+            double accumulated = fmax(p->normal_impulse - mass * (vn - target), 0.0);
             double delta = accumulated - p->normal_impulse;
             p->normal_impulse = accumulated;
             p->max_normal_impulse = fmax(p->max_normal_impulse, accumulated);
-            apply_impulse(c, a, b, p->anchor_a, p->anchor_b, rb_scale(delta, c->normal));
+            apply_impulse(c, a, b, ra, rb, rb_scale(delta, c->normal));
         }
     }
 }

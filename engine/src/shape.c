@@ -37,6 +37,14 @@ static rb_status check_polygon(const rb_polygon *polygon, rb_polygon *clean)
     }
     *clean = *polygon;
     int n = polygon->count;
+    /* Shoelace formula: twice the signed area. */
+    double twice_area = 0.0;
+    for (int i = 0; i < n; ++i) {
+        twice_area += rb_cross(polygon->vertices[i], polygon->vertices[(i + 1) % n]);
+    }
+    if (fabs(twice_area) < 2.0 * RB_POLYGON_WELD_DISTANCE * RB_POLYGON_WELD_DISTANCE) {
+        return rb_report_error(RB_ERR_DEGENERATE_SHAPE, "%s: the polygon encloses no area (collinear points)", f);
+    }
     for (int i = 0; i < n; ++i) {
         rb_vec2 e1 = rb_sub(polygon->vertices[(i + 1) % n], polygon->vertices[i]);
         rb_vec2 e2 = rb_sub(polygon->vertices[(i + 2) % n], polygon->vertices[(i + 1) % n]);
@@ -128,7 +136,11 @@ rb_status rb_shape_create_circle(rb_world *world, rb_body_id body, const rb_shap
     RB_TRY(check_shape_def(def, f));
     RB_TRY(rb_check_pointer(f, "circle", circle));
     RB_TRY(rb_check_vec2(f, "circle center", circle->center));
-    RB_TRY(rb_check_range(f, "circle radius", circle->radius, RB_POLYGON_WELD_DISTANCE, DBL_MAX));
+    RB_TRY(rb_check_range(f, "circle radius", circle->radius, 0.0, DBL_MAX));
+    if (circle->radius < RB_POLYGON_WELD_DISTANCE) {
+        return rb_report_error(RB_ERR_DEGENERATE_SHAPE, "%s: circle radius is %g m, expected at least %g m", f,
+                               circle->radius, RB_POLYGON_WELD_DISTANCE);
+    }
     return create_shape(world, body, def, RB_SHAPE_CIRCLE, circle, out, f);
 }
 

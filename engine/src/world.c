@@ -262,6 +262,10 @@ rb_status rb_world_step(rb_world *world, double dt)
     }
 
     t = rb_now_ms();
+    rb_contacts_update_sensors(world);
+    profile->sensors = rb_now_ms() - t;
+
+    t = rb_now_ms();
     finalize_step(world);
     profile->finalize = rb_now_ms() - t;
 
@@ -313,16 +317,12 @@ int rb_world_contacts(const rb_world *world, rb_contact_data *out, int capacity)
     int count = world->contact_count < capacity ? world->contact_count : capacity;
     for (int i = 0; i < count; ++i) {
         const rb_contact *c = &world->contacts[i];
-        bool touching = false;
-        for (int j = 0; j < c->manifold.point_count; ++j) {
-            touching = touching || c->manifold.points[j].separation <= 0.0;
-        }
         out[i] = (rb_contact_data){
             .shape_a = rb_make_shape_id(world, c->pair.shape_a),
             .shape_b = rb_make_shape_id(world, c->pair.shape_b),
             .body_a = rb_make_body_id(world, c->body_a),
             .body_b = rb_make_body_id(world, c->body_b),
-            .touching = touching,
+            .touching = c->touching,
             .sensor = c->sensor,
             .manifold = c->manifold,
         };

@@ -55,6 +55,7 @@ typedef struct rb_profile {
     double correct_positions;
     double restitution;
     double store_impulses;
+    double sensors;  /* sensor overlaps at the final poses */
     double finalize; /* transforms, bounding boxes, clearing forces */
 } rb_profile;
 

@@ -1,0 +1,95 @@
+/* Stacking: the 10-box stack and the base-20 pyramid of the benchmarks stand
+ * for 10 s at 60 Hz with the default solver settings.
+ *
+ * Limits: "standing" is the issue's figure, the top box less than 1 cm
+ * sideways from where it started (a stack that starts to topple leaves it
+ * within a second, a fallen one by metres). No pyramid box may move more than
+ * 0.25 m, the peers' threshold (README of shared/peers), half a box. The
+ * deepest overlap after any step must stay under 3 linear slops: position
+ * correction leaves at most one slop at rest, and one step of gravity adds
+ * g·dt² = 2.7 mm before the solver pushes back; a solver that lets boxes sink
+ * goes past it within seconds.
+ */
+#include <math.h>
+
+#include "scenes/scenes.h"
+#include "test_support.h"
+
+#define STAND_STEPS 600 /* 10 s at 60 Hz */
+#define TOP_SIDEWAYS_LIMIT 0.01
+#define BOX_MOVE_LIMIT 0.25
+#define PENETRATION_SLOPS 3.0
+
+/* Steps the world for 10 s and returns the deepest penetration seen after
+ * any step. */
+static double stand(rb_world *world)
+{
+    double deepest = 0.0;
+    for (int n = 0; n < STAND_STEPS; ++n) {
+        step_world(world, TEST_DT, 1);
+        deepest = fmax(deepest, rb_world_statistics(world).max_penetration);
+    }
+    return deepest;
+}
+
+static void expect_shallow(const rb_world *world, double deepest)
+{
+    const double limit = PENETRATION_SLOPS * rb_world_solver_settings(world).linear_slop;
+    cr_expect(deepest < limit, "deepest penetration %g m, limit %g m (%g linear slops)", deepest, limit,
+              PENETRATION_SLOPS);
+}
+
+Test(stacking, ten_box_stack_stands_for_ten_seconds)
+{
+    rb_world *world = make_world(rb_default_world_def().gravity);
+    scene_stack stack;
+    cr_assert_eq(scene_stack_create(world, 10, &stack), RB_OK, "%s", rb_last_error());
+    const rb_vec2 top0 = rb_body_position(world, stack.top);
+    /* scenes.h: box i starts at (0, 0.5 + i); the top is box 9. */
+    cr_assert(top0.x == 0.0 && top0.y == 9.5, "the stack's top box starts at (%g, %g)", top0.x, top0.y);
+
+    const double deepest = stand(world);
+
+    const rb_vec2 top = rb_body_position(world, stack.top);
+    cr_expect(fabs(top.x - top0.x) < TOP_SIDEWAYS_LIMIT, "the top box moved %g m sideways (limit 1 cm)",
+              fabs(top.x - top0.x));
+    /* Still on top of nine boxes: each of the ten contacts below it may
+     * close by a slop or two, 10·2·5 mm = 0.1 m in all; a box that fell off
+     * the stack is at least 0.5 m lower. */
+    cr_expect(top.y > top0.y - 0.1, "the top box sank from %g to %g m", top0.y, top.y);
+    expect_shallow(world, deepest);
+    destroy_world_and_expect_no_leak(world);
+}
+
+Test(stacking, base_twenty_pyramid_stands_for_ten_seconds)
+{
+    rb_world *world = make_world(rb_default_world_def().gravity);
+    scene_pyramid pyramid;
+    cr_assert_eq(scene_pyramid_create(world, 20, &pyramid), RB_OK, "%s", rb_last_error());
+    cr_assert_eq(pyramid.box_count, 20 * 21 / 2, "a base-20 pyramid has 210 boxes");
+    rb_vec2 start[20 * 21 / 2];
+    for (int k = 0; k < pyramid.box_count; ++k) {
+        const rb_body_id box = scene_body_at(pyramid.first_box, k);
+        cr_assert(rb_body_is_valid(world, box), "box %d of the pyramid is not a valid body", k);
+        start[k] = rb_body_position(world, box);
+    }
+    const rb_vec2 top0 = rb_body_position(world, pyramid.top);
+    /* The single box of row 19 sits at x = 20·0.5 + 0 - 0.5·20 = 0, y = 39·0.5. */
+    expect_vec_near(top0, rb_v2(0.0, 19.5), 1e-12, "the pyramid's top box starts at (0, 19.5)");
+
+    const double deepest = stand(world);
+
+    const rb_vec2 top = rb_body_position(world, pyramid.top);
+    cr_expect(fabs(top.x - top0.x) < TOP_SIDEWAYS_LIMIT, "the top box moved %g m sideways (limit 1 cm)",
+              fabs(top.x - top0.x));
+    int moved = 0;
+    double farthest = 0.0;
+    for (int k = 0; k < pyramid.box_count; ++k) {
+        const double d = rb_distance(start[k], rb_body_position(world, scene_body_at(pyramid.first_box, k)));
+        farthest = fmax(farthest, d);
+        moved += d > BOX_MOVE_LIMIT;
+    }
+    cr_expect_eq(moved, 0, "%d boxes moved more than %g m (farthest %g m)", moved, BOX_MOVE_LIMIT, farthest);
+    expect_shallow(world, deepest);
+    destroy_world_and_expect_no_leak(world);
+}
