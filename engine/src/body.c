@@ -497,32 +497,25 @@ rb_status rb_body_reset_mass_data(rb_world *world, rb_body_id id)
     return RB_OK;
 }
 
-rb_status rb_body_set_linear_damping(rb_world *world, rb_body_id id, double damping)
-{
-    int index;
-    RB_TRY(find_for_change(world, id, "rb_body_set_linear_damping", &index));
-    RB_TRY(rb_check_range("rb_body_set_linear_damping", "damping", damping, 0.0, DBL_MAX));
-    world->bodies[index].linear_damping = damping;
-    return RB_OK;
-}
+/* A setter that checks its argument, then stores it in one body field. */
+#define BODY_FIELD_SETTER(name, type, argument, field, check)                                                          \
+    rb_status name(rb_world *world, rb_body_id id, type argument)                                                      \
+    {                                                                                                                  \
+        const char *function = #name;                                                                                  \
+        int index;                                                                                                     \
+        RB_TRY(find_for_change(world, id, function, &index));                                                          \
+        RB_TRY(check);                                                                                                 \
+        world->bodies[index].field = argument;                                                                         \
+        return RB_OK;                                                                                                  \
+    }
 
-rb_status rb_body_set_angular_damping(rb_world *world, rb_body_id id, double damping)
-{
-    int index;
-    RB_TRY(find_for_change(world, id, "rb_body_set_angular_damping", &index));
-    RB_TRY(rb_check_range("rb_body_set_angular_damping", "damping", damping, 0.0, DBL_MAX));
-    world->bodies[index].angular_damping = damping;
-    return RB_OK;
-}
-
-rb_status rb_body_set_gravity_scale(rb_world *world, rb_body_id id, double scale)
-{
-    int index;
-    RB_TRY(find_for_change(world, id, "rb_body_set_gravity_scale", &index));
-    RB_TRY(rb_check_finite("rb_body_set_gravity_scale", "scale", scale));
-    world->bodies[index].gravity_scale = scale;
-    return RB_OK;
-}
+BODY_FIELD_SETTER(rb_body_set_linear_damping, double, damping, linear_damping,
+                  rb_check_range(function, "damping", damping, 0.0, DBL_MAX))
+BODY_FIELD_SETTER(rb_body_set_angular_damping, double, damping, angular_damping,
+                  rb_check_range(function, "damping", damping, 0.0, DBL_MAX))
+BODY_FIELD_SETTER(rb_body_set_gravity_scale, double, scale, gravity_scale, rb_check_finite(function, "scale", scale))
+BODY_FIELD_SETTER(rb_body_set_bullet, bool, bullet, bullet, RB_OK)
+BODY_FIELD_SETTER(rb_body_set_user_data, void *, user_data, user_data, RB_OK)
 
 rb_status rb_body_set_fixed_rotation(rb_world *world, rb_body_id id, bool fixed)
 {
@@ -546,21 +539,5 @@ rb_status rb_body_set_awake(rb_world *world, rb_body_id id, bool awake)
         body->force = rb_v2(0.0, 0.0);
         body->torque = 0.0;
     }
-    return RB_OK;
-}
-
-rb_status rb_body_set_bullet(rb_world *world, rb_body_id id, bool bullet)
-{
-    int index;
-    RB_TRY(find_for_change(world, id, "rb_body_set_bullet", &index));
-    world->bodies[index].bullet = bullet;
-    return RB_OK;
-}
-
-rb_status rb_body_set_user_data(rb_world *world, rb_body_id id, void *user_data)
-{
-    int index;
-    RB_TRY(find_for_change(world, id, "rb_body_set_user_data", &index));
-    world->bodies[index].user_data = user_data;
     return RB_OK;
 }

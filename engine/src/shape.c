@@ -235,23 +235,24 @@ static rb_status find_shape_for_change(rb_world *world, rb_shape_id id, const ch
     return rb_world_check_unlocked(world, function);
 }
 
-rb_status rb_shape_set_friction(rb_world *world, rb_shape_id id, double friction)
-{
-    int index;
-    RB_TRY(find_shape_for_change(world, id, "rb_shape_set_friction", &index));
-    RB_TRY(rb_check_range("rb_shape_set_friction", "friction", friction, 0.0, DBL_MAX));
-    world->shapes[index].friction = friction;
-    return RB_OK;
-}
+/* A setter that checks its argument, then stores it in one shape field. */
+#define SHAPE_FIELD_SETTER(name, type, argument, field, check)                                                         \
+    rb_status name(rb_world *world, rb_shape_id id, type argument)                                                     \
+    {                                                                                                                  \
+        const char *function = #name;                                                                                  \
+        int index;                                                                                                     \
+        RB_TRY(find_shape_for_change(world, id, function, &index));                                                    \
+        RB_TRY(check);                                                                                                 \
+        world->shapes[index].field = argument;                                                                         \
+        return RB_OK;                                                                                                  \
+    }
 
-rb_status rb_shape_set_restitution(rb_world *world, rb_shape_id id, double restitution)
-{
-    int index;
-    RB_TRY(find_shape_for_change(world, id, "rb_shape_set_restitution", &index));
-    RB_TRY(rb_check_range("rb_shape_set_restitution", "restitution", restitution, 0.0, 1.0));
-    world->shapes[index].restitution = restitution;
-    return RB_OK;
-}
+SHAPE_FIELD_SETTER(rb_shape_set_friction, double, friction, friction,
+                   rb_check_range(function, "friction", friction, 0.0, DBL_MAX))
+SHAPE_FIELD_SETTER(rb_shape_set_restitution, double, restitution, restitution,
+                   rb_check_range(function, "restitution", restitution, 0.0, 1.0))
+SHAPE_FIELD_SETTER(rb_shape_set_filter, rb_filter, filter, filter, RB_OK)
+SHAPE_FIELD_SETTER(rb_shape_set_user_data, void *, user_data, user_data, RB_OK)
 
 rb_status rb_shape_set_density(rb_world *world, rb_shape_id id, double density)
 {
@@ -268,22 +269,6 @@ rb_status rb_shape_set_density(rb_world *world, rb_shape_id id, double density)
     }
     shape->density = density;
     rb_body_update_mass(world, shape->body);
-    return RB_OK;
-}
-
-rb_status rb_shape_set_filter(rb_world *world, rb_shape_id id, rb_filter filter)
-{
-    int index;
-    RB_TRY(find_shape_for_change(world, id, "rb_shape_set_filter", &index));
-    world->shapes[index].filter = filter;
-    return RB_OK;
-}
-
-rb_status rb_shape_set_user_data(rb_world *world, rb_shape_id id, void *user_data)
-{
-    int index;
-    RB_TRY(find_shape_for_change(world, id, "rb_shape_set_user_data", &index));
-    world->shapes[index].user_data = user_data;
     return RB_OK;
 }
 
