@@ -9,18 +9,18 @@
 
 #define BALLS_WALL_HALF_THICKNESS 0.5 /* m: a ball at 15 m/s moves 0.25 m per 1/60 s step */
 #define BALLS_FRICTION 0.2
-#define BALLS_MIN_RADIUS 0.01         /* m */
-#define BALLS_MAX_RADIUS 0.1          /* m */
-#define BALLS_BASE_MASS 0.16          /* kg */
+#define BALLS_MIN_RADIUS 0.01 /* m */
+#define BALLS_MAX_RADIUS 0.1  /* m */
+#define BALLS_BASE_MASS 0.16  /* kg */
 #define BALLS_MIN_MASS_FACTOR 0.5
 #define BALLS_MAX_MASS_FACTOR 1.5
 #define BALLS_MIN_RESTITUTION 0.5
 #define BALLS_MAX_RESTITUTION 1.0
-#define BALLS_MIN_FORCE 2.0           /* N */
-#define BALLS_MAX_FORCE 70.0          /* N */
+#define BALLS_MIN_FORCE 2.0              /* N */
+#define BALLS_MAX_FORCE 70.0             /* N */
 #define BALLS_KICK_DURATION (1.0 / 60.0) /* s, the seed's time step */
-#define BALLS_MIN_ANGLE 20.0          /* degrees from +x, counter-clockwise */
-#define BALLS_MAX_ANGLE 160.0         /* degrees */
+#define BALLS_MIN_ANGLE 20.0             /* degrees from +x, counter-clockwise */
+#define BALLS_MAX_ANGLE 160.0            /* degrees */
 
 /* The four walls as boxes of one static body at the origin. The floor
  * and ceiling run past the side walls by a full thickness so the

@@ -1,7 +1,6 @@
 /* A body with one box shape: the brick of the stack, the pyramid, the
  * incline and the grounds. */
 #include "box_body.h"
-
 #include "scenes/scenes.h"
 
 rb_status scene_create_box_body(rb_world *world, rb_body_type type, rb_vec2 position, double angle, double hx,
@@ -30,7 +29,4 @@ rb_status scene_create_box_body(rb_world *world, rb_body_type type, rb_vec2 posi
     return RB_OK;
 }
 
-bool scene_id_follows(rb_body_id first, int k, rb_body_id id)
-{
-    return rb_body_id_equals(scene_body_at(first, k), id);
-}
+bool scene_id_follows(rb_body_id first, int k, rb_body_id id) { return rb_body_id_equals(scene_body_at(first, k), id); }

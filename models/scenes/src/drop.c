@@ -4,8 +4,8 @@
 #include "box_body.h"
 #include "scenes/scenes.h"
 
-#define DROP_RADIUS 0.1             /* m */
-#define DROP_DENSITY 1.0            /* kg/m² */
+#define DROP_RADIUS 0.1  /* m */
+#define DROP_DENSITY 1.0 /* kg/m² */
 #define DROP_FRICTION 0.6
 #define DROP_MAX_HEIGHT 1000.0      /* m */
 #define DROP_GROUND_HALF_WIDTH 20.0 /* m */
@@ -32,9 +32,9 @@ rb_status scene_drop_create(rb_world *world, double height, double restitution, 
     material.density = DROP_DENSITY;
 
     scene_drop drop = {.radius = DROP_RADIUS};
-    rb_status status = scene_create_box_body(world, RB_BODY_STATIC, rb_v2(0.0, -DROP_GROUND_HALF_HEIGHT), 0.0,
-                                             DROP_GROUND_HALF_WIDTH, DROP_GROUND_HALF_HEIGHT, rb_v2(0.0, 0.0),
-                                             &material, &drop.ground);
+    rb_status status =
+        scene_create_box_body(world, RB_BODY_STATIC, rb_v2(0.0, -DROP_GROUND_HALF_HEIGHT), 0.0, DROP_GROUND_HALF_WIDTH,
+                              DROP_GROUND_HALF_HEIGHT, rb_v2(0.0, 0.0), &material, &drop.ground);
     if (status != RB_OK) {
         return status;
     }

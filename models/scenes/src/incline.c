@@ -6,12 +6,12 @@
 #include "box_body.h"
 #include "scenes/scenes.h"
 
-#define INCLINE_MAX_ANGLE 1.4         /* rad, about 80°: steeper is a wall */
-#define INCLINE_PLANK_HALF_LENGTH 10.0 /* m */
+#define INCLINE_MAX_ANGLE 1.4            /* rad, about 80°: steeper is a wall */
+#define INCLINE_PLANK_HALF_LENGTH 10.0   /* m */
 #define INCLINE_PLANK_HALF_THICKNESS 0.1 /* m */
-#define INCLINE_BOX_HALF_EXTENT 0.25  /* m */
-#define INCLINE_BOX_DENSITY 1.0       /* kg/m² */
-#define INCLINE_BOX_DISTANCE 1.0      /* m up the slope from the origin */
+#define INCLINE_BOX_HALF_EXTENT 0.25     /* m */
+#define INCLINE_BOX_DENSITY 1.0          /* kg/m² */
+#define INCLINE_BOX_DISTANCE 1.0         /* m up the slope from the origin */
 
 rb_status scene_incline_create(rb_world *world, double angle, double friction, scene_incline *out)
 {
@@ -39,8 +39,8 @@ rb_status scene_incline_create(rb_world *world, double angle, double friction, s
      * body frame the top face is the line y = 0, which the rotation maps
      * onto the slope line through the origin. */
     rb_status status = scene_create_box_body(world, RB_BODY_STATIC, rb_v2(0.0, 0.0), angle, INCLINE_PLANK_HALF_LENGTH,
-                                             INCLINE_PLANK_HALF_THICKNESS,
-                                             rb_v2(0.0, -INCLINE_PLANK_HALF_THICKNESS), &material, &incline.plank);
+                                             INCLINE_PLANK_HALF_THICKNESS, rb_v2(0.0, -INCLINE_PLANK_HALF_THICKNESS),
+                                             &material, &incline.plank);
     if (status != RB_OK) {
         return status;
     }

@@ -7,9 +7,9 @@
 #include "scenes/scenes.h"
 
 #define PYRAMID_MAX_BASE 1000
-#define PYRAMID_HALF_EXTENT 0.5        /* m, the peers' `a` */
+#define PYRAMID_HALF_EXTENT 0.5 /* m, the peers' `a` */
 #define PYRAMID_FRICTION 0.6
-#define PYRAMID_DENSITY 1.0            /* kg/m² */
+#define PYRAMID_DENSITY 1.0             /* kg/m² */
 #define PYRAMID_GROUND_HALF_WIDTH 100.0 /* m */
 #define PYRAMID_GROUND_HALF_HEIGHT 1.0  /* m */
 
@@ -43,8 +43,8 @@ rb_status scene_pyramid_create(rb_world *world, int base, scene_pyramid *out)
         for (int j = i; j < base; ++j) {
             const double x = (i + 1.0) * a + 2.0 * (j - i) * a - a * base;
             rb_body_id box;
-            status = scene_create_box_body(world, RB_BODY_DYNAMIC, rb_v2(x, y), 0.0, a, a, rb_v2(0.0, 0.0),
-                                           &material, &box);
+            status =
+                scene_create_box_body(world, RB_BODY_DYNAMIC, rb_v2(x, y), 0.0, a, a, rb_v2(0.0, 0.0), &material, &box);
             if (status != RB_OK) {
                 return status;
             }

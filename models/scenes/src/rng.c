@@ -12,10 +12,7 @@ static uint64_t splitmix64_next(uint64_t *x)
     return z ^ (z >> 31);
 }
 
-static uint64_t rotate_left(uint64_t x, int k)
-{
-    return (x << k) | (x >> (64 - k));
-}
+static uint64_t rotate_left(uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
 
 void scene_rng_seed(scene_rng *rng, uint64_t seed)
 {
@@ -46,7 +43,4 @@ double scene_rng_unit(scene_rng *rng)
     return (double)(scene_rng_next(rng) >> 11) * 0x1.0p-53;
 }
 
-double scene_rng_uniform(scene_rng *rng, double low, double high)
-{
-    return low + (high - low) * scene_rng_unit(rng);
-}
+double scene_rng_uniform(scene_rng *rng, double low, double high) { return low + (high - low) * scene_rng_unit(rng); }

@@ -5,9 +5,9 @@
 #include "scenes/scenes.h"
 
 #define STACK_MAX_COUNT 1000
-#define STACK_HALF_EXTENT 0.5     /* m */
+#define STACK_HALF_EXTENT 0.5 /* m */
 #define STACK_FRICTION 0.6
-#define STACK_DENSITY 1.0         /* kg/m² */
+#define STACK_DENSITY 1.0            /* kg/m² */
 #define STACK_GROUND_HALF_WIDTH 20.0 /* m */
 #define STACK_GROUND_HALF_HEIGHT 1.0 /* m */
 
