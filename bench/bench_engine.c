@@ -18,47 +18,45 @@
  * line per scene and writes a CSV (header row; written to a temporary name
  * and renamed). Exit status: 0 success, 1 failure, 2 bad command line.
  */
-#define _POSIX_C_SOURCE 200809L /* clock_gettime, getpid, unlink */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime */
 
-#include <errno.h>
 #include <math.h>
-#include <signal.h>
 #include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-#include <unistd.h>
 
+#include "cli/option_value.h"
+#include "io/atomic_file.h"
 #include "rb/rb.h"
 #include "scenes/scenes.h"
 
 enum { EXIT_USAGE = 2 };
 
-static const char usage_text[] =
-    "usage: bench_engine [options]\n"
-    "\n"
-    "Times rb_world_step on the peer benchmark scenes (shared/peers/README.md).\n"
-    "\n"
-    "  --scene NAME    pyramid20, pyramid100, balls or all (default all)\n"
-    "  --runs N        repetitions of the whole run, 1 .. 1000 (default 5)\n"
-    "  --steps N       timed steps per run, 1 .. 1000000 (default 300)\n"
-    "  --warmup N      untimed steps before them, 0 .. 1000000 (default 60)\n"
-    "  --vel N         velocity iterations, 1 .. 1000 (default: engine's)\n"
-    "  --pos N         position iterations, 0 .. 1000 (default: engine's)\n"
-    "  --substeps N    substeps per step, 1 .. 1000 (default: engine's)\n"
-    "  --csv FILE      results (default bench_engine.csv)\n"
-    "  --quick         smoke test: 1 run, 10 warm-up and 20 timed steps\n"
-    "                  (explicit --runs, --warmup, --steps still win)\n"
-    "  --help          print this text\n";
+static const char usage_text[] = "usage: bench_engine [options]\n"
+                                 "\n"
+                                 "Times rb_world_step on the peer benchmark scenes (shared/peers/README.md).\n"
+                                 "\n"
+                                 "  --scene NAME    pyramid20, pyramid100, balls or all (default all)\n"
+                                 "  --runs N        repetitions of the whole run, 1 .. 1000 (default 5)\n"
+                                 "  --steps N       timed steps per run, 1 .. 1000000 (default 300)\n"
+                                 "  --warmup N      untimed steps before them, 0 .. 1000000 (default 60)\n"
+                                 "  --vel N         velocity iterations, 1 .. 1000 (default: engine's)\n"
+                                 "  --pos N         position iterations, 0 .. 1000 (default: engine's)\n"
+                                 "  --substeps N    substeps per step, 1 .. 1000 (default: engine's)\n"
+                                 "  --csv FILE      results (default bench_engine.csv)\n"
+                                 "  --quick         smoke test: 1 run, 10 warm-up and 20 timed steps\n"
+                                 "                  (explicit --runs, --warmup, --steps still win)\n"
+                                 "  --help          print this text\n";
 
-#define BENCH_DT (1.0 / 60.0)          /* s, the peers' step */
-#define BENCH_PYRAMID_GRAVITY (-10.0)  /* m/s², the peers' */
-#define BENCH_BALLS_GRAVITY (-9.81)    /* m/s², the seed's */
+#define BENCH_DT (1.0 / 60.0)         /* s, the peers' step */
+#define BENCH_PYRAMID_GRAVITY (-10.0) /* m/s², the peers' */
+#define BENCH_BALLS_GRAVITY (-9.81)   /* m/s², the seed's */
 #define BENCH_BALLS_COUNT 50
 #define BENCH_BALLS_SEED 1
-#define BENCH_MOVED_THRESHOLD 0.25     /* m, the peers' collapse indicator */
+#define BENCH_MOVED_THRESHOLD 0.25 /* m, the peers' collapse indicator */
 
 /* ------------------------------------------------------------- options */
 
@@ -78,19 +76,6 @@ typedef struct bench_options {
     const char *csv_path;
 } bench_options;
 
-static bool parse_int(const char *option, const char *text, long min, long max, int *out)
-{
-    char *end = NULL;
-    errno = 0;
-    long value = strtol(text, &end, 10);
-    if (end == text || *end != '\0' || errno == ERANGE || value < min || value > max) {
-        fprintf(stderr, "bench_engine: %s expects an integer from %ld to %ld, got \"%s\"\n", option, min, max, text);
-        return false;
-    }
-    *out = (int)value;
-    return true;
-}
-
 typedef enum parse_result { PARSE_OK, PARSE_HELP, PARSE_ERROR } parse_result;
 
 static parse_result parse_options(int argc, char **argv, bench_options *opts)
@@ -108,7 +93,7 @@ static parse_result parse_options(int argc, char **argv, bench_options *opts)
             quick = true;
             continue;
         }
-        static const char *const with_value[] = {"--scene", "--runs", "--steps", "--warmup",
+        static const char *const with_value[] = {"--scene", "--runs", "--steps",    "--warmup",
                                                  "--vel",   "--pos",  "--substeps", "--csv"};
         bool known = false;
         for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; ++k) {
@@ -123,28 +108,27 @@ static parse_result parse_options(int argc, char **argv, bench_options *opts)
             return PARSE_ERROR;
         }
         const char *value = argv[++i];
+        char error[OPTION_ERROR_SIZE];
         bool ok = true;
         if (strcmp(option, "--scene") == 0) {
             scene = value;
         } else if (strcmp(option, "--runs") == 0) {
-            ok = parse_int(option, value, 1, 1000, &opts->runs);
+            ok = option_parse_int(option, value, 1, 1000, &opts->runs, error, sizeof error);
         } else if (strcmp(option, "--steps") == 0) {
-            ok = parse_int(option, value, 1, 1000000, &opts->steps);
+            ok = option_parse_int(option, value, 1, 1000000, &opts->steps, error, sizeof error);
         } else if (strcmp(option, "--warmup") == 0) {
-            ok = parse_int(option, value, 0, 1000000, &opts->warmup);
+            ok = option_parse_int(option, value, 0, 1000000, &opts->warmup, error, sizeof error);
         } else if (strcmp(option, "--vel") == 0) {
-            ok = parse_int(option, value, 1, 1000, &opts->velocity_iterations);
+            ok = option_parse_int(option, value, 1, 1000, &opts->velocity_iterations, error, sizeof error);
         } else if (strcmp(option, "--pos") == 0) {
-            ok = parse_int(option, value, 0, 1000, &opts->position_iterations);
+            ok = option_parse_int(option, value, 0, 1000, &opts->position_iterations, error, sizeof error);
         } else if (strcmp(option, "--substeps") == 0) {
-            ok = parse_int(option, value, 1, 1000, &opts->substeps);
-        } else if (value[0] == '\0') {
-            fprintf(stderr, "bench_engine: --csv expects a file name, got an empty one\n");
-            ok = false;
+            ok = option_parse_int(option, value, 1, 1000, &opts->substeps, error, sizeof error);
         } else {
-            opts->csv_path = value;
+            ok = option_parse_path(option, value, &opts->csv_path, error, sizeof error);
         }
         if (!ok) {
+            fprintf(stderr, "bench_engine: %s\n", error);
             return PARSE_ERROR;
         }
     }
@@ -198,16 +182,16 @@ static double median(double *values, int n)
 /* Figures of one scene over all its runs. */
 typedef struct bench_result {
     bench_scene scene;
-    int bodies;                  /* dynamic bodies */
-    int contacts;                /* at the end of the last run */
-    rb_solver_settings solver;   /* as used */
+    int bodies;                /* dynamic bodies */
+    int contacts;              /* at the end of the last run */
+    rb_solver_settings solver; /* as used */
     double median_ms, p10_ms, p90_ms;
     double top_x0, top_x, top_y0, top_y; /* m, pyramid's top box, start and end of the last run */
-    int moved_boxes;             /* pyramid: boxes moved > 0.25 m sideways in the last run */
-    double max_shift;            /* m, largest sideways shift of a box */
-    int escaped;                 /* balls outside the box at the end of the last run */
-    double allocations_per_step; /* heap allocations per timed step, worst run */
-    bool deterministic;          /* every run ended in the same state */
+    int moved_boxes;                     /* pyramid: boxes moved > 0.25 m sideways in the last run */
+    double max_shift;                    /* m, largest sideways shift of a box */
+    int escaped;                         /* balls outside the box at the end of the last run */
+    double allocations_per_step;         /* heap allocations per timed step, worst run */
+    bool deterministic;                  /* every run ended in the same state */
 } bench_result;
 
 /* The state of one scene in one run. */
@@ -299,8 +283,7 @@ static void measure_scene(bench_scene scene, const bench_world *bw, bench_result
         result->escaped = 0;
         for (int k = 0; k < bw->balls.count; ++k) {
             rb_vec2 p = rb_body_position(world, bw->balls.balls[k]);
-            result->escaped +=
-                !(p.x >= 0.0 && p.x <= SCENE_BALLS_WIDTH && p.y >= 0.0 && p.y <= SCENE_BALLS_HEIGHT);
+            result->escaped += !(p.x >= 0.0 && p.x <= SCENE_BALLS_WIDTH && p.y >= 0.0 && p.y <= SCENE_BALLS_HEIGHT);
         }
         return;
     }
@@ -382,87 +365,35 @@ static void print_result(const bench_options *opts, const bench_result *r)
     if (r->scene == BENCH_BALLS) {
         printf(" escaped=%d", r->escaped);
     } else {
-        printf(" top_y0=%.4f top_y=%.4f top_x0=%.4f top_x=%.4f lateral_gt_0.25=%d max_abs_dx=%.3f", r->top_y0,
-               r->top_y, r->top_x0, r->top_x, r->moved_boxes, r->max_shift);
+        printf(" top_y0=%.4f top_y=%.4f top_x0=%.4f top_x=%.4f lateral_gt_0.25=%d max_abs_dx=%.3f", r->top_y0, r->top_y,
+               r->top_x0, r->top_x, r->moved_boxes, r->max_shift);
     }
     printf(" contacts=%d allocations_per_step=%.3g deterministic=%s\n", r->contacts, r->allocations_per_step,
            r->deterministic ? "yes" : "no");
 }
 
-/* The CSV goes to a temporary file beside its final name, opened before
- * the runs so that a bad path fails at once, and renamed when complete.
- * An interrupted run removes it (signal handler below). */
-typedef struct csv_output {
-    FILE *file;
-    const char *path;
-    char *temp_path; /* csv_temp_path */
-} csv_output;
-
-static char csv_temp_path[4096];
-
-static void remove_temp_and_exit(int signal_number)
+/* The CSV rows of the scenes run; fields that do not apply to a scene are
+ * left empty. A failed write shows in the stream's error flag, which
+ * atomic_file_commit checks. */
+static void write_csv(FILE *file, const bench_options *opts, const bench_result *results, int count)
 {
-    unlink(csv_temp_path); /* async-signal-safe, unlike remove() */
-    _exit(128 + signal_number);
-}
-
-static bool csv_open(csv_output *csv, const char *path)
-{
-    csv->path = path;
-    csv->file = NULL;
-    csv->temp_path = csv_temp_path;
-    int length = snprintf(csv_temp_path, sizeof csv_temp_path, "%s.tmp.%ld", path, (long)getpid());
-    if (length < 0 || (size_t)length >= sizeof csv_temp_path) {
-        fprintf(stderr, "bench_engine: --csv path is too long: %s\n", path);
-        return false;
-    }
-    signal(SIGINT, remove_temp_and_exit);
-    signal(SIGTERM, remove_temp_and_exit);
-    csv->file = fopen(csv->temp_path, "w");
-    if (csv->file == NULL) {
-        fprintf(stderr, "bench_engine: cannot write --csv %s (temporary file %s): %s\n", path, csv->temp_path,
-                strerror(errno));
-        return false;
-    }
-    return true;
-}
-
-/* Drops the temporary file: the final name is never touched. */
-static void csv_abandon(csv_output *csv)
-{
-    fclose(csv->file);
-    remove(csv->temp_path);
-}
-
-static bool csv_commit(csv_output *csv, const bench_options *opts, const bench_result *results, int count)
-{
-    FILE *file = csv->file;
     fputs("scene,base,bodies,contacts,velocity_iterations,position_iterations,substeps,runs,median_ms,p10_ms,"
           "p90_ms,top_x,top_y,moved_boxes,allocations_per_step\n",
           file);
     for (int k = 0; k < count; ++k) {
         const bench_result *r = &results[k];
         const rb_solver_settings *s = &r->solver;
-        /* Fields that do not apply to a scene are left empty. */
         if (r->scene == BENCH_BALLS) {
             fprintf(file, "balls,,%d,%d,%d,%d,%d,%d,%.6g,%.6g,%.6g,,,,%.6g\n", r->bodies, r->contacts,
                     s->velocity_iterations, s->position_iterations, s->substeps, opts->runs, r->median_ms, r->p10_ms,
                     r->p90_ms, r->allocations_per_step);
         } else {
             fprintf(file, "pyramid,%d,%d,%d,%d,%d,%d,%d,%.6g,%.6g,%.6g,%.6f,%.6f,%d,%.6g\n",
-                    bench_scene_bases[r->scene], r->bodies, r->contacts, s->velocity_iterations,
-                    s->position_iterations, s->substeps, opts->runs, r->median_ms, r->p10_ms, r->p90_ms, r->top_x,
-                    r->top_y, r->moved_boxes, r->allocations_per_step);
+                    bench_scene_bases[r->scene], r->bodies, r->contacts, s->velocity_iterations, s->position_iterations,
+                    s->substeps, opts->runs, r->median_ms, r->p10_ms, r->p90_ms, r->top_x, r->top_y, r->moved_boxes,
+                    r->allocations_per_step);
         }
     }
-    bool written = !ferror(file);
-    written = (fclose(file) == 0) && written;
-    if (!written || rename(csv->temp_path, csv->path) != 0) {
-        fprintf(stderr, "bench_engine: cannot write %s: %s\n", csv->path, strerror(errno));
-        remove(csv->temp_path);
-        return false;
-    }
-    return true;
 }
 
 int main(int argc, char **argv)
@@ -477,8 +408,13 @@ int main(int argc, char **argv)
     case PARSE_OK:
         break;
     }
-    csv_output csv;
-    if (!csv_open(&csv, opts.csv_path)) {
+    /* Opened before the runs, so that a bad path fails at once; written
+     * through an atomic_file (io/atomic_file.h), so an interrupted or
+     * failed run leaves no half-written CSV. */
+    atomic_file csv;
+    char error[ATOMIC_FILE_ERROR_SIZE];
+    if (!atomic_file_open(&csv, opts.csv_path, error, sizeof error)) {
+        fprintf(stderr, "bench_engine: --csv: %s\n", error);
         return EXIT_FAILURE;
     }
     double *times = malloc((size_t)opts.steps * sizeof *times);
@@ -487,7 +423,7 @@ int main(int argc, char **argv)
         fputs("bench_engine: out of memory\n", stderr);
         free(times);
         free(run_stats);
-        csv_abandon(&csv);
+        atomic_file_abandon(&csv);
         return EXIT_FAILURE;
     }
     bench_result results[BENCH_SCENE_COUNT];
@@ -511,10 +447,12 @@ int main(int argc, char **argv)
     free(times);
     free(run_stats);
     if (!ok) {
-        csv_abandon(&csv);
+        atomic_file_abandon(&csv);
         return EXIT_FAILURE;
     }
-    if (!csv_commit(&csv, &opts, results, count)) {
+    write_csv(csv.stream, &opts, results, count);
+    if (!atomic_file_commit(&csv, error, sizeof error)) {
+        fprintf(stderr, "bench_engine: --csv: %s\n", error);
         return EXIT_FAILURE;
     }
     printf("csv=%s\n", opts.csv_path);

@@ -11,11 +11,10 @@
  * Exit status: 0 success, 1 the engine or the file system failed, 2 bad
  * command line.
  */
-#define _POSIX_C_SOURCE 200809L /* clock_gettime, getpid, unlink */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime */
 
 #include <errno.h>
 #include <math.h>
-#include <signal.h>
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -23,8 +22,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-#include <unistd.h>
 
+#include "cli/option_value.h"
+#include "io/atomic_file.h"
 #include "rb/rb.h"
 #include "scenes/scenes.h"
 
@@ -107,15 +107,14 @@ typedef struct option_spec {
     const char *name;
     value_kind kind;
     unsigned scenes;
-    double min, max;    /* accepted range, inclusive except where min_open */
-    bool min_open;      /* the value must be > min */
-    size_t offset;      /* where the value goes in `options` */
+    double min, max; /* accepted range, inclusive except where min_open */
+    bool min_open;   /* the value must be > min */
+    size_t offset;   /* where the value goes in `options` */
 } option_spec;
 
 static const option_spec option_specs[] = {
     {"--base", VALUE_INT, FOR_SCENE(SCENE_PYRAMID), 1, 1000, false, offsetof(options, base)},
-    {"--count", VALUE_INT, FOR_SCENE(SCENE_STACK) | FOR_SCENE(SCENE_BALLS), 1, 1000, false,
-     offsetof(options, count)},
+    {"--count", VALUE_INT, FOR_SCENE(SCENE_STACK) | FOR_SCENE(SCENE_BALLS), 1, 1000, false, offsetof(options, count)},
     {"--seed", VALUE_SEED, FOR_SCENE(SCENE_BALLS), 0, 0, false, offsetof(options, seed)},
     {"--angle", VALUE_DOUBLE, FOR_SCENE(SCENE_INCLINE), 0.0, 1.4, false, offsetof(options, angle)},
     {"--friction", VALUE_DOUBLE, FOR_SCENE(SCENE_INCLINE), 0.0, 100.0, false, offsetof(options, friction)},
@@ -155,55 +154,28 @@ static options default_options(void)
 static bool parse_value(const option_spec *spec, const char *text, options *opts)
 {
     char *target = (char *)opts + spec->offset;
-    char *end = NULL;
-    errno = 0;
+    char error[OPTION_ERROR_SIZE];
+    bool ok = false;
     switch (spec->kind) {
-    case VALUE_INT: {
-        long value = strtol(text, &end, 10);
-        if (end == text || *end != '\0' || errno == ERANGE || value < (long)spec->min || value > (long)spec->max) {
-            fprintf(stderr, "sinew: %s expects an integer from %ld to %ld, got \"%s\"\n", spec->name,
-                    (long)spec->min, (long)spec->max, text);
-            return false;
-        }
-        *(int *)(void *)target = (int)value;
-        return true;
-    }
-    case VALUE_DOUBLE: {
-        double value = strtod(text, &end);
-        bool above_min = spec->min_open ? value > spec->min : value >= spec->min;
-        /* isfinite rejects nan and inf, which strtod accepts. */
-        if (end == text || *end != '\0' || errno == ERANGE || !isfinite(value) || !above_min || value > spec->max) {
-            fprintf(stderr, "sinew: %s expects a number %s %g and <= %g, got \"%s\"\n", spec->name,
-                    spec->min_open ? ">" : ">=", spec->min, spec->max, text);
-            return false;
-        }
-        *(double *)(void *)target = value;
-        return true;
-    }
-    case VALUE_SEED: {
-        /* strtoull silently negates "-1"; a seed is unsigned, so refuse the sign. */
-        const char *digits = text;
-        while (*digits == ' ' || *digits == '\t') {
-            ++digits;
-        }
-        unsigned long long value = strtoull(text, &end, 10);
-        if (*digits == '-' || end == text || *end != '\0' || errno == ERANGE) {
-            fprintf(stderr, "sinew: %s expects an integer from 0 to 18446744073709551615, got \"%s\"\n", spec->name,
-                    text);
-            return false;
-        }
-        *(uint64_t *)(void *)target = (uint64_t)value;
-        return true;
-    }
+    case VALUE_INT:
+        ok = option_parse_int(spec->name, text, (long)spec->min, (long)spec->max, (int *)(void *)target, error,
+                              sizeof error);
+        break;
+    case VALUE_DOUBLE:
+        ok = option_parse_double(spec->name, text, spec->min, spec->min_open, spec->max, (double *)(void *)target,
+                                 error, sizeof error);
+        break;
+    case VALUE_SEED:
+        ok = option_parse_u64(spec->name, text, (uint64_t *)(void *)target, error, sizeof error);
+        break;
     case VALUE_PATH:
-        if (text[0] == '\0') {
-            fprintf(stderr, "sinew: %s expects a file name, got an empty one\n", spec->name);
-            return false;
-        }
-        *(const char **)(void *)target = text;
-        return true;
+        ok = option_parse_path(spec->name, text, (const char **)(void *)target, error, sizeof error);
+        break;
     }
-    return false;
+    if (!ok) {
+        fprintf(stderr, "sinew: %s\n", error);
+    }
+    return ok;
 }
 
 typedef enum parse_result { PARSE_OK, PARSE_HELP, PARSE_ERROR } parse_result;
@@ -232,7 +204,8 @@ static parse_result parse_scene_arguments(int argc, char **argv, options *opts)
         size_t name_length = equals != NULL ? (size_t)(equals - argument) : strlen(argument);
         int found = -1;
         for (int k = 0; k < OPTION_COUNT; ++k) {
-            if (strlen(option_specs[k].name) == name_length && strncmp(argument, option_specs[k].name, name_length) == 0) {
+            if (strlen(option_specs[k].name) == name_length &&
+                strncmp(argument, option_specs[k].name, name_length) == 0) {
                 found = k;
             }
         }
@@ -431,47 +404,23 @@ static int simulation_create(const options *opts, simulation *sim)
 
 /* ------------------------------------------------------- trace writer */
 
-/* The temporary file of the trace being written, removed by the signal
- * handler if the run is interrupted. */
-static char trace_temp_path[4096];
-static volatile sig_atomic_t trace_temp_exists = 0;
+/* The trace is an atomic_file (io/atomic_file.h), so an interrupted or
+ * failed run leaves no half-written trace; its stream is NULL when no
+ * trace was asked for. */
 
-static void remove_temp_and_exit(int signal_number)
+static bool trace_open(atomic_file *trace, const char *path)
 {
-    if (trace_temp_exists) {
-        unlink(trace_temp_path); /* async-signal-safe, unlike remove() */
-    }
-    _exit(128 + signal_number);
-}
-
-typedef struct trace_writer {
-    FILE *file;       /* NULL when no trace was asked for */
-    const char *path; /* final name */
-} trace_writer;
-
-static bool trace_open(trace_writer *t, const char *path)
-{
-    t->file = NULL;
-    t->path = path;
+    *trace = (atomic_file){.stream = NULL};
     if (path == NULL) {
         return true;
     }
-    int length = snprintf(trace_temp_path, sizeof trace_temp_path, "%s.tmp.%ld", path, (long)getpid());
-    if (length < 0 || (size_t)length >= sizeof trace_temp_path) {
-        fprintf(stderr, "sinew: --csv path is too long: %s\n", path);
+    char error[ATOMIC_FILE_ERROR_SIZE];
+    if (!atomic_file_open(trace, path, error, sizeof error)) {
+        fprintf(stderr, "sinew: --csv: %s\n", error);
         return false;
     }
-    signal(SIGINT, remove_temp_and_exit);
-    signal(SIGTERM, remove_temp_and_exit);
-    t->file = fopen(trace_temp_path, "w");
-    if (t->file == NULL) {
-        fprintf(stderr, "sinew: cannot write the --csv trace %s (temporary file %s): %s\n", path, trace_temp_path,
-                strerror(errno));
-        return false;
-    }
-    trace_temp_exists = 1;
-    if (fputs("time_s,body,x_m,y_m,angle_rad,vx_m_s,vy_m_s,omega_rad_s\n", t->file) == EOF) {
-        fprintf(stderr, "sinew: cannot write %s: %s\n", trace_temp_path, strerror(errno));
+    if (fputs("time_s,body,x_m,y_m,angle_rad,vx_m_s,vy_m_s,omega_rad_s\n", trace->stream) == EOF) {
+        fprintf(stderr, "sinew: cannot write %s: %s\n", trace->temp_path, strerror(errno));
         return false;
     }
     return true;
@@ -479,62 +428,38 @@ static bool trace_open(trace_writer *t, const char *path)
 
 /* One row per dynamic body; `body` is the body's place in the scene's
  * creation order. Ten significant digits resolve 1e-9 of a metre-sized
- * value, below any physical effect the trace is read for. */
-static bool trace_write_step(trace_writer *t, const simulation *sim, double time)
+ * value, below any physical effect the trace is read for. A failed write
+ * stops the run at once rather than at the commit. */
+static bool trace_write_step(atomic_file *trace, const simulation *sim, double time)
 {
-    if (t->file == NULL) {
+    if (trace->stream == NULL) {
         return true;
     }
     for (int k = 0; k < sim->body_count; ++k) {
         rb_body_id body = sim->bodies[k];
         rb_vec2 position = rb_body_position(sim->world, body);
         rb_vec2 velocity = rb_body_linear_velocity(sim->world, body);
-        if (fprintf(t->file, "%.10g,%d,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n", time, k, position.x, position.y,
+        if (fprintf(trace->stream, "%.10g,%d,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n", time, k, position.x, position.y,
                     rb_body_angle(sim->world, body), velocity.x, velocity.y,
                     rb_body_angular_velocity(sim->world, body)) < 0) {
-            fprintf(stderr, "sinew: cannot write %s: %s\n", trace_temp_path, strerror(errno));
+            fprintf(stderr, "sinew: cannot write %s: %s\n", trace->temp_path, strerror(errno));
             return false;
         }
     }
     return true;
 }
 
-/* Flushes and closes the temporary file and renames it to the final name. */
-static bool trace_commit(trace_writer *t)
+static bool trace_commit(atomic_file *trace)
 {
-    if (t->file == NULL) {
+    if (trace->stream == NULL) {
         return true;
     }
-    bool written = !ferror(t->file);
-    written = (fclose(t->file) == 0) && written;
-    t->file = NULL;
-    if (!written) {
-        fprintf(stderr, "sinew: cannot write %s: %s\n", trace_temp_path, strerror(errno));
-        remove(trace_temp_path);
-        trace_temp_exists = 0;
+    char error[ATOMIC_FILE_ERROR_SIZE];
+    if (!atomic_file_commit(trace, error, sizeof error)) {
+        fprintf(stderr, "sinew: --csv: %s\n", error);
         return false;
     }
-    if (rename(trace_temp_path, t->path) != 0) {
-        fprintf(stderr, "sinew: cannot rename %s to %s: %s\n", trace_temp_path, t->path, strerror(errno));
-        remove(trace_temp_path);
-        trace_temp_exists = 0;
-        return false;
-    }
-    trace_temp_exists = 0;
     return true;
-}
-
-/* Drops a trace that failed: the final name is never touched. */
-static void trace_abandon(trace_writer *t)
-{
-    if (t->file != NULL) {
-        fclose(t->file);
-        t->file = NULL;
-    }
-    if (trace_temp_exists) {
-        remove(trace_temp_path);
-        trace_temp_exists = 0;
-    }
 }
 
 /* ------------------------------------------------------------ run loop */
@@ -559,18 +484,18 @@ static double mechanical_energy(const simulation *sim)
         rb_vec2 velocity = rb_body_linear_velocity(sim->world, body);
         double omega = rb_body_angular_velocity(sim->world, body);
         rb_vec2 center = rb_body_world_center(sim->world, body);
-        energy += 0.5 * mass * rb_dot(velocity, velocity) + 0.5 * inertia * omega * omega -
-                  mass * rb_dot(gravity, center);
+        energy +=
+            0.5 * mass * rb_dot(velocity, velocity) + 0.5 * inertia * omega * omega - mass * rb_dot(gravity, center);
     }
     return energy;
 }
 
 typedef struct run_result {
     long steps;
-    double step_seconds;      /* s, summed time inside rb_world_step */
-    double wall_seconds;      /* s, the whole loop, trace included */
-    double max_penetration;   /* m, deepest overlap after any step */
-    double start_energy;      /* J */
+    double step_seconds;    /* s, summed time inside rb_world_step */
+    double wall_seconds;    /* s, the whole loop, trace included */
+    double max_penetration; /* m, deepest overlap after any step */
+    double start_energy;    /* J */
 } run_result;
 
 /* Steps the scene for the options' duration, writing the trace. Returns 0
@@ -579,28 +504,28 @@ static int run(const options *opts, simulation *sim, run_result *result)
 {
     const double dt = 1.0 / opts->hz;
     *result = (run_result){.steps = lround(opts->seconds * opts->hz), .start_energy = mechanical_energy(sim)};
-    trace_writer trace;
+    atomic_file trace;
     if (!trace_open(&trace, opts->csv_path)) {
-        trace_abandon(&trace);
+        atomic_file_abandon(&trace);
         return EXIT_FAILURE;
     }
     const double loop_start = now_seconds();
     for (long step = 1; step <= result->steps; ++step) {
         if (sim->kind == SCENE_BALLS && scene_balls_apply_drag(sim->world, &sim->scene.balls) != RB_OK) {
-            trace_abandon(&trace);
+            atomic_file_abandon(&trace);
             return engine_failure("applying the balls' drag");
         }
         const double step_start = now_seconds();
         rb_status status = rb_world_step(sim->world, dt);
         result->step_seconds += now_seconds() - step_start;
         if (status != RB_OK) {
-            trace_abandon(&trace);
+            atomic_file_abandon(&trace);
             return engine_failure("rb_world_step");
         }
         result->max_penetration = fmax(result->max_penetration, rb_world_statistics(sim->world).max_penetration);
         /* step·dt rather than a running sum, which would drift by rounding. */
         if (!trace_write_step(&trace, sim, (double)step * dt)) {
-            trace_abandon(&trace);
+            atomic_file_abandon(&trace);
             return EXIT_FAILURE;
         }
     }
