@@ -28,6 +28,9 @@ typedef struct rb_debug_draw {
     bool draw_contact_points;
     bool draw_contact_normals;
     bool draw_contact_impulses; /* normal impulse as a segment along the normal */
+    bool draw_joints;           /* anchors, and segments from each body's centre to its anchor */
+    bool draw_joint_reactions;  /* reaction force on body B as a segment from its anchor */
+    double force_scale;         /* m per N for reaction forces, default 0.01 */
     double impulse_scale;       /* m per N·s for impulses, default 0.1 */
     double normal_length;       /* m, default 0.1 */
     void *context;
@@ -46,6 +49,9 @@ enum {
     RB_COLOR_CONTACT_POINT = 0xff3030,
     RB_COLOR_CONTACT_NORMAL = 0x30a0ff,
     RB_COLOR_CONTACT_IMPULSE = 0xffff40,
+    RB_COLOR_JOINT = 0x80cccc,
+    RB_COLOR_JOINT_LIMIT = 0xff8040,
+    RB_COLOR_JOINT_REACTION = 0xff40ff,
 };
 
 rb_status rb_world_draw(const rb_world *world, const rb_debug_draw *draw);

@@ -23,13 +23,25 @@ typedef struct rb_shape_id {
     uint16_t generation;
 } rb_shape_id;
 
+typedef struct rb_joint_id {
+    int32_t index;
+    uint16_t world;
+    uint16_t generation;
+} rb_joint_id;
+
 static inline bool rb_body_id_is_null(rb_body_id id) { return id.generation == 0; }
 static inline bool rb_shape_id_is_null(rb_shape_id id) { return id.generation == 0; }
+static inline bool rb_joint_id_is_null(rb_joint_id id) { return id.generation == 0; }
 static inline bool rb_body_id_equals(rb_body_id a, rb_body_id b)
 {
     return a.index == b.index && a.world == b.world && a.generation == b.generation;
 }
 static inline bool rb_shape_id_equals(rb_shape_id a, rb_shape_id b)
+{
+    return a.index == b.index && a.world == b.world && a.generation == b.generation;
+}
+
+static inline bool rb_joint_id_equals(rb_joint_id a, rb_joint_id b)
 {
     return a.index == b.index && a.world == b.world && a.generation == b.generation;
 }

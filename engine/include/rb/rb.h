@@ -8,6 +8,7 @@
 #include "rb/debug_draw.h"
 #include "rb/geometry.h"
 #include "rb/id.h"
+#include "rb/joint.h"
 #include "rb/math.h"
 #include "rb/shape.h"
 #include "rb/world.h"

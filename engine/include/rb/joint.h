@@ -1,0 +1,161 @@
+/* Joints: constraints between two bodies, solved with the contacts by
+ * sequential impulses (warm started), their drift removed by the world's
+ * position-correction method.
+ *
+ * Anchors are points fixed in each body, given in the body's frame
+ * relative to its origin (m). Angles are in radians; the angle of a
+ * revolute joint is angle(B) - angle(A) - reference_angle, continuous
+ * (not wrapped). Soft constraints take a frequency (Hz) and a damping
+ * ratio (dimensionless; 1 is critical): the constraint then behaves as a
+ * spring-damper of that natural frequency and damping for the effective
+ * mass it acts on (Catto, "Soft Constraints", GDC 2011). A joint between
+ * two bodies that cannot move (static or kinematic) is allowed and does
+ * nothing.
+ */
+#ifndef RB_JOINT_H
+#define RB_JOINT_H
+
+#include <stdbool.h>
+
+#include "rb/id.h"
+#include "rb/math.h"
+#include "rb/world.h"
+
+typedef enum rb_joint_type {
+    RB_JOINT_REVOLUTE, /* a pin: the anchors coincide, the bodies turn freely about it */
+    RB_JOINT_WELD,     /* the relative pose is frozen (the seed's glue) */
+    RB_JOINT_DISTANCE, /* bar, spring or rope between the anchors */
+    RB_JOINT_MOUSE,    /* pulls a body point towards a target with a bounded force */
+} rb_joint_type;
+
+/* ---- revolute ------------------------------------------------------------ */
+
+typedef struct rb_revolute_joint_def {
+    rb_body_id body_a, body_b;
+    rb_vec2 local_anchor_a; /* m, in body A's frame */
+    rb_vec2 local_anchor_b; /* m, in body B's frame */
+    double reference_angle; /* rad: angle(B) - angle(A) at which the joint angle is 0 */
+    /* Limits on the joint angle; each side is enabled alone (the leg's
+     * ankle has only a lower limit). lower <= upper when both are on. */
+    bool enable_lower_limit, enable_upper_limit;
+    double lower_angle, upper_angle; /* rad */
+    /* Motor: drives the joint speed to motor_speed with at most
+     * max_motor_torque. */
+    bool enable_motor;
+    double motor_speed;      /* rad/s, finite */
+    double max_motor_torque; /* N·m, >= 0 */
+    /* Spring: pulls the joint angle towards 0 (the reference angle). */
+    bool enable_spring;
+    double spring_hertz;         /* Hz, >= 0 */
+    double spring_damping_ratio; /* >= 0 */
+    bool collide_connected;      /* whether the two bodies' shapes still collide (default false) */
+    void *user_data;
+} rb_revolute_joint_def;
+
+rb_revolute_joint_def rb_default_revolute_joint_def(void);
+
+/* Fills bodies, local anchors and the reference angle so that the joint
+ * pins the two bodies at `world_anchor` in their current poses. */
+rb_status rb_revolute_joint_def_at(rb_revolute_joint_def *def, const rb_world *world, rb_body_id body_a,
+                                   rb_body_id body_b, rb_vec2 world_anchor);
+
+rb_status rb_revolute_joint_create(rb_world *world, const rb_revolute_joint_def *def, rb_joint_id *out);
+
+double rb_revolute_joint_angle(const rb_world *world, rb_joint_id joint); /* rad */
+double rb_revolute_joint_speed(const rb_world *world, rb_joint_id joint); /* rad/s, ωB - ωA */
+/* The torque the motor applied in the last step (N·m). */
+double rb_revolute_joint_motor_torque(const rb_world *world, rb_joint_id joint);
+rb_status rb_revolute_joint_set_motor(rb_world *world, rb_joint_id joint, bool enable, double speed, double max_torque);
+rb_status rb_revolute_joint_set_limits(rb_world *world, rb_joint_id joint, bool enable_lower, double lower,
+                                       bool enable_upper, double upper);
+rb_status rb_revolute_joint_set_spring(rb_world *world, rb_joint_id joint, bool enable, double hertz,
+                                       double damping_ratio);
+
+/* ---- weld ---------------------------------------------------------------- */
+
+typedef struct rb_weld_joint_def {
+    rb_body_id body_a, body_b;
+    rb_vec2 local_anchor_a, local_anchor_b; /* m */
+    double reference_angle;                 /* rad, angle(B) - angle(A) held */
+    /* 0 Hz means rigid; a positive frequency makes that part soft. */
+    double linear_hertz, linear_damping_ratio;   /* Hz >= 0, >= 0 */
+    double angular_hertz, angular_damping_ratio; /* Hz >= 0, >= 0 */
+    bool collide_connected;
+    void *user_data;
+} rb_weld_joint_def;
+
+rb_weld_joint_def rb_default_weld_joint_def(void);
+
+/* Fills bodies, anchors and reference angle so that the joint freezes the
+ * two bodies' current relative pose about `world_anchor`. */
+rb_status rb_weld_joint_def_at(rb_weld_joint_def *def, const rb_world *world, rb_body_id body_a, rb_body_id body_b,
+                               rb_vec2 world_anchor);
+
+rb_status rb_weld_joint_create(rb_world *world, const rb_weld_joint_def *def, rb_joint_id *out);
+
+/* ---- distance -------------------------------------------------------------- */
+
+typedef struct rb_distance_joint_def {
+    rb_body_id body_a, body_b;
+    rb_vec2 local_anchor_a, local_anchor_b; /* m */
+    double length;                          /* m, > 0: the bar's length, or the spring's rest length */
+    /* Without the spring the joint is a rigid bar of `length`. With it the
+     * anchors are pulled towards `length` by a spring of spring_hertz (0: no
+     * pull at all, as a rope). */
+    bool enable_spring;
+    double spring_hertz;         /* Hz, >= 0 */
+    double spring_damping_ratio; /* >= 0 */
+    /* Limits keep the distance in [min_length, max_length] whatever the
+     * spring does: a rope is enable_spring with 0 Hz and a max_length. */
+    bool enable_limit;
+    double min_length, max_length; /* m, 0 <= min <= max */
+    bool collide_connected;
+    void *user_data;
+} rb_distance_joint_def;
+
+rb_distance_joint_def rb_default_distance_joint_def(void);
+
+/* Fills bodies and anchors from two world points, and sets length,
+ * min_length and max_length to their current distance. */
+rb_status rb_distance_joint_def_between(rb_distance_joint_def *def, const rb_world *world, rb_body_id body_a,
+                                        rb_body_id body_b, rb_vec2 world_anchor_a, rb_vec2 world_anchor_b);
+
+rb_status rb_distance_joint_create(rb_world *world, const rb_distance_joint_def *def, rb_joint_id *out);
+
+double rb_distance_joint_current_length(const rb_world *world, rb_joint_id joint); /* m */
+
+/* ---- mouse --------------------------------------------------------------- */
+
+typedef struct rb_mouse_joint_def {
+    rb_body_id body;      /* the dragged body (dynamic) */
+    rb_vec2 local_anchor; /* m, the dragged point in the body's frame */
+    rb_vec2 target;       /* m, world */
+    double max_force;     /* N, >= 0 */
+    double hertz;         /* Hz, > 0, default 5 */
+    double damping_ratio; /* >= 0, default 0.7 */
+    void *user_data;
+} rb_mouse_joint_def;
+
+rb_mouse_joint_def rb_default_mouse_joint_def(void);
+rb_status rb_mouse_joint_create(rb_world *world, const rb_mouse_joint_def *def, rb_joint_id *out);
+rb_status rb_mouse_joint_set_target(rb_world *world, rb_joint_id joint, rb_vec2 target);
+
+/* ---- every joint ----------------------------------------------------------- */
+
+rb_status rb_joint_destroy(rb_world *world, rb_joint_id joint);
+bool rb_joint_is_valid(const rb_world *world, rb_joint_id joint);
+rb_joint_type rb_joint_type_of(const rb_world *world, rb_joint_id joint);
+/* A mouse joint has only body B; its body A is the null id. */
+rb_body_id rb_joint_body_a(const rb_world *world, rb_joint_id joint);
+rb_body_id rb_joint_body_b(const rb_world *world, rb_joint_id joint);
+rb_vec2 rb_joint_world_anchor_a(const rb_world *world, rb_joint_id joint); /* m; the target for a mouse joint */
+rb_vec2 rb_joint_world_anchor_b(const rb_world *world, rb_joint_id joint); /* m */
+/* The force (N, world frame) and torque (N·m) the joint applied to body
+ * B during the last step: accumulated impulses divided by the step's dt.
+ * Body A received the opposite. */
+rb_vec2 rb_joint_reaction_force(const rb_world *world, rb_joint_id joint);
+double rb_joint_reaction_torque(const rb_world *world, rb_joint_id joint);
+void *rb_joint_user_data(const rb_world *world, rb_joint_id joint);
+rb_status rb_joint_set_user_data(rb_world *world, rb_joint_id joint, void *user_data);
+
+#endif
