@@ -105,4 +105,44 @@ typedef struct scene_drop {
 } scene_drop;
 rb_status scene_drop_create(rb_world *world, double height, double restitution, scene_drop *out);
 
+/* The chain of shared/peers/README.md: `links` (1 .. 1000) boxes of
+ * half-extents 0.25 × 0.05 m and density 1 kg/m² (0.05 kg), joined end to
+ * end by revolute joints, the first pinned to a static body at the origin,
+ * and a heavy box of half-extent 0.25 m and density `heavy_density`
+ * (kg/m², > 0; 20 gives 5 kg, 100× a link) jointed at the end. Shapes of
+ * the chain do not collide with each other (one negative group). Layout
+ * "hang" starts vertical below the pin, at rest; "swing" starts
+ * horizontal along +x and is released. Joint k (0-based) joins body k-1
+ * (the static pin for k = 0) to body k; the heavy box is the last body.
+ * The peers' figure, the largest gap between a joint's two anchors, is
+ * rb_world_statistics().max_joint_gap after each step. */
+typedef enum scene_chain_layout {
+    SCENE_CHAIN_HANG,
+    SCENE_CHAIN_SWING,
+} scene_chain_layout;
+#define SCENE_CHAIN_MAX_LINKS 1000
+typedef struct scene_chain {
+    rb_body_id pin;
+    rb_body_id heavy;
+    rb_joint_id joints[SCENE_CHAIN_MAX_LINKS + 1]; /* links + 1 joints, the last one holds the heavy box */
+    int joint_count;
+} scene_chain;
+rb_status scene_chain_create(rb_world *world, int links, double heavy_density, scene_chain_layout layout,
+                             scene_chain *out);
+
+/* The joint grid of shared/peers/README.md: n × n (2 .. 1000) circles of
+ * radius 0.4 m, density 1, at (k, -i) for column k and row i; each body
+ * (but the top row's) is joined to the body above it by a revolute joint
+ * whose body A is the one above (local anchors (0, -0.5) on A and
+ * (0, 0.5) on the body), and each body (but the left column's) to its left
+ * neighbour (body A the neighbour, anchors (0.5, 0) and (-0.5, 0)); the
+ * top row's bodies with |k - n/2| <= 3 are static; circles do not collide
+ * with each other. Bodies are created row by row. */
+typedef struct scene_joint_grid {
+    rb_body_id first_body; /* body (row i, column k) is scene_body_at(first_body, i·n + k) */
+    int n;
+    int joint_count;
+} scene_joint_grid;
+rb_status scene_joint_grid_create(rb_world *world, int n, scene_joint_grid *out);
+
 #endif
