@@ -75,6 +75,7 @@ rb_status rb_body_create(rb_world *world, const rb_body_def *def, rb_body_id *ou
     body->bullet = def->bullet;
     body->user_data = def->user_data;
     body->first_shape = -1;
+    body->first_joint = -1;
 
     bool moves = def->type != RB_BODY_STATIC;
     world->states[index] = (rb_body_state){
@@ -96,6 +97,7 @@ rb_status rb_body_destroy(rb_world *world, rb_body_id id)
     int index;
     RB_TRY(rb_world_find_body(world, id, "rb_body_destroy", &index));
     RB_TRY(rb_world_check_unlocked(world, "rb_body_destroy"));
+    rb_joints_remove_body(world, index);
     rb_body *body = &world->bodies[index];
     while (body->first_shape >= 0) {
         RB_TRY(rb_shape_destroy(world, rb_make_shape_id(world, body->first_shape)));

@@ -41,6 +41,9 @@ bool rb_should_collide(const rb_world *world, int shape_a, int shape_b)
     if (world->bodies[a->body].type != RB_BODY_DYNAMIC && world->bodies[b->body].type != RB_BODY_DYNAMIC) {
         return false;
     }
+    if (rb_joints_forbid_collision(world, a->body, b->body)) {
+        return false;
+    }
     if (a->filter.group_index != 0 && a->filter.group_index == b->filter.group_index) {
         return a->filter.group_index > 0;
     }

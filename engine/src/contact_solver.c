@@ -337,42 +337,35 @@ static void displace(rb_body_state *s, double inv_mass, double inv_inertia, rb_v
  * overlap beyond the slop scaled by beta and capped; the position
  * impulse -C/K along the normal moves the two bodies apart directly,
  * with K the effective mass at the anchors as they are now. */
-int rb_contact_solver_correct_positions(rb_world *world)
+bool rb_contact_solver_correct_positions(rb_world *world)
 {
     const rb_solver_settings *settings = &world->settings;
-    int iteration = 0;
-    while (iteration < settings->position_iterations) {
-        ++iteration;
-        double deepest = 0.0;
-        for (int i = 0; i < world->constraint_count; ++i) {
-            const rb_contact_constraint *c = &world->constraints[i];
-            rb_body_state *a = &world->states[c->body_a];
-            rb_body_state *b = &world->states[c->body_b];
-            for (int j = 0; j < c->point_count; ++j) {
-                const rb_constraint_point *p = &c->points[j];
-                rb_vec2 normal;
-                double s = current_separation(c, p, a, b, &normal);
-                deepest = fmin(deepest, s);
-                double error = fmin(
-                    fmax(settings->baumgarte * (s + settings->linear_slop), -settings->max_linear_correction), 0.0);
-                if (error == 0.0) {
-                    continue;
-                }
-                rb_vec2 ra;
-                rb_vec2 rb;
-                current_anchors(p, a, b, &ra, &rb);
-                double mass =
-                    effective_mass(c->inv_mass_a + c->inv_mass_b, c->inv_inertia_a, c->inv_inertia_b, ra, rb, normal);
-                rb_vec2 impulse = rb_scale(-error * mass, normal);
-                displace(a, -c->inv_mass_a, -c->inv_inertia_a, ra, impulse);
-                displace(b, c->inv_mass_b, c->inv_inertia_b, rb, impulse);
+    double deepest = 0.0;
+    for (int i = 0; i < world->constraint_count; ++i) {
+        const rb_contact_constraint *c = &world->constraints[i];
+        rb_body_state *a = &world->states[c->body_a];
+        rb_body_state *b = &world->states[c->body_b];
+        for (int j = 0; j < c->point_count; ++j) {
+            const rb_constraint_point *p = &c->points[j];
+            rb_vec2 normal;
+            double s = current_separation(c, p, a, b, &normal);
+            deepest = fmin(deepest, s);
+            double error =
+                fmin(fmax(settings->baumgarte * (s + settings->linear_slop), -settings->max_linear_correction), 0.0);
+            if (error == 0.0) {
+                continue;
             }
-        }
-        if (deepest >= -NGS_TOLERANCE_SLOPS * settings->linear_slop) {
-            break;
+            rb_vec2 ra;
+            rb_vec2 rb;
+            current_anchors(p, a, b, &ra, &rb);
+            double mass =
+                effective_mass(c->inv_mass_a + c->inv_mass_b, c->inv_inertia_a, c->inv_inertia_b, ra, rb, normal);
+            rb_vec2 impulse = rb_scale(-error * mass, normal);
+            displace(a, -c->inv_mass_a, -c->inv_inertia_a, ra, impulse);
+            displace(b, c->inv_mass_b, c->inv_inertia_b, rb, impulse);
         }
     }
-    return iteration;
+    return deepest >= -NGS_TOLERANCE_SLOPS * settings->linear_slop;
 }
 
 /* Restitution after the step (as Box2D v3 does): a point that was

@@ -41,8 +41,9 @@ int rb_contact_solver_prepare(rb_world *world);
 void rb_contact_solver_update_bounds(rb_world *world, double h, bool first_substep);
 void rb_contact_solver_warm_start(rb_world *world);
 void rb_contact_solver_solve_velocities(rb_world *world);
-/* Non-linear Gauss-Seidel; returns the number of iterations done. */
-int rb_contact_solver_correct_positions(rb_world *world);
+/* One non-linear Gauss-Seidel pass over the contacts; returns whether no
+ * point was deeper than the tolerance before it. */
+bool rb_contact_solver_correct_positions(rb_world *world);
 void rb_contact_solver_apply_restitution(rb_world *world);
 /* Writes the impulses back to the manifolds for the next step; returns
  * the deepest penetration left (m, >= 0). */

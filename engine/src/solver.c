@@ -3,10 +3,12 @@
  *   prepare contact constraints (anchors, effective masses, impulses carried over)
  *   for each substep of length h = dt / substeps:
  *       integrate velocities   v += h·(g·gravity_scale + F/m), ω += h·τ/I, then damping
+ *       prepare joints         anchors and masses at the poses now
  *       warm start             apply the accumulated impulses again
- *       solve velocities       velocity_iterations passes of sequential impulses
+ *       solve velocities       velocity_iterations passes of sequential impulses:
+ *                              joints, then contacts
  *       integrate positions    x += h·v, θ += h·ω   (semi-implicit Euler)
- *       correct positions      NGS passes, when the world uses NGS
+ *       correct positions      NGS passes over contacts and joints, when the world uses NGS
  *   apply restitution
  *   store impulses for the next step
  *
@@ -17,6 +19,7 @@
  */
 #include "contact_solver.h"
 #include "error.h"
+#include "joint_solver.h"
 #include "solver.h"
 #include "timer.h"
 
@@ -58,6 +61,23 @@ static void integrate_positions(rb_world *world, double h)
     }
 }
 
+/* Non-linear Gauss-Seidel position passes over contacts, then joints,
+ * until both are within tolerance or the iterations run out; returns the
+ * passes done. */
+static int correct_positions(rb_world *world)
+{
+    int passes = 0;
+    while (passes < world->settings.position_iterations) {
+        ++passes;
+        bool contacts_within = rb_contact_solver_correct_positions(world);
+        bool joints_within = rb_joints_correct_positions(world);
+        if (contacts_within && joints_within) {
+            break;
+        }
+    }
+    return passes;
+}
+
 rb_status rb_solver_step(rb_world *world, double dt)
 {
     rb_profile *profile = &world->profile;
@@ -74,18 +94,25 @@ rb_status rb_solver_step(rb_world *world, double dt)
     }
     profile->prepare = rb_now_ms() - t;
 
+    if (!settings->warm_starting) {
+        rb_joints_reset_impulses(world);
+    }
+
     for (int substep = 0; substep < substeps; ++substep) {
         t = rb_now_ms();
         integrate_velocities(world, h);
         profile->integrate_velocities += rb_now_ms() - t;
 
         t = rb_now_ms();
+        rb_joints_prepare(world, h);
         rb_contact_solver_update_bounds(world, h, substep == 0);
+        rb_joints_warm_start(world);
         rb_contact_solver_warm_start(world);
         profile->warm_start += rb_now_ms() - t;
 
         t = rb_now_ms();
         for (int iteration = 0; iteration < settings->velocity_iterations; ++iteration) {
+            rb_joints_solve_velocities(world, h);
             rb_contact_solver_solve_velocities(world);
         }
         velocity_iterations += settings->velocity_iterations;
@@ -97,7 +124,7 @@ rb_status rb_solver_step(rb_world *world, double dt)
 
         if (ngs) {
             t = rb_now_ms();
-            position_iterations += rb_contact_solver_correct_positions(world);
+            position_iterations += correct_positions(world);
             profile->correct_positions += rb_now_ms() - t;
         }
     }
@@ -110,6 +137,7 @@ rb_status rb_solver_step(rb_world *world, double dt)
     world->statistics.max_penetration = rb_contact_solver_store_impulses(world);
     profile->store_impulses = rb_now_ms() - t;
 
+    world->last_substep = h;
     world->statistics.velocity_iterations = velocity_iterations;
     world->statistics.position_iterations = position_iterations;
     return RB_OK;

@@ -9,6 +9,7 @@
 #include "contact.h"
 #include "contact_solver.h"
 #include "error.h"
+#include "joint_solver.h"
 #include "solver.h"
 #include "timer.h"
 #include "world_internal.h"
@@ -74,6 +75,8 @@ rb_status rb_world_create(const rb_world_def *def, rb_world **out)
     world->settings = def->solver;
     world->body_free = -1;
     world->shape_free = -1;
+    world->joint_free = -1;
+    world->last_substep = 1.0 / 60.0;
     *out = world;
     return RB_OK;
 }
@@ -91,6 +94,7 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->pairs, &world->pair_capacity, sizeof *world->pairs);
     rb_free_array((void **)&world->sweep, &world->sweep_capacity, sizeof *world->sweep);
     rb_free_array((void **)&world->constraints, &world->constraint_capacity, sizeof *world->constraints);
+    rb_free_array((void **)&world->joints, &world->joint_capacity, sizeof *world->joints);
     rb_free(world, sizeof *world);
 }
 
@@ -141,7 +145,8 @@ size_t rb_world_bytes_in_use(const rb_world *world)
            (size_t)world->contact_capacity * sizeof *world->contacts +
            (size_t)world->spare_capacity * sizeof *world->spare_contacts +
            (size_t)world->pair_capacity * sizeof *world->pairs + (size_t)world->sweep_capacity * sizeof *world->sweep +
-           (size_t)world->constraint_capacity * sizeof *world->constraints;
+           (size_t)world->constraint_capacity * sizeof *world->constraints +
+           (size_t)world->joint_capacity * sizeof *world->joints;
 }
 
 /* ---- ids ----------------------------------------------------------------- */
@@ -195,6 +200,23 @@ rb_status rb_world_find_shape(const rb_world *world, rb_shape_id id, const char 
     return RB_OK;
 }
 
+rb_status rb_world_find_joint(const rb_world *world, rb_joint_id id, const char *function, int *index)
+{
+    bool valid_index = world != NULL && id.index >= 0 && id.index < world->joint_slots;
+    const rb_joint *joint = valid_index ? &world->joints[id.index] : NULL;
+    RB_TRY(find_slot(world, id.index, id.world, id.generation, function, "joint",
+                     world != NULL ? world->joint_slots : 0, joint != NULL && joint->in_use,
+                     joint != NULL ? joint->generation : 0));
+    *index = id.index;
+    return RB_OK;
+}
+
+rb_joint_id rb_make_joint_id(const rb_world *world, int index)
+{
+    assert(index >= 0 && index < world->joint_slots && world->joints[index].in_use);
+    return (rb_joint_id){index, world->serial, world->joints[index].generation};
+}
+
 rb_body_id rb_make_body_id(const rb_world *world, int index)
 {
     assert(index >= 0 && index < world->body_slots && world->bodies[index].in_use);
@@ -228,6 +250,8 @@ static void finalize_step(rb_world *world)
         stats->contact_count += contact->manifold.point_count > 0 ? 1 : 0;
         stats->manifold_point_count += contact->manifold.point_count;
     }
+    stats->joint_count = world->joint_count;
+    rb_joints_measure_errors(world, &stats->max_joint_gap, &stats->max_joint_angle_error);
 }
 
 rb_status rb_world_step(rb_world *world, double dt)

@@ -10,6 +10,7 @@
 
 #include "rb/body.h"
 #include "rb/collision.h"
+#include "rb/joint.h"
 #include "rb/shape.h"
 #include "rb/world.h"
 
@@ -42,6 +43,7 @@ typedef struct rb_body {
     void *user_data;
     int first_shape; /* -1 when none; shapes link through rb_shape.next_in_body */
     int shape_count;
+    int first_joint; /* -1 when none; joints link through rb_joint.next_on_a / next_on_b */
 } rb_body;
 
 typedef struct rb_shape {
@@ -89,6 +91,73 @@ typedef struct rb_contact {
 
 typedef struct rb_contact_constraint rb_contact_constraint;
 
+/* The parts of a joint's solver state shared by every type, refreshed at
+ * the start of each substep. */
+typedef struct rb_joint_frame {
+    double inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b; /* 0 for a body that cannot move */
+    rb_vec2 local_a, local_b; /* m, anchors relative to each centre of mass, in the body frames */
+    rb_vec2 ra, rb;           /* m, the same turned into the world, now */
+} rb_joint_frame;
+
+typedef struct rb_revolute_data {
+    double reference_angle;
+    bool enable_lower, enable_upper;
+    double lower, upper;
+    bool enable_motor;
+    double motor_speed, max_motor_torque;
+    bool enable_spring;
+    double spring_hertz, spring_damping_ratio;
+    rb_vec2 point_impulse; /* N·s, accumulated */
+    double motor_impulse, lower_impulse, upper_impulse, spring_impulse;
+    double axial_mass; /* kg·m², 1/(1/IA + 1/IB) */
+} rb_revolute_data;
+
+typedef struct rb_weld_data {
+    double reference_angle;
+    double linear_hertz, linear_damping_ratio, angular_hertz, angular_damping_ratio;
+    rb_vec2 point_impulse;
+    double angular_impulse;
+    double axial_mass;
+} rb_weld_data;
+
+typedef struct rb_distance_data {
+    double length;
+    bool enable_spring;
+    double spring_hertz, spring_damping_ratio;
+    bool enable_limit;
+    double min_length, max_length;
+    rb_vec2 axis; /* unit, from anchor A to anchor B, this substep */
+    double current_length;
+    double axial_mass; /* kg, effective mass along the axis */
+    double impulse, lower_impulse, upper_impulse;
+} rb_distance_data;
+
+typedef struct rb_mouse_data {
+    rb_vec2 target;
+    double max_force, hertz, damping_ratio;
+    rb_vec2 impulse;
+} rb_mouse_data;
+
+typedef struct rb_joint {
+    int next_free;
+    uint16_t generation;
+    bool in_use;
+    rb_joint_type type;
+    int body_a; /* -1 for a mouse joint */
+    int body_b;
+    int next_on_a, next_on_b;               /* the next joint in body A's and body B's lists */
+    rb_vec2 local_anchor_a, local_anchor_b; /* m, from each body's origin, in its frame */
+    bool collide_connected;
+    void *user_data;
+    rb_joint_frame frame;
+    union {
+        rb_revolute_data revolute;
+        rb_weld_data weld;
+        rb_distance_data distance;
+        rb_mouse_data mouse;
+    } as;
+} rb_joint;
+
 struct rb_world {
     uint16_t serial;
     bool locked; /* inside rb_world_step */
@@ -121,6 +190,14 @@ struct rb_world {
     rb_contact_constraint *constraints;
     int constraint_count, constraint_capacity;
 
+    rb_joint *joints;
+    int joint_capacity;
+    int joint_slots;
+    int joint_free;
+    int joint_count;
+
+    double last_substep; /* s, the substep length of the last step: impulses / it = forces */
+
     rb_profile profile;
     rb_statistics statistics;
 };
@@ -131,7 +208,10 @@ rb_status rb_world_find_shape(const rb_world *world, rb_shape_id id, const char 
 /* Also fails with RB_ERR_LOCKED while the world is stepping. */
 rb_status rb_world_check_unlocked(const rb_world *world, const char *function);
 
+rb_status rb_world_find_joint(const rb_world *world, rb_joint_id id, const char *function, int *index);
+
 rb_body_id rb_make_body_id(const rb_world *world, int index);
+rb_joint_id rb_make_joint_id(const rb_world *world, int index);
 rb_shape_id rb_make_shape_id(const rb_world *world, int index);
 
 /* The body's pose as a transform of its origin. */
@@ -143,6 +223,12 @@ void rb_body_update_mass(rb_world *world, int body);
 
 /* The shape's tight world box at the body's current pose. */
 rb_aabb rb_shape_tight_aabb(const rb_world *world, int shape);
+
+/* Whether a joint joins the two bodies and forbids their collision. */
+bool rb_joints_forbid_collision(const rb_world *world, int body_a, int body_b);
+
+/* Destroys every joint attached to the body. */
+void rb_joints_remove_body(rb_world *world, int body);
 
 /* Removes every contact that involves the shape. */
 void rb_contacts_remove_shape(rb_world *world, int shape);

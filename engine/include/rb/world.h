@@ -69,6 +69,14 @@ typedef struct rb_statistics {
     int velocity_iterations; /* done in the last step, summed over substeps */
     int position_iterations; /* done in the last step, summed over substeps */
     double max_penetration;  /* m, >= 0: deepest overlap left after the step */
+    int joint_count;
+    /* m, >= 0, after the step: the largest distance between the two
+     * anchors of a pin or rigid weld, or between a distance joint's length
+     * and what its bar or limits allow. */
+    double max_joint_gap;
+    /* rad, >= 0, after the step: the largest rigid weld angle error or
+     * revolute limit violation. */
+    double max_joint_angle_error;
 } rb_statistics;
 
 rb_solver_settings rb_default_solver_settings(void);

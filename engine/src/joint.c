@@ -1,0 +1,478 @@
+/* Joints: the pool, creation and destruction, the getters every type
+ * shares, and the dispatch of the solver's phases on the joint type. */
+#include <float.h>
+#include <string.h>
+
+#include "allocator.h"
+#include "error.h"
+#include "joint_internal.h"
+#include "joint_solver.h"
+
+/* ---- creation and destruction ---------------------------------------------- */
+
+static rb_status allocate_joint_slot(rb_world *world, int *index, const char *function)
+{
+    if (world->joint_free >= 0) {
+        *index = world->joint_free;
+        world->joint_free = world->joints[*index].next_free;
+        return RB_OK;
+    }
+    if (rb_grow_array((void **)&world->joints, &world->joint_capacity, world->joint_slots + 1, sizeof *world->joints) !=
+        0) {
+        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "%s: out of memory", function);
+    }
+    *index = world->joint_slots++;
+    world->joints[*index].generation = 0;
+    return RB_OK;
+}
+
+rb_status rb_joint_check_bodies(const rb_world *world, rb_body_id a, rb_body_id b, const char *function, int *index_a,
+                                int *index_b)
+{
+    RB_TRY(rb_world_find_body(world, a, function, index_a));
+    RB_TRY(rb_world_find_body(world, b, function, index_b));
+    if (*index_a == *index_b) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: body_a and body_b are the same body (index %d)", function,
+                               *index_a);
+    }
+    return RB_OK;
+}
+
+rb_status rb_joint_create(rb_world *world, const rb_joint *prototype, rb_joint_id *out, const char *function)
+{
+    RB_TRY(rb_world_check_unlocked(world, function));
+    int index = -1;
+    RB_TRY(allocate_joint_slot(world, &index, function));
+    rb_joint *joint = &world->joints[index];
+    uint16_t generation = (uint16_t)(joint->generation + 1u);
+    *joint = *prototype;
+    joint->generation = generation != 0 ? generation : 1;
+    joint->in_use = true;
+    joint->next_on_a = -1;
+    if (joint->body_a >= 0) {
+        rb_body *a = &world->bodies[joint->body_a];
+        joint->next_on_a = a->first_joint;
+        a->first_joint = index;
+        a->awake = true;
+    }
+    rb_body *b = &world->bodies[joint->body_b];
+    joint->next_on_b = b->first_joint;
+    b->first_joint = index;
+    b->awake = true;
+    world->joint_count++;
+    *out = rb_make_joint_id(world, index);
+    return RB_OK;
+}
+
+/* The link that follows joint j in body `body`'s list. */
+static int *next_link(rb_world *world, int joint, int body)
+{
+    rb_joint *j = &world->joints[joint];
+    return j->body_a == body ? &j->next_on_a : &j->next_on_b;
+}
+
+static void unlink_from_body(rb_world *world, int joint, int body)
+{
+    int *link = &world->bodies[body].first_joint;
+    while (*link != joint) {
+        link = next_link(world, *link, body);
+    }
+    *link = *next_link(world, joint, body);
+}
+
+static void free_joint(rb_world *world, int index)
+{
+    rb_joint *joint = &world->joints[index];
+    if (joint->body_a >= 0) {
+        unlink_from_body(world, index, joint->body_a);
+        world->bodies[joint->body_a].awake = true;
+    }
+    unlink_from_body(world, index, joint->body_b);
+    world->bodies[joint->body_b].awake = true;
+    joint->in_use = false;
+    joint->next_free = world->joint_free;
+    world->joint_free = index;
+    world->joint_count--;
+}
+
+rb_status rb_joint_destroy(rb_world *world, rb_joint_id id)
+{
+    rb_clear_error();
+    int index;
+    RB_TRY(rb_world_find_joint(world, id, "rb_joint_destroy", &index));
+    RB_TRY(rb_world_check_unlocked(world, "rb_joint_destroy"));
+    free_joint(world, index);
+    return RB_OK;
+}
+
+void rb_joints_remove_body(rb_world *world, int body)
+{
+    while (world->bodies[body].first_joint >= 0) {
+        free_joint(world, world->bodies[body].first_joint);
+    }
+}
+
+bool rb_joints_forbid_collision(const rb_world *world, int body_a, int body_b)
+{
+    for (int j = world->bodies[body_a].first_joint; j >= 0;) {
+        const rb_joint *joint = &world->joints[j];
+        int other = joint->body_a == body_a ? joint->body_b : joint->body_a;
+        if (other == body_b && !joint->collide_connected) {
+            return true;
+        }
+        j = joint->body_a == body_a ? joint->next_on_a : joint->next_on_b;
+    }
+    return false;
+}
+
+bool rb_joint_is_valid(const rb_world *world, rb_joint_id id)
+{
+    return world != NULL && id.generation != 0 && id.world == world->serial && id.index >= 0 &&
+           id.index < world->joint_slots && world->joints[id.index].in_use &&
+           world->joints[id.index].generation == id.generation;
+}
+
+/* ---- getters ---------------------------------------------------------------- */
+
+rb_vec2 rb_joint_anchor_a(const rb_world *world, const rb_joint *joint)
+{
+    if (joint->body_a < 0) {
+        return joint->as.mouse.target;
+    }
+    return rb_transform_point(rb_body_origin_transform(world, joint->body_a), joint->local_anchor_a);
+}
+
+rb_vec2 rb_joint_anchor_b(const rb_world *world, const rb_joint *joint)
+{
+    return rb_transform_point(rb_body_origin_transform(world, joint->body_b), joint->local_anchor_b);
+}
+
+double rb_joint_relative_angle(const rb_world *world, const rb_joint *joint, double reference)
+{
+    double angle_a = joint->body_a >= 0 ? world->states[joint->body_a].angle : 0.0;
+    return world->states[joint->body_b].angle - angle_a - reference;
+}
+
+/* Impulses accumulated over the last substep, as forces on body B. */
+static rb_vec2 linear_impulse(const rb_joint *joint)
+{
+    switch (joint->type) {
+    case RB_JOINT_REVOLUTE:
+        return joint->as.revolute.point_impulse;
+    case RB_JOINT_WELD:
+        return joint->as.weld.point_impulse;
+    case RB_JOINT_DISTANCE: {
+        const rb_distance_data *d = &joint->as.distance;
+        return rb_scale(d->impulse + d->lower_impulse - d->upper_impulse, d->axis);
+    }
+    case RB_JOINT_MOUSE:
+        return joint->as.mouse.impulse;
+    }
+    return rb_v2(0.0, 0.0);
+}
+
+static double angular_impulse(const rb_joint *joint)
+{
+    switch (joint->type) {
+    case RB_JOINT_REVOLUTE: {
+        const rb_revolute_data *r = &joint->as.revolute;
+        return r->motor_impulse + r->spring_impulse + r->lower_impulse - r->upper_impulse;
+    }
+    case RB_JOINT_WELD:
+        return joint->as.weld.angular_impulse;
+    case RB_JOINT_DISTANCE:
+    case RB_JOINT_MOUSE:
+        break;
+    }
+    return 0.0;
+}
+
+#define JOINT_GETTER(type, name, zero, expression)                                                                     \
+    type name(const rb_world *world, rb_joint_id id)                                                                   \
+    {                                                                                                                  \
+        rb_clear_error();                                                                                              \
+        int index;                                                                                                     \
+        if (rb_world_find_joint(world, id, #name, &index) != RB_OK) {                                                  \
+            return zero;                                                                                               \
+        }                                                                                                              \
+        const rb_joint *joint = &world->joints[index];                                                                 \
+        return expression;                                                                                             \
+    }
+
+static const rb_vec2 zero_vec2 = {0.0, 0.0};
+static const rb_body_id null_body = {0, 0, 0};
+
+JOINT_GETTER(rb_joint_type, rb_joint_type_of, RB_JOINT_REVOLUTE, joint->type)
+JOINT_GETTER(rb_body_id, rb_joint_body_a, null_body,
+             joint->body_a >= 0 ? rb_make_body_id(world, joint->body_a) : null_body)
+JOINT_GETTER(rb_body_id, rb_joint_body_b, null_body, rb_make_body_id(world, joint->body_b))
+JOINT_GETTER(rb_vec2, rb_joint_world_anchor_a, zero_vec2, rb_joint_anchor_a(world, joint))
+JOINT_GETTER(rb_vec2, rb_joint_world_anchor_b, zero_vec2, rb_joint_anchor_b(world, joint))
+JOINT_GETTER(rb_vec2, rb_joint_reaction_force, zero_vec2, rb_scale(1.0 / world->last_substep, linear_impulse(joint)))
+JOINT_GETTER(double, rb_joint_reaction_torque, 0.0, angular_impulse(joint) / world->last_substep)
+JOINT_GETTER(void *, rb_joint_user_data, NULL, joint->user_data)
+
+rb_status rb_joint_find_typed(const rb_world *world, rb_joint_id id, rb_joint_type type, const char *function,
+                              int *index)
+{
+    RB_TRY(rb_world_find_joint(world, id, function, index));
+    if (world->joints[*index].type != type) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: joint %d is of another type", function, *index);
+    }
+    return RB_OK;
+}
+
+rb_status rb_joint_set_user_data(rb_world *world, rb_joint_id id, void *user_data)
+{
+    rb_clear_error();
+    int index;
+    RB_TRY(rb_world_find_joint(world, id, "rb_joint_set_user_data", &index));
+    world->joints[index].user_data = user_data;
+    return RB_OK;
+}
+
+/* ---- helpers of the joint types -------------------------------------------- */
+
+rb_softness rb_make_softness(double hertz, double zeta, double effective_mass, double h)
+{
+    if (hertz <= 0.0 || effective_mass <= 0.0) {
+        return (rb_softness){0.0, 0.0};
+    }
+    double omega = 2.0 * RB_PI * hertz;
+    double k = effective_mass * omega * omega;
+    double c = 2.0 * effective_mass * zeta * omega;
+    double gamma = 1.0 / (h * (c + h * k));
+    return (rb_softness){gamma, h * k * gamma};
+}
+
+rb_body_state *rb_joint_state_a(rb_world *world, const rb_joint *joint)
+{
+    return joint->body_a >= 0 ? &world->states[joint->body_a] : NULL;
+}
+
+rb_body_state *rb_joint_state_b(rb_world *world, const rb_joint *joint) { return &world->states[joint->body_b]; }
+
+void rb_joint_apply_linear(const rb_joint *joint, rb_body_state *a, rb_body_state *b, rb_vec2 impulse)
+{
+    const rb_joint_frame *f = &joint->frame;
+    if (a != NULL) {
+        a->linear_velocity = rb_mul_sub(a->linear_velocity, f->inv_mass_a, impulse);
+        a->angular_velocity -= f->inv_inertia_a * rb_cross(f->ra, impulse);
+    }
+    b->linear_velocity = rb_mul_add(b->linear_velocity, f->inv_mass_b, impulse);
+    b->angular_velocity += f->inv_inertia_b * rb_cross(f->rb, impulse);
+}
+
+void rb_joint_apply_angular(const rb_joint *joint, rb_body_state *a, rb_body_state *b, double impulse)
+{
+    if (a != NULL) {
+        a->angular_velocity -= joint->frame.inv_inertia_a * impulse;
+    }
+    b->angular_velocity += joint->frame.inv_inertia_b * impulse;
+}
+
+rb_vec2 rb_joint_relative_velocity(const rb_joint *joint, const rb_body_state *a, const rb_body_state *b)
+{
+    rb_vec2 vb = rb_add(b->linear_velocity, rb_cross_sv(b->angular_velocity, joint->frame.rb));
+    if (a == NULL) {
+        return vb;
+    }
+    rb_vec2 va = rb_add(a->linear_velocity, rb_cross_sv(a->angular_velocity, joint->frame.ra));
+    return rb_sub(vb, va);
+}
+
+/* ---- the phases -------------------------------------------------------------- */
+
+/* A joint is solved when one of its bodies is dynamic and awake. */
+static bool is_active(const rb_world *world, const rb_joint *joint)
+{
+    const rb_body *b = &world->bodies[joint->body_b];
+    bool b_moves = b->type == RB_BODY_DYNAMIC && b->awake;
+    if (joint->body_a < 0) {
+        return b_moves;
+    }
+    const rb_body *a = &world->bodies[joint->body_a];
+    return b_moves || (a->type == RB_BODY_DYNAMIC && a->awake);
+}
+
+static void prepare_frame(rb_world *world, rb_joint *joint)
+{
+    rb_joint_frame *f = &joint->frame;
+    const rb_body *b = &world->bodies[joint->body_b];
+    const rb_body_state *sb = &world->states[joint->body_b];
+    f->inv_mass_b = b->awake ? b->inv_mass : 0.0;
+    f->inv_inertia_b = b->awake ? b->inv_inertia : 0.0;
+    f->local_b = rb_sub(joint->local_anchor_b, b->local_center);
+    f->rb = rb_rotate(sb->rotation, f->local_b);
+    if (joint->body_a >= 0) {
+        const rb_body *a = &world->bodies[joint->body_a];
+        const rb_body_state *sa = &world->states[joint->body_a];
+        f->inv_mass_a = a->awake ? a->inv_mass : 0.0;
+        f->inv_inertia_a = a->awake ? a->inv_inertia : 0.0;
+        f->local_a = rb_sub(joint->local_anchor_a, a->local_center);
+        f->ra = rb_rotate(sa->rotation, f->local_a);
+    } else {
+        f->inv_mass_a = 0.0;
+        f->inv_inertia_a = 0.0;
+        f->local_a = rb_v2(0.0, 0.0);
+        f->ra = rb_v2(0.0, 0.0);
+    }
+}
+
+void rb_joints_prepare(rb_world *world, double h)
+{
+    for (int i = 0; i < world->joint_slots; ++i) {
+        rb_joint *joint = &world->joints[i];
+        if (!joint->in_use || !is_active(world, joint)) {
+            continue;
+        }
+        prepare_frame(world, joint);
+        switch (joint->type) {
+        case RB_JOINT_REVOLUTE:
+            rb_revolute_prepare(world, joint, h);
+            break;
+        case RB_JOINT_WELD:
+            rb_weld_prepare(world, joint, h);
+            break;
+        case RB_JOINT_DISTANCE:
+            rb_distance_prepare(world, joint, h);
+            break;
+        case RB_JOINT_MOUSE:
+            rb_mouse_prepare(world, joint, h);
+            break;
+        }
+    }
+}
+
+void rb_joints_warm_start(rb_world *world)
+{
+    for (int i = 0; i < world->joint_slots; ++i) {
+        rb_joint *joint = &world->joints[i];
+        if (!joint->in_use || !is_active(world, joint)) {
+            continue;
+        }
+        switch (joint->type) {
+        case RB_JOINT_REVOLUTE:
+            rb_revolute_warm_start(world, joint);
+            break;
+        case RB_JOINT_WELD:
+            rb_weld_warm_start(world, joint);
+            break;
+        case RB_JOINT_DISTANCE:
+            rb_distance_warm_start(world, joint);
+            break;
+        case RB_JOINT_MOUSE:
+            rb_mouse_warm_start(world, joint);
+            break;
+        }
+    }
+}
+
+void rb_joints_solve_velocities(rb_world *world, double h)
+{
+    for (int i = 0; i < world->joint_slots; ++i) {
+        rb_joint *joint = &world->joints[i];
+        if (!joint->in_use || !is_active(world, joint)) {
+            continue;
+        }
+        switch (joint->type) {
+        case RB_JOINT_REVOLUTE:
+            rb_revolute_solve(world, joint, h);
+            break;
+        case RB_JOINT_WELD:
+            rb_weld_solve(world, joint, h);
+            break;
+        case RB_JOINT_DISTANCE:
+            rb_distance_solve(world, joint, h);
+            break;
+        case RB_JOINT_MOUSE:
+            rb_mouse_solve(world, joint, h);
+            break;
+        }
+    }
+}
+
+bool rb_joints_correct_positions(rb_world *world)
+{
+    bool all_within = true;
+    for (int i = 0; i < world->joint_slots; ++i) {
+        rb_joint *joint = &world->joints[i];
+        if (!joint->in_use || !is_active(world, joint)) {
+            continue;
+        }
+        bool within = true;
+        switch (joint->type) {
+        case RB_JOINT_REVOLUTE:
+            within = rb_revolute_correct(world, joint);
+            break;
+        case RB_JOINT_WELD:
+            within = rb_weld_correct(world, joint);
+            break;
+        case RB_JOINT_DISTANCE:
+            within = rb_distance_correct(world, joint);
+            break;
+        case RB_JOINT_MOUSE:
+            break; /* soft: it has no position error to remove */
+        }
+        all_within = all_within && within;
+    }
+    return all_within;
+}
+
+void rb_joints_reset_impulses(rb_world *world)
+{
+    for (int i = 0; i < world->joint_slots; ++i) {
+        rb_joint *joint = &world->joints[i];
+        if (!joint->in_use) {
+            continue;
+        }
+        switch (joint->type) {
+        case RB_JOINT_REVOLUTE: {
+            rb_revolute_data *r = &joint->as.revolute;
+            r->point_impulse = rb_v2(0.0, 0.0);
+            r->motor_impulse = r->lower_impulse = r->upper_impulse = r->spring_impulse = 0.0;
+            break;
+        }
+        case RB_JOINT_WELD:
+            joint->as.weld.point_impulse = rb_v2(0.0, 0.0);
+            joint->as.weld.angular_impulse = 0.0;
+            break;
+        case RB_JOINT_DISTANCE:
+            joint->as.distance.impulse = joint->as.distance.lower_impulse = joint->as.distance.upper_impulse = 0.0;
+            break;
+        case RB_JOINT_MOUSE:
+            joint->as.mouse.impulse = rb_v2(0.0, 0.0);
+            break;
+        }
+    }
+}
+
+void rb_joints_measure_errors(const rb_world *world, double *max_gap, double *max_angle)
+{
+    *max_gap = 0.0;
+    *max_angle = 0.0;
+    for (int i = 0; i < world->joint_slots; ++i) {
+        const rb_joint *joint = &world->joints[i];
+        if (!joint->in_use) {
+            continue;
+        }
+        switch (joint->type) {
+        case RB_JOINT_REVOLUTE:
+            *max_gap = fmax(*max_gap, rb_distance(rb_joint_anchor_a(world, joint), rb_joint_anchor_b(world, joint)));
+            *max_angle = fmax(*max_angle, rb_revolute_angle_error(world, joint));
+            break;
+        case RB_JOINT_WELD:
+            if (joint->as.weld.linear_hertz == 0.0) {
+                *max_gap =
+                    fmax(*max_gap, rb_distance(rb_joint_anchor_a(world, joint), rb_joint_anchor_b(world, joint)));
+            }
+            *max_angle = fmax(*max_angle, rb_weld_angle_error(world, joint));
+            break;
+        case RB_JOINT_DISTANCE:
+            *max_gap = fmax(*max_gap, rb_distance_error(world, joint));
+            break;
+        case RB_JOINT_MOUSE:
+            break; /* soft by design: its offset is not an error */
+        }
+    }
+}

@@ -1,0 +1,330 @@
+/* Revolute joint: a pin (the point constraint) plus, about the pin, an
+ * optional spring, motor and lower and upper limits on the joint angle
+ * θ = angle(B) - angle(A) - reference. Every angular part acts on the
+ * relative angular velocity ωB - ωA with the axial mass 1/(1/IA + 1/IB).
+ *
+ * Each substep solves, in order: spring, motor (its accumulated impulse
+ * clamped to ±max_torque·h), lower limit, upper limit, then the pin: the
+ * parts that may give way first, the rigid pin last (Catto, Box2D 2.x). A
+ * limit that is not yet reached is speculative: the joint may approach
+ * it at |C|/h, enough to arrive at the limit in this substep and no
+ * further, so a fast swing stops at the limit instead of passing it. */
+#include <float.h>
+
+#include "error.h"
+#include "joint_internal.h"
+#include "joint_solver.h"
+
+rb_revolute_joint_def rb_default_revolute_joint_def(void)
+{
+    return (rb_revolute_joint_def){.spring_damping_ratio = 0.0};
+}
+
+rb_status rb_revolute_joint_def_at(rb_revolute_joint_def *def, const rb_world *world, rb_body_id body_a,
+                                   rb_body_id body_b, rb_vec2 world_anchor)
+{
+    const char *f = "rb_revolute_joint_def_at";
+    rb_clear_error();
+    RB_TRY(rb_check_pointer(f, "def", def));
+    RB_TRY(rb_check_vec2(f, "world_anchor", world_anchor));
+    int a;
+    int b;
+    RB_TRY(rb_joint_check_bodies(world, body_a, body_b, f, &a, &b));
+    def->body_a = body_a;
+    def->body_b = body_b;
+    def->local_anchor_a = rb_inv_transform_point(rb_body_origin_transform(world, a), world_anchor);
+    def->local_anchor_b = rb_inv_transform_point(rb_body_origin_transform(world, b), world_anchor);
+    def->reference_angle = world->states[b].angle - world->states[a].angle;
+    return RB_OK;
+}
+
+static rb_status check_limits(const char *f, bool enable_lower, double lower, bool enable_upper, double upper)
+{
+    RB_TRY(rb_check_finite(f, "lower_angle", lower));
+    RB_TRY(rb_check_finite(f, "upper_angle", upper));
+    if (enable_lower && enable_upper && lower > upper) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: lower_angle %g rad is above upper_angle %g rad", f, lower,
+                               upper);
+    }
+    return RB_OK;
+}
+
+static rb_status check_motor(const char *f, double speed, double max_torque)
+{
+    RB_TRY(rb_check_finite(f, "motor_speed", speed));
+    return rb_check_range(f, "max_motor_torque", max_torque, 0.0, DBL_MAX);
+}
+
+static rb_status check_spring(const char *f, double hertz, double damping_ratio)
+{
+    RB_TRY(rb_check_range(f, "spring_hertz", hertz, 0.0, DBL_MAX));
+    return rb_check_range(f, "spring_damping_ratio", damping_ratio, 0.0, DBL_MAX);
+}
+
+rb_status rb_revolute_joint_create(rb_world *world, const rb_revolute_joint_def *def, rb_joint_id *out)
+{
+    const char *f = "rb_revolute_joint_create";
+    rb_clear_error();
+    RB_TRY(rb_check_pointer(f, "out", out));
+    *out = (rb_joint_id){0};
+    RB_TRY(rb_check_pointer(f, "def", def));
+    int a;
+    int b;
+    RB_TRY(rb_joint_check_bodies(world, def->body_a, def->body_b, f, &a, &b));
+    RB_TRY(rb_check_vec2(f, "local_anchor_a", def->local_anchor_a));
+    RB_TRY(rb_check_vec2(f, "local_anchor_b", def->local_anchor_b));
+    RB_TRY(rb_check_finite(f, "reference_angle", def->reference_angle));
+    RB_TRY(check_limits(f, def->enable_lower_limit, def->lower_angle, def->enable_upper_limit, def->upper_angle));
+    RB_TRY(check_motor(f, def->motor_speed, def->max_motor_torque));
+    RB_TRY(check_spring(f, def->spring_hertz, def->spring_damping_ratio));
+    rb_joint joint = {
+        .type = RB_JOINT_REVOLUTE,
+        .body_a = a,
+        .body_b = b,
+        .local_anchor_a = def->local_anchor_a,
+        .local_anchor_b = def->local_anchor_b,
+        .collide_connected = def->collide_connected,
+        .user_data = def->user_data,
+        .as.revolute =
+            {
+                .reference_angle = def->reference_angle,
+                .enable_lower = def->enable_lower_limit,
+                .enable_upper = def->enable_upper_limit,
+                .lower = def->lower_angle,
+                .upper = def->upper_angle,
+                .enable_motor = def->enable_motor,
+                .motor_speed = def->motor_speed,
+                .max_motor_torque = def->max_motor_torque,
+                .enable_spring = def->enable_spring,
+                .spring_hertz = def->spring_hertz,
+                .spring_damping_ratio = def->spring_damping_ratio,
+            },
+    };
+    return rb_joint_create(world, &joint, out, f);
+}
+
+/* ---- getters and setters ----------------------------------------------------- */
+
+static const rb_revolute_data *find_revolute(const rb_world *world, rb_joint_id id, const char *f, int *index)
+{
+    rb_clear_error();
+    if (rb_joint_find_typed(world, id, RB_JOINT_REVOLUTE, f, index) != RB_OK) {
+        return NULL;
+    }
+    return &world->joints[*index].as.revolute;
+}
+
+double rb_revolute_joint_angle(const rb_world *world, rb_joint_id id)
+{
+    int index;
+    const rb_revolute_data *r = find_revolute(world, id, "rb_revolute_joint_angle", &index);
+    return r != NULL ? rb_joint_relative_angle(world, &world->joints[index], r->reference_angle) : 0.0;
+}
+
+double rb_revolute_joint_speed(const rb_world *world, rb_joint_id id)
+{
+    int index;
+    if (find_revolute(world, id, "rb_revolute_joint_speed", &index) == NULL) {
+        return 0.0;
+    }
+    const rb_joint *joint = &world->joints[index];
+    return world->states[joint->body_b].angular_velocity - world->states[joint->body_a].angular_velocity;
+}
+
+double rb_revolute_joint_motor_torque(const rb_world *world, rb_joint_id id)
+{
+    int index;
+    const rb_revolute_data *r = find_revolute(world, id, "rb_revolute_joint_motor_torque", &index);
+    return r != NULL ? r->motor_impulse / world->last_substep : 0.0;
+}
+
+static rb_revolute_data *find_for_change(rb_world *world, rb_joint_id id, const char *f, rb_status *status)
+{
+    int index;
+    rb_clear_error();
+    *status = rb_joint_find_typed(world, id, RB_JOINT_REVOLUTE, f, &index);
+    if (*status == RB_OK) {
+        *status = rb_world_check_unlocked(world, f);
+    }
+    if (*status != RB_OK) {
+        return NULL;
+    }
+    rb_joint *joint = &world->joints[index];
+    world->bodies[joint->body_a].awake = true;
+    world->bodies[joint->body_b].awake = true;
+    return &joint->as.revolute;
+}
+
+rb_status rb_revolute_joint_set_motor(rb_world *world, rb_joint_id id, bool enable, double speed, double max_torque)
+{
+    const char *f = "rb_revolute_joint_set_motor";
+    rb_status status;
+    rb_revolute_data *r = find_for_change(world, id, f, &status);
+    RB_TRY(status);
+    RB_TRY(check_motor(f, speed, max_torque));
+    r->enable_motor = enable;
+    r->motor_speed = speed;
+    r->max_motor_torque = max_torque;
+    return RB_OK;
+}
+
+rb_status rb_revolute_joint_set_limits(rb_world *world, rb_joint_id id, bool enable_lower, double lower,
+                                       bool enable_upper, double upper)
+{
+    const char *f = "rb_revolute_joint_set_limits";
+    rb_status status;
+    rb_revolute_data *r = find_for_change(world, id, f, &status);
+    RB_TRY(status);
+    RB_TRY(check_limits(f, enable_lower, lower, enable_upper, upper));
+    r->enable_lower = enable_lower;
+    r->enable_upper = enable_upper;
+    r->lower = lower;
+    r->upper = upper;
+    return RB_OK;
+}
+
+rb_status rb_revolute_joint_set_spring(rb_world *world, rb_joint_id id, bool enable, double hertz, double damping_ratio)
+{
+    const char *f = "rb_revolute_joint_set_spring";
+    rb_status status;
+    rb_revolute_data *r = find_for_change(world, id, f, &status);
+    RB_TRY(status);
+    RB_TRY(check_spring(f, hertz, damping_ratio));
+    r->enable_spring = enable;
+    r->spring_hertz = hertz;
+    r->spring_damping_ratio = damping_ratio;
+    return RB_OK;
+}
+
+/* ---- solver ---------------------------------------------------------------------- */
+
+void rb_revolute_prepare(rb_world *world, rb_joint *joint, double h)
+{
+    (void)world;
+    (void)h;
+    double inverse_axial = joint->frame.inv_inertia_a + joint->frame.inv_inertia_b;
+    rb_revolute_data *r = &joint->as.revolute;
+    r->axial_mass = inverse_axial > 0.0 ? 1.0 / inverse_axial : 0.0;
+    if (!r->enable_motor) {
+        r->motor_impulse = 0.0;
+    }
+    if (!r->enable_spring) {
+        r->spring_impulse = 0.0;
+    }
+    if (!r->enable_lower) {
+        r->lower_impulse = 0.0;
+    }
+    if (!r->enable_upper) {
+        r->upper_impulse = 0.0;
+    }
+}
+
+void rb_revolute_warm_start(rb_world *world, rb_joint *joint)
+{
+    rb_body_state *a = rb_joint_state_a(world, joint);
+    rb_body_state *b = rb_joint_state_b(world, joint);
+    const rb_revolute_data *r = &joint->as.revolute;
+    rb_joint_apply_linear(joint, a, b, r->point_impulse);
+    rb_joint_apply_angular(joint, a, b, r->motor_impulse + r->spring_impulse + r->lower_impulse - r->upper_impulse);
+}
+
+/* Velocity bias of a one-sided limit whose margin is c (>= 0 while met):
+ * speculative while open, Baumgarte push when violated and the world uses
+ * Baumgarte, none otherwise (NGS removes the violation). */
+static double limit_bias(const rb_world *world, double c, double h)
+{
+    if (c > 0.0) {
+        return c / h;
+    }
+    if (world->settings.position_correction == RB_CORRECTION_BAUMGARTE) {
+        return world->settings.baumgarte * c / h;
+    }
+    return 0.0;
+}
+
+void rb_revolute_solve(rb_world *world, rb_joint *joint, double h)
+{
+    rb_body_state *a = rb_joint_state_a(world, joint);
+    rb_body_state *b = rb_joint_state_b(world, joint);
+    rb_revolute_data *r = &joint->as.revolute;
+    if (r->axial_mass > 0.0) {
+        double angle = rb_joint_relative_angle(world, joint, r->reference_angle);
+        if (r->enable_spring && r->spring_hertz > 0.0) {
+            rb_softness soft = rb_make_softness(r->spring_hertz, r->spring_damping_ratio, r->axial_mass, h);
+            double cdot = b->angular_velocity - a->angular_velocity;
+            double impulse =
+                -(cdot + soft.bias_rate * angle + soft.gamma * r->spring_impulse) / (1.0 / r->axial_mass + soft.gamma);
+            r->spring_impulse += impulse;
+            rb_joint_apply_angular(joint, a, b, impulse);
+        }
+        if (r->enable_motor) {
+            double cdot = b->angular_velocity - a->angular_velocity - r->motor_speed;
+            double limit = r->max_motor_torque * h;
+            double accumulated = fmin(fmax(r->motor_impulse - r->axial_mass * cdot, -limit), limit);
+            double impulse = accumulated - r->motor_impulse;
+            r->motor_impulse = accumulated;
+            rb_joint_apply_angular(joint, a, b, impulse);
+        }
+        if (r->enable_lower) {
+            double c = angle - r->lower;
+            double cdot = b->angular_velocity - a->angular_velocity;
+            double accumulated = fmax(r->lower_impulse - r->axial_mass * (cdot + limit_bias(world, c, h)), 0.0);
+            double impulse = accumulated - r->lower_impulse;
+            r->lower_impulse = accumulated;
+            rb_joint_apply_angular(joint, a, b, impulse);
+        }
+        if (r->enable_upper) {
+            double c = r->upper - angle;
+            double cdot = a->angular_velocity - b->angular_velocity;
+            double accumulated = fmax(r->upper_impulse - r->axial_mass * (cdot + limit_bias(world, c, h)), 0.0);
+            double impulse = accumulated - r->upper_impulse;
+            r->upper_impulse = accumulated;
+            rb_joint_apply_angular(joint, a, b, -impulse);
+        }
+    }
+    rb_point_constraint_solve(world, joint, &r->point_impulse, h);
+}
+
+/* How far the joint angle lies beyond an enabled limit (rad, >= 0). */
+double rb_revolute_angle_error(const rb_world *world, const rb_joint *joint)
+{
+    const rb_revolute_data *r = &joint->as.revolute;
+    double angle = rb_joint_relative_angle(world, joint, r->reference_angle);
+    double error = 0.0;
+    if (r->enable_lower) {
+        error = fmax(error, r->lower - angle);
+    }
+    if (r->enable_upper) {
+        error = fmax(error, angle - r->upper);
+    }
+    return error;
+}
+
+bool rb_revolute_correct(rb_world *world, rb_joint *joint)
+{
+    rb_revolute_data *r = &joint->as.revolute;
+    double angle_error = 0.0;
+    if (r->axial_mass > 0.0 && (r->enable_lower || r->enable_upper)) {
+        double angle = rb_joint_relative_angle(world, joint, r->reference_angle);
+        /* Negative below the lower limit, positive above the upper one. */
+        double c = 0.0;
+        if (r->enable_lower && angle < r->lower) {
+            c = angle - r->lower;
+        } else if (r->enable_upper && angle > r->upper) {
+            c = angle - r->upper;
+        }
+        angle_error = fabs(c);
+        c = fmin(fmax(c, -RB_MAX_ANGULAR_CORRECTION), RB_MAX_ANGULAR_CORRECTION);
+        if (c != 0.0) {
+            double impulse = -r->axial_mass * c;
+            rb_body_state *a = rb_joint_state_a(world, joint);
+            rb_body_state *b = rb_joint_state_b(world, joint);
+            a->angle -= joint->frame.inv_inertia_a * impulse;
+            a->rotation = rb_rot_from_angle(a->angle);
+            b->angle += joint->frame.inv_inertia_b * impulse;
+            b->rotation = rb_rot_from_angle(b->angle);
+        }
+    }
+    double gap = rb_point_constraint_correct(world, joint);
+    return gap <= world->settings.linear_slop && angle_error <= RB_ANGULAR_SLOP;
+}
