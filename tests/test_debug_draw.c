@@ -245,7 +245,7 @@ Test(debug_draw, contact_normals_drawn_when_enabled)
 }
 
 /* At rest the normal impulses of a body's contact points add up to its
- * weight times the step, m·g·dt; each is drawn impulse_scale m per N·s
+ * weight times the substep, m·g·h; each is drawn impulse_scale m per N·s
  * long. 1 % as in test_contacts.c (resting contact). */
 Test(debug_draw, contact_impulses_drawn_when_enabled)
 {
@@ -267,11 +267,13 @@ Test(debug_draw, contact_impulses_drawn_when_enabled)
         cr_expect_eq(r.segments[i].color, RB_COLOR_CONTACT_IMPULSE, "segment %d has colour %06x", i,
                      r.segments[i].color);
     }
+    /* The impulses drawn are the last substep's, of length h. */
     const double g = rb_length(rb_world_gravity(s.world));
-    const double box_expected = 2.0 * 1.0 * g * TEST_DT;
-    const double ball_expected = 2.0 * (RB_PI * BALL_RADIUS * BALL_RADIUS) * g * TEST_DT;
-    expect_near(box_length, box_expected, 0.01 * box_expected, "box impulse segments: scale·m·g·dt");
-    expect_near(ball_length, ball_expected, 0.01 * ball_expected, "ball impulse segment: scale·m·g·dt");
+    const double h = substep_of(s.world, TEST_DT);
+    const double box_expected = 2.0 * 1.0 * g * h;
+    const double ball_expected = 2.0 * (RB_PI * BALL_RADIUS * BALL_RADIUS) * g * h;
+    expect_near(box_length, box_expected, 0.01 * box_expected, "box impulse segments: scale·m·g·h");
+    expect_near(ball_length, ball_expected, 0.01 * ball_expected, "ball impulse segment: scale·m·g·h");
     destroy_world_and_expect_no_leak(s.world);
 }
 

@@ -58,11 +58,14 @@ Test(forces, force_at_the_centre_accelerates_without_turning)
 
     step_world(world, TEST_DT, 1);
 
-    /* One semi-implicit Euler step from rest: v = h·F/m, then x = x0 + h·v. */
-    const double h = TEST_DT;
-    const rb_vec2 v = rb_v2(h * force.x / BOX_MASS, h * force.y / BOX_MASS);
+    /* One semi-implicit Euler step from rest: v = dt·F/m, and the position
+     * moves by ½·(F/m)·dt·(dt + h) over the substeps of length h. */
+    const double h = substep_of(world, TEST_DT);
+    const rb_vec2 v = rb_v2(TEST_DT * force.x / BOX_MASS, TEST_DT * force.y / BOX_MASS);
     expect_vec_near(rb_body_linear_velocity(world, body), v, REL * rb_length(v), "velocity after one step");
-    expect_vec_near(rb_body_position(world, body), rb_v2(p0.x + h * v.x, p0.y + h * v.y), REL, "position");
+    const rb_vec2 moved = rb_v2(step_displacement(force.x / BOX_MASS, TEST_DT, h),
+                                step_displacement(force.y / BOX_MASS, TEST_DT, h));
+    expect_vec_near(rb_body_position(world, body), rb_add(p0, moved), REL, "position");
     cr_expect_eq(rb_body_angular_velocity(world, body), 0.0, "a force at the centre must not turn the body");
     expect_near(rb_body_angle(world, body), angle0, REL, "angle");
     destroy_world_and_expect_no_leak(world);
@@ -84,12 +87,13 @@ Test(forces, force_at_an_offset_also_gives_a_torque)
 
     step_world(world, TEST_DT, 1);
 
-    const double h = TEST_DT;
-    const rb_vec2 v = rb_v2(h * force.x / BOX_MASS, h * force.y / BOX_MASS);
-    const double omega = h * torque / BOX_INERTIA;
-    expect_vec_near(rb_body_linear_velocity(world, body), v, REL * rb_length(v), "Δv = h·F/m");
-    expect_near(rb_body_angular_velocity(world, body), omega, REL * omega, "Δω = h·(r × F)/I");
-    expect_near(rb_body_angle(world, body), angle0 + h * omega, REL, "angle = angle0 + h·ω");
+    const double h = substep_of(world, TEST_DT);
+    const rb_vec2 v = rb_v2(TEST_DT * force.x / BOX_MASS, TEST_DT * force.y / BOX_MASS);
+    const double omega = TEST_DT * torque / BOX_INERTIA;
+    expect_vec_near(rb_body_linear_velocity(world, body), v, REL * rb_length(v), "Δv = dt·F/m");
+    expect_near(rb_body_angular_velocity(world, body), omega, REL * omega, "Δω = dt·(r × F)/I");
+    expect_near(rb_body_angle(world, body), angle0 + step_displacement(torque / BOX_INERTIA, TEST_DT, h), REL,
+                "angle = angle0 + ½·α·dt·(dt + h)");
     /* The step consumed the force: none is left for the next one. */
     cr_expect(rb_body_force(world, body).x == 0.0 && rb_body_force(world, body).y == 0.0,
               "the force must be cleared by the step");
@@ -117,9 +121,8 @@ Test(forces, forces_and_torques_add_up_and_last_one_step)
     expect_near(rb_body_torque(world, body), torque, REL, "sum of the torques");
 
     step_world(world, TEST_DT, 1);
-    const double h = TEST_DT;
-    const rb_vec2 v = rb_v2(h * force.x / BOX_MASS, h * force.y / BOX_MASS);
-    const double omega = h * torque / BOX_INERTIA;
+    const rb_vec2 v = rb_v2(TEST_DT * force.x / BOX_MASS, TEST_DT * force.y / BOX_MASS);
+    const double omega = TEST_DT * torque / BOX_INERTIA;
     expect_vec_near(rb_body_linear_velocity(world, body), v, REL * rb_length(v), "velocity after the forced step");
     expect_near(rb_body_angular_velocity(world, body), omega, REL * omega, "ω after the forced step");
 

@@ -40,12 +40,14 @@ static void read_the_one_contact(rb_world *world, rb_contact_data *contact)
 
 static void one_velocity_iteration_with_block(rb_solver_settings *s)
 {
+    s->substeps = 1;
     s->velocity_iterations = 1;
     s->block_solver = true;
 }
 
 static void one_velocity_iteration_without_block(rb_solver_settings *s)
 {
+    s->substeps = 1;
     s->velocity_iterations = 1;
     s->block_solver = false;
 }

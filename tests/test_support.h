@@ -52,6 +52,19 @@ static inline rb_world *make_world(rb_vec2 gravity)
     return world;
 }
 
+/* The length (s) of one substep of a step of dt in this world: the h of
+ * semi-implicit Euler's closed forms, and the time over which a reported
+ * contact or joint impulse acted. */
+static inline double substep_of(const rb_world *world, double dt)
+{
+    return dt / rb_world_solver_settings(world).substeps;
+}
+
+/* How far semi-implicit Euler moves in one step of dt, split into
+ * substeps of h, under a constant acceleration a and from rest: substep k
+ * moves h·(k·h·a), which sums to ½·a·dt·(dt + h). */
+static inline double step_displacement(double a, double dt, double h) { return 0.5 * a * dt * (dt + h); }
+
 /* Replaces the world's number of substeps, keeping its other settings. */
 static inline void set_substeps(rb_world *world, int substeps)
 {
@@ -105,6 +118,19 @@ static inline rb_shape_id add_box(rb_world *world, rb_body_id body, double hx, d
     cr_assert_eq(rb_shape_create_polygon(world, body, &def, &box, &shape), RB_OK, "rb_shape_create_polygon: %s",
                  rb_last_error());
     return shape;
+}
+
+/* A revolute joint with the default settings pinning `a` and `b` together
+ * at the world point `anchor` in their current poses. */
+static inline rb_joint_id make_pin(rb_world *world, rb_body_id a, rb_body_id b, rb_vec2 anchor)
+{
+    rb_revolute_joint_def def = rb_default_revolute_joint_def();
+    cr_assert_eq(rb_revolute_joint_def_at(&def, world, a, b, anchor), RB_OK, "rb_revolute_joint_def_at: %s",
+                 rb_last_error());
+    rb_joint_id joint;
+    cr_assert_eq(rb_revolute_joint_create(world, &def, &joint), RB_OK, "rb_revolute_joint_create: %s",
+                 rb_last_error());
+    return joint;
 }
 
 #endif

@@ -88,7 +88,6 @@ int rb_contact_solver_prepare(rb_world *world)
         return -1;
     }
     bool warm = world->settings.warm_starting;
-    bool block = world->settings.block_solver;
     int n = 0;
     for (int i = 0; i < world->contact_count; ++i) {
         const rb_contact *contact = &world->contacts[i];
@@ -110,63 +109,95 @@ int rb_contact_solver_prepare(rb_world *world)
         c->inv_mass_b = body_b->awake ? body_b->inv_mass : 0.0;
         c->inv_inertia_b = body_b->awake ? body_b->inv_inertia : 0.0;
         c->normal = contact->manifold.normal;
-        c->local_normal = rb_inv_rotate(sa->rotation, c->normal);
+        const rb_shape *shape_a = &world->shapes[contact->pair.shape_a];
+        const rb_shape *shape_b = &world->shapes[contact->pair.shape_b];
+        bool circle_a = shape_a->type == RB_SHAPE_CIRCLE;
+        bool circle_b = shape_b->type == RB_SHAPE_CIRCLE;
+        c->radius_a = circle_a ? shape_a->geometry.circle.radius : 0.0;
+        c->radius_b = circle_b ? shape_b->geometry.circle.radius : 0.0;
+        /* Which face the normal belongs to: a polygon's against a circle;
+         * between polygons, the reference face (the flip bit of the id). */
+        bool reference_on_b = circle_a || (!circle_b && (contact->manifold.points[0].id >> 24) != 0);
+        if (circle_a && circle_b) {
+            c->normal_follows = RB_NORMAL_FROM_CENTERS;
+            c->local_normal = c->normal;
+        } else if (reference_on_b) {
+            c->normal_follows = RB_NORMAL_TURNS_WITH_B;
+            c->local_normal = rb_inv_rotate(sb->rotation, c->normal);
+        } else {
+            c->normal_follows = RB_NORMAL_TURNS_WITH_A;
+            c->local_normal = rb_inv_rotate(sa->rotation, c->normal);
+        }
         c->friction = contact->friction;
         c->restitution = contact->restitution;
         c->point_count = contact->manifold.point_count;
-        rb_vec2 tangent = tangent_of(c->normal);
-        double inv_mass_sum = c->inv_mass_a + c->inv_mass_b;
         for (int j = 0; j < c->point_count; ++j) {
             const rb_manifold_point *mp = &contact->manifold.points[j];
             rb_constraint_point *p = &c->points[j];
-            p->anchor_a = rb_sub(mp->point, sa->center);
-            p->anchor_b = rb_sub(mp->point, sb->center);
             /* The two surface points, half the separation either side of
-             * the manifold point, each carried by its own body. */
-            rb_vec2 surface_a = rb_mul_sub(mp->point, 0.5 * mp->separation, c->normal);
-            rb_vec2 surface_b = rb_mul_add(mp->point, 0.5 * mp->separation, c->normal);
+             * the manifold point; a circle side keeps its centre instead. */
+            rb_vec2 surface_a = rb_mul_sub(mp->point, 0.5 * mp->separation + c->radius_a, c->normal);
+            rb_vec2 surface_b = rb_mul_add(mp->point, 0.5 * mp->separation + c->radius_b, c->normal);
             p->local_surface_a = rb_inv_rotate(sa->rotation, rb_sub(surface_a, sa->center));
             p->local_surface_b = rb_inv_rotate(sb->rotation, rb_sub(surface_b, sb->center));
-            p->normal_mass =
-                effective_mass(inv_mass_sum, c->inv_inertia_a, c->inv_inertia_b, p->anchor_a, p->anchor_b, c->normal);
-            p->tangent_mass =
-                effective_mass(inv_mass_sum, c->inv_inertia_a, c->inv_inertia_b, p->anchor_a, p->anchor_b, tangent);
             p->normal_impulse = warm ? mp->normal_impulse : 0.0;
             p->tangent_impulse = warm ? mp->tangent_impulse : 0.0;
             p->max_normal_impulse = 0.0;
             p->min_normal_velocity = 0.0;
         }
         c->use_block = false;
-        if (block && c->point_count == 2) {
-            prepare_block(c);
-        }
     }
     world->constraint_count = n;
     return n;
 }
 
-/* The separation of a point with the bodies where they are now: each
- * surface point moves with its body and the normal turns with body A,
- * as the reference face of a resting contact does (Catto, Box2D 2.x
- * position solver). Exact at prepare time; first-order accurate within
- * the step. */
+/* The contact as the bodies are now: the normal, turned with the body
+ * whose face it is (or along the two centres for circles), and the two
+ * surface points, each carried by its body (a polygon's material point,
+ * or the point of a circle facing the other body). Exact at prepare time,
+ * first-order accurate within the step (Catto, Box2D 2.x position
+ * solver). */
+static void current_geometry(const rb_contact_constraint *c, const rb_constraint_point *p, const rb_body_state *sa,
+                             const rb_body_state *sb, rb_vec2 *normal, rb_vec2 *pa, rb_vec2 *pb)
+{
+    rb_vec2 qa = rb_add(sa->center, rb_rotate(sa->rotation, p->local_surface_a));
+    rb_vec2 qb = rb_add(sb->center, rb_rotate(sb->rotation, p->local_surface_b));
+    switch (c->normal_follows) {
+    case RB_NORMAL_FROM_CENTERS: {
+        rb_vec2 line = rb_sub(qb, qa);
+        *normal = rb_length_squared(line) > 0.0 ? rb_normalize(line) : c->normal;
+        break;
+    }
+    case RB_NORMAL_TURNS_WITH_A:
+        *normal = rb_rotate(sa->rotation, c->local_normal);
+        break;
+    case RB_NORMAL_TURNS_WITH_B:
+        *normal = rb_rotate(sb->rotation, c->local_normal);
+        break;
+    }
+    *pa = rb_mul_add(qa, c->radius_a, *normal);
+    *pb = rb_mul_sub(qb, c->radius_b, *normal);
+}
+
 static double current_separation(const rb_contact_constraint *c, const rb_constraint_point *p, const rb_body_state *sa,
                                  const rb_body_state *sb, rb_vec2 *normal)
 {
-    rb_vec2 pa = rb_add(sa->center, rb_rotate(sa->rotation, p->local_surface_a));
-    rb_vec2 pb = rb_add(sb->center, rb_rotate(sb->rotation, p->local_surface_b));
-    *normal = rb_rotate(sa->rotation, c->local_normal);
+    rb_vec2 pa;
+    rb_vec2 pb;
+    current_geometry(c, p, sa, sb, normal, &pa, &pb);
     return rb_dot(*normal, rb_sub(pb, pa));
 }
 
-/* The point midway between the two surface points as the bodies are now,
- * as offsets from each centre of mass. An impulse applied at this one
- * world point to both bodies conserves their angular momentum. */
-static void current_anchors(const rb_constraint_point *p, const rb_body_state *sa, const rb_body_state *sb, rb_vec2 *ra,
-                            rb_vec2 *rb)
+/* The normal now, and the point midway between the two surface points as
+ * offsets from each centre of mass. An impulse along that normal applied
+ * at this one world point to both bodies conserves their momentum and
+ * angular momentum. */
+static void current_anchors(const rb_contact_constraint *c, const rb_constraint_point *p, const rb_body_state *sa,
+                            const rb_body_state *sb, rb_vec2 *normal, rb_vec2 *ra, rb_vec2 *rb)
 {
-    rb_vec2 pa = rb_add(sa->center, rb_rotate(sa->rotation, p->local_surface_a));
-    rb_vec2 pb = rb_add(sb->center, rb_rotate(sb->rotation, p->local_surface_b));
+    rb_vec2 pa;
+    rb_vec2 pb;
+    current_geometry(c, p, sa, sb, normal, &pa, &pb);
     rb_vec2 midpoint = rb_lerp(pa, pb, 0.5);
     *ra = rb_sub(midpoint, sa->center);
     *rb = rb_sub(midpoint, sb->center);
@@ -177,7 +208,7 @@ static void current_anchors(const rb_constraint_point *p, const rb_body_state *s
  * - with Baumgarte, overlap beyond the slop is pushed out at a fraction
  *   beta of it per substep: vn >= beta·(-s - slop)/h, capped;
  * - with NGS, the velocity solve only stops approach: vn >= 0. */
-void rb_contact_solver_update_bounds(rb_world *world, double h, bool first_substep)
+void rb_contact_solver_prepare_substep(rb_world *world, double h, bool first_substep)
 {
     const rb_solver_settings *settings = &world->settings;
     bool baumgarte = settings->position_correction == RB_CORRECTION_BAUMGARTE;
@@ -186,13 +217,22 @@ void rb_contact_solver_update_bounds(rb_world *world, double h, bool first_subst
         rb_contact_constraint *c = &world->constraints[i];
         const rb_body_state *sa = &world->states[c->body_a];
         const rb_body_state *sb = &world->states[c->body_b];
+        double inv_mass_sum = c->inv_mass_a + c->inv_mass_b;
         for (int j = 0; j < c->point_count; ++j) {
             rb_constraint_point *p = &c->points[j];
+            /* The bodies have moved since prepare (in earlier substeps):
+             * act at the contact point and along the normal as they are
+             * now, so each impulse conserves momentum. */
+            double s = current_separation(c, p, sa, sb, &c->normal);
+            current_anchors(c, p, sa, sb, &c->normal, &p->anchor_a, &p->anchor_b);
+            p->normal_mass =
+                effective_mass(inv_mass_sum, c->inv_inertia_a, c->inv_inertia_b, p->anchor_a, p->anchor_b, c->normal);
+            p->tangent_mass = effective_mass(inv_mass_sum, c->inv_inertia_a, c->inv_inertia_b, p->anchor_a, p->anchor_b,
+                                             tangent_of(c->normal));
             if (first_substep) {
-                p->relative_velocity = rb_dot(c->normal, relative_velocity(sa, sb, p->anchor_a, p->anchor_b));
+                p->approach_velocity = relative_velocity(sa, sb, p->anchor_a, p->anchor_b);
+                p->relative_velocity = rb_dot(c->normal, p->approach_velocity);
             }
-            rb_vec2 normal;
-            double s = current_separation(c, p, sa, sb, &normal);
             if (s > 0.0) {
                 p->min_normal_velocity = -s * inv_h;
             } else if (baumgarte) {
@@ -202,6 +242,9 @@ void rb_contact_solver_update_bounds(rb_world *world, double h, bool first_subst
             } else {
                 p->min_normal_velocity = 0.0;
             }
+        }
+        if (settings->block_solver && c->point_count == 2) {
+            prepare_block(c);
         }
     }
 }
@@ -357,7 +400,7 @@ bool rb_contact_solver_correct_positions(rb_world *world)
             }
             rb_vec2 ra;
             rb_vec2 rb;
-            current_anchors(p, a, b, &ra, &rb);
+            current_anchors(c, p, a, b, &normal, &ra, &rb);
             double mass =
                 effective_mass(c->inv_mass_a + c->inv_mass_b, c->inv_inertia_a, c->inv_inertia_b, ra, rb, normal);
             rb_vec2 impulse = rb_scale(-error * mass, normal);
@@ -389,18 +432,21 @@ void rb_contact_solver_apply_restitution(rb_world *world)
             }
             /* The positions have moved since prepare: act at the contact
              * point as it is now, so the impulse conserves momentum. */
+            rb_vec2 normal;
             rb_vec2 ra;
             rb_vec2 rb;
-            current_anchors(p, a, b, &ra, &rb);
+            current_anchors(c, p, a, b, &normal, &ra, &rb);
             double mass =
-                effective_mass(c->inv_mass_a + c->inv_mass_b, c->inv_inertia_a, c->inv_inertia_b, ra, rb, c->normal);
-            double vn = rb_dot(c->normal, relative_velocity(a, b, ra, rb));
-            double target = -c->restitution * p->relative_velocity;
+                effective_mass(c->inv_mass_a + c->inv_mass_b, c->inv_inertia_a, c->inv_inertia_b, ra, rb, normal);
+            double vn = rb_dot(normal, relative_velocity(a, b, ra, rb));
+            /* Newton's law of restitution about the normal the impulse acts
+             * along: the approach speed is measured along it too. */
+            double target = -c->restitution * rb_dot(normal, p->approach_velocity);
             double accumulated = fmax(p->normal_impulse - mass * (vn - target), 0.0);
             double delta = accumulated - p->normal_impulse;
             p->normal_impulse = accumulated;
             p->max_normal_impulse = fmax(p->max_normal_impulse, accumulated);
-            apply_impulse(c, a, b, ra, rb, rb_scale(delta, c->normal));
+            apply_impulse(c, a, b, ra, rb, rb_scale(delta, normal));
         }
     }
 }

@@ -7,13 +7,17 @@
 #include "world_internal.h"
 
 typedef struct rb_constraint_point {
-    rb_vec2 anchor_a, anchor_b;             /* m, from each centre of mass to the point, at prepare time */
-    rb_vec2 local_surface_a;                /* m, the point on A's surface, in A's frame */
-    rb_vec2 local_surface_b;                /* m, the point on B's surface, in B's frame */
+    rb_vec2 anchor_a, anchor_b; /* m, from each centre of mass to the point, this substep */
+    /* m, in each body's frame from its centre of mass: the material point
+     * on a polygon's surface, or the centre of a circle (whose surface
+     * point is wherever the normal meets it). */
+    rb_vec2 local_surface_a;
+    rb_vec2 local_surface_b;
     double normal_mass, tangent_mass;       /* kg, effective masses along the normal and the tangent */
     double normal_impulse, tangent_impulse; /* N·s, accumulated */
     double max_normal_impulse;              /* N·s, largest accumulated normal impulse of the step */
     double relative_velocity;   /* m/s, normal velocity after the first velocity integration (< 0 approaching) */
+    rb_vec2 approach_velocity;  /* m/s, the whole relative velocity of the point then */
     double min_normal_velocity; /* m/s, the velocity solve's lower bound for this substep */
 } rb_constraint_point;
 
@@ -21,8 +25,12 @@ struct rb_contact_constraint {
     int contact;        /* index in world->contacts */
     int body_a, body_b; /* indices in world->states */
     double inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
-    rb_vec2 normal;       /* unit, world, from A to B, at prepare time */
-    rb_vec2 local_normal; /* the same in A's frame: the normal turns with A */
+    rb_vec2 normal; /* unit, world, from A to B, this substep */
+    /* What the normal follows as the bodies move: the line between two
+     * circles' centres, or the reference face of a polygon, on A or B. */
+    enum { RB_NORMAL_FROM_CENTERS, RB_NORMAL_TURNS_WITH_A, RB_NORMAL_TURNS_WITH_B } normal_follows;
+    rb_vec2 local_normal;      /* the normal in the frame of the body it turns with */
+    double radius_a, radius_b; /* m, of a circle side; 0 for a polygon side */
     double friction, restitution;
     int point_count;
     rb_constraint_point points[RB_MAX_MANIFOLD_POINTS];
@@ -32,13 +40,15 @@ struct rb_contact_constraint {
 };
 
 /* Builds one constraint per touching, non-sensor contact that has a
- * dynamic body; carries the impulses of the last step if warm starting. */
+ * dynamic body, fixing each point's surface points in the bodies' frames;
+ * carries the impulses of the last step if warm starting. */
 int rb_contact_solver_prepare(rb_world *world);
-/* Separations at the start of a substep of length h, and from them the
- * lower bound of each point's normal velocity. On the first substep it
+/* At the start of a substep of length h: the anchors, normal and
+ * effective masses at the poses now, the separations, and from them each
+ * point's lower bound on its normal velocity. On the first substep it
  * also records each point's normal velocity, with this step's gravity
  * and forces already in it, as the impact speed for restitution. */
-void rb_contact_solver_update_bounds(rb_world *world, double h, bool first_substep);
+void rb_contact_solver_prepare_substep(rb_world *world, double h, bool first_substep);
 void rb_contact_solver_warm_start(rb_world *world);
 void rb_contact_solver_solve_velocities(rb_world *world);
 /* One non-linear Gauss-Seidel pass over the contacts; returns whether no

@@ -1,9 +1,10 @@
 /* The solver's step, as a script of named phases:
  *
- *   prepare contact constraints (anchors, effective masses, impulses carried over)
+ *   prepare contact constraints (surface points, impulses carried over)
  *   for each substep of length h = dt / substeps:
  *       integrate velocities   v += h·(g·gravity_scale + F/m), ω += h·τ/I, then damping
- *       prepare joints         anchors and masses at the poses now
+ *       prepare substep        contacts and joints: anchors, normals and masses
+ *                              at the poses now
  *       warm start             apply the accumulated impulses again
  *       solve velocities       velocity_iterations passes of sequential impulses:
  *                              joints, then contacts
@@ -105,7 +106,7 @@ rb_status rb_solver_step(rb_world *world, double dt)
 
         t = rb_now_ms();
         rb_joints_prepare(world, h);
-        rb_contact_solver_update_bounds(world, h, substep == 0);
+        rb_contact_solver_prepare_substep(world, h, substep == 0);
         rb_joints_warm_start(world);
         rb_contact_solver_warm_start(world);
         profile->warm_start += rb_now_ms() - t;

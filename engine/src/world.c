@@ -21,9 +21,9 @@ static atomic_uint next_world_serial = 1;
 rb_solver_settings rb_default_solver_settings(void)
 {
     return (rb_solver_settings){
-        .velocity_iterations = 8,
-        .position_iterations = 3,
-        .substeps = 1,
+        .velocity_iterations = 2,
+        .position_iterations = 1,
+        .substeps = 4,
         .warm_starting = true,
         .block_solver = true,
         .position_correction = RB_CORRECTION_NGS,
