@@ -63,8 +63,8 @@ Test(forces, force_at_the_centre_accelerates_without_turning)
     const double h = substep_of(world, TEST_DT);
     const rb_vec2 v = rb_v2(TEST_DT * force.x / BOX_MASS, TEST_DT * force.y / BOX_MASS);
     expect_vec_near(rb_body_linear_velocity(world, body), v, REL * rb_length(v), "velocity after one step");
-    const rb_vec2 moved = rb_v2(step_displacement(force.x / BOX_MASS, TEST_DT, h),
-                                step_displacement(force.y / BOX_MASS, TEST_DT, h));
+    const rb_vec2 moved =
+        rb_v2(step_displacement(force.x / BOX_MASS, TEST_DT, h), step_displacement(force.y / BOX_MASS, TEST_DT, h));
     expect_vec_near(rb_body_position(world, body), rb_add(p0, moved), REL, "position");
     cr_expect_eq(rb_body_angular_velocity(world, body), 0.0, "a force at the centre must not turn the body");
     expect_near(rb_body_angle(world, body), angle0, REL, "angle");

@@ -184,19 +184,21 @@ static rb_vec2 stack_top_travel(void (*change)(rb_solver_settings *))
     return travel;
 }
 
-Test(solver_settings, warm_starting_is_what_holds_a_stack_at_eight_iterations)
+Test(solver_settings, warm_starting_is_what_holds_a_stack)
 {
-    /* Each box of a 10-box stack carries the weight of those above; 8
-     * Gauss-Seidel passes cannot carry 10 boxes' weight down from zero
-     * every step, but impulses carried over from the last step start each
-     * step almost solved (Catto, GDC 2006). With warm starting the top box
-     * stays within 1 cm sideways and 5 cm down (the slop compresses each of
-     * the 10 contacts by at most 5 mm); without it the stack falls: the top
-     * box ends more than 5 m lower. */
+    /* Each box of a 10-box stack carries the weight of those above; the
+     * default 2 Gauss-Seidel passes per substep cannot carry 10 boxes'
+     * weight down from zero every substep, but impulses carried over from
+     * the last substep start each one almost solved (Catto, GDC 2006).
+     * With warm starting the top box stays within 1 cm sideways and 5 cm
+     * down (the slop compresses each of the 10 contacts by at most 5 mm);
+     * without it the stack does not stand: its top box ends more than a
+     * metre from where it started. */
     const rb_vec2 warm = stack_top_travel(warm_ngs);
     cr_expect(fabs(warm.x) < 0.01 && warm.y > -0.05, "warm: the top box travelled (%g, %g) m", warm.x, warm.y);
     const rb_vec2 cold = stack_top_travel(cold_ngs);
-    cr_expect(cold.y < -5.0, "cold: the top box travelled (%g, %g) m; expected the stack to fall", cold.x, cold.y);
+    cr_expect(rb_length(cold) > 1.0, "cold: the top box travelled (%g, %g) m; expected the stack to fall", cold.x,
+              cold.y);
 }
 
 static void three_substeps(rb_solver_settings *s)

@@ -368,10 +368,10 @@ void rb_joints_warm_start(rb_world *world)
     }
 }
 
-void rb_joints_solve_velocities(rb_world *world, double h)
+void rb_joints_solve_velocities(rb_world *world, double h, bool backwards)
 {
-    for (int i = 0; i < world->joint_slots; ++i) {
-        rb_joint *joint = &world->joints[i];
+    for (int k = 0; k < world->joint_slots; ++k) {
+        rb_joint *joint = &world->joints[backwards ? world->joint_slots - 1 - k : k];
         if (!joint->in_use || !is_active(world, joint)) {
             continue;
         }
@@ -392,11 +392,11 @@ void rb_joints_solve_velocities(rb_world *world, double h)
     }
 }
 
-bool rb_joints_correct_positions(rb_world *world)
+bool rb_joints_correct_positions(rb_world *world, bool backwards)
 {
     bool all_within = true;
-    for (int i = 0; i < world->joint_slots; ++i) {
-        rb_joint *joint = &world->joints[i];
+    for (int k = 0; k < world->joint_slots; ++k) {
+        rb_joint *joint = &world->joints[backwards ? world->joint_slots - 1 - k : k];
         if (!joint->in_use || !is_active(world, joint)) {
             continue;
         }

@@ -1,48 +1,84 @@
 /* The point constraint shared by revolute and weld joints: anchor A and
- * anchor B coincide, C = (cB + rB) - (cA + rA) = 0.
+ * anchor B coincide, C = (cB + rB) - (cA + rA) = 0, optionally solved
+ * together with one angular row on ωB - ωA (a rigid weld's angle, or a
+ * revolute limit that is reached).
  *
- * Its velocity Jacobian gives Cdot = vB + ωB × rB - vA - ωA × rA, and an
- * impulse P at the anchors changes Cdot by K·P with the 2x2 matrix
- *   K = (1/mA + 1/mB)·I + (1/IA)·[rA.y², -rA.x·rA.y; -rA.x·rA.y, rA.x²]
- *                       + (1/IB)·[rB.y², -rB.x·rB.y; -rB.x·rB.y, rB.x²]
- * (expand ω × r for an impulse's angular effect (r × P)/I; Catto,
- * Box2D-Lite, Joint.cpp). */
+ * An impulse P at the anchors and an angular impulse L (+L on B, -L on A)
+ * change the point's Cdot = vB + ωB × rB - vA - ωA × rA and the relative
+ * angular velocity ωB - ωA by K·(P, L) with the symmetric matrix
+ *   k11 = 1/mA + 1/mB + rA.y²/IA + rB.y²/IB,   k12 = -rA.x·rA.y/IA - rB.x·rB.y/IB,
+ *   k22 = 1/mA + 1/mB + rA.x²/IA + rB.x²/IB,
+ *   k13 = -rA.y/IA - rB.y/IB,   k23 = rA.x/IA + rB.x/IB,   k33 = 1/IA + 1/IB
+ * (expand ω × r for the angular effect (r × P)/I of an impulse; Catto,
+ * Box2D-Lite, Joint.cpp). Solving the angular row with the pin matters:
+ * alone it would use only the bodies' own inertias, and the pin would
+ * then undo most of it (a small bob on a 1 m arm keeps 1/800 of each
+ * limit correction). */
 #include "joint_solver.h"
 
-/* K for anchors ra, rb, and its inverse; returns false when K is singular
- * (neither body can move). */
-static bool point_mass_matrix(const rb_joint_frame *f, rb_vec2 ra, rb_vec2 rb, double inverse[3])
+typedef struct mass_matrix {
+    double k11, k12, k22, k13, k23, k33;
+} mass_matrix;
+
+static mass_matrix make_mass_matrix(const rb_joint_frame *f, rb_vec2 ra, rb_vec2 rb)
 {
     double m = f->inv_mass_a + f->inv_mass_b;
     double ia = f->inv_inertia_a;
     double ib = f->inv_inertia_b;
-    double k11 = m + ia * ra.y * ra.y + ib * rb.y * rb.y;
-    double k12 = -ia * ra.x * ra.y - ib * rb.x * rb.y;
-    double k22 = m + ia * ra.x * ra.x + ib * rb.x * rb.x;
-    double det = k11 * k22 - k12 * k12;
+    return (mass_matrix){
+        .k11 = m + ia * ra.y * ra.y + ib * rb.y * rb.y,
+        .k12 = -ia * ra.x * ra.y - ib * rb.x * rb.y,
+        .k22 = m + ia * ra.x * ra.x + ib * rb.x * rb.x,
+        .k13 = -ia * ra.y - ib * rb.y,
+        .k23 = ia * ra.x + ib * rb.x,
+        .k33 = ia + ib,
+    };
+}
+
+/* Solves the 2x2 point block K2·x = v; false when K2 is singular. */
+static bool solve_point(const mass_matrix *k, rb_vec2 v, rb_vec2 *x)
+{
+    double det = k->k11 * k->k22 - k->k12 * k->k12;
     if (!(det > 0.0)) {
         return false;
     }
-    inverse[0] = k22 / det;
-    inverse[1] = -k12 / det;
-    inverse[2] = k11 / det;
+    *x = rb_v2((k->k22 * v.x - k->k12 * v.y) / det, (k->k11 * v.y - k->k12 * v.x) / det);
     return true;
 }
 
-static rb_vec2 solve_2x2(const double inverse[3], rb_vec2 v)
+/* Solves the 3x3 system K·(x, z) = (v, w) by Cramer's rule; false when
+ * K is singular (a body that cannot turn makes the angle row redundant). */
+static bool solve_point_and_angle(const mass_matrix *k, rb_vec2 v, double w, rb_vec2 *x, double *z)
 {
-    return rb_v2(inverse[0] * v.x + inverse[1] * v.y, inverse[1] * v.x + inverse[2] * v.y);
+    double c11 = k->k22 * k->k33 - k->k23 * k->k23;
+    double c12 = k->k13 * k->k23 - k->k12 * k->k33;
+    double c13 = k->k12 * k->k23 - k->k13 * k->k22;
+    double det = k->k11 * c11 + k->k12 * c12 + k->k13 * c13;
+    if (!(fabs(det) > 1e-300)) {
+        return false;
+    }
+    double c22 = k->k11 * k->k33 - k->k13 * k->k13;
+    double c23 = k->k13 * k->k12 - k->k11 * k->k23;
+    double c33 = k->k11 * k->k22 - k->k12 * k->k12;
+    *x = rb_v2((c11 * v.x + c12 * v.y + c13 * w) / det, (c12 * v.x + c22 * v.y + c23 * w) / det);
+    *z = (c13 * v.x + c23 * v.y + c33 * w) / det;
+    return true;
 }
 
-void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumulated, double h)
+static void apply(const rb_joint *joint, rb_body_state *a, rb_body_state *b, rb_vec2 impulse, double angular)
+{
+    rb_joint_apply_linear(joint, a, b, impulse);
+    rb_joint_apply_angular(joint, a, b, angular);
+}
+
+void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumulated, double h,
+                               const rb_angular_row *row)
 {
     rb_body_state *a = rb_joint_state_a(world, joint);
     rb_body_state *b = rb_joint_state_b(world, joint);
     const rb_joint_frame *f = &joint->frame;
-    double inverse[3];
-    if (!point_mass_matrix(f, f->ra, f->rb, inverse)) {
-        return;
-    }
+    mass_matrix k = make_mass_matrix(f, f->ra, f->rb);
+
     /* Solve for the velocities that keep the anchors together at the end
      * of the substep, not just momentarily (SHAKE; Ryckaert, Ciccotti,
      * Berendsen, J. Comput. Phys. 23, 1977): the anchor offsets turn with
@@ -70,12 +106,39 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
         rb_vec2 gap = rb_sub(rb_add(b->center, f->rb), rb_add(a->center, f->ra));
         cdot = rb_mul_add(cdot, world->settings.baumgarte / h, gap);
     }
-    rb_vec2 impulse = rb_neg(solve_2x2(inverse, cdot));
-    *accumulated = rb_add(*accumulated, impulse);
-    rb_joint_apply_linear(joint, a, b, impulse);
+
+    rb_vec2 impulse;
+    if (row != NULL) {
+        /* The row is s·(ωB - ωA) + bias = 0 with s = ±1; in K its coupling
+         * terms take the sign s. */
+        mass_matrix ks = k;
+        ks.k13 *= row->sign;
+        ks.k23 *= row->sign;
+        double wdot = row->sign * (b->angular_velocity - a->angular_velocity) + row->bias;
+        double angular;
+        if (solve_point_and_angle(&ks, rb_neg(cdot), -wdot, &impulse, &angular)) {
+            if (row->one_sided && *row->accumulated + angular < 0.0) {
+                /* The limit would pull: release it and hold the pin alone,
+                 * net of the release's effect on the point. */
+                angular = -*row->accumulated;
+                rb_vec2 rhs = rb_neg(rb_add(cdot, rb_scale(angular, rb_v2(ks.k13, ks.k23))));
+                if (!solve_point(&k, rhs, &impulse)) {
+                    impulse = rb_v2(0.0, 0.0);
+                }
+            }
+            *row->accumulated += angular;
+            *accumulated = rb_add(*accumulated, impulse);
+            apply(joint, a, b, impulse, row->sign * angular);
+            return;
+        }
+    }
+    if (solve_point(&k, rb_neg(cdot), &impulse)) {
+        *accumulated = rb_add(*accumulated, impulse);
+        rb_joint_apply_linear(joint, a, b, impulse);
+    }
 }
 
-double rb_point_constraint_correct(rb_world *world, rb_joint *joint)
+double rb_point_constraint_correct(rb_world *world, rb_joint *joint, const double *angle_error)
 {
     rb_body_state *a = rb_joint_state_a(world, joint);
     rb_body_state *b = rb_joint_state_b(world, joint);
@@ -84,19 +147,21 @@ double rb_point_constraint_correct(rb_world *world, rb_joint *joint)
     rb_vec2 rb = rb_rotate(b->rotation, f->local_b);
     rb_vec2 gap = rb_sub(rb_add(b->center, rb), rb_add(a->center, ra));
     double error = rb_length(gap);
-    double inverse[3];
-    if (!point_mass_matrix(f, ra, rb, inverse)) {
+    mass_matrix k = make_mass_matrix(f, ra, rb);
+    rb_vec2 impulse = rb_v2(0.0, 0.0);
+    double angular = 0.0;
+    bool solved = angle_error != NULL && solve_point_and_angle(&k, rb_neg(gap), -*angle_error, &impulse, &angular);
+    if (!solved && !solve_point(&k, rb_neg(gap), &impulse)) {
         return error;
     }
-    rb_vec2 impulse = rb_neg(solve_2x2(inverse, gap));
     a->center = rb_mul_sub(a->center, f->inv_mass_a, impulse);
     b->center = rb_mul_add(b->center, f->inv_mass_b, impulse);
     if (f->inv_inertia_a > 0.0) {
-        a->angle -= f->inv_inertia_a * rb_cross(ra, impulse);
+        a->angle -= f->inv_inertia_a * (rb_cross(ra, impulse) + angular);
         a->rotation = rb_rot_from_angle(a->angle);
     }
     if (f->inv_inertia_b > 0.0) {
-        b->angle += f->inv_inertia_b * rb_cross(rb, impulse);
+        b->angle += f->inv_inertia_b * (rb_cross(rb, impulse) + angular);
         b->rotation = rb_rot_from_angle(b->angle);
     }
     return error;

@@ -242,6 +242,48 @@ static double limit_bias(const rb_world *world, double c, double h)
     return 0.0;
 }
 
+/* A limit's row on the relative angular velocity: sign +1 for the lower
+ * limit (the angle may not fall below it), -1 for the upper one. */
+static rb_angular_row limit_row(const rb_world *world, rb_revolute_data *r, bool lower, double angle, double h)
+{
+    double margin = lower ? angle - r->lower : r->upper - angle;
+    return (rb_angular_row){
+        .sign = lower ? 1.0 : -1.0,
+        .bias = limit_bias(world, margin, h),
+        .accumulated = lower ? &r->lower_impulse : &r->upper_impulse,
+        .one_sided = true,
+    };
+}
+
+/* The nearer enabled limit is solved with the pin as one block; the
+ * other one, a swing away, alone (it only releases what it held). */
+static void solve_limits(rb_world *world, rb_joint *joint, rb_body_state *a, rb_body_state *b, double angle, double h)
+{
+    rb_revolute_data *r = &joint->as.revolute;
+    bool lower_nearer = r->enable_lower && (!r->enable_upper || angle - r->lower <= r->upper - angle);
+    bool upper_nearer = r->enable_upper && !lower_nearer;
+    if (r->enable_lower && !lower_nearer) {
+        rb_angular_row row = limit_row(world, r, true, angle, h);
+        double cdot = b->angular_velocity - a->angular_velocity;
+        double total = fmax(*row.accumulated - r->axial_mass * (cdot + row.bias), 0.0);
+        rb_joint_apply_angular(joint, a, b, total - *row.accumulated);
+        *row.accumulated = total;
+    }
+    if (r->enable_upper && !upper_nearer) {
+        rb_angular_row row = limit_row(world, r, false, angle, h);
+        double cdot = a->angular_velocity - b->angular_velocity;
+        double total = fmax(*row.accumulated - r->axial_mass * (cdot + row.bias), 0.0);
+        rb_joint_apply_angular(joint, a, b, -(total - *row.accumulated));
+        *row.accumulated = total;
+    }
+    if (lower_nearer || upper_nearer) {
+        rb_angular_row row = limit_row(world, r, lower_nearer, angle, h);
+        rb_point_constraint_solve(world, joint, &r->point_impulse, h, &row);
+    } else {
+        rb_point_constraint_solve(world, joint, &r->point_impulse, h, NULL);
+    }
+}
+
 void rb_revolute_solve(rb_world *world, rb_joint *joint, double h)
 {
     rb_body_state *a = rb_joint_state_a(world, joint);
@@ -265,24 +307,10 @@ void rb_revolute_solve(rb_world *world, rb_joint *joint, double h)
             r->motor_impulse = accumulated;
             rb_joint_apply_angular(joint, a, b, impulse);
         }
-        if (r->enable_lower) {
-            double c = angle - r->lower;
-            double cdot = b->angular_velocity - a->angular_velocity;
-            double accumulated = fmax(r->lower_impulse - r->axial_mass * (cdot + limit_bias(world, c, h)), 0.0);
-            double impulse = accumulated - r->lower_impulse;
-            r->lower_impulse = accumulated;
-            rb_joint_apply_angular(joint, a, b, impulse);
-        }
-        if (r->enable_upper) {
-            double c = r->upper - angle;
-            double cdot = a->angular_velocity - b->angular_velocity;
-            double accumulated = fmax(r->upper_impulse - r->axial_mass * (cdot + limit_bias(world, c, h)), 0.0);
-            double impulse = accumulated - r->upper_impulse;
-            r->upper_impulse = accumulated;
-            rb_joint_apply_angular(joint, a, b, -impulse);
-        }
+        solve_limits(world, joint, a, b, angle, h);
+        return;
     }
-    rb_point_constraint_solve(world, joint, &r->point_impulse, h);
+    rb_point_constraint_solve(world, joint, &r->point_impulse, h, NULL);
 }
 
 /* How far the joint angle lies beyond an enabled limit (rad, >= 0). */
@@ -303,28 +331,15 @@ double rb_revolute_angle_error(const rb_world *world, const rb_joint *joint)
 bool rb_revolute_correct(rb_world *world, rb_joint *joint)
 {
     rb_revolute_data *r = &joint->as.revolute;
-    double angle_error = 0.0;
-    if (r->axial_mass > 0.0 && (r->enable_lower || r->enable_upper)) {
-        double angle = rb_joint_relative_angle(world, joint, r->reference_angle);
-        /* Negative below the lower limit, positive above the upper one. */
-        double c = 0.0;
-        if (r->enable_lower && angle < r->lower) {
-            c = angle - r->lower;
-        } else if (r->enable_upper && angle > r->upper) {
-            c = angle - r->upper;
-        }
-        angle_error = fabs(c);
-        c = fmin(fmax(c, -RB_MAX_ANGULAR_CORRECTION), RB_MAX_ANGULAR_CORRECTION);
-        if (c != 0.0) {
-            double impulse = -r->axial_mass * c;
-            rb_body_state *a = rb_joint_state_a(world, joint);
-            rb_body_state *b = rb_joint_state_b(world, joint);
-            a->angle -= joint->frame.inv_inertia_a * impulse;
-            a->rotation = rb_rot_from_angle(a->angle);
-            b->angle += joint->frame.inv_inertia_b * impulse;
-            b->rotation = rb_rot_from_angle(b->angle);
-        }
+    double angle = rb_joint_relative_angle(world, joint, r->reference_angle);
+    /* Negative below the lower limit, positive above the upper one. */
+    double violation = 0.0;
+    if (r->axial_mass > 0.0 && r->enable_lower && angle < r->lower) {
+        violation = angle - r->lower;
+    } else if (r->axial_mass > 0.0 && r->enable_upper && angle > r->upper) {
+        violation = angle - r->upper;
     }
-    double gap = rb_point_constraint_correct(world, joint);
-    return gap <= world->settings.linear_slop && angle_error <= RB_ANGULAR_SLOP;
+    double correction = fmin(fmax(violation, -RB_MAX_ANGULAR_CORRECTION), RB_MAX_ANGULAR_CORRECTION);
+    double gap = rb_point_constraint_correct(world, joint, violation != 0.0 ? &correction : NULL);
+    return gap <= world->settings.linear_slop && fabs(violation) <= RB_ANGULAR_SLOP;
 }

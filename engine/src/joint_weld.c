@@ -124,13 +124,27 @@ static void solve_soft_point(rb_joint *joint, rb_body_state *a, rb_body_state *b
 
 void rb_weld_solve(rb_world *world, rb_joint *joint, double h)
 {
+    rb_weld_data *w = &joint->as.weld;
     rb_body_state *a = rb_joint_state_a(world, joint);
     rb_body_state *b = rb_joint_state_b(world, joint);
+    if (w->linear_hertz == 0.0 && w->angular_hertz == 0.0) {
+        /* Rigid: the angle and the pin as one 3x3 block. */
+        double c = rb_joint_relative_angle(world, joint, w->reference_angle);
+        bool baumgarte = world->settings.position_correction == RB_CORRECTION_BAUMGARTE;
+        rb_angular_row row = {
+            .sign = 1.0,
+            .bias = baumgarte ? world->settings.baumgarte * c / h : 0.0,
+            .accumulated = &w->angular_impulse,
+            .one_sided = false,
+        };
+        rb_point_constraint_solve(world, joint, &w->point_impulse, h, &row);
+        return;
+    }
     solve_angle(world, joint, a, b, h);
-    if (joint->as.weld.linear_hertz > 0.0) {
+    if (w->linear_hertz > 0.0) {
         solve_soft_point(joint, a, b, h);
     } else {
-        rb_point_constraint_solve(world, joint, &joint->as.weld.point_impulse, h);
+        rb_point_constraint_solve(world, joint, &w->point_impulse, h, NULL);
     }
 }
 
@@ -145,18 +159,20 @@ double rb_weld_angle_error(const rb_world *world, const rb_joint *joint)
 bool rb_weld_correct(rb_world *world, rb_joint *joint)
 {
     rb_weld_data *w = &joint->as.weld;
-    double angle_error = 0.0;
-    if (w->angular_hertz == 0.0 && w->axial_mass > 0.0) {
-        double c = rb_joint_relative_angle(world, joint, w->reference_angle);
-        angle_error = fabs(c);
-        double impulse = -w->axial_mass * fmin(fmax(c, -RB_MAX_ANGULAR_CORRECTION), RB_MAX_ANGULAR_CORRECTION);
+    bool rigid_angle = w->angular_hertz == 0.0 && w->axial_mass > 0.0;
+    double angle_error = rigid_angle ? rb_joint_relative_angle(world, joint, w->reference_angle) : 0.0;
+    double correction = fmin(fmax(angle_error, -RB_MAX_ANGULAR_CORRECTION), RB_MAX_ANGULAR_CORRECTION);
+    double gap = 0.0;
+    if (w->linear_hertz == 0.0) {
+        gap = rb_point_constraint_correct(world, joint, rigid_angle ? &correction : NULL);
+    } else if (rigid_angle) {
         rb_body_state *a = rb_joint_state_a(world, joint);
         rb_body_state *b = rb_joint_state_b(world, joint);
+        double impulse = -w->axial_mass * correction;
         a->angle -= joint->frame.inv_inertia_a * impulse;
         a->rotation = rb_rot_from_angle(a->angle);
         b->angle += joint->frame.inv_inertia_b * impulse;
         b->rotation = rb_rot_from_angle(b->angle);
     }
-    double gap = w->linear_hertz == 0.0 ? rb_point_constraint_correct(world, joint) : 0.0;
-    return gap <= world->settings.linear_slop && angle_error <= RB_ANGULAR_SLOP;
+    return gap <= world->settings.linear_slop && fabs(angle_error) <= RB_ANGULAR_SLOP;
 }

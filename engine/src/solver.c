@@ -71,7 +71,7 @@ static int correct_positions(rb_world *world)
     while (passes < world->settings.position_iterations) {
         ++passes;
         bool contacts_within = rb_contact_solver_correct_positions(world);
-        bool joints_within = rb_joints_correct_positions(world);
+        bool joints_within = rb_joints_correct_positions(world, passes % 2 == 0);
         if (contacts_within && joints_within) {
             break;
         }
@@ -113,7 +113,7 @@ rb_status rb_solver_step(rb_world *world, double dt)
 
         t = rb_now_ms();
         for (int iteration = 0; iteration < settings->velocity_iterations; ++iteration) {
-            rb_joints_solve_velocities(world, h);
+            rb_joints_solve_velocities(world, h, iteration % 2 == 1);
             rb_contact_solver_solve_velocities(world);
         }
         velocity_iterations += settings->velocity_iterations;

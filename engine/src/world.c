@@ -23,7 +23,7 @@ rb_solver_settings rb_default_solver_settings(void)
     return (rb_solver_settings){
         .velocity_iterations = 2,
         .position_iterations = 1,
-        .substeps = 4,
+        .substeps = 6,
         .warm_starting = true,
         .block_solver = true,
         .position_correction = RB_CORRECTION_NGS,

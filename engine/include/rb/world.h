@@ -27,7 +27,7 @@ typedef enum rb_position_correction {
 typedef struct rb_solver_settings {
     int velocity_iterations;                    /* 1 .. 1000, per substep, default 2 */
     int position_iterations;                    /* 0 .. 1000, per substep, default 1 (NGS only) */
-    int substeps;                               /* 1 .. 1000, default 4: the step dt is split into this many substeps */
+    int substeps;                               /* 1 .. 1000, default 6: the step dt is split into this many substeps */
     bool warm_starting;                         /* default true: start from last step's impulses */
     bool block_solver;                          /* default true: solve two-point manifolds as one 2x2 LCP */
     rb_position_correction position_correction; /* default RB_CORRECTION_NGS */
