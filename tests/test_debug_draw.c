@@ -396,3 +396,62 @@ Test(debug_draw, defaults_and_bad_arguments)
     cr_expect_eq(rb_world_draw(NULL, &defaults), RB_ERR_INVALID_ARGUMENT, "a NULL world is an error");
     destroy_world_and_expect_no_leak(s.world);
 }
+
+/* A pendulum hanging at rest from a static pivot at the origin by a
+ * revolute joint with limits [-0.5, 0.5] rad: the bob (a circle of
+ * radius 0.1 m, density 1) at (0, -1) is body B. Drawing joints gives two
+ * anchor points at the pivot, a segment from each body's centre to its
+ * anchor, and one ray per limit, each 2·normal_length long at the angle
+ * angle(A) + reference + limit from +x: body A (the pivot) does not turn
+ * and the reference angle is 0, so the rays point at ±0.5 rad. The
+ * reaction on the bob at rest is its
+ * weight upwards, (0, m·g), drawn force_scale m per N long from its
+ * anchor. */
+Test(debug_draw, joints_and_their_reactions)
+{
+    rb_world *world = make_world(rb_v2(0.0, -10.0));
+    rb_body_id pivot = make_body(world, RB_BODY_STATIC, rb_v2(0.0, 0.0), 0.0);
+    rb_body_id bob = make_body(world, RB_BODY_DYNAMIC, rb_v2(0.0, -1.0), 0.0);
+    add_circle(world, bob, rb_v2(0.0, 0.0), 0.1, 1.0);
+    rb_revolute_joint_def def = rb_default_revolute_joint_def();
+    cr_assert_eq(rb_revolute_joint_def_at(&def, world, pivot, bob, rb_v2(0.0, 0.0)), RB_OK, "%s", rb_last_error());
+    def.enable_lower_limit = def.enable_upper_limit = true;
+    def.lower_angle = -0.5;
+    def.upper_angle = 0.5;
+    rb_joint_id joint;
+    cr_assert_eq(rb_revolute_joint_create(world, &def, &joint), RB_OK, "%s", rb_last_error());
+    step_world(world, TEST_DT, 30);
+
+    recorder r = {0};
+    rb_debug_draw draw = recording_draw(&r);
+    draw.draw_joints = true;
+    cr_assert_eq(rb_world_draw(world, &draw), RB_OK, "%s", rb_last_error());
+    int anchors = 0, links = 0, limits = 0;
+    for (int i = 0; i < r.point_count; ++i) {
+        anchors += r.points[i].color == RB_COLOR_JOINT && rb_length(r.points[i].p) < 1e-9;
+    }
+    for (int i = 0; i < r.segment_count; ++i) {
+        if (r.segments[i].color == RB_COLOR_JOINT) {
+            ++links;
+        } else if (r.segments[i].color == RB_COLOR_JOINT_LIMIT) {
+            const rb_vec2 ray = rb_sub(r.segments[i].p2, r.segments[i].p1);
+            expect_near(rb_length(ray), 2.0 * draw.normal_length, 1e-12, "limit ray length");
+            expect_near(fabs(atan2(ray.y, ray.x)), 0.5, 1e-9, "limit ray angle");
+            ++limits;
+        }
+    }
+    cr_expect_eq(anchors, 2, "%d anchor points at the pivot, expected 2", anchors);
+    cr_expect_eq(links, 2, "%d centre-to-anchor segments, expected 2", links);
+    cr_expect_eq(limits, 2, "%d limit rays, expected 2", limits);
+
+    recorder reactions = {0};
+    draw = recording_draw(&reactions);
+    draw.draw_joint_reactions = true;
+    cr_assert_eq(rb_world_draw(world, &draw), RB_OK, "%s", rb_last_error());
+    cr_assert_eq(reactions.segment_count, 1, "one reaction segment expected, got %d", reactions.segment_count);
+    const double weight = rb_body_mass(world, bob) * 10.0;
+    const rb_vec2 drawn = rb_sub(reactions.segments[0].p2, reactions.segments[0].p1);
+    expect_vec_near(drawn, rb_v2(0.0, draw.force_scale * weight), 1e-9 * weight, "reaction segment");
+    cr_expect_eq(reactions.segments[0].color, RB_COLOR_JOINT_REACTION);
+    destroy_world_and_expect_no_leak(world);
+}

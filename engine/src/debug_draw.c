@@ -1,5 +1,6 @@
 /* Debug drawing: walks the world and calls the caller's callbacks. */
 #include "error.h"
+#include "joint_solver.h"
 #include "rb/debug_draw.h"
 #include "world_internal.h"
 
@@ -9,6 +10,7 @@ rb_debug_draw rb_default_debug_draw(void)
         .draw_shapes = true,
         .impulse_scale = 0.1,
         .normal_length = 0.1,
+        .force_scale = 0.01,
     };
 }
 
@@ -79,6 +81,47 @@ static void draw_contacts(const rb_world *world, const rb_debug_draw *draw)
     }
 }
 
+/* A revolute limit is drawn as a ray from the anchor at the limit's angle
+ * in body A's frame: where body B's reference direction stops. */
+static void draw_limit(const rb_world *world, const rb_joint *joint, double limit, const rb_debug_draw *draw)
+{
+    const rb_revolute_data *r = &joint->as.revolute;
+    rb_vec2 anchor = rb_joint_anchor_a(world, joint);
+    double angle = world->states[joint->body_a].angle + r->reference_angle + limit;
+    draw->draw_segment(anchor, rb_mul_add(anchor, 2.0 * draw->normal_length, rb_v2(cos(angle), sin(angle))),
+                       RB_COLOR_JOINT_LIMIT, draw->context);
+}
+
+static void draw_joint(const rb_world *world, const rb_joint *joint, const rb_debug_draw *draw)
+{
+    rb_vec2 anchor_a = rb_joint_anchor_a(world, joint);
+    rb_vec2 anchor_b = rb_joint_anchor_b(world, joint);
+    if (draw->draw_joints && draw->draw_segment != NULL) {
+        if (joint->body_a >= 0) {
+            draw->draw_segment(world->states[joint->body_a].center, anchor_a, RB_COLOR_JOINT, draw->context);
+        }
+        draw->draw_segment(world->states[joint->body_b].center, anchor_b, RB_COLOR_JOINT, draw->context);
+        if (joint->type == RB_JOINT_DISTANCE || joint->type == RB_JOINT_MOUSE) {
+            draw->draw_segment(anchor_a, anchor_b, RB_COLOR_JOINT, draw->context);
+        }
+        if (joint->type == RB_JOINT_REVOLUTE && joint->as.revolute.enable_lower) {
+            draw_limit(world, joint, joint->as.revolute.lower, draw);
+        }
+        if (joint->type == RB_JOINT_REVOLUTE && joint->as.revolute.enable_upper) {
+            draw_limit(world, joint, joint->as.revolute.upper, draw);
+        }
+    }
+    if (draw->draw_joints && draw->draw_point != NULL) {
+        draw->draw_point(anchor_a, 4.0, RB_COLOR_JOINT, draw->context);
+        draw->draw_point(anchor_b, 4.0, RB_COLOR_JOINT, draw->context);
+    }
+    if (draw->draw_joint_reactions && draw->draw_segment != NULL) {
+        rb_vec2 force = rb_joint_force_on_b(world, joint);
+        draw->draw_segment(anchor_b, rb_mul_add(anchor_b, draw->force_scale, force), RB_COLOR_JOINT_REACTION,
+                           draw->context);
+    }
+}
+
 rb_status rb_world_draw(const rb_world *world, const rb_debug_draw *draw)
 {
     rb_clear_error();
@@ -86,6 +129,7 @@ rb_status rb_world_draw(const rb_world *world, const rb_debug_draw *draw)
     RB_TRY(rb_check_pointer("rb_world_draw", "draw", draw));
     RB_TRY(rb_check_finite("rb_world_draw", "impulse_scale", draw->impulse_scale));
     RB_TRY(rb_check_finite("rb_world_draw", "normal_length", draw->normal_length));
+    RB_TRY(rb_check_finite("rb_world_draw", "force_scale", draw->force_scale));
     for (int i = 0; i < world->shape_slots; ++i) {
         if (!world->shapes[i].in_use) {
             continue;
@@ -106,5 +150,10 @@ rb_status rb_world_draw(const rb_world *world, const rb_debug_draw *draw)
         }
     }
     draw_contacts(world, draw);
+    for (int i = 0; i < world->joint_slots; ++i) {
+        if (world->joints[i].in_use) {
+            draw_joint(world, &world->joints[i], draw);
+        }
+    }
     return RB_OK;
 }

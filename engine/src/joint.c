@@ -171,6 +171,11 @@ static rb_vec2 linear_impulse(const rb_joint *joint)
     return rb_v2(0.0, 0.0);
 }
 
+rb_vec2 rb_joint_force_on_b(const rb_world *world, const rb_joint *joint)
+{
+    return rb_scale(1.0 / world->last_substep, linear_impulse(joint));
+}
+
 static double angular_impulse(const rb_joint *joint)
 {
     switch (joint->type) {
@@ -208,7 +213,7 @@ JOINT_GETTER(rb_body_id, rb_joint_body_a, null_body,
 JOINT_GETTER(rb_body_id, rb_joint_body_b, null_body, rb_make_body_id(world, joint->body_b))
 JOINT_GETTER(rb_vec2, rb_joint_world_anchor_a, zero_vec2, rb_joint_anchor_a(world, joint))
 JOINT_GETTER(rb_vec2, rb_joint_world_anchor_b, zero_vec2, rb_joint_anchor_b(world, joint))
-JOINT_GETTER(rb_vec2, rb_joint_reaction_force, zero_vec2, rb_scale(1.0 / world->last_substep, linear_impulse(joint)))
+JOINT_GETTER(rb_vec2, rb_joint_reaction_force, zero_vec2, rb_joint_force_on_b(world, joint))
 JOINT_GETTER(double, rb_joint_reaction_torque, 0.0, angular_impulse(joint) / world->last_substep)
 JOINT_GETTER(void *, rb_joint_user_data, NULL, joint->user_data)
 

@@ -63,6 +63,8 @@ rb_vec2 rb_joint_relative_velocity(const rb_joint *joint, const rb_body_state *a
 /* World anchor points at the poses now. */
 rb_vec2 rb_joint_anchor_a(const rb_world *world, const rb_joint *joint);
 rb_vec2 rb_joint_anchor_b(const rb_world *world, const rb_joint *joint);
+/* The force (N) the joint applied to body B in the last substep. */
+rb_vec2 rb_joint_force_on_b(const rb_world *world, const rb_joint *joint);
 /* angle(B) - angle(A) - reference. */
 double rb_joint_relative_angle(const rb_world *world, const rb_joint *joint, double reference);
 
