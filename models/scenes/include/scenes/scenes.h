@@ -107,15 +107,20 @@ rb_status scene_drop_create(rb_world *world, double height, double restitution, 
 
 /* The chain of shared/peers/README.md: `links` (1 .. 1000) boxes of
  * half-extents 0.25 × 0.05 m and density 1 kg/m² (0.05 kg), joined end to
- * end by revolute joints, the first pinned to a static body at the origin,
- * and a heavy box of half-extent 0.25 m and density `heavy_density`
- * (kg/m², > 0; 20 gives 5 kg, 100× a link) jointed at the end. Shapes of
- * the chain do not collide with each other (one negative group). Layout
- * "hang" starts vertical below the pin, at rest; "swing" starts
- * horizontal along +x and is released. Joint k (0-based) joins body k-1
- * (the static pin for k = 0) to body k; the heavy box is the last body.
- * The peers' figure, the largest gap between a joint's two anchors, is
- * rb_world_statistics().max_joint_gap after each step. */
+ * end by revolute joints, the first pinned to a static body (no shape) at
+ * the origin, and a heavy box of half-extent 0.25 m and density
+ * `heavy_density` (kg/m², finite, > 0; 20 gives 5 kg, 100× a link)
+ * jointed at the end. Along the chain's direction d, body i (0-based; the
+ * heavy box is i = links) has its centre at (0.5·i + 0.25)·d m, and joint i
+ * joins the point 0.25 m beyond the centre of body i - 1 (the pin's origin
+ * for i = 0), body A, to the point 0.25 m behind the centre of body i,
+ * body B, the two coinciding at the start; its reference angle is the
+ * bodies' start angle difference. Shapes of the chain do not collide with
+ * each other (all in group -1), friction 0.6, restitution 0. Layout "hang"
+ * starts vertical below the pin (d = (0, -1), bodies at angle -π/2), at
+ * rest; "swing" starts horizontal along +x (d = (1, 0), angle 0) and is
+ * released. The peers' figure, the largest gap between a joint's two
+ * anchors, is rb_world_statistics().max_joint_gap after each step. */
 typedef enum scene_chain_layout {
     SCENE_CHAIN_HANG,
     SCENE_CHAIN_SWING,
@@ -131,17 +136,24 @@ rb_status scene_chain_create(rb_world *world, int links, double heavy_density, s
                              scene_chain *out);
 
 /* The joint grid of shared/peers/README.md: n × n (2 .. 1000) circles of
- * radius 0.4 m, density 1, at (k, -i) for column k and row i; each body
- * (but the top row's) is joined to the body above it by a revolute joint
- * whose body A is the one above (local anchors (0, -0.5) on A and
- * (0, 0.5) on the body), and each body (but the left column's) to its left
- * neighbour (body A the neighbour, anchors (0.5, 0) and (-0.5, 0)); the
- * top row's bodies with |k - n/2| <= 3 are static; circles do not collide
- * with each other. Bodies are created row by row. */
+ * radius 0.4 m, density 1 kg/m², friction 0.6, at (k, -i) m for column k
+ * and row i (0-based); each body (but the top row's) is joined to the body
+ * above it by a revolute joint whose body A is the one above (local
+ * anchors (0, -0.5) on A and (0, 0.5) on the body), and each body (but the
+ * left column's) to its left neighbour (body A the neighbour, anchors
+ * (0.5, 0) and (-0.5, 0)): 2·n·(n - 1) joints, the few between two static
+ * bodies included (they do nothing). The top row's bodies with
+ * |k - n/2| <= 3 (n/2 in integer division) are static; circles do not
+ * collide with each other (all in group -1). Bodies are created column by
+ * column, each column from the top down, and each body's joint to the body
+ * above before its joint to the left, as the peers do, so that a
+ * sequential solver visits the joints in the peers' order. The world must
+ * have no destroyed bodies (a fresh world), so that the bodies get
+ * consecutive ids. */
 typedef struct scene_joint_grid {
-    rb_body_id first_body; /* body (row i, column k) is scene_body_at(first_body, i·n + k) */
+    rb_body_id first_body; /* body (row i, column k) is scene_body_at(first_body, k·n + i) */
     int n;
-    int joint_count;
+    int joint_count; /* 2·n·(n - 1) */
 } scene_joint_grid;
 rb_status scene_joint_grid_create(rb_world *world, int n, scene_joint_grid *out);
 
