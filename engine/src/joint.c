@@ -38,6 +38,30 @@ rb_status rb_joint_check_bodies(const rb_world *world, rb_body_id a, rb_body_id 
     return RB_OK;
 }
 
+rb_status rb_joint_check_common(const rb_world *world, const void *def, rb_joint_common_def common, rb_joint_id *out,
+                                const char *function, int *index_a, int *index_b)
+{
+    RB_TRY(rb_check_pointer(function, "out", out));
+    *out = (rb_joint_id){0};
+    RB_TRY(rb_check_pointer(function, "def", def));
+    RB_TRY(rb_joint_check_bodies(world, common.body_a, common.body_b, function, index_a, index_b));
+    RB_TRY(rb_check_vec2(function, "local_anchor_a", common.local_anchor_a));
+    return rb_check_vec2(function, "local_anchor_b", common.local_anchor_b);
+}
+
+rb_status rb_joint_anchor_at(const rb_world *world, rb_body_id body_a, rb_body_id body_b, rb_vec2 world_anchor,
+                             const char *function, rb_vec2 *local_a, rb_vec2 *local_b, double *reference_angle)
+{
+    RB_TRY(rb_check_vec2(function, "world_anchor", world_anchor));
+    int a;
+    int b;
+    RB_TRY(rb_joint_check_bodies(world, body_a, body_b, function, &a, &b));
+    *local_a = rb_inv_transform_point(rb_body_origin_transform(world, a), world_anchor);
+    *local_b = rb_inv_transform_point(rb_body_origin_transform(world, b), world_anchor);
+    *reference_angle = world->states[b].angle - world->states[a].angle;
+    return RB_OK;
+}
+
 rb_status rb_joint_create(rb_world *world, const rb_joint *prototype, rb_joint_id *out, const char *function)
 {
     RB_TRY(rb_world_check_unlocked(world, function));

@@ -46,14 +46,9 @@ rb_status rb_distance_joint_create(rb_world *world, const rb_distance_joint_def 
 {
     const char *f = "rb_distance_joint_create";
     rb_clear_error();
-    RB_TRY(rb_check_pointer(f, "out", out));
-    *out = (rb_joint_id){0};
-    RB_TRY(rb_check_pointer(f, "def", def));
     int a;
     int b;
-    RB_TRY(rb_joint_check_bodies(world, def->body_a, def->body_b, f, &a, &b));
-    RB_TRY(rb_check_vec2(f, "local_anchor_a", def->local_anchor_a));
-    RB_TRY(rb_check_vec2(f, "local_anchor_b", def->local_anchor_b));
+    RB_TRY(rb_joint_check_common(world, def, RB_JOINT_COMMON(def), out, f, &a, &b));
     RB_TRY(rb_check_range(f, "length", def->length, MIN_AXIS_LENGTH, DBL_MAX));
     RB_TRY(rb_check_range(f, "spring_hertz", def->spring_hertz, 0.0, DBL_MAX));
     RB_TRY(rb_check_range(f, "spring_damping_ratio", def->spring_damping_ratio, 0.0, DBL_MAX));

@@ -8,6 +8,29 @@
 rb_status rb_joint_check_bodies(const rb_world *world, rb_body_id a, rb_body_id b, const char *function, int *index_a,
                                 int *index_b);
 
+/* A two-body joint's common definition. */
+typedef struct rb_joint_common_def {
+    rb_body_id body_a, body_b;
+    rb_vec2 local_anchor_a, local_anchor_b;
+} rb_joint_common_def;
+
+/* The common fields of any two-body joint definition `def` (which may be
+ * NULL: rb_joint_check_common then reports it). */
+#define RB_JOINT_COMMON(def)                                                                                           \
+    ((def) != NULL ? (rb_joint_common_def){(def)->body_a, (def)->body_b, (def)->local_anchor_a, (def)->local_anchor_b} \
+                   : (rb_joint_common_def){0})
+
+/* The checks every two-body joint's create function begins with: `out`
+ * (set to the null id) and `def` are not NULL, the bodies are valid and
+ * distinct, the anchors finite. Gives the bodies' indices. */
+rb_status rb_joint_check_common(const rb_world *world, const void *def, rb_joint_common_def common, rb_joint_id *out,
+                                const char *function, int *index_a, int *index_b);
+
+/* The local anchors of one world point on each body, and angle(B) -
+ * angle(A) now: what pins or welds two bodies where they are. */
+rb_status rb_joint_anchor_at(const rb_world *world, rb_body_id body_a, rb_body_id body_b, rb_vec2 world_anchor,
+                             const char *function, rb_vec2 *local_a, rb_vec2 *local_b, double *reference_angle);
+
 /* Adds a joint filled in from `prototype` (type, bodies, anchors, flags,
  * type data) to the world and the bodies' joint lists. */
 rb_status rb_joint_create(rb_world *world, const rb_joint *prototype, rb_joint_id *out, const char *function);

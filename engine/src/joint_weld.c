@@ -17,15 +17,10 @@ rb_status rb_weld_joint_def_at(rb_weld_joint_def *def, const rb_world *world, rb
     const char *f = "rb_weld_joint_def_at";
     rb_clear_error();
     RB_TRY(rb_check_pointer(f, "def", def));
-    RB_TRY(rb_check_vec2(f, "world_anchor", world_anchor));
-    int a;
-    int b;
-    RB_TRY(rb_joint_check_bodies(world, body_a, body_b, f, &a, &b));
+    RB_TRY(rb_joint_anchor_at(world, body_a, body_b, world_anchor, f, &def->local_anchor_a, &def->local_anchor_b,
+                              &def->reference_angle));
     def->body_a = body_a;
     def->body_b = body_b;
-    def->local_anchor_a = rb_inv_transform_point(rb_body_origin_transform(world, a), world_anchor);
-    def->local_anchor_b = rb_inv_transform_point(rb_body_origin_transform(world, b), world_anchor);
-    def->reference_angle = world->states[b].angle - world->states[a].angle;
     return RB_OK;
 }
 
@@ -33,14 +28,9 @@ rb_status rb_weld_joint_create(rb_world *world, const rb_weld_joint_def *def, rb
 {
     const char *f = "rb_weld_joint_create";
     rb_clear_error();
-    RB_TRY(rb_check_pointer(f, "out", out));
-    *out = (rb_joint_id){0};
-    RB_TRY(rb_check_pointer(f, "def", def));
     int a;
     int b;
-    RB_TRY(rb_joint_check_bodies(world, def->body_a, def->body_b, f, &a, &b));
-    RB_TRY(rb_check_vec2(f, "local_anchor_a", def->local_anchor_a));
-    RB_TRY(rb_check_vec2(f, "local_anchor_b", def->local_anchor_b));
+    RB_TRY(rb_joint_check_common(world, def, RB_JOINT_COMMON(def), out, f, &a, &b));
     RB_TRY(rb_check_finite(f, "reference_angle", def->reference_angle));
     RB_TRY(rb_check_range(f, "linear_hertz", def->linear_hertz, 0.0, DBL_MAX));
     RB_TRY(rb_check_range(f, "linear_damping_ratio", def->linear_damping_ratio, 0.0, DBL_MAX));
