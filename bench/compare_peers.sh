@@ -1,30 +1,51 @@
 #!/usr/bin/env bash
 # Compares sinew's engine with the peer engines Debian packages, Box2D 2.4.1
-# and Chipmunk2D 7.0.3, on the pyramid of shared/peers/README.md (base 20 and
-# 100), as ratios measured in one session on this machine.
+# and Chipmunk2D 7.0.3, on the scenes of shared/peers/README.md, as ratios
+# measured in one session on this machine.
 #
-# Each repetition runs, for each base, sinew's bench_engine (one run of 60
-# warm-up and 300 timed steps), box2d24_bench (8 velocity / 3 position
-# iterations) and chipmunk_bench (10 iterations) one after the other, so that
-# a change in the machine's load touches all three engines alike. The table
-# gives, per engine and base, the median over repetitions of each run's
-# median ms per step, and the ratios sinew/Box2D and sinew/Chipmunk (below 1:
-# sinew is faster).
+# Scenes and protocols (dt = 1/60 s, gravity (0, -10)):
+#   pyramid20, pyramid100  60 warm-up and 300 timed steps; sinew through
+#       bench_engine (engine defaults). Figure: boxes moved > 0.25 m sideways.
+#   joint_grid  100 x 100, 60 warm-up and 60 timed steps (Chipmunk blows up
+#       after 2-3 s, so all three stop at 2 s); sinew through bench_solver
+#       --single (engine defaults). The peers print no gap for the grid.
+#   chain_hang, chain_swing  40 links and a 100:1 box, 300 steps, every one
+#       timed (the peers with --warmup 0 --steps 300); sinew through
+#       bench_solver --single. Figures: the worst joint gap over 0-5 s and
+#       the gap at 5 s (m), which the peers compute the same way.
+# Box2D runs 8 velocity / 3 position iterations, Chipmunk 10 iterations.
 #
-# usage: bench/compare_peers.sh [--runs R] [--out FILE] [--build-dir DIR] [--peers DIR]
+# Each repetition runs, for each scene, sinew, Box2D and Chipmunk one after
+# the other, so that a change in the machine's load touches all three
+# engines alike. The tables give, per engine and scene, the median over
+# repetitions of each run's median ms per step, and the ratios
+# sinew/Box2D and sinew/Chipmunk (below 1: sinew is faster); the other
+# figures come from the last repetition (every engine is deterministic).
+#
+# usage: bench/compare_peers.sh [--runs R] [--scenes LIST] [--out FILE] [--build-dir DIR] [--peers DIR]
 #   --runs R       repetitions, 1 .. 100 (default 3)
-#   --out FILE     CSV of the table (default compare_peers.csv), written to a
-#                  temporary name and renamed
+#   --scenes LIST  comma-separated, of pyramid20, pyramid100, joint_grid,
+#                  chain_hang, chain_swing (default all five)
+#   --out FILE     CSV of the tables, one row per scene, empty fields where a
+#                  figure does not apply (default compare_peers.csv); written
+#                  to a temporary name and renamed
 #   --build-dir D  sinew's build directory (default build/release)
 #   --peers DIR    the peer harnesses (default ../shared/peers)
 # Exit status: 0 success, 1 failure, 2 bad command line.
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+all_scenes=(pyramid20 pyramid100 joint_grid chain_hang chain_swing)
 runs=3
+scenes=("${all_scenes[@]}")
 out=compare_peers.csv
 build_dir="$root/build/release"
 peers_dir="$root/../shared/peers"
+
+# bench_solver's protocol for the joint scenes, given to the peers too.
+grid_warmup=60
+grid_steps=60
+chain_steps=300
 
 usage() {
     sed -n 's/^# \{0,1\}//; /^usage:/,/^Exit status/p' "${BASH_SOURCE[0]}"
@@ -36,13 +57,37 @@ bad_usage() {
     exit 2
 }
 
+# Sets `scenes` from a comma-separated list, refusing unknown names and
+# keeping the order of all_scenes.
+parse_scenes() {
+    local list=$1 name known s wanted=()
+    IFS=, read -r -a wanted <<<"$list"
+    ((${#wanted[@]})) || bad_usage "--scenes expects a comma-separated list of ${all_scenes[*]}, got \"$list\""
+    for name in "${wanted[@]}"; do
+        known=no
+        for s in "${all_scenes[@]}"; do
+            [[ "$name" == "$s" ]] && known=yes
+        done
+        [[ $known == yes ]] || bad_usage "--scenes: unknown scene \"$name\" (expected ${all_scenes[*]})"
+    done
+    scenes=()
+    for s in "${all_scenes[@]}"; do
+        for name in "${wanted[@]}"; do
+            if [[ "$name" == "$s" ]]; then
+                scenes+=("$s")
+                break
+            fi
+        done
+    done
+}
+
 while [[ $# -gt 0 ]]; do
     case "$1" in
         --help | -h)
             usage
             exit 0
             ;;
-        --runs | --out | --build-dir | --peers)
+        --runs | --scenes | --out | --build-dir | --peers)
             [[ $# -ge 2 && -n "$2" ]] || bad_usage "$1 needs a value"
             case "$1" in
                 --runs)
@@ -51,6 +96,7 @@ while [[ $# -gt 0 ]]; do
                     fi
                     runs=$((10#$2))
                     ;;
+                --scenes) parse_scenes "$2" ;;
                 --out) out=$2 ;;
                 --build-dir) build_dir=$2 ;;
                 --peers) peers_dir=$2 ;;
@@ -76,72 +122,145 @@ if [[ ! -f "$peers_dir/Makefile" ]]; then
 fi
 make -s -C "$peers_dir" >&2
 
-bench="$build_dir/bench/bench_engine"
-if [[ ! -x "$bench" ]]; then
-    echo "compare_peers.sh: $bench not found; build first:" >&2
-    echo "  cmake --preset release && cmake --build --preset release" >&2
-    exit 1
-fi
+for program in bench_engine bench_solver; do
+    if [[ ! -x "$build_dir/bench/$program" ]]; then
+        echo "compare_peers.sh: $build_dir/bench/$program not found; build first:" >&2
+        echo "  cmake --preset release && cmake --build --preset release" >&2
+        exit 1
+    fi
+done
 
 work=$(mktemp -d)
 csv_tmp="$out.tmp.$$"
 trap 'rm -rf "$work" "$csv_tmp"' EXIT
 
-# Appends "engine base median_ms moved_boxes" for one benchmark line.
-record() {
-    local engine=$1 base=$2 line=$3 median moved
-    median=$(grep -o 'median_ms=[0-9.e+-]*' <<<"$line" | cut -d= -f2)
-    moved=$(grep -o 'lateral_gt_0.25=[0-9]*' <<<"$line" | cut -d= -f2)
-    if [[ -z "$median" ]]; then
-        echo "compare_peers.sh: no median_ms in the output of $engine: $line" >&2
-        exit 1
-    fi
-    echo "$engine $base $median ${moved:-NA}" >>"$work/samples"
+# The value of `key=value` in a peer's or bench_engine's line, or NA.
+field() {
+    local value
+    value=$(grep -o " $2=[^ ]*" <<<" $1" | head -n 1 | cut -d= -f2)
+    echo "${value:-NA}"
 }
 
-sinew_settings=""
+# The value of column `name` in the first data row of a CSV file, or NA.
+csv_field() {
+    awk -F, -v name="$2" 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == name) c = i; next }
+        NR == 2 { v = c ? $c : ""; print (v == "" ? "NA" : v); exit }' "$1"
+}
+
+# Appends "engine scene median_ms moved worst_gap final_gap" (NA where a
+# figure does not apply).
+record() {
+    local engine=$1 scene=$2 median=$3 moved=$4 worst=$5 final=$6
+    if [[ "$median" == NA ]]; then
+        echo "compare_peers.sh: no median_ms from $engine on $scene" >&2
+        exit 1
+    fi
+    echo "$engine $scene $median $moved $worst $final" >>"$work/samples"
+}
+
+# Records one peer line: the pyramid's moved boxes, the chain's gaps.
+record_peer() {
+    local engine=$1 scene=$2 line=$3
+    record "$engine" "$scene" "$(field "$line" median_ms)" "$(field "$line" lateral_gt_0.25)" \
+        "$(field "$line" peak_sep_0_5s)" "$(field "$line" max_sep_5s)"
+}
+
+# One run of sinew on a joint scene through bench_solver at the engine's
+# default settings; checks that it ran the protocol the peers are given.
+run_sinew_joints() {
+    local scene=$1 warmup=$2 steps=$3 csv="$work/bench_solver.csv"
+    "$build_dir/bench/bench_solver" --scene "$scene" --single --runs 1 --csv "$csv" >/dev/null
+    if [[ "$(csv_field "$csv" warmup_steps)" != "$warmup" || "$(csv_field "$csv" timed_steps)" != "$steps" ]]; then
+        echo "compare_peers.sh: warning: sinew's $scene ran $(csv_field "$csv" warmup_steps) warm-up and" \
+            "$(csv_field "$csv" timed_steps) timed steps, the peers $warmup and $steps" \
+            "(diverged=$(csv_field "$csv" diverged))" >&2
+    fi
+    record sinew "$scene" "$(csv_field "$csv" median_ms)" NA "$(csv_field "$csv" worst_gap_m)" \
+        "$(csv_field "$csv" final_gap_m)"
+    sinew_joint_settings="$(csv_field "$csv" correction), $(csv_field "$csv" velocity_iterations) vel /"
+    sinew_joint_settings+=" $(csv_field "$csv" position_iterations) pos / $(csv_field "$csv" substeps) substeps"
+}
+
+sinew_pyramid_settings=""
+sinew_joint_settings=""
 for ((r = 1; r <= runs; ++r)); do
-    for base in 20 100; do
-        echo "repetition $r/$runs, pyramid base $base" >&2
-        line=$("$bench" --scene "pyramid$base" --runs 1 --csv "$work/bench_engine.csv" | grep '^engine=')
-        record sinew "$base" "$line"
-        sinew_settings=$(grep -o 'vel_iters=[0-9]* pos_iters=[0-9]* substeps=[0-9]*' <<<"$line")
-        record box2d "$base" "$("$peers_dir/box2d24_bench" pyramid --base "$base" --vel 8 --pos 3)"
-        record chipmunk "$base" "$("$peers_dir/chipmunk_bench" pyramid --base "$base" --iters 10 | grep '^engine=')"
+    for scene in "${scenes[@]}"; do
+        echo "repetition $r/$runs, $scene" >&2
+        case "$scene" in
+            pyramid20 | pyramid100)
+                base=${scene#pyramid}
+                line=$("$build_dir/bench/bench_engine" --scene "$scene" --runs 1 --csv "$work/bench_engine.csv" |
+                    grep '^engine=')
+                record sinew "$scene" "$(field "$line" median_ms)" "$(field "$line" lateral_gt_0.25)" NA NA
+                sinew_pyramid_settings=$(grep -o 'vel_iters=[0-9]* pos_iters=[0-9]* substeps=[0-9]*' <<<"$line")
+                record_peer box2d "$scene" "$("$peers_dir/box2d24_bench" pyramid --base "$base" --vel 8 --pos 3)"
+                record_peer chipmunk "$scene" \
+                    "$("$peers_dir/chipmunk_bench" pyramid --base "$base" --iters 10 | grep '^engine=')"
+                ;;
+            joint_grid)
+                run_sinew_joints joint_grid "$grid_warmup" "$grid_steps"
+                record_peer box2d "$scene" "$("$peers_dir/box2d24_bench" joint_grid --vel 8 --pos 3 \
+                    --warmup "$grid_warmup" --steps "$grid_steps")"
+                record_peer chipmunk "$scene" "$("$peers_dir/chipmunk_bench" joint_grid --iters 10 \
+                    --warmup "$grid_warmup" --steps "$grid_steps" | grep '^engine=')"
+                ;;
+            chain_hang | chain_swing)
+                layout=${scene#chain_}
+                run_sinew_joints "$scene" 0 "$chain_steps"
+                record_peer box2d "$scene" "$("$peers_dir/box2d24_bench" chain --layout "$layout" --vel 8 --pos 3 \
+                    --warmup 0 --steps "$chain_steps")"
+                record_peer chipmunk "$scene" "$("$peers_dir/chipmunk_bench" chain --layout "$layout" --iters 10 \
+                    --warmup 0 --steps "$chain_steps" | grep '^engine=')"
+                ;;
+        esac
     done
 done
 
-# Median of the samples of one engine and base (mean of the middle two when
+# Median of the samples of one engine and scene (mean of the middle two when
 # the count is even).
 median_of() {
-    awk -v e="$1" -v b="$2" '$1 == e && $2 == b { print $3 }' "$work/samples" | sort -g |
+    awk -v e="$1" -v s="$2" '$1 == e && $2 == s { print $3 }' "$work/samples" | sort -g |
         awk '{ v[NR] = $1 } END { if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
 }
 
-# Boxes moved > 0.25 m sideways in the last repetition.
-moved_of() {
-    awk -v e="$1" -v b="$2" '$1 == e && $2 == b { m = $4 } END { print m }' "$work/samples"
+# Column `column` (4 moved, 5 worst gap, 6 final gap) of the last
+# repetition, empty when it does not apply.
+last_of() {
+    awk -v e="$1" -v s="$2" -v c="$3" '$1 == e && $2 == s { v = $c } END { print (v == "NA" ? "" : v) }' \
+        "$work/samples"
 }
 
 host=$(hostname)
 {
-    echo "host,base,runs,sinew_ms,box2d_ms,chipmunk_ms,sinew_over_box2d,sinew_over_chipmunk,sinew_moved,box2d_moved,chipmunk_moved"
-    for base in 20 100; do
-        s=$(median_of sinew "$base")
-        b=$(median_of box2d "$base")
-        c=$(median_of chipmunk "$base")
-        awk -v h="$host" -v base="$base" -v r="$runs" -v s="$s" -v b="$b" -v c="$c" \
-            -v ms="$(moved_of sinew "$base")" -v mb="$(moved_of box2d "$base")" -v mc="$(moved_of chipmunk "$base")" \
-            'BEGIN { printf "%s,%d,%d,%.4f,%.4f,%.4f,%.3f,%.3f,%s,%s,%s\n", h, base, r, s, b, c, s / b, s / c, ms, mb, mc }'
+    echo "host,scene,runs,sinew_ms,box2d_ms,chipmunk_ms,sinew_over_box2d,sinew_over_chipmunk,sinew_moved,box2d_moved,chipmunk_moved,sinew_worst_gap_m,box2d_worst_gap_m,chipmunk_worst_gap_m,sinew_final_gap_m,box2d_final_gap_m,chipmunk_final_gap_m"
+    for scene in "${scenes[@]}"; do
+        s=$(median_of sinew "$scene")
+        b=$(median_of box2d "$scene")
+        c=$(median_of chipmunk "$scene")
+        printf '%s,%s,%d,' "$host" "$scene" "$runs"
+        awk -v s="$s" -v b="$b" -v c="$c" 'BEGIN { printf "%.4f,%.4f,%.4f,%.3f,%.3f", s, b, c, s / b, s / c }'
+        for column in 4 5 6; do
+            for engine in sinew box2d chipmunk; do
+                printf ',%s' "$(last_of "$engine" "$scene" "$column")"
+            done
+        done
+        printf '\n'
     done
 } >"$csv_tmp"
 mv "$csv_tmp" "$out"
 
 echo
-echo "pyramid, median of $runs runs, ms per step on $host (sinew: $sinew_settings; Box2D: 8 vel / 3 pos; Chipmunk: 10 iterations)"
-awk -F, 'NR == 1 {
-        printf "%-6s %10s %10s %12s %12s %15s   %s\n", "base", "sinew", "box2d", "chipmunk", "sinew/box2d", "sinew/chipmunk", "moved > 0.25 m (sinew/box2d/chipmunk)"
+echo "median of $runs runs, ms per step on $host (Box2D: 8 vel / 3 pos; Chipmunk: 10 iterations;" \
+    "sinew pyramid: ${sinew_pyramid_settings:-not run}; sinew joints: ${sinew_joint_settings:-not run})"
+awk -F, 'function show(v) { return v == "" ? "-" : v }
+    NR == 1 {
+        printf "%-11s %9s %9s %9s %8s %8s   %-24s %-30s %s\n", "scene", "sinew", "box2d", "chipmunk", "s/box2d",
+            "s/chipm", "moved (s/b/c)", "worst gap m (s/b/c)", "gap at end m (s/b/c)"
         next
     }
-    { printf "%-6s %10.4f %10.4f %12.4f %12.3f %15.3f   %s/%s/%s\n", $2, $4, $5, $6, $7, $8, $9, $10, $11 }' "$out"
+    {
+        printf "%-11s %9.4f %9.4f %9.4f %8.3f %8.3f   %-24s %-30s %s\n", $2, $4, $5, $6, $7, $8,
+            show($9) "/" show($10) "/" show($11), show($12) "/" show($13) "/" show($14),
+            show($15) "/" show($16) "/" show($17)
+    }' "$out"
 echo "csv: $out"
