@@ -274,6 +274,14 @@ rb_softness rb_make_softness(double hertz, double zeta, double effective_mass, d
     return (rb_softness){gamma, h * k * gamma};
 }
 
+double rb_joint_baumgarte_rate(const rb_world *world, double h)
+{
+    if (world->settings.position_correction != RB_CORRECTION_BAUMGARTE) {
+        return 0.0;
+    }
+    return world->settings.baumgarte / (h * world->settings.substeps);
+}
+
 rb_body_state *rb_joint_state_a(rb_world *world, const rb_joint *joint)
 {
     return joint->body_a >= 0 ? &world->states[joint->body_a] : NULL;
@@ -333,6 +341,8 @@ static void prepare_frame(rb_world *world, rb_joint *joint)
     f->inv_inertia_b = b->awake ? b->inv_inertia : 0.0;
     f->local_b = rb_sub(joint->local_anchor_b, b->local_center);
     f->rb = rb_rotate(sb->rotation, f->local_b);
+    f->omega_b = sb->angular_velocity;
+    f->omega_a = joint->body_a >= 0 ? world->states[joint->body_a].angular_velocity : 0.0;
     if (joint->body_a >= 0) {
         const rb_body *a = &world->bodies[joint->body_a];
         const rb_body_state *sa = &world->states[joint->body_a];

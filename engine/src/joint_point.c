@@ -94,17 +94,18 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
      * faster than the iterations converge (a light link beside a heavy
      * one), and asking for it then feeds the spin until it explodes; it is
      * capped at one linear slop per substep. */
-    rb_vec2 drift = rb_scale(0.5 * h, rb_sub(rb_scale(b->angular_velocity * b->angular_velocity, f->rb),
-                                             rb_scale(a->angular_velocity * a->angular_velocity, f->ra)));
+    rb_vec2 drift =
+        rb_scale(0.5 * h, rb_sub(rb_scale(f->omega_b * f->omega_b, f->rb), rb_scale(f->omega_a * f->omega_a, f->ra)));
     double drift_size = rb_length(drift);
     double drift_cap = world->settings.linear_slop / h;
     if (drift_size > drift_cap) {
         drift = rb_scale(drift_cap / drift_size, drift);
     }
     rb_vec2 cdot = rb_sub(rb_joint_relative_velocity(joint, a, b), drift);
-    if (world->settings.position_correction == RB_CORRECTION_BAUMGARTE) {
+    double baumgarte_rate = rb_joint_baumgarte_rate(world, h);
+    if (baumgarte_rate > 0.0) {
         rb_vec2 gap = rb_sub(rb_add(b->center, f->rb), rb_add(a->center, f->ra));
-        cdot = rb_mul_add(cdot, world->settings.baumgarte / h, gap);
+        cdot = rb_mul_add(cdot, baumgarte_rate, gap);
     }
 
     rb_vec2 impulse;

@@ -223,13 +223,7 @@ void rb_revolute_warm_start(rb_world *world, rb_joint *joint)
  * Baumgarte, none otherwise (NGS removes the violation). */
 static double limit_bias(const rb_world *world, double c, double h)
 {
-    if (c > 0.0) {
-        return c / h;
-    }
-    if (world->settings.position_correction == RB_CORRECTION_BAUMGARTE) {
-        return world->settings.baumgarte * c / h;
-    }
-    return 0.0;
+    return c > 0.0 ? c / h : rb_joint_baumgarte_rate(world, h) * c;
 }
 
 /* A limit's row on the relative angular velocity: sign +1 for the lower

@@ -52,6 +52,14 @@ typedef struct rb_softness {
 } rb_softness;
 rb_softness rb_make_softness(double hertz, double zeta, double effective_mass, double h);
 
+/* The Baumgarte bias rate (1/s) of a rigid joint part: the velocity bias
+ * is rate·C. Zero when the world corrects positions by NGS. It removes the
+ * fraction beta of the error per step of dt = h·substeps, not per
+ * substep: per substep the fractions compound (beta = 0.2 over 6
+ * substeps is 74 % per step), and warm starting carries the bias impulses
+ * on, until a hanging chain diverges. */
+double rb_joint_baumgarte_rate(const rb_world *world, double h);
+
 rb_body_state *rb_joint_state_a(rb_world *world, const rb_joint *joint); /* NULL for a mouse joint */
 rb_body_state *rb_joint_state_b(rb_world *world, const rb_joint *joint);
 /* Applies P at the anchors: -P to A, +P to B. */

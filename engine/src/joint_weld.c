@@ -85,8 +85,7 @@ static void solve_angle(rb_world *world, rb_joint *joint, rb_body_state *a, rb_b
         rb_softness soft = rb_make_softness(w->angular_hertz, w->angular_damping_ratio, w->axial_mass, h);
         impulse = -(cdot + soft.bias_rate * c + soft.gamma * w->angular_impulse) / (1.0 / w->axial_mass + soft.gamma);
     } else {
-        double bias =
-            world->settings.position_correction == RB_CORRECTION_BAUMGARTE ? world->settings.baumgarte * c / h : 0.0;
+        double bias = rb_joint_baumgarte_rate(world, h) * c;
         impulse = -w->axial_mass * (cdot + bias);
     }
     w->angular_impulse += impulse;
@@ -120,10 +119,9 @@ void rb_weld_solve(rb_world *world, rb_joint *joint, double h)
     if (w->linear_hertz == 0.0 && w->angular_hertz == 0.0) {
         /* Rigid: the angle and the pin as one 3x3 block. */
         double c = rb_joint_relative_angle(world, joint, w->reference_angle);
-        bool baumgarte = world->settings.position_correction == RB_CORRECTION_BAUMGARTE;
         rb_angular_row row = {
             .sign = 1.0,
-            .bias = baumgarte ? world->settings.baumgarte * c / h : 0.0,
+            .bias = rb_joint_baumgarte_rate(world, h) * c,
             .accumulated = &w->angular_impulse,
             .one_sided = false,
         };

@@ -97,6 +97,7 @@ typedef struct rb_joint_frame {
     double inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b; /* 0 for a body that cannot move */
     rb_vec2 local_a, local_b; /* m, anchors relative to each centre of mass, in the body frames */
     rb_vec2 ra, rb;           /* m, the same turned into the world, now */
+    double omega_a, omega_b;  /* rad/s, the bodies' angular velocities at the start of the substep */
 } rb_joint_frame;
 
 typedef struct rb_revolute_data {
