@@ -128,8 +128,7 @@ static inline rb_joint_id make_pin(rb_world *world, rb_body_id a, rb_body_id b, 
     cr_assert_eq(rb_revolute_joint_def_at(&def, world, a, b, anchor), RB_OK, "rb_revolute_joint_def_at: %s",
                  rb_last_error());
     rb_joint_id joint;
-    cr_assert_eq(rb_revolute_joint_create(world, &def, &joint), RB_OK, "rb_revolute_joint_create: %s",
-                 rb_last_error());
+    cr_assert_eq(rb_revolute_joint_create(world, &def, &joint), RB_OK, "rb_revolute_joint_create: %s", rb_last_error());
     return joint;
 }
 
