@@ -15,6 +15,7 @@ packages=(
     pkg-config       # finds criterion and gsl
     libgsl-dev       # GNU Scientific Library
     libcriterion-dev # unit tests (tests/)
+    libjansson-dev   # model files (musculo/)
     clang-format     # formatting check in tools/check.sh
     valgrind         # memory and cache profiling
 )

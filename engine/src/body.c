@@ -98,6 +98,7 @@ rb_status rb_body_destroy(rb_world *world, rb_body_id id)
     RB_TRY(rb_world_find_body(world, id, "rb_body_destroy", &index));
     RB_TRY(rb_world_check_unlocked(world, "rb_body_destroy"));
     rb_joints_remove_body(world, index);
+    rb_cables_remove_body(world, index);
     rb_body *body = &world->bodies[index];
     while (body->first_shape >= 0) {
         RB_TRY(rb_shape_destroy(world, rb_make_shape_id(world, body->first_shape)));

@@ -3,11 +3,11 @@
  *   prepare contact constraints (surface points, impulses carried over)
  *   for each substep of length h = dt / substeps:
  *       integrate velocities   v += h·(g·gravity_scale + F/m), ω += h·τ/I, then damping
- *       prepare substep        contacts and joints: anchors, normals and masses
+ *       prepare substep        cables, contacts and joints: anchors, normals and masses
  *                              at the poses now
  *       warm start             apply the accumulated impulses again
  *       solve velocities       velocity_iterations passes of sequential impulses:
- *                              joints, then contacts
+ *                              cables, joints, then contacts
  *       integrate positions    x += h·v, θ += h·ω   (semi-implicit Euler)
  *       correct positions      NGS passes over contacts and joints, when the world uses NGS
  *   apply restitution
@@ -18,6 +18,7 @@
  * pump energy into oscillators (Hairer, Lubich, Wanner, "Geometric
  * Numerical Integration", 2006, §VI.3).
  */
+#include "cable_solver.h"
 #include "contact_solver.h"
 #include "error.h"
 #include "joint_solver.h"
@@ -97,6 +98,7 @@ rb_status rb_solver_step(rb_world *world, double dt)
 
     if (!settings->warm_starting) {
         rb_joints_reset_impulses(world);
+        rb_cables_reset_impulses(world);
     }
 
     for (int substep = 0; substep < substeps; ++substep) {
@@ -105,14 +107,17 @@ rb_status rb_solver_step(rb_world *world, double dt)
         profile->integrate_velocities += rb_now_ms() - t;
 
         t = rb_now_ms();
+        rb_cables_prepare(world);
         rb_joints_prepare(world, h);
         rb_contact_solver_prepare_substep(world, h, substep == 0);
+        rb_cables_warm_start(world);
         rb_joints_warm_start(world);
         rb_contact_solver_warm_start(world);
         profile->warm_start += rb_now_ms() - t;
 
         t = rb_now_ms();
         for (int iteration = 0; iteration < settings->velocity_iterations; ++iteration) {
+            rb_cables_solve(world, h);
             rb_joints_solve_velocities(world, h, iteration % 2 == 1);
             rb_contact_solver_solve_velocities(world);
         }

@@ -76,6 +76,7 @@ rb_status rb_world_create(const rb_world_def *def, rb_world **out)
     world->body_free = -1;
     world->shape_free = -1;
     world->joint_free = -1;
+    world->cable_free = -1;
     world->last_substep = 1.0 / 60.0;
     *out = world;
     return RB_OK;
@@ -95,6 +96,7 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->sweep, &world->sweep_capacity, sizeof *world->sweep);
     rb_free_array((void **)&world->constraints, &world->constraint_capacity, sizeof *world->constraints);
     rb_free_array((void **)&world->joints, &world->joint_capacity, sizeof *world->joints);
+    rb_free_array((void **)&world->cables, &world->cable_capacity, sizeof *world->cables);
     rb_free(world, sizeof *world);
 }
 
@@ -146,7 +148,8 @@ size_t rb_world_bytes_in_use(const rb_world *world)
            (size_t)world->spare_capacity * sizeof *world->spare_contacts +
            (size_t)world->pair_capacity * sizeof *world->pairs + (size_t)world->sweep_capacity * sizeof *world->sweep +
            (size_t)world->constraint_capacity * sizeof *world->constraints +
-           (size_t)world->joint_capacity * sizeof *world->joints;
+           (size_t)world->joint_capacity * sizeof *world->joints +
+           (size_t)world->cable_capacity * sizeof *world->cables;
 }
 
 /* ---- ids ----------------------------------------------------------------- */

@@ -9,6 +9,7 @@
 #include <stdint.h>
 
 #include "rb/body.h"
+#include "rb/cable.h"
 #include "rb/collision.h"
 #include "rb/joint.h"
 #include "rb/shape.h"
@@ -139,6 +140,27 @@ typedef struct rb_mouse_data {
     rb_vec2 impulse;
 } rb_mouse_data;
 
+/* A cable and, per substep, the direction of a unit tension's impulse on
+ * each distinct body of its path. */
+typedef struct rb_cable {
+    int next_free;
+    uint16_t generation;
+    bool in_use;
+    int point_count;
+    int bodies[RB_MAX_CABLE_POINTS];
+    rb_vec2 local_points[RB_MAX_CABLE_POINTS]; /* m, from each body's origin */
+    void *user_data;
+    double base_tension; /* N */
+    double damping;      /* N·s/m */
+    double impulse;      /* N·s, accumulated in the current substep */
+    int body_count;      /* distinct bodies of the path, this substep */
+    int solver_bodies[RB_MAX_CABLE_POINTS];
+    rb_vec2 linear[RB_MAX_CABLE_POINTS]; /* Σ (u_i - u_{i-1}) over the body's points */
+    double angular[RB_MAX_CABLE_POINTS]; /* m, Σ r_i × (u_i - u_{i-1}) */
+    double inv_mass[RB_MAX_CABLE_POINTS], inv_inertia[RB_MAX_CABLE_POINTS];
+    double inverse_mass; /* 1/kg: how fast a unit impulse shortens the path */
+} rb_cable;
+
 typedef struct rb_joint {
     int next_free;
     uint16_t generation;
@@ -197,6 +219,12 @@ struct rb_world {
     int joint_free;
     int joint_count;
 
+    rb_cable *cables;
+    int cable_capacity;
+    int cable_slots;
+    int cable_free;
+    int cable_count;
+
     double last_substep; /* s, the substep length of the last step: impulses / it = forces */
 
     rb_profile profile;
@@ -227,6 +255,9 @@ rb_aabb rb_shape_tight_aabb(const rb_world *world, int shape);
 
 /* Whether a joint joins the two bodies and forbids their collision. */
 bool rb_joints_forbid_collision(const rb_world *world, int body_a, int body_b);
+
+/* Destroys every cable with a point on the body. */
+void rb_cables_remove_body(rb_world *world, int body);
 
 /* Destroys every joint attached to the body. */
 void rb_joints_remove_body(rb_world *world, int body);

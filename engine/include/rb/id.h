@@ -29,9 +29,16 @@ typedef struct rb_joint_id {
     uint16_t generation;
 } rb_joint_id;
 
+typedef struct rb_cable_id {
+    int32_t index;
+    uint16_t world;
+    uint16_t generation;
+} rb_cable_id;
+
 static inline bool rb_body_id_is_null(rb_body_id id) { return id.generation == 0; }
 static inline bool rb_shape_id_is_null(rb_shape_id id) { return id.generation == 0; }
 static inline bool rb_joint_id_is_null(rb_joint_id id) { return id.generation == 0; }
+static inline bool rb_cable_id_is_null(rb_cable_id id) { return id.generation == 0; }
 static inline bool rb_body_id_equals(rb_body_id a, rb_body_id b)
 {
     return a.index == b.index && a.world == b.world && a.generation == b.generation;

@@ -4,6 +4,7 @@
 
 #include "rb/base.h"
 #include "rb/body.h"
+#include "rb/cable.h"
 #include "rb/collision.h"
 #include "rb/debug_draw.h"
 #include "rb/geometry.h"

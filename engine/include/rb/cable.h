@@ -1,0 +1,55 @@
+/* Cables: a path of points fixed on bodies (origin, via points,
+ * insertion) that carries a tension, as a muscle-tendon unit or a rope
+ * over pulleys does.
+ *
+ * The path's length L is the sum of its segments; its lengthening speed
+ * L' comes from the points' velocities. Under a tension T each point is
+ * pulled along the unit vectors towards its neighbours, T·(u_i - u_{i-1}),
+ * so a via point gets the sum of the two pulls and a path whose ends are
+ * on one body exerts no net force or torque on it.
+ *
+ * The tension follows the law T = base_tension + damping·L', never below 0
+ * (a cable pulls, never pushes), set for each step by the caller. The
+ * solver makes T consistent with the velocities at the end of each
+ * substep (linearly implicit), so a stiff damping (a Hill muscle's
+ * force-velocity slope) stays stable at any substep: an explicit force
+ * c·L' is unstable once h·c·k > 2, k the path's inverse effective mass.
+ */
+#ifndef RB_CABLE_H
+#define RB_CABLE_H
+
+#include "rb/base.h"
+#include "rb/id.h"
+#include "rb/math.h"
+#include "rb/world.h"
+
+#define RB_MAX_CABLE_POINTS 8
+
+typedef struct rb_cable_def {
+    int point_count;                           /* 2 .. RB_MAX_CABLE_POINTS */
+    rb_body_id bodies[RB_MAX_CABLE_POINTS];    /* the body of each point, in path order */
+    rb_vec2 local_points[RB_MAX_CABLE_POINTS]; /* m, each point in its body's frame (from the origin) */
+    void *user_data;
+} rb_cable_def;
+
+rb_cable_def rb_default_cable_def(void);
+
+/* Fails when a body id is invalid, a point is not finite, the count is out
+ * of range, or two consecutive points coincide (the direction between
+ * them would be undefined). */
+rb_status rb_cable_create(rb_world *world, const rb_cable_def *def, rb_cable_id *out);
+rb_status rb_cable_destroy(rb_world *world, rb_cable_id cable);
+bool rb_cable_is_valid(const rb_world *world, rb_cable_id cable);
+
+/* The tension law for the following steps: base_tension (N, finite) and
+ * damping (N·s/m, >= 0, finite). Both 0 (the default): a slack cable. */
+rb_status rb_cable_set_tension_law(rb_world *world, rb_cable_id cable, double base_tension, double damping);
+
+double rb_cable_length(const rb_world *world, rb_cable_id cable);            /* m, now */
+double rb_cable_lengthening_speed(const rb_world *world, rb_cable_id cable); /* m/s, now; < 0 while shortening */
+/* The tension (N, >= 0) the cable applied in the last substep. */
+double rb_cable_tension(const rb_world *world, rb_cable_id cable);
+/* The world positions of the path's points now; returns the count. */
+int rb_cable_points(const rb_world *world, rb_cable_id cable, rb_vec2 *out, int capacity);
+
+#endif

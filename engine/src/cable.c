@@ -1,0 +1,307 @@
+/* Cables: creation, read-outs, and the implicit tension law in the
+ * solver.
+ *
+ * With J the map from body velocities to the lengthening speed L' and
+ * k = J·M⁻¹·Jᵀ, an impulse P of tension shortens the path at k·P. The
+ * substep's tension impulse P = h·T must satisfy the law at the end of
+ * the substep, T = T0 + c·(L' - k·(P - P_acc)), with P_acc what was
+ * applied so far, which gives
+ *     P = h·(T0 + c·L' + c·k·P_acc) / (1 + h·c·k),   clamped to P >= 0.
+ * This is the backward-Euler step of the damper (Hairer and Wanner,
+ * "Solving ODEs II", 1996, §IV.1): stable for any c, where the explicit
+ * force c·L' diverges once h·c·k > 2. */
+#include <float.h>
+#include <string.h>
+
+#include "allocator.h"
+#include "cable_solver.h"
+#include "error.h"
+
+rb_cable_def rb_default_cable_def(void) { return (rb_cable_def){.point_count = 0}; }
+
+static rb_vec2 world_point(const rb_world *world, const rb_cable *cable, int i)
+{
+    return rb_transform_point(rb_body_origin_transform(world, cable->bodies[i]), cable->local_points[i]);
+}
+
+rb_status rb_cable_create(rb_world *world, const rb_cable_def *def, rb_cable_id *out)
+{
+    const char *f = "rb_cable_create";
+    rb_clear_error();
+    RB_TRY(rb_check_pointer(f, "out", out));
+    *out = (rb_cable_id){0};
+    RB_TRY(rb_check_pointer(f, "def", def));
+    RB_TRY(rb_check_pointer(f, "world", world));
+    RB_TRY(rb_world_check_unlocked(world, f));
+    if (def->point_count < 2 || def->point_count > RB_MAX_CABLE_POINTS) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: point_count is %d, expected 2 to %d", f, def->point_count,
+                               RB_MAX_CABLE_POINTS);
+    }
+    rb_cable cable = {.point_count = def->point_count, .user_data = def->user_data};
+    for (int i = 0; i < def->point_count; ++i) {
+        RB_TRY(rb_world_find_body(world, def->bodies[i], f, &cable.bodies[i]));
+        RB_TRY(rb_check_vec2(f, "local_points[i]", def->local_points[i]));
+        cable.local_points[i] = def->local_points[i];
+    }
+    for (int i = 0; i + 1 < def->point_count; ++i) {
+        if (rb_distance(world_point(world, &cable, i), world_point(world, &cable, i + 1)) < RB_POLYGON_WELD_DISTANCE) {
+            return rb_report_error(RB_ERR_DEGENERATE_SHAPE, "%s: points %d and %d coincide", f, i, i + 1);
+        }
+    }
+    int index = -1;
+    if (world->cable_free >= 0) {
+        index = world->cable_free;
+        world->cable_free = world->cables[index].next_free;
+    } else {
+        if (rb_grow_array((void **)&world->cables, &world->cable_capacity, world->cable_slots + 1,
+                          sizeof *world->cables) != 0) {
+            return rb_report_error(RB_ERR_OUT_OF_MEMORY, "%s: out of memory", f);
+        }
+        index = world->cable_slots++;
+        world->cables[index].generation = 0;
+    }
+    uint16_t generation = (uint16_t)(world->cables[index].generation + 1u);
+    cable.generation = generation != 0 ? generation : 1;
+    cable.in_use = true;
+    world->cables[index] = cable;
+    world->cable_count++;
+    *out = (rb_cable_id){index, world->serial, cable.generation};
+    return RB_OK;
+}
+
+static rb_status find_cable(const rb_world *world, rb_cable_id id, const char *function, int *index)
+{
+    if (world == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: world is NULL", function);
+    }
+    if (id.generation == 0 || id.world != world->serial || id.index < 0 || id.index >= world->cable_slots) {
+        return rb_report_error(RB_ERR_FOREIGN_ID, "%s: the cable id is null or belongs to another world", function);
+    }
+    if (!world->cables[id.index].in_use || world->cables[id.index].generation != id.generation) {
+        return rb_report_error(RB_ERR_STALE_ID, "%s: the cable id refers to a destroyed cable", function);
+    }
+    *index = id.index;
+    return RB_OK;
+}
+
+static void free_cable(rb_world *world, int index)
+{
+    world->cables[index].in_use = false;
+    world->cables[index].next_free = world->cable_free;
+    world->cable_free = index;
+    world->cable_count--;
+}
+
+rb_status rb_cable_destroy(rb_world *world, rb_cable_id id)
+{
+    rb_clear_error();
+    int index = -1;
+    RB_TRY(find_cable(world, id, "rb_cable_destroy", &index));
+    RB_TRY(rb_world_check_unlocked(world, "rb_cable_destroy"));
+    free_cable(world, index);
+    return RB_OK;
+}
+
+void rb_cables_remove_body(rb_world *world, int body)
+{
+    for (int c = 0; c < world->cable_slots; ++c) {
+        rb_cable *cable = &world->cables[c];
+        for (int i = 0; cable->in_use && i < cable->point_count; ++i) {
+            if (cable->bodies[i] == body) {
+                free_cable(world, c);
+            }
+        }
+    }
+}
+
+bool rb_cable_is_valid(const rb_world *world, rb_cable_id id)
+{
+    return world != NULL && id.generation != 0 && id.world == world->serial && id.index >= 0 &&
+           id.index < world->cable_slots && world->cables[id.index].in_use &&
+           world->cables[id.index].generation == id.generation;
+}
+
+rb_status rb_cable_set_tension_law(rb_world *world, rb_cable_id id, double base_tension, double damping)
+{
+    const char *f = "rb_cable_set_tension_law";
+    rb_clear_error();
+    int index = -1;
+    RB_TRY(find_cable(world, id, f, &index));
+    RB_TRY(rb_world_check_unlocked(world, f));
+    RB_TRY(rb_check_finite(f, "base_tension", base_tension));
+    RB_TRY(rb_check_range(f, "damping", damping, 0.0, DBL_MAX));
+    rb_cable *cable = &world->cables[index];
+    cable->base_tension = base_tension;
+    cable->damping = damping;
+    for (int i = 0; i < cable->point_count; ++i) {
+        world->bodies[cable->bodies[i]].awake = true;
+    }
+    return RB_OK;
+}
+
+/* ---- read-outs ---------------------------------------------------------------- */
+
+double rb_cable_length(const rb_world *world, rb_cable_id id)
+{
+    rb_clear_error();
+    int index = -1;
+    if (find_cable(world, id, "rb_cable_length", &index) != RB_OK) {
+        return 0.0;
+    }
+    const rb_cable *cable = &world->cables[index];
+    double length = 0.0;
+    for (int i = 0; i + 1 < cable->point_count; ++i) {
+        length += rb_distance(world_point(world, cable, i), world_point(world, cable, i + 1));
+    }
+    return length;
+}
+
+double rb_cable_lengthening_speed(const rb_world *world, rb_cable_id id)
+{
+    rb_clear_error();
+    int index = -1;
+    if (find_cable(world, id, "rb_cable_lengthening_speed", &index) != RB_OK) {
+        return 0.0;
+    }
+    const rb_cable *cable = &world->cables[index];
+    /* L' = Σ over segments of u·(v_{i+1} - v_i), each point's velocity
+     * v + ω × r from its body. */
+    double speed = 0.0;
+    for (int i = 0; i + 1 < cable->point_count; ++i) {
+        rb_vec2 p = world_point(world, cable, i);
+        rb_vec2 q = world_point(world, cable, i + 1);
+        const rb_body_state *sp = &world->states[cable->bodies[i]];
+        const rb_body_state *sq = &world->states[cable->bodies[i + 1]];
+        rb_vec2 vp = rb_add(sp->linear_velocity, rb_cross_sv(sp->angular_velocity, rb_sub(p, sp->center)));
+        rb_vec2 vq = rb_add(sq->linear_velocity, rb_cross_sv(sq->angular_velocity, rb_sub(q, sq->center)));
+        speed += rb_dot(rb_normalize(rb_sub(q, p)), rb_sub(vq, vp));
+    }
+    return speed;
+}
+
+double rb_cable_tension(const rb_world *world, rb_cable_id id)
+{
+    rb_clear_error();
+    int index = -1;
+    if (find_cable(world, id, "rb_cable_tension", &index) != RB_OK) {
+        return 0.0;
+    }
+    return world->cables[index].impulse / world->last_substep;
+}
+
+int rb_cable_points(const rb_world *world, rb_cable_id id, rb_vec2 *out, int capacity)
+{
+    rb_clear_error();
+    int index = -1;
+    if (find_cable(world, id, "rb_cable_points", &index) != RB_OK) {
+        return 0;
+    }
+    if (out == NULL && capacity > 0) {
+        rb_report_error(RB_ERR_INVALID_ARGUMENT, "rb_cable_points: out is NULL");
+        return 0;
+    }
+    const rb_cable *cable = &world->cables[index];
+    int count = cable->point_count < capacity ? cable->point_count : capacity;
+    for (int i = 0; i < count; ++i) {
+        out[i] = world_point(world, cable, i);
+    }
+    return count;
+}
+
+/* ---- solver --------------------------------------------------------------------- */
+
+/* Adds a point's pull direction to its body's share, merging the points
+ * of one body. */
+static void add_pull(rb_cable *cable, const rb_world *world, int body, rb_vec2 point, rb_vec2 pull)
+{
+    int k = 0;
+    while (k < cable->body_count && cable->solver_bodies[k] != body) {
+        ++k;
+    }
+    if (k == cable->body_count) {
+        const rb_body *b = &world->bodies[body];
+        bool moves = b->type == RB_BODY_DYNAMIC && b->awake;
+        cable->solver_bodies[k] = body;
+        cable->linear[k] = rb_v2(0.0, 0.0);
+        cable->angular[k] = 0.0;
+        cable->inv_mass[k] = moves ? b->inv_mass : 0.0;
+        cable->inv_inertia[k] = moves ? b->inv_inertia : 0.0;
+        cable->body_count++;
+    }
+    cable->linear[k] = rb_add(cable->linear[k], pull);
+    cable->angular[k] += rb_cross(rb_sub(point, world->states[body].center), pull);
+}
+
+void rb_cables_prepare(rb_world *world)
+{
+    for (int c = 0; c < world->cable_slots; ++c) {
+        rb_cable *cable = &world->cables[c];
+        if (!cable->in_use) {
+            continue;
+        }
+        rb_vec2 points[RB_MAX_CABLE_POINTS];
+        for (int i = 0; i < cable->point_count; ++i) {
+            points[i] = world_point(world, cable, i);
+        }
+        cable->body_count = 0;
+        rb_vec2 previous = rb_v2(0.0, 0.0); /* u_{i-1}; none before the origin */
+        for (int i = 0; i < cable->point_count; ++i) {
+            rb_vec2 next =
+                i + 1 < cable->point_count ? rb_normalize(rb_sub(points[i + 1], points[i])) : rb_v2(0.0, 0.0);
+            add_pull(cable, world, cable->bodies[i], points[i], rb_sub(next, previous));
+            previous = next;
+        }
+        double k = 0.0;
+        for (int b = 0; b < cable->body_count; ++b) {
+            k += cable->inv_mass[b] * rb_dot(cable->linear[b], cable->linear[b]) +
+                 cable->inv_inertia[b] * cable->angular[b] * cable->angular[b];
+        }
+        cable->inverse_mass = k;
+    }
+}
+
+static void apply(const rb_cable *cable, rb_world *world, double impulse)
+{
+    for (int b = 0; b < cable->body_count; ++b) {
+        rb_body_state *s = &world->states[cable->solver_bodies[b]];
+        s->linear_velocity = rb_mul_add(s->linear_velocity, impulse * cable->inv_mass[b], cable->linear[b]);
+        s->angular_velocity += impulse * cable->inv_inertia[b] * cable->angular[b];
+    }
+}
+
+void rb_cables_warm_start(rb_world *world)
+{
+    for (int c = 0; c < world->cable_slots; ++c) {
+        if (world->cables[c].in_use) {
+            apply(&world->cables[c], world, world->cables[c].impulse);
+        }
+    }
+}
+
+void rb_cables_solve(rb_world *world, double h)
+{
+    for (int c = 0; c < world->cable_slots; ++c) {
+        rb_cable *cable = &world->cables[c];
+        if (!cable->in_use || cable->inverse_mass <= 0.0) {
+            continue;
+        }
+        /* L' = -Σ (pull · v + angular · ω): the pulls point inwards. */
+        double speed = 0.0;
+        for (int b = 0; b < cable->body_count; ++b) {
+            const rb_body_state *s = &world->states[cable->solver_bodies[b]];
+            speed -= rb_dot(cable->linear[b], s->linear_velocity) + cable->angular[b] * s->angular_velocity;
+        }
+        double c_k = cable->damping * cable->inverse_mass;
+        double total = h * (cable->base_tension + cable->damping * speed + c_k * cable->impulse) / (1.0 + h * c_k);
+        total = fmax(total, 0.0);
+        apply(cable, world, total - cable->impulse);
+        cable->impulse = total;
+    }
+}
+
+void rb_cables_reset_impulses(rb_world *world)
+{
+    for (int c = 0; c < world->cable_slots; ++c) {
+        world->cables[c].impulse = 0.0;
+    }
+}

@@ -1,0 +1,57 @@
+/* The Hill muscle's curves, as pure functions of normalized inputs.
+ *
+ * Normalized length l̃ = belly length / rest (optimal) length. Normalized
+ * velocity ṽ = lengthening velocity / Vmax: negative while the muscle
+ * shortens (one sign convention for the whole project, framework.md §4).
+ *   f_L(l̃)  active force-length, in [0, 1] (never negative: a muscle never pushes)
+ *   f_P(l̃)  passive force-length, >= 0
+ *   f_V(ṽ)  force-velocity: 0 for ṽ <= -1, 1 at ṽ = 0, rising to an
+ *           eccentric plateau while lengthening, never negative
+ * Errors use the engine's channel: an rb_status, and rb_last_error().
+ */
+#ifndef MU_CURVES_H
+#define MU_CURVES_H
+
+#include "rb/base.h"
+
+typedef struct mu_curves mu_curves;
+
+typedef enum mu_interpolation {
+    MU_INTERPOLATION_LINEAR,  /* as the seed: straight lines between the knots */
+    MU_INTERPOLATION_STEFFEN, /* monotone cubic (Steffen 1990): smooth, no overshoot */
+} mu_interpolation;
+
+/* Seed 003's analytic curves and the eccentric branch joined to them. */
+typedef struct mu_analytic_curves {
+    double width;             /* SK of the Gaussian f_L = exp(-((l̃ - 1)/SK)²), > 0, default 0.25 */
+    double curvature;         /* a/F0 of the Hill hyperbola for shortening, > 0, default 0.05 */
+    double eccentric_plateau; /* f_V's limit for fast lengthening, > 1, default 1.5 */
+    double passive_scale;     /* c of f_P = c·(exp(d·(l̃ - 1)) - 1) where positive, > 0, default 0.01 */
+    double passive_rate;      /* d, > 0, default 10 */
+} mu_analytic_curves;
+
+mu_analytic_curves mu_default_analytic_curves(void);
+
+/* The seed's tables (Ross et al. 2018, digitised), read from the CSV file
+ * `path` (columns curve,x,y; curves active_force_length,
+ * passive_force_length, force_velocity; x strictly increasing within a
+ * curve), interpolated as asked and clamped to their end values outside.
+ * A bad file fails with a message naming the file, the line and what was
+ * expected. */
+rb_status mu_curves_create_tabulated(const char *path, mu_interpolation interpolation, mu_curves **out);
+
+/* The tables shipped in models/data/hill-curves.csv. */
+rb_status mu_curves_create_seed_tables(mu_interpolation interpolation, mu_curves **out);
+
+rb_status mu_curves_create_analytic(const mu_analytic_curves *parameters, mu_curves **out);
+
+/* Accepts NULL. */
+void mu_curves_destroy(mu_curves *curves);
+
+double mu_curve_active_length(const mu_curves *curves, double normalized_length);
+double mu_curve_passive_length(const mu_curves *curves, double normalized_length);
+double mu_curve_velocity(const mu_curves *curves, double normalized_velocity);
+/* d f_V / d ṽ at ṽ (>= 0): the muscle's damping, for the implicit solve. */
+double mu_curve_velocity_slope(const mu_curves *curves, double normalized_velocity);
+
+#endif
