@@ -48,10 +48,14 @@ rb_status mu_curves_create_analytic(const mu_analytic_curves *parameters, mu_cur
 /* Accepts NULL. */
 void mu_curves_destroy(mu_curves *curves);
 
+/* The curves at a normalized length or velocity. Read-only: one set may
+ * serve many muscles and threads. A NaN input, or NULL curves, gives NaN
+ * (visible, rather than a plausible force). */
 double mu_curve_active_length(const mu_curves *curves, double normalized_length);
 double mu_curve_passive_length(const mu_curves *curves, double normalized_length);
 double mu_curve_velocity(const mu_curves *curves, double normalized_velocity);
-/* d f_V / d ṽ at ṽ (>= 0): the muscle's damping, for the implicit solve. */
+/* d f_V / d ṽ at ṽ (>= 0): the muscle's damping, for the implicit solve.
+ * A table's slope is 0 outside it and one side's slope at a linear knot. */
 double mu_curve_velocity_slope(const mu_curves *curves, double normalized_velocity);
 
 #endif

@@ -1,0 +1,296 @@
+/* The Hill muscle's curves f_L, f_P and f_V (framework.md §4 and §9), in
+ * two kinds:
+ *
+ * - tabulated: the seed's tables digitised from Ross et al. 2018 (PLOS
+ *   Comput Biol), interpolated by GSL, straight lines as the seed or
+ *   Steffen's monotone cubic (Steffen 1990, Astron. Astrophys. 239:443),
+ *   which is smooth yet never overshoots its knots; clamped to the end
+ *   values outside the table;
+ * - analytic: seed 003's Gaussian force-length, exponential passive curve
+ *   and Hill's (1938) hyperbola for shortening, joined at ṽ = 0 to an
+ *   eccentric branch for lengthening (derived at analytic_velocity).
+ *
+ * The curves are read-only once made, so one set may serve many muscles
+ * (and threads): GSL is called without an accelerator, whose cached
+ * interval would be state written on every evaluation.
+ */
+#include <gsl/gsl_interp.h>
+#include <math.h>
+#include <stdbool.h>
+#include <stdlib.h>
+
+#include "curve_table.h"
+#include "mu/curves.h"
+
+struct mu_curves {
+    bool tabulated;
+    /* Tabulated: the knots and GSL's interpolants over them. */
+    mu_curve_table tables[MU_CURVE_KIND_COUNT];
+    gsl_interp *interpolants[MU_CURVE_KIND_COUNT];
+    /* Analytic: the parameters, and the hyperbola's slope at ṽ = 0, where
+     * the eccentric branch starts. */
+    mu_analytic_curves analytic;
+    double isometric_slope;
+};
+
+mu_analytic_curves mu_default_analytic_curves(void)
+{
+    /* Seed 003's constants: SK = 0.25; a/F0 = 0.25 N / 5 N; c = 0.01,
+     * d = 10. The plateau is ours (the seed has no lengthening branch);
+     * 1.5 lies in the physiological 1.4-1.8 (experiments.md). */
+    return (mu_analytic_curves){
+        .width = 0.25,
+        .curvature = 0.05,
+        .eccentric_plateau = 1.5,
+        .passive_scale = 0.01,
+        .passive_rate = 10.0,
+    };
+}
+
+rb_status mu_curves_create_tabulated(const char *path, mu_interpolation interpolation, mu_curves **out)
+{
+    const char *f = "mu_curves_create_tabulated";
+    if (out == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: out is NULL", f);
+    }
+    *out = NULL;
+    if (path == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: path is NULL", f);
+    }
+    const gsl_interp_type *type = NULL;
+    const char *type_name = NULL;
+    switch (interpolation) {
+    case MU_INTERPOLATION_LINEAR:
+        type = gsl_interp_linear;
+        type_name = "linear";
+        break;
+    case MU_INTERPOLATION_STEFFEN:
+        type = gsl_interp_steffen;
+        type_name = "Steffen";
+        break;
+    default:
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                               "%s: interpolation is %d, expected MU_INTERPOLATION_LINEAR or MU_INTERPOLATION_STEFFEN",
+                               f, (int)interpolation);
+    }
+    mu_curves *curves = calloc(1, sizeof *curves);
+    if (curves == NULL) {
+        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "%s: out of memory", f);
+    }
+    curves->tabulated = true;
+    /* The reader asks for GSL's own minimum (2 knots for lines, 3 for
+     * Steffen) and strictly increasing x, the two things gsl_interp_alloc
+     * and gsl_interp_init reject, so neither can fail below but for memory
+     * (on which GSL's default error handler aborts before returning NULL;
+     * a program that turned the handler off gets our error). */
+    rb_status status = mu_curve_tables_read(path, gsl_interp_type_min_size(type), type_name, curves->tables);
+    for (size_t kind = 0; kind < MU_CURVE_KIND_COUNT && status == RB_OK; kind++) {
+        const mu_curve_table *table = &curves->tables[kind];
+        curves->interpolants[kind] = gsl_interp_alloc(type, table->count);
+        if (curves->interpolants[kind] == NULL) {
+            status = rb_report_error(RB_ERR_OUT_OF_MEMORY, "%s: out of memory for the interpolants of %s", f, path);
+        } else {
+            gsl_interp_init(curves->interpolants[kind], table->x, table->y, table->count);
+        }
+    }
+    if (status != RB_OK) {
+        mu_curves_destroy(curves);
+        return status;
+    }
+    *out = curves;
+    return RB_OK;
+}
+
+rb_status mu_curves_create_seed_tables(mu_interpolation interpolation, mu_curves **out)
+{
+    return mu_curves_create_tabulated(SINEW_DATA_DIR "/data/hill-curves.csv", interpolation, out);
+}
+
+/* `value` is finite and above `minimum` (NaN fails too). */
+static bool in_range(double value, double minimum) { return isfinite(value) && value > minimum; }
+
+rb_status mu_curves_create_analytic(const mu_analytic_curves *parameters, mu_curves **out)
+{
+    const char *f = "mu_curves_create_analytic";
+    if (out == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: out is NULL", f);
+    }
+    *out = NULL;
+    if (parameters == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: parameters is NULL", f);
+    }
+    const mu_analytic_curves p = *parameters;
+    if (!in_range(p.width, 0.0)) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: width is %g, expected a finite SK > 0 (seed 003: 0.25)", f,
+                               p.width);
+    }
+    if (!in_range(p.curvature, 0.0)) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                               "%s: curvature is %g, expected a finite a/F0 > 0 (seed 003: 0.05)", f, p.curvature);
+    }
+    if (!in_range(p.eccentric_plateau, 1.0)) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                               "%s: eccentric_plateau is %g, expected a finite f_V limit > 1 (default 1.5)", f,
+                               p.eccentric_plateau);
+    }
+    if (!in_range(p.passive_scale, 0.0)) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                               "%s: passive_scale is %g, expected a finite c > 0 (seed 003: 0.01)", f, p.passive_scale);
+    }
+    if (!in_range(p.passive_rate, 0.0)) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                               "%s: passive_rate is %g, expected a finite d > 0 (seed 003: 10)", f, p.passive_rate);
+    }
+    mu_curves *curves = calloc(1, sizeof *curves);
+    if (curves == NULL) {
+        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "%s: out of memory", f);
+    }
+    curves->analytic = p;
+    /* d f_V/d ṽ of the hyperbola at ṽ = 0: (1 + k)/k, see analytic_velocity. */
+    curves->isometric_slope = (1.0 + p.curvature) / p.curvature;
+    *out = curves;
+    return RB_OK;
+}
+
+void mu_curves_destroy(mu_curves *curves)
+{
+    if (curves == NULL) {
+        return;
+    }
+    for (size_t kind = 0; kind < MU_CURVE_KIND_COUNT; kind++) {
+        gsl_interp_free(curves->interpolants[kind]);
+    }
+    mu_curve_tables_free(curves->tables);
+    free(curves);
+}
+
+/* The interpolant at x, its end values outside the table, and never below
+ * 0: a muscle only pulls, and a hand-edited table may dip below (the
+ * report's annex prints -0.001 for the first passive knots). */
+static double tabulated_value(const mu_curves *curves, mu_curve_kind kind, double x)
+{
+    const mu_curve_table *table = &curves->tables[kind];
+    const size_t last = table->count - 1;
+    double y = 0.0;
+    if (x <= table->x[0]) {
+        y = table->y[0];
+    } else if (x >= table->x[last]) {
+        y = table->y[last];
+    } else {
+        y = gsl_interp_eval(curves->interpolants[kind], table->x, table->y, x, NULL);
+    }
+    return y < 0.0 ? 0.0 : y;
+}
+
+/* The interpolant's derivative at x; 0 outside the table, where the curve
+ * is clamped flat. Negative slopes are raised to 0: the muscle uses the
+ * slope as a damping coefficient, and a negative one would feed energy in
+ * (the f_V table's last knots fall by 0.0014, digitisation noise). At a
+ * knot of the linear table this is one side's slope. */
+static double tabulated_slope(const mu_curves *curves, mu_curve_kind kind, double x)
+{
+    const mu_curve_table *table = &curves->tables[kind];
+    if (!(x > table->x[0] && x < table->x[table->count - 1])) {
+        return 0.0;
+    }
+    const double slope = gsl_interp_eval_deriv(curves->interpolants[kind], table->x, table->y, x, NULL);
+    return slope < 0.0 ? 0.0 : slope;
+}
+
+/* Analytic f_V, with k = a/F0 (curvature) and P the eccentric plateau.
+ *
+ * Shortening (ṽ <= 0), seed 003's hyperbola (Hill 1938) in the shortening
+ * speed s = -ṽ:
+ *   f_V = (1 - s)/(1 + s/k) = k(1 - s)/(k + s)   for 0 <= s <= 1, 0 beyond.
+ * Its slope: d f_V/ds = k·(-(k + s) - (1 - s))/(k + s)² = -k(1 + k)/(k + s)²,
+ * so d f_V/dṽ = k(1 + k)/(k - ṽ)², which is s0 = (1 + k)/k at ṽ = 0 (21 for
+ * k = 0.05).
+ *
+ * Lengthening (ṽ > 0): the hyperbola cannot be continued (it is singular
+ * at ṽ = k), so we join it to
+ *   f_V = P - (P - 1)·exp(-s0·ṽ/(P - 1)).
+ * It gives f_V(0) = 1 and d f_V/dṽ = s0·exp(-s0·ṽ/(P - 1)), which is s0 at
+ * 0 (so f_V is C¹ there), positive (monotone), and tends to P from below
+ * (bounded). It needs no parameter beyond the plateau; its rise length
+ * (P - 1)/s0 = 0.024 for the defaults matches the tabulated curve, which is
+ * at 1.316 at ṽ = 0.027 where this branch gives 1.341. It is evaluated as
+ * 1 - (P - 1)·expm1(-s0·ṽ/(P - 1)), the same value without cancellation
+ * near ṽ = 0. */
+static double analytic_velocity(const mu_curves *curves, double v)
+{
+    const double k = curves->analytic.curvature;
+    if (v <= -1.0) {
+        return 0.0;
+    }
+    if (v <= 0.0) {
+        const double s = -v;
+        return (1.0 - s) / (1.0 + s / k);
+    }
+    const double rise = curves->analytic.eccentric_plateau - 1.0;
+    return 1.0 - rise * expm1(-curves->isometric_slope * v / rise);
+}
+
+/* d f_V/dṽ of analytic_velocity (derived there). */
+static double analytic_velocity_slope(const mu_curves *curves, double v)
+{
+    const double k = curves->analytic.curvature;
+    if (v <= -1.0) {
+        return 0.0;
+    }
+    if (v <= 0.0) {
+        return k * (1.0 + k) / ((k - v) * (k - v));
+    }
+    const double rise = curves->analytic.eccentric_plateau - 1.0;
+    return curves->isometric_slope * exp(-curves->isometric_slope * v / rise);
+}
+
+double mu_curve_active_length(const mu_curves *curves, double normalized_length)
+{
+    if (curves == NULL || isnan(normalized_length)) {
+        return NAN;
+    }
+    if (curves->tabulated) {
+        return tabulated_value(curves, MU_CURVE_ACTIVE_LENGTH, normalized_length);
+    }
+    /* Seed 003 (Challis 1994 after Hatze 1981): a Gaussian of width SK. */
+    const double z = (normalized_length - 1.0) / curves->analytic.width;
+    return exp(-z * z);
+}
+
+double mu_curve_passive_length(const mu_curves *curves, double normalized_length)
+{
+    if (curves == NULL || isnan(normalized_length)) {
+        return NAN;
+    }
+    if (curves->tabulated) {
+        return tabulated_value(curves, MU_CURVE_PASSIVE_LENGTH, normalized_length);
+    }
+    /* Seed 003: c·(exp(d·(l̃ - 1)) - 1), counted only where positive, that
+     * is for l̃ > 1; expm1 keeps its digits just above l̃ = 1. */
+    if (normalized_length <= 1.0) {
+        return 0.0;
+    }
+    return curves->analytic.passive_scale * expm1(curves->analytic.passive_rate * (normalized_length - 1.0));
+}
+
+double mu_curve_velocity(const mu_curves *curves, double normalized_velocity)
+{
+    if (curves == NULL || isnan(normalized_velocity)) {
+        return NAN;
+    }
+    if (curves->tabulated) {
+        return tabulated_value(curves, MU_CURVE_VELOCITY, normalized_velocity);
+    }
+    return analytic_velocity(curves, normalized_velocity);
+}
+
+double mu_curve_velocity_slope(const mu_curves *curves, double normalized_velocity)
+{
+    if (curves == NULL || isnan(normalized_velocity)) {
+        return NAN;
+    }
+    if (curves->tabulated) {
+        return tabulated_slope(curves, MU_CURVE_VELOCITY, normalized_velocity);
+    }
+    return analytic_velocity_slope(curves, normalized_velocity);
+}

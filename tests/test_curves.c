@@ -1,0 +1,559 @@
+/* The Hill curves: the seed's tables (Ross et al. 2018) read, interpolated
+ * (linear as the seed, or Steffen 1990) and clamped; seed 003's analytic
+ * curves and their eccentric branch; the slope the muscle uses as its
+ * damping; and the reader's and the parameters' errors.
+ *
+ * The tables' knots are read here by a reader of the test's own, so the
+ * library is checked against the file rather than against itself.
+ */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp */
+
+#include <criterion/criterion.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "mu/curves.h"
+#include "test_support.h"
+
+#define SEED_TABLES SINEW_SOURCE_DIR "/models/data/hill-curves.csv"
+#define MAX_KNOTS 128
+
+typedef struct knots {
+    double x[MAX_KNOTS];
+    double y[MAX_KNOTS];
+    size_t count;
+} knots;
+
+typedef double (*curve_function)(const mu_curves *, double);
+
+/* The three curves in the file's names, with the function evaluating each. */
+static const struct {
+    const char *name;
+    curve_function evaluate;
+} curve_kinds[3] = {
+    {"active_force_length", mu_curve_active_length},
+    {"passive_force_length", mu_curve_passive_length},
+    {"force_velocity", mu_curve_velocity},
+};
+
+static const mu_interpolation interpolations[2] = {MU_INTERPOLATION_LINEAR, MU_INTERPOLATION_STEFFEN};
+
+/* The knots of curve `name` in the seed's file, in file order. */
+static knots read_seed_knots(const char *name)
+{
+    FILE *file = fopen(SEED_TABLES, "r");
+    cr_assert_not_null(file, "cannot open %s", SEED_TABLES);
+    knots k = {.count = 0};
+    char line[256];
+    cr_assert_not_null(fgets(line, sizeof line, file), "%s has no header", SEED_TABLES);
+    while (fgets(line, sizeof line, file) != NULL) {
+        char *x_text = strchr(line, ',');
+        cr_assert_not_null(x_text, "bad row in %s: %s", SEED_TABLES, line);
+        *x_text++ = '\0';
+        if (strcmp(line, name) != 0) {
+            continue;
+        }
+        char *y_text = NULL;
+        double x = strtod(x_text, &y_text);
+        cr_assert_eq(*y_text, ',', "bad row in %s: %s", SEED_TABLES, x_text);
+        cr_assert_lt(k.count, MAX_KNOTS, "more than %d knots of %s", MAX_KNOTS, name);
+        k.x[k.count] = x;
+        k.y[k.count] = strtod(y_text + 1, NULL);
+        k.count++;
+    }
+    fclose(file);
+    cr_assert_geq(k.count, 3, "%s has %zu knots of %s", SEED_TABLES, k.count, name);
+    return k;
+}
+
+static mu_curves *seed_tables(mu_interpolation interpolation)
+{
+    mu_curves *curves = NULL;
+    cr_assert_eq(mu_curves_create_seed_tables(interpolation, &curves), RB_OK, "%s", rb_last_error());
+    cr_assert_not_null(curves);
+    return curves;
+}
+
+static mu_curves *analytic(const mu_analytic_curves *parameters)
+{
+    mu_curves *curves = NULL;
+    cr_assert_eq(mu_curves_create_analytic(parameters, &curves), RB_OK, "%s", rb_last_error());
+    cr_assert_not_null(curves);
+    return curves;
+}
+
+Test(curves, tables_are_exact_at_their_knots)
+{
+    for (size_t i = 0; i < 2; i++) {
+        mu_curves *curves = seed_tables(interpolations[i]);
+        for (size_t c = 0; c < 3; c++) {
+            const knots k = read_seed_knots(curve_kinds[c].name);
+            for (size_t j = 0; j < k.count; j++) {
+                const double value = curve_kinds[c].evaluate(curves, k.x[j]);
+                cr_expect_eq(value, k.y[j], "%s (interpolation %zu) at knot x = %g: got %.17g, expected %.17g",
+                             curve_kinds[c].name, i, k.x[j], value, k.y[j]);
+            }
+        }
+        mu_curves_destroy(curves);
+    }
+}
+
+Test(curves, linear_tables_are_straight_between_knots)
+{
+    mu_curves *curves = seed_tables(MU_INTERPOLATION_LINEAR);
+    for (size_t c = 0; c < 3; c++) {
+        const knots k = read_seed_knots(curve_kinds[c].name);
+        for (size_t j = 0; j + 1 < k.count; j++) {
+            const double middle = 0.5 * (k.x[j] + k.x[j + 1]);
+            const double quarter = 0.75 * k.x[j] + 0.25 * k.x[j + 1];
+            const double slope = (k.y[j + 1] - k.y[j]) / (k.x[j + 1] - k.x[j]);
+            expect_near(curve_kinds[c].evaluate(curves, middle), 0.5 * (k.y[j] + k.y[j + 1]), 1e-12,
+                        "linear table at a midpoint: the knots' average");
+            expect_near(curve_kinds[c].evaluate(curves, quarter), k.y[j] + slope * (quarter - k.x[j]), 1e-12,
+                        "linear table a quarter into an interval");
+        }
+    }
+    mu_curves_destroy(curves);
+}
+
+Test(curves, tables_are_clamped_to_their_end_values_outside)
+{
+    for (size_t i = 0; i < 2; i++) {
+        mu_curves *curves = seed_tables(interpolations[i]);
+        for (size_t c = 0; c < 3; c++) {
+            const knots k = read_seed_knots(curve_kinds[c].name);
+            const double first = k.x[0];
+            const double last = k.x[k.count - 1];
+            const double below[] = {first - 1e-9, first - 0.1, -10.0};
+            const double above[] = {last + 1e-9, last + 0.1, 10.0};
+            for (size_t j = 0; j < 3; j++) {
+                cr_expect_eq(curve_kinds[c].evaluate(curves, below[j]), k.y[0], "%s below its table at %g",
+                             curve_kinds[c].name, below[j]);
+                cr_expect_eq(curve_kinds[c].evaluate(curves, above[j]), k.y[k.count - 1], "%s above its table at %g",
+                             curve_kinds[c].name, above[j]);
+            }
+        }
+        const knots v = read_seed_knots("force_velocity");
+        cr_expect_eq(mu_curve_velocity_slope(curves, v.x[0] - 0.01), 0.0, "f_V slope below the table");
+        cr_expect_eq(mu_curve_velocity_slope(curves, v.x[v.count - 1] + 0.01), 0.0, "f_V slope above the table");
+        cr_expect_eq(mu_curve_velocity_slope(curves, -5.0), 0.0, "f_V slope far below the table");
+        mu_curves_destroy(curves);
+    }
+}
+
+Test(curves, steffen_is_monotone_between_monotone_knots)
+{
+    /* Sampled densely in every interval: the worst overshoot beyond the
+     * interval's knot values and the worst step against their direction
+     * (one check per curve: Criterion reports every check it makes). */
+    mu_curves *curves = seed_tables(MU_INTERPOLATION_STEFFEN);
+    for (size_t c = 0; c < 3; c++) {
+        const knots k = read_seed_knots(curve_kinds[c].name);
+        double overshoot = 0.0;
+        double reversal = 0.0;
+        double worst_x = 0.0;
+        for (size_t j = 0; j + 1 < k.count; j++) {
+            const double low = fmin(k.y[j], k.y[j + 1]);
+            const double high = fmax(k.y[j], k.y[j + 1]);
+            const double direction = k.y[j + 1] >= k.y[j] ? 1.0 : -1.0;
+            double previous = k.y[j];
+            for (int s = 1; s <= 64; s++) {
+                const double x = k.x[j] + (k.x[j + 1] - k.x[j]) * s / 64.0;
+                const double value = curve_kinds[c].evaluate(curves, x);
+                const double beyond = fmax(low - value, value - high);
+                const double back = direction * (previous - value);
+                if (beyond > overshoot || back > reversal) {
+                    worst_x = x;
+                }
+                overshoot = fmax(overshoot, beyond);
+                reversal = fmax(reversal, back);
+                previous = value;
+            }
+        }
+        cr_expect_leq(overshoot, 1e-14, "%s, Steffen: overshoots its knots by %g (worst near x = %.9g)",
+                      curve_kinds[c].name, overshoot, worst_x);
+        cr_expect_leq(reversal, 1e-14, "%s, Steffen: steps back by %g between monotone knots (worst near x = %.9g)",
+                      curve_kinds[c].name, reversal, worst_x);
+    }
+    mu_curves_destroy(curves);
+}
+
+Test(curves, seed_tables_values_at_rest)
+{
+    /* The seed's linear tables at l̃ = 1 and ṽ = 0 (framework.md §4): f_V(0)
+     * is not exactly 1, since no knot sits at 0. */
+    mu_curves *curves = seed_tables(MU_INTERPOLATION_LINEAR);
+    const knots v = read_seed_knots("force_velocity");
+    const knots l = read_seed_knots("active_force_length");
+    size_t j = 0;
+    while (v.x[j + 1] <= 0.0) {
+        j++;
+    }
+    const double fv0 = v.y[j] + (0.0 - v.x[j]) * (v.y[j + 1] - v.y[j]) / (v.x[j + 1] - v.x[j]);
+    size_t i = 0;
+    while (l.x[i + 1] <= 1.0) {
+        i++;
+    }
+    const double fl1 = l.y[i] + (1.0 - l.x[i]) * (l.y[i + 1] - l.y[i]) / (l.x[i + 1] - l.x[i]);
+    expect_near(mu_curve_velocity(curves, 0.0), fv0, 1e-12, "tabulated f_V(0) against its two knots");
+    expect_near(mu_curve_active_length(curves, 1.0), fl1, 1e-12, "tabulated f_L(1) against its two knots");
+    expect_near(mu_curve_velocity(curves, 0.0), 1.0116, 5e-5, "tabulated f_V(0)");
+    expect_near(mu_curve_active_length(curves, 1.0), 0.998, 5e-4, "tabulated f_L(1)");
+    mu_curves_destroy(curves);
+}
+
+/* Seed 003's formulas, written as the seed writes them. */
+static double seed_active_length(double width, double l) { return exp(-pow((l - 1.0) / width, 2.0)); }
+
+static double seed_passive_length(double c, double d, double l) { return fmax(c * (exp(d * (l - 1.0)) - 1.0), 0.0); }
+
+/* f_V = a(Vmax - V)/(F_MAX·(b + V)), b = a·Vmax/F_MAX, V the shortening speed. */
+static double seed_velocity(double a, double max_force, double max_velocity, double shortening_speed)
+{
+    const double b = a * max_velocity / max_force;
+    return a * (max_velocity - shortening_speed) / (max_force * (b + shortening_speed));
+}
+
+Test(curves, analytic_set_follows_seed_003)
+{
+    /* The seed's constants (a = 0.25 N, F_MAX = 5 N, Vmax = 1.5 mm/s), and
+     * a second set with every parameter changed. */
+    const double seed_a[2] = {0.25, 1.0};
+    const double seed_max_force[2] = {5.0, 4.0};
+    const double seed_max_velocity[2] = {1.5, 2.0};
+    mu_analytic_curves sets[2] = {mu_default_analytic_curves(), mu_default_analytic_curves()};
+    sets[1] = (mu_analytic_curves){
+        .width = 0.4, .curvature = 0.25, .eccentric_plateau = 1.8, .passive_scale = 0.02, .passive_rate = 5.0};
+    for (size_t s = 0; s < 2; s++) {
+        const mu_analytic_curves p = sets[s];
+        expect_near(p.curvature, seed_a[s] / seed_max_force[s], 1e-15, "curvature is a/F_MAX");
+        mu_curves *curves = analytic(&p);
+        for (int i = 0; i <= 150; i++) {
+            /* l̃ over [0, 1.5], the seed's L_TOT = 0 : 1.5·L_rest. */
+            const double l = i / 100.0;
+            expect_near(mu_curve_active_length(curves, l), seed_active_length(p.width, l), 1e-14, "analytic f_L");
+            const double passive = seed_passive_length(p.passive_scale, p.passive_rate, l);
+            expect_near(mu_curve_passive_length(curves, l), passive, 1e-14 + 1e-12 * passive, "analytic f_P");
+        }
+        for (int i = 0; i <= 10; i++) {
+            /* The seed's family of shortening speeds V = (i/10)·Vmax. */
+            const double speed = i / 10.0 * seed_max_velocity[s];
+            const double expected = seed_velocity(seed_a[s], seed_max_force[s], seed_max_velocity[s], speed);
+            expect_near(mu_curve_velocity(curves, -speed / seed_max_velocity[s]), expected, 1e-14,
+                        "analytic f_V while shortening");
+        }
+        mu_curves_destroy(curves);
+    }
+}
+
+Test(curves, analytic_velocity_is_one_at_rest_zero_at_max_and_c1_at_zero)
+{
+    const mu_analytic_curves p = mu_default_analytic_curves();
+    mu_curves *curves = analytic(&p);
+    cr_expect_eq(mu_curve_velocity(curves, 0.0), 1.0, "f_V(0)");
+    cr_expect_eq(mu_curve_velocity(curves, -1.0), 0.0, "f_V(-1)");
+    cr_expect_eq(mu_curve_velocity(curves, -1.5), 0.0, "f_V beyond -1");
+    /* The slope at 0 from either side: d/dṽ of (1 + ṽ)/(1 - ṽ/k) at 0 is
+     * (1 + k)/k. */
+    const double s0 = (1.0 + p.curvature) / p.curvature;
+    expect_near(mu_curve_velocity_slope(curves, 0.0), s0, 1e-12, "f_V' at 0");
+    expect_near(mu_curve_velocity_slope(curves, -1e-12), s0, 1e-8, "f_V' just below 0");
+    expect_near(mu_curve_velocity_slope(curves, 1e-12), s0, 1e-8, "f_V' just above 0");
+    const double h = 1e-7;
+    expect_near((mu_curve_velocity(curves, h) - 1.0) / h, s0, 1e-3 * s0, "one-sided difference while lengthening");
+    expect_near((1.0 - mu_curve_velocity(curves, -h)) / h, s0, 1e-3 * s0, "one-sided difference while shortening");
+    /* The eccentric branch rises to its plateau and stays below it (in
+     * doubles it reaches the plateau's neighbourhood and goes flat by
+     * ṽ ≈ 0.8, so "rising" is strict only before that). */
+    double previous = 1.0;
+    int fall_count = 0;
+    int flat_count = 0;
+    int above_count = 0;
+    for (int i = 1; i <= 400; i++) {
+        const double value = mu_curve_velocity(curves, i / 100.0);
+        fall_count += value < previous;
+        flat_count += i <= 50 && value <= previous;
+        above_count += value > p.eccentric_plateau;
+        previous = value;
+    }
+    cr_expect_eq(fall_count, 0, "f_V falls %d times while lengthening", fall_count);
+    cr_expect_eq(flat_count, 0, "f_V does not rise %d times over (0, 0.5]", flat_count);
+    cr_expect_eq(above_count, 0, "f_V exceeds its plateau %d times", above_count);
+    expect_near(mu_curve_velocity(curves, 1.0), p.eccentric_plateau, 1e-9, "f_V at fast lengthening");
+    mu_curves_destroy(curves);
+}
+
+/* The smallest of f over [from, to] in steps of `step`, and where. */
+static double minimum_over(curve_function f, const mu_curves *curves, double from, double to, double step,
+                           double *where)
+{
+    double minimum = INFINITY;
+    const int count = (int)lround((to - from) / step);
+    for (int i = 0; i <= count; i++) {
+        const double x = from + i * step;
+        const double value = f(curves, x);
+        if (!(value >= minimum)) {
+            minimum = value;
+            *where = x;
+        }
+    }
+    return minimum;
+}
+
+Test(curves, no_curve_is_ever_negative)
+{
+    const mu_analytic_curves p = mu_default_analytic_curves();
+    mu_curves *sets[3] = {analytic(&p), seed_tables(MU_INTERPOLATION_LINEAR), seed_tables(MU_INTERPOLATION_STEFFEN)};
+    const char *set_names[3] = {"analytic", "linear tables", "Steffen tables"};
+    const struct {
+        const char *name;
+        curve_function f;
+        double from, to;
+    } sweeps[4] = {
+        {"f_L", mu_curve_active_length, 0.0, 2.5},
+        {"f_P", mu_curve_passive_length, 0.0, 2.5},
+        {"f_V", mu_curve_velocity, -2.0, 2.0},
+        {"f_V'", mu_curve_velocity_slope, -2.0, 2.0},
+    };
+    for (size_t s = 0; s < 3; s++) {
+        for (size_t w = 0; w < 4; w++) {
+            double where = 0.0;
+            const double minimum = minimum_over(sweeps[w].f, sets[s], sweeps[w].from, sweeps[w].to, 1e-4, &where);
+            cr_expect_geq(minimum, 0.0, "%s: %s is %g at %g", set_names[s], sweeps[w].name, minimum, where);
+        }
+        mu_curves_destroy(sets[s]);
+    }
+}
+
+/* Central difference of f_V at v with step h. */
+static double velocity_difference(const mu_curves *curves, double v, double h)
+{
+    return (mu_curve_velocity(curves, v + h) - mu_curve_velocity(curves, v - h)) / (2.0 * h);
+}
+
+Test(curves, slope_matches_a_central_difference)
+{
+    const mu_analytic_curves p = mu_default_analytic_curves();
+    mu_curves *curves = analytic(&p);
+    const double points[] = {-0.99, -0.8, -0.5, -0.2, -0.05, -0.01, 0.01, 0.02, 0.05, 0.1, 0.3};
+    for (size_t i = 0; i < sizeof points / sizeof points[0]; i++) {
+        const double slope = mu_curve_velocity_slope(curves, points[i]);
+        expect_near(slope, velocity_difference(curves, points[i], 1e-6), 1e-6 * (1.0 + slope),
+                    "analytic f_V' against a central difference");
+    }
+    mu_curves_destroy(curves);
+
+    /* Tables: inside each interval, clear of its knots, where both
+     * interpolants are smooth. The slope is the difference raised to 0 (the
+     * table's last knots fall a little). */
+    const knots v = read_seed_knots("force_velocity");
+    for (size_t i = 0; i < 2; i++) {
+        curves = seed_tables(interpolations[i]);
+        for (size_t j = 0; j + 1 < v.count; j++) {
+            const double width = v.x[j + 1] - v.x[j];
+            const double fractions[] = {0.3, 0.5, 0.7};
+            for (size_t f = 0; f < 3; f++) {
+                const double x = v.x[j] + fractions[f] * width;
+                const double slope = mu_curve_velocity_slope(curves, x);
+                const double difference = fmax(velocity_difference(curves, x, 1e-4 * width), 0.0);
+                expect_near(slope, difference, 1e-6 * (1.0 + slope), "tabulated f_V' against a central difference");
+            }
+        }
+        mu_curves_destroy(curves);
+    }
+}
+
+Test(curves, nan_in_nan_out)
+{
+    const mu_analytic_curves p = mu_default_analytic_curves();
+    mu_curves *sets[2] = {analytic(&p), seed_tables(MU_INTERPOLATION_LINEAR)};
+    for (size_t s = 0; s < 2; s++) {
+        cr_expect(isnan(mu_curve_active_length(sets[s], NAN)), "set %zu: f_L(NaN)", s);
+        cr_expect(isnan(mu_curve_passive_length(sets[s], NAN)), "set %zu: f_P(NaN)", s);
+        cr_expect(isnan(mu_curve_velocity(sets[s], NAN)), "set %zu: f_V(NaN)", s);
+        cr_expect(isnan(mu_curve_velocity_slope(sets[s], NAN)), "set %zu: f_V'(NaN)", s);
+        mu_curves_destroy(sets[s]);
+    }
+    cr_expect(isnan(mu_curve_velocity(NULL, 0.0)), "f_V of NULL curves");
+}
+
+/* A scratch directory for one test's files, removed by remove_scratch. */
+typedef struct scratch {
+    char directory[64];
+    char path[128];
+} scratch;
+
+static void make_scratch(scratch *s)
+{
+    snprintf(s->directory, sizeof s->directory, "/tmp/sinew-test-curves-XXXXXX");
+    cr_assert_not_null(mkdtemp(s->directory), "mkdtemp failed");
+    snprintf(s->path, sizeof s->path, "%s/curves.csv", s->directory);
+}
+
+static void remove_scratch(scratch *s)
+{
+    unlink(s->path);
+    cr_expect_eq(rmdir(s->directory), 0, "cannot remove %s", s->directory);
+}
+
+static void write_text(const char *path, const char *text)
+{
+    FILE *file = fopen(path, "w");
+    cr_assert_not_null(file, "cannot write %s", path);
+    fputs(text, file);
+    fclose(file);
+}
+
+/* Two knots of f_L and f_P and three of f_V: enough for lines, too few
+ * for Steffen in f_L and f_P. Lines 2-8. */
+#define HEADER_ROW "curve,x,y\n"
+#define GOOD_ROWS                                                                                                      \
+    "active_force_length,0.5,0\n"                                                                                      \
+    "active_force_length,1.5,1\n"                                                                                      \
+    "passive_force_length,1,0\n"                                                                                       \
+    "passive_force_length,2,1\n"                                                                                       \
+    "force_velocity,-1,0\n"                                                                                            \
+    "force_velocity,0,1\n"                                                                                             \
+    "force_velocity,1,1.5\n"
+
+/* Creating curves from `text` fails, with a message naming the file and,
+ * if `line` > 0, ":line:". */
+static void expect_bad_file(const char *text, mu_interpolation interpolation, int line, const char *what)
+{
+    scratch s;
+    make_scratch(&s);
+    write_text(s.path, text);
+    mu_curves *curves = (mu_curves *)&s; /* any non-NULL value: a failure must reset it */
+    const rb_status status = mu_curves_create_tabulated(s.path, interpolation, &curves);
+    const char *message = rb_last_error();
+    cr_expect_eq(status, RB_ERR_INVALID_ARGUMENT, "%s: status %s", what, rb_status_name(status));
+    cr_expect_null(curves, "%s: out is not NULL after a failure", what);
+    cr_expect_not_null(strstr(message, s.path), "%s: message '%s' does not name the file", what, message);
+    if (line > 0) {
+        char where[160];
+        snprintf(where, sizeof where, "%s:%d:", s.path, line);
+        cr_expect_not_null(strstr(message, where), "%s: message '%s' does not name line %d", what, message, line);
+    }
+    if (status == RB_OK) {
+        mu_curves_destroy(curves);
+    }
+    remove_scratch(&s);
+}
+
+Test(curves, a_good_small_file_is_read)
+{
+    /* Windows line endings, a blank line, and curves interleaved. */
+    scratch s;
+    make_scratch(&s);
+    write_text(s.path, "curve,x,y\r\n"
+                       "force_velocity,-1,0\r\n"
+                       "active_force_length,0.5,0\r\n"
+                       "\r\n"
+                       "force_velocity,0,1\r\n"
+                       "passive_force_length,1,0\r\n"
+                       "active_force_length,1.5,1\r\n"
+                       "passive_force_length,2,-0.25\r\n"
+                       "force_velocity,1,1.5\r\n");
+    mu_curves *curves = NULL;
+    cr_assert_eq(mu_curves_create_tabulated(s.path, MU_INTERPOLATION_LINEAR, &curves), RB_OK, "%s", rb_last_error());
+    expect_near(mu_curve_active_length(curves, 1.0), 0.5, 1e-15, "f_L of the small file");
+    expect_near(mu_curve_velocity(curves, -0.5), 0.5, 1e-15, "f_V of the small file");
+    expect_near(mu_curve_velocity(curves, 0.5), 1.25, 1e-15, "f_V of the small file");
+    expect_near(mu_curve_velocity_slope(curves, 0.5), 0.5, 1e-15, "f_V' of the small file");
+    /* A knot below 0 is kept, but the curve is clamped at 0. */
+    cr_expect_eq(mu_curve_passive_length(curves, 1.9), 0.0, "f_P raised to 0");
+    mu_curves_destroy(curves);
+    remove_scratch(&s);
+}
+
+Test(curves, bad_files_name_the_file_and_the_line)
+{
+    const mu_interpolation linear = MU_INTERPOLATION_LINEAR;
+    expect_bad_file("", linear, 1, "empty file");
+    expect_bad_file(GOOD_ROWS, linear, 1, "missing header");
+    expect_bad_file("curve,x,z\n" GOOD_ROWS, linear, 1, "wrong column name");
+    expect_bad_file("curve,x\n" GOOD_ROWS, linear, 1, "missing column");
+    expect_bad_file(HEADER_ROW GOOD_ROWS "force_velocity,2\n", linear, 9, "a row with two fields");
+    expect_bad_file(HEADER_ROW GOOD_ROWS "force_velocity,2,1.5,3\n", linear, 9, "a row with four fields");
+    expect_bad_file(HEADER_ROW GOOD_ROWS "force_velocity,two,1.5\n", linear, 9, "non-numeric x");
+    expect_bad_file(HEADER_ROW GOOD_ROWS "force_velocity,2,1.5x\n", linear, 9, "trailing characters after y");
+    expect_bad_file(HEADER_ROW GOOD_ROWS "force_velocity,2,\n", linear, 9, "empty y");
+    expect_bad_file(HEADER_ROW GOOD_ROWS "force_velocity,2,nan\n", linear, 9, "NaN y");
+    expect_bad_file(HEADER_ROW GOOD_ROWS "force_velocity,inf,1.5\n", linear, 9, "infinite x");
+    expect_bad_file(HEADER_ROW GOOD_ROWS "force_velocity,1,1.6\n", linear, 9, "repeated x");
+    expect_bad_file(HEADER_ROW GOOD_ROWS "force_velocity,0.5,1.6\n", linear, 9, "decreasing x");
+    expect_bad_file(HEADER_ROW GOOD_ROWS "tendon_force_length,1,1\n", linear, 9, "unknown curve");
+    expect_bad_file(HEADER_ROW "active_force_length,0.5,0\n"
+                               "passive_force_length,1,0\n"
+                               "passive_force_length,2,1\n"
+                               "force_velocity,-1,0\n"
+                               "force_velocity,0,1\n",
+                    linear, 2, "one knot of f_L for lines");
+    expect_bad_file(HEADER_ROW GOOD_ROWS, MU_INTERPOLATION_STEFFEN, 3, "two knots of f_L for Steffen");
+    expect_bad_file(HEADER_ROW "active_force_length,0.5,0\n"
+                               "active_force_length,1.5,1\n"
+                               "passive_force_length,1,0\n"
+                               "passive_force_length,2,1\n",
+                    linear, 5, "no f_V at all");
+    char long_row[400];
+    memset(long_row, '1', sizeof long_row);
+    memcpy(long_row, "force_velocity,2,", 17);
+    long_row[sizeof long_row - 2] = '\n';
+    long_row[sizeof long_row - 1] = '\0';
+    char long_file[600];
+    snprintf(long_file, sizeof long_file, "%s%s%s", HEADER_ROW, GOOD_ROWS, long_row);
+    expect_bad_file(long_file, linear, 9, "a line too long");
+}
+
+Test(curves, a_missing_file_is_named)
+{
+    scratch s;
+    make_scratch(&s);
+    mu_curves *curves = NULL;
+    cr_expect_eq(mu_curves_create_tabulated(s.path, MU_INTERPOLATION_LINEAR, &curves), RB_ERR_INVALID_ARGUMENT);
+    cr_expect_null(curves);
+    cr_expect_not_null(strstr(rb_last_error(), s.path), "message '%s' does not name the file", rb_last_error());
+    cr_expect_eq(rmdir(s.directory), 0, "cannot remove %s", s.directory);
+}
+
+Test(curves, bad_arguments_fail)
+{
+    mu_curves *curves = NULL;
+    cr_expect_eq(mu_curves_create_tabulated(NULL, MU_INTERPOLATION_LINEAR, &curves), RB_ERR_INVALID_ARGUMENT);
+    cr_expect_eq(mu_curves_create_tabulated(SEED_TABLES, MU_INTERPOLATION_LINEAR, NULL), RB_ERR_INVALID_ARGUMENT);
+    cr_expect_eq(mu_curves_create_tabulated(SEED_TABLES, (mu_interpolation)7, &curves), RB_ERR_INVALID_ARGUMENT);
+    cr_expect_not_null(strstr(rb_last_error(), "interpolation"), "%s", rb_last_error());
+    cr_expect_eq(mu_curves_create_seed_tables(MU_INTERPOLATION_LINEAR, NULL), RB_ERR_INVALID_ARGUMENT);
+    cr_expect_eq(mu_curves_create_analytic(NULL, &curves), RB_ERR_INVALID_ARGUMENT);
+    const mu_analytic_curves good = mu_default_analytic_curves();
+    cr_expect_eq(mu_curves_create_analytic(&good, NULL), RB_ERR_INVALID_ARGUMENT);
+    cr_expect_null(curves);
+}
+
+Test(curves, bad_analytic_parameters_fail)
+{
+    const double bad_values[] = {0.0, -1.0, NAN, INFINITY};
+    const char *names[] = {"width", "curvature", "eccentric_plateau", "passive_scale", "passive_rate"};
+    for (size_t field = 0; field < 5; field++) {
+        /* A plateau of 1 is also bad: f_V must rise while lengthening. */
+        const size_t bad_count = field == 2 ? 5 : 4;
+        for (size_t b = 0; b < bad_count; b++) {
+            mu_analytic_curves p = mu_default_analytic_curves();
+            const double value = b < 4 ? bad_values[b] : 1.0;
+            double *fields[] = {&p.width, &p.curvature, &p.eccentric_plateau, &p.passive_scale, &p.passive_rate};
+            *fields[field] = value;
+            mu_curves *curves = NULL;
+            const rb_status status = mu_curves_create_analytic(&p, &curves);
+            cr_expect_eq(status, RB_ERR_INVALID_ARGUMENT, "%s = %g accepted", names[field], value);
+            cr_expect_null(curves, "%s = %g: out is not NULL", names[field], value);
+            cr_expect_not_null(strstr(rb_last_error(), names[field]), "%s = %g: message '%s' does not name it",
+                               names[field], value, rb_last_error());
+            mu_curves_destroy(curves);
+        }
+    }
+}
+
+Test(curves, destroy_accepts_null) { mu_curves_destroy(NULL); }

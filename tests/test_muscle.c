@@ -1,0 +1,219 @@
+/* The Hill muscle on a cable: its force against the composition of its
+ * own curves, its maximal force, the tension controller, the sign of the
+ * force-velocity effect, and stability under a stiff force-velocity
+ * slope.
+ */
+#include <criterion/criterion.h>
+#include <math.h>
+
+#include "mu/curves.h"
+#include "mu/muscle.h"
+#include "test_support.h"
+
+/* A muscle along +x from a static body at the origin to the point
+ * (path_length, 0) of body `insertion`, rest length 0.2 m, Fmax 1000 N,
+ * tendon 0.05 m. */
+static mu_muscle *make_muscle(rb_world *world, rb_body_id origin, rb_body_id insertion, const mu_curves *curves)
+{
+    mu_muscle_def def = mu_default_muscle_def();
+    def.point_count = 2;
+    def.bodies[0] = origin;
+    def.bodies[1] = insertion;
+    def.local_points[0] = rb_v2(0.0, 0.0);
+    def.local_points[1] = rb_v2(0.0, 0.0);
+    def.rest_length = 0.2;
+    def.max_force = 1000.0;
+    def.tendon_length = 0.05;
+    def.curves = curves;
+    mu_muscle *muscle = NULL;
+    cr_assert_eq(mu_muscle_create(world, &def, &muscle), RB_OK, "%s", rb_last_error());
+    return muscle;
+}
+
+static mu_curves *analytic(void)
+{
+    const mu_analytic_curves parameters = mu_default_analytic_curves();
+    mu_curves *curves = NULL;
+    cr_assert_eq(mu_curves_create_analytic(&parameters, &curves), RB_OK, "%s", rb_last_error());
+    return curves;
+}
+
+static mu_curves *tables(void)
+{
+    mu_curves *curves = NULL;
+    cr_assert_eq(mu_curves_create_seed_tables(MU_INTERPOLATION_LINEAR, &curves), RB_OK, "%s", rb_last_error());
+    return curves;
+}
+
+/* One substep: the muscle sets its law, the world steps, the muscle reads. */
+static void substep(mu_muscle *muscle, rb_world *world, double h)
+{
+    cr_assert_eq(mu_muscle_prepare(muscle, world, h), RB_OK, "%s", rb_last_error());
+    step_world(world, h, 1);
+    cr_assert_eq(mu_muscle_measure(muscle, world), RB_OK, "%s", rb_last_error());
+}
+
+Test(muscle, isometric_force_at_rest_length_is_the_curves_composition)
+{
+    /* Both ends static, the belly at its rest length (path 0.25 m, tendon
+     * 0.05 m): v = 0, l̃ = 1, so F = a·Fmax·f_L(1)·f_V(0) + Fmax·f_P(1) with
+     * the values of the muscle's own curves (the analytic set gives a·Fmax
+     * exactly). */
+    mu_curves *sets[2] = {analytic(), tables()};
+    for (int s = 0; s < 2; ++s) {
+        rb_world *world = make_world(rb_v2(0.0, -9.8));
+        rb_body_id origin = make_body(world, RB_BODY_STATIC, rb_v2(0.0, 0.0), 0.0);
+        rb_body_id insertion = make_body(world, RB_BODY_STATIC, rb_v2(0.25, 0.0), 0.0);
+        mu_muscle *muscle = make_muscle(world, origin, insertion, sets[s]);
+        cr_assert_eq(mu_muscle_set_activation(muscle, 0.6), RB_OK);
+        substep(muscle, world, 1.0 / 600.0);
+        const mu_muscle_readout r = mu_muscle_read(muscle);
+        const double expected = 0.6 * 1000.0 * mu_curve_active_length(sets[s], 1.0) * mu_curve_velocity(sets[s], 0.0) +
+                                1000.0 * mu_curve_passive_length(sets[s], 1.0);
+        expect_near(r.normalized_length, 1.0, 1e-12, "normalized length");
+        expect_near(r.velocity, 0.0, 1e-12, "velocity");
+        expect_near(r.total_force, expected, 1e-9 * expected, "isometric force");
+        if (s == 0) {
+            expect_near(r.total_force, 600.0, 1e-9, "analytic set: a·Fmax");
+        }
+        mu_muscle_destroy(muscle, world);
+        destroy_world_and_expect_no_leak(world);
+    }
+    mu_curves_destroy(sets[0]);
+    mu_curves_destroy(sets[1]);
+}
+
+Test(muscle, max_force_from_width_and_specific_tension)
+{
+    /* The arm's biceps short: Fmax = π·w²/4·σ = π·0.0328²/4·1.5e6 N. */
+    rb_world *world = make_world(rb_v2(0.0, 0.0));
+    mu_curves *curves = analytic();
+    rb_body_id a = make_body(world, RB_BODY_STATIC, rb_v2(0.0, 0.0), 0.0);
+    rb_body_id b = make_body(world, RB_BODY_STATIC, rb_v2(0.3, 0.0), 0.0);
+    mu_muscle_def def = mu_default_muscle_def();
+    def.point_count = 2;
+    def.bodies[0] = a;
+    def.bodies[1] = b;
+    def.rest_length = 0.2087;
+    def.rest_width = 0.0328;
+    def.start_normalized_length = 1.1;
+    def.curves = curves;
+    mu_muscle *muscle = NULL;
+    cr_assert_eq(mu_muscle_create(world, &def, &muscle), RB_OK, "%s", rb_last_error());
+    expect_near(mu_muscle_max_force(muscle), RB_PI * 0.0328 * 0.0328 / 4.0 * 1.5e6, 1e-9, "Fmax");
+    /* The tendon takes the rest: 0.3 - 0.2087·1.1. */
+    expect_near(mu_muscle_tendon_length(muscle), 0.3 - 0.2087 * 1.1, 1e-12, "tendon length");
+    mu_muscle_destroy(muscle, world);
+    mu_curves_destroy(curves);
+    destroy_world_and_expect_no_leak(world);
+}
+
+Test(muscle, tension_controller_settles_on_its_target)
+{
+    /* Isometric at rest length with the tables: each substep the active
+     * force F = a·Fmax·f_L·f_V moves towards the target T by the fraction
+     * 0.08·f_L(1)·f_V(0) ≈ 0.08 of the error, so after 300 substeps the
+     * error is below 0.92^300 ≈ 1e-11 of the start: well within 2 %. */
+    rb_world *world = make_world(rb_v2(0.0, 0.0));
+    mu_curves *curves = tables();
+    rb_body_id origin = make_body(world, RB_BODY_STATIC, rb_v2(0.0, 0.0), 0.0);
+    rb_body_id insertion = make_body(world, RB_BODY_STATIC, rb_v2(0.25, 0.0), 0.0);
+    mu_muscle *muscle = make_muscle(world, origin, insertion, curves);
+    cr_assert_eq(mu_muscle_set_target_tension(muscle, 300.0), RB_OK);
+    for (int i = 0; i < 300; ++i) {
+        substep(muscle, world, 1.0 / 600.0);
+    }
+    const mu_muscle_readout r = mu_muscle_read(muscle);
+    expect_near(r.active_force, 300.0, 0.02 * 300.0, "active force under tension control");
+    cr_expect_eq(r.target_tension, 300.0);
+    cr_assert_eq(mu_muscle_set_target_tension(muscle, 0.0), RB_OK);
+    for (int i = 0; i < 300; ++i) {
+        substep(muscle, world, 1.0 / 600.0);
+    }
+    expect_near(mu_muscle_read(muscle).activation, 0.0, 1e-3, "a target of 0 drives the activation to 0");
+    cr_expect_eq(mu_muscle_set_target_tension(muscle, -1.0), RB_ERR_INVALID_ARGUMENT, "negative target");
+    cr_expect_eq(mu_muscle_set_activation(muscle, NAN), RB_ERR_INVALID_ARGUMENT, "NaN activation");
+    mu_muscle_destroy(muscle, world);
+    mu_curves_destroy(curves);
+    destroy_world_and_expect_no_leak(world);
+}
+
+/* The force of an active muscle whose insertion moves along the path at
+ * `speed` (m/s, > 0 lengthening). */
+static double force_while_moving(double speed)
+{
+    rb_world *world = make_world(rb_v2(0.0, 0.0));
+    mu_curves *curves = analytic();
+    rb_body_id origin = make_body(world, RB_BODY_STATIC, rb_v2(0.0, 0.0), 0.0);
+    rb_body_id insertion = make_body(world, RB_BODY_KINEMATIC, rb_v2(0.25, 0.0), 0.0);
+    cr_assert_eq(rb_body_set_linear_velocity(world, insertion, rb_v2(speed, 0.0)), RB_OK);
+    mu_muscle *muscle = make_muscle(world, origin, insertion, curves);
+    cr_assert_eq(mu_muscle_set_activation(muscle, 1.0), RB_OK);
+    substep(muscle, world, 1.0 / 600.0);
+    const double force = mu_muscle_read(muscle).active_force;
+    mu_muscle_destroy(muscle, world);
+    mu_curves_destroy(curves);
+    destroy_world_and_expect_no_leak(world);
+    return force;
+}
+
+Test(muscle, shortening_lowers_and_lengthening_raises_the_force)
+{
+    /* The seed clipped every shortening to zero velocity; with signed
+     * velocity a muscle shortening at a tenth of Vmax pulls with
+     * f_V(-0.1) < 1 of its isometric force, and one lengthening at that
+     * speed with f_V(0.1) > 1 (the insertion is kinematic, so its speed is
+     * imposed). */
+    mu_curves *curves = analytic();
+    const double isometric = force_while_moving(0.0);
+    const double shortening = force_while_moving(-0.025);
+    const double lengthening = force_while_moving(0.025);
+    cr_expect(shortening < isometric && isometric < lengthening, "forces %g < %g < %g expected", shortening, isometric,
+              lengthening);
+    expect_near(shortening / isometric, mu_curve_velocity(curves, -0.1), 1e-3, "shortening: f_V(-0.1)");
+    expect_near(lengthening / isometric, mu_curve_velocity(curves, 0.1), 1e-3, "lengthening: f_V(0.1)");
+    mu_curves_destroy(curves);
+}
+
+Test(muscle, a_stiff_force_velocity_slope_does_not_ring)
+{
+    /* A 2 kg mass hangs from an active muscle (Fmax 1000 N, Vmax 0.25 m/s)
+     * under gravity at 600 Hz. With the tables the force-velocity slope
+     * near 0 is about 17 per unit ṽ, a damper of 17·1000/0.25 = 68 kN·s/m:
+     * explicitly, 68000·h/m = 57 per substep would diverge at once. With
+     * the implicit law: no NaN, and in the second half second the speed
+     * neither rings (changes sign between substeps) nor grows. */
+    rb_world *world = make_world(rb_v2(0.0, -9.8));
+    mu_curves *curves = tables();
+    rb_body_id origin = make_body(world, RB_BODY_STATIC, rb_v2(0.0, 0.0), 0.0);
+    rb_body_id mass = make_body(world, RB_BODY_DYNAMIC, rb_v2(0.0, -0.25), 0.0);
+    const rb_mass_data data = {2.0, {0.0, 0.0}, 0.0};
+    cr_assert_eq(rb_body_set_mass_data(world, mass, &data), RB_OK);
+    mu_muscle *muscle = make_muscle(world, origin, mass, curves);
+    cr_assert_eq(mu_muscle_set_activation(muscle, 1.0), RB_OK);
+    double previous = 0.0;
+    double speed_at_half_time = 0.0;
+    double largest_later_speed = 0.0;
+    int sign_changes = 0;
+    for (int i = 0; i < 600; ++i) {
+        substep(muscle, world, 1.0 / 600.0);
+        const double v = rb_body_linear_velocity(world, mass).y;
+        cr_assert(isfinite(v), "substep %d: velocity %g", i, v);
+        if (i == 300) {
+            speed_at_half_time = fabs(v);
+        } else if (i > 300) {
+            largest_later_speed = fmax(largest_later_speed, fabs(v));
+            sign_changes += v * previous < 0.0;
+        }
+        previous = v;
+    }
+    /* Overdamped: the mass creeps towards equilibrium with the time
+     * constant c/k of the damper and the force-length stiffness (seconds),
+     * so it need not have stopped; but it must not speed up again. */
+    cr_expect(sign_changes < 5, "the velocity changed sign %d times in 300 substeps", sign_changes);
+    cr_expect(largest_later_speed <= speed_at_half_time, "the speed grew from %g to %g m/s", speed_at_half_time,
+              largest_later_speed);
+    mu_muscle_destroy(muscle, world);
+    mu_curves_destroy(curves);
+    destroy_world_and_expect_no_leak(world);
+}
