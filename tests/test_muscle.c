@@ -178,9 +178,11 @@ Test(muscle, shortening_lowers_and_lengthening_raises_the_force)
 Test(muscle, a_stiff_force_velocity_slope_does_not_ring)
 {
     /* A 2 kg mass hangs from an active muscle (Fmax 1000 N, Vmax 0.25 m/s)
-     * under gravity at 600 Hz. With the tables the force-velocity slope
-     * near 0 is about 17 per unit ṽ, a damper of 17·1000/0.25 = 68 kN·s/m:
-     * explicitly, 68000·h/m = 57 per substep would diverge at once. With
+     * under gravity at 600 Hz. With the linearly interpolated tables the
+     * force-velocity slope at 0 is about 12 per unit ṽ (its two segments:
+     * 8.9 and 18.3), a damper of 12·1000/0.25 = 48 kN·s/m: explicitly,
+     * h·c/m = 48000/600/2 = 40 per substep would diverge at once (it must
+     * stay below 2). With
      * the implicit law: no NaN, and in the second half second the speed
      * neither rings (changes sign between substeps) nor grows. */
     rb_world *world = make_world(rb_v2(0.0, -9.8));
