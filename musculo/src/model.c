@@ -1,0 +1,612 @@
+/* Building a model from its description, and stepping it. */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mu/model.h"
+
+/* Framework constants (framework.md §3). */
+#define BONE_DAMPING 8.0  /* 1/s, linear and angular */
+#define BONE_FRICTION 8.0 /* the seed's; bones are sensors, so it never acts */
+#define BONE_RESTITUTION 0.5
+#define NAIL_HALF_EXTENT 0.0025 /* m: the seed's tiny box */
+#define IRON_DENSITY 7874.0     /* kg/m³ */
+#define WEIGHT_DEPTH 0.10       /* m */
+#define DEGREES (180.0 / RB_PI)
+#define WARNINGS_SIZE 4096
+
+/* A nail or a bone as built: the engine body it became part of, and its
+ * own frame (centre, angle) in that body's frame. */
+typedef struct part {
+    bool built;
+    int body; /* index into model->bodies */
+    rb_transform offset;
+} part;
+
+struct mu_model {
+    const mu_model_desc *desc;
+    mu_model_options options;
+    rb_world *world;
+    mu_curves *curves[2]; /* by mu_model_curve_set */
+    rb_body_id *bodies;
+    int body_count;
+    part *parts; /* nails first, then bones */
+    int part_count;
+    mu_muscle **muscles; /* by description index; NULL when not built */
+    int *built_muscles;  /* description indices of the built muscles */
+    int built_muscle_count;
+    rb_joint_id *hinges; /* by description index; null id when not built */
+    int joint_count;
+    double time;
+    char warnings[WARNINGS_SIZE];
+};
+
+mu_model_options mu_default_model_options(void) { return (mu_model_options){.level = 4}; }
+
+static int part_of(const mu_model_desc *desc, mu_model_ref ref)
+{
+    return ref.kind == MU_MODEL_NAIL ? ref.index : desc->nail_count + ref.index;
+}
+
+static void warn(mu_model *model, const char *format, ...)
+{
+    size_t used = strlen(model->warnings);
+    va_list args;
+    va_start(args, format);
+    vsnprintf(model->warnings + used, sizeof model->warnings - used, format, args);
+    va_end(args);
+    used = strlen(model->warnings);
+    if (used + 1 < sizeof model->warnings) {
+        model->warnings[used] = '\n';
+        model->warnings[used + 1] = '\0';
+    }
+}
+
+/* A part's pose in the model, placement included. */
+static rb_transform part_pose(const mu_model_desc *desc, int part_index)
+{
+    if (part_index < desc->nail_count) {
+        return (rb_transform){rb_add(desc->nails[part_index].position, desc->placement), rb_rot_identity()};
+    }
+    const mu_model_bone *bone = &desc->bones[part_index - desc->nail_count];
+    return (rb_transform){rb_add(bone->centre, desc->placement), rb_rot_from_angle(bone->angle / DEGREES)};
+}
+
+/* ---- union-find over the parts glued together ---------------------------------- */
+
+static int find_root(int *parent, int i)
+{
+    while (parent[i] != i) {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    return i;
+}
+
+static void unite(int *parent, int a, int b)
+{
+    int ra = find_root(parent, a);
+    int rb = find_root(parent, b);
+    /* The lower index is the root, so the body takes the first part's frame. */
+    if (ra < rb) {
+        parent[rb] = ra;
+    } else if (rb < ra) {
+        parent[ra] = rb;
+    }
+}
+
+/* ---- bodies ----------------------------------------------------------------------- */
+
+static bool part_is_static(const mu_model_desc *desc, int part_index)
+{
+    return part_index < desc->nail_count || desc->bones[part_index - desc->nail_count].is_static;
+}
+
+static rb_status add_part_shape(mu_model *model, int part_index)
+{
+    const mu_model_desc *desc = model->desc;
+    const part *p = &model->parts[part_index];
+    rb_body_id body = model->bodies[p->body];
+    rb_shape_def shape = rb_default_shape_def();
+    rb_polygon box;
+    rb_status status;
+    double angle = rb_rot_angle(p->offset.q);
+    if (part_index < desc->nail_count) {
+        shape.friction = 0.9;
+        shape.restitution = 0.5;
+        shape.density = 0.0;
+        status = rb_make_offset_box(NAIL_HALF_EXTENT, NAIL_HALF_EXTENT, p->offset.p, angle, &box);
+    } else {
+        const mu_model_bone *bone = &desc->bones[part_index - desc->nail_count];
+        shape.friction = BONE_FRICTION;
+        shape.restitution = BONE_RESTITUTION;
+        shape.is_sensor = true;
+        status = rb_area_density_from_volume(bone->density, bone->depth, &shape.density);
+        if (status == RB_OK) {
+            status = rb_make_offset_box(0.5 * bone->size.x, 0.5 * bone->size.y, p->offset.p, angle, &box);
+        }
+    }
+    rb_shape_id id;
+    return status != RB_OK ? status : rb_shape_create_polygon(model->world, body, &shape, &box, &id);
+}
+
+static rb_status build_bodies(mu_model *model, bool merge)
+{
+    const mu_model_desc *desc = model->desc;
+    const mu_model_variant *variant = &desc->variants[model->options.variant];
+    int *parent = malloc((size_t)model->part_count * sizeof *parent);
+    int *body_of_root = malloc((size_t)model->part_count * sizeof *body_of_root);
+    model->bodies = malloc((size_t)model->part_count * sizeof *model->bodies);
+    if (parent == NULL || body_of_root == NULL || model->bodies == NULL) {
+        free(parent);
+        free(body_of_root);
+        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "mu_model_create: out of memory");
+    }
+    for (int i = 0; i < model->part_count; ++i) {
+        parent[i] = i;
+        body_of_root[i] = -1;
+        bool is_nail = i < desc->nail_count;
+        model->parts[i].built = is_nail || mu_model_variant_has_bone(variant, i - desc->nail_count);
+    }
+    if (merge) {
+        for (int g = 0; g < desc->glue_count; ++g) {
+            int a = part_of(desc, desc->glues[g].body_a);
+            int b = part_of(desc, desc->glues[g].body_b);
+            if (model->parts[a].built && model->parts[b].built) {
+                unite(parent, a, b);
+            }
+        }
+    }
+    /* A component with a static member is static as a whole. */
+    bool *is_static = calloc((size_t)model->part_count, sizeof *is_static);
+    if (is_static == NULL) {
+        free(parent);
+        free(body_of_root);
+        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "mu_model_create: out of memory");
+    }
+    for (int i = 0; i < model->part_count; ++i) {
+        if (model->parts[i].built && part_is_static(desc, i)) {
+            is_static[find_root(parent, i)] = true;
+        }
+    }
+    rb_status status = RB_OK;
+    for (int i = 0; i < model->part_count && status == RB_OK; ++i) {
+        if (!model->parts[i].built) {
+            continue;
+        }
+        int root = find_root(parent, i);
+        rb_transform root_pose = part_pose(desc, root);
+        if (body_of_root[root] < 0) {
+            rb_body_def def = rb_default_body_def();
+            def.type = is_static[root] ? RB_BODY_STATIC : RB_BODY_DYNAMIC;
+            def.position = root_pose.p;
+            def.angle = rb_rot_angle(root_pose.q);
+            def.linear_damping = BONE_DAMPING;
+            def.angular_damping = BONE_DAMPING;
+            def.bullet = true;
+            status = rb_body_create(model->world, &def, &model->bodies[model->body_count]);
+            body_of_root[root] = model->body_count++;
+        }
+        model->parts[i].body = body_of_root[root];
+        model->parts[i].offset = rb_inv_mul_transforms(root_pose, part_pose(desc, i));
+        if (status == RB_OK) {
+            status = add_part_shape(model, i);
+        }
+    }
+    free(is_static);
+    free(parent);
+    free(body_of_root);
+    return status;
+}
+
+/* ---- joints ------------------------------------------------------------------------ */
+
+static rb_vec2 local_anchor(const mu_model *model, int part_index, rb_vec2 point)
+{
+    return rb_transform_point(model->parts[part_index].offset, point);
+}
+
+static rb_status build_hinges(mu_model *model)
+{
+    const mu_model_desc *desc = model->desc;
+    for (int h = 0; h < desc->hinge_count; ++h) {
+        const mu_model_hinge *hinge = &desc->hinges[h];
+        int a = part_of(desc, hinge->body_a);
+        int b = part_of(desc, hinge->body_b);
+        if (!model->parts[a].built || !model->parts[b].built) {
+            continue;
+        }
+        if (model->parts[a].body == model->parts[b].body) {
+            warn(model, "hinge '%s' joins two parts glued into one body; it does nothing", hinge->name);
+            continue;
+        }
+        /* The file's joint angle is angle(bone B) - angle(bone A); each
+         * bone's angle is its body's plus its offset in the body. */
+        double phi_a = rb_rot_angle(model->parts[a].offset.q);
+        double phi_b = rb_rot_angle(model->parts[b].offset.q);
+        rb_revolute_joint_def def = rb_default_revolute_joint_def();
+        def.body_a = model->bodies[model->parts[a].body];
+        def.body_b = model->bodies[model->parts[b].body];
+        def.local_anchor_a = local_anchor(model, a, hinge->anchor_a);
+        def.local_anchor_b = local_anchor(model, b, hinge->anchor_b);
+        def.reference_angle = phi_a - phi_b;
+        def.enable_lower_limit = hinge->has_lower;
+        def.enable_upper_limit = hinge->has_upper;
+        def.lower_angle = hinge->lower / DEGREES;
+        def.upper_angle = hinge->upper / DEGREES;
+        rb_status status = rb_revolute_joint_create(model->world, &def, &model->hinges[h]);
+        if (status != RB_OK) {
+            return status;
+        }
+        model->joint_count++;
+    }
+    return RB_OK;
+}
+
+/* With weld_glues: a weld joint for each glue between two built parts of
+ * different bodies, anchored at part B's centre. */
+static rb_status build_welds(mu_model *model)
+{
+    const mu_model_desc *desc = model->desc;
+    for (int g = 0; g < desc->glue_count; ++g) {
+        int a = part_of(desc, desc->glues[g].body_a);
+        int b = part_of(desc, desc->glues[g].body_b);
+        if (!model->parts[a].built || !model->parts[b].built || model->parts[a].body == model->parts[b].body) {
+            continue;
+        }
+        rb_weld_joint_def def = rb_default_weld_joint_def();
+        rb_body_id body_a = model->bodies[model->parts[a].body];
+        rb_body_id body_b = model->bodies[model->parts[b].body];
+        rb_status status = rb_weld_joint_def_at(&def, model->world, body_a, body_b, part_pose(desc, b).p);
+        rb_joint_id joint;
+        if (status == RB_OK) {
+            status = rb_weld_joint_create(model->world, &def, &joint);
+        }
+        if (status != RB_OK) {
+            return status;
+        }
+        model->joint_count++;
+    }
+    return RB_OK;
+}
+
+/* ---- the weight -------------------------------------------------------------------- */
+
+static rb_status build_weight(mu_model *model, bool merge)
+{
+    const mu_model_desc *desc = model->desc;
+    if (!desc->has_weight) {
+        return RB_OK;
+    }
+    const mu_model_weight *weight = &desc->weight;
+    if (model->options.weight_index < 0 || model->options.weight_index >= weight->mass_count) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_create: weight index %d, expected 0 .. %d",
+                               model->options.weight_index, weight->mass_count - 1);
+    }
+    double mass = weight->masses[model->options.weight_index];
+    int carrier = part_of(desc, weight->body);
+    if (mass <= 0.0 || !model->parts[carrier].built) {
+        return RB_OK;
+    }
+    /* An iron disc of the given depth: m = ρ·π·r²·depth. */
+    double area_density = IRON_DENSITY * WEIGHT_DEPTH;
+    double radius = sqrt(mass / (area_density * RB_PI));
+    rb_vec2 centre = rb_add(weight->position, desc->placement);
+    rb_shape_def shape = rb_default_shape_def();
+    shape.density = area_density;
+    shape.is_sensor = true;
+    rb_body_id carrier_body = model->bodies[model->parts[carrier].body];
+    rb_shape_id id;
+    if (merge) {
+        rb_circle disc = {rb_body_local_point(model->world, carrier_body, centre), radius};
+        return rb_shape_create_circle(model->world, carrier_body, &shape, &disc, &id);
+    }
+    rb_body_def def = rb_default_body_def();
+    def.type = RB_BODY_DYNAMIC;
+    def.position = centre;
+    def.linear_damping = BONE_DAMPING;
+    def.angular_damping = BONE_DAMPING;
+    rb_body_id body;
+    rb_status status = rb_body_create(model->world, &def, &body);
+    rb_circle disc = {{0.0, 0.0}, radius};
+    if (status == RB_OK) {
+        status = rb_shape_create_circle(model->world, body, &shape, &disc, &id);
+    }
+    rb_weld_joint_def weld = rb_default_weld_joint_def();
+    if (status == RB_OK) {
+        status = rb_weld_joint_def_at(&weld, model->world, carrier_body, body, centre);
+    }
+    rb_joint_id joint;
+    if (status == RB_OK) {
+        status = rb_weld_joint_create(model->world, &weld, &joint);
+    }
+    model->joint_count += status == RB_OK;
+    return status;
+}
+
+/* ---- muscles ------------------------------------------------------------------------- */
+
+static rb_status build_muscles(mu_model *model)
+{
+    const mu_model_desc *desc = model->desc;
+    const mu_model_variant *variant = &desc->variants[model->options.variant];
+    for (int m = 0; m < desc->muscle_count; ++m) {
+        if (!mu_model_variant_has_muscle(variant, m)) {
+            continue;
+        }
+        const mu_model_muscle *muscle = &desc->muscles[m];
+        mu_muscle_def def = mu_default_muscle_def();
+        def.point_count = muscle->point_count;
+        for (int i = 0; i < muscle->point_count; ++i) {
+            int p = part_of(desc, muscle->path[i].body);
+            def.bodies[i] = model->bodies[model->parts[p].body];
+            def.local_points[i] = local_anchor(model, p, muscle->path[i].point);
+        }
+        def.rest_length = muscle->rest_length;
+        def.max_force = muscle->max_force;
+        def.rest_width = muscle->rest_width;
+        def.specific_tension = muscle->specific_tension;
+        def.max_velocity = muscle->max_velocity;
+        def.start_normalized_length = muscle->start_normalized_length;
+        def.tendon_length = muscle->tendon_length;
+        def.curves = model->curves[muscle->curves];
+        rb_status status = mu_muscle_create(model->world, &def, &model->muscles[m]);
+        if (status != RB_OK) {
+            return status;
+        }
+        model->built_muscles[model->built_muscle_count++] = m;
+        mu_muscle_readout r = mu_muscle_read(model->muscles[m]);
+        if (muscle->tendon_length < 0.0 && fabs(r.normalized_length - muscle->start_normalized_length) > 1e-9) {
+            warn(model,
+                 "muscle '%s': its path is shorter than rest length × start normalized length (%.4f m), so its "
+                 "tendon has length 0 and its belly starts at %.3f of its rest length, not %.3f",
+                 muscle->name, muscle->rest_length * muscle->start_normalized_length, r.normalized_length,
+                 muscle->start_normalized_length);
+        }
+    }
+    return RB_OK;
+}
+
+/* ---- creation ---------------------------------------------------------------------- */
+
+static rb_status allocate(mu_model *model)
+{
+    const mu_model_desc *desc = model->desc;
+    model->part_count = desc->nail_count + desc->bone_count;
+    model->parts = calloc((size_t)model->part_count + 1, sizeof *model->parts);
+    model->muscles = calloc((size_t)desc->muscle_count + 1, sizeof *model->muscles);
+    model->built_muscles = calloc((size_t)desc->muscle_count + 1, sizeof *model->built_muscles);
+    model->hinges = calloc((size_t)desc->hinge_count + 1, sizeof *model->hinges);
+    if (model->parts == NULL || model->muscles == NULL || model->built_muscles == NULL || model->hinges == NULL) {
+        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "mu_model_create: out of memory");
+    }
+    return RB_OK;
+}
+
+static rb_status create_world_and_curves(mu_model *model)
+{
+    rb_world_def def = rb_default_world_def();
+    def.gravity = model->desc->gravity;
+    /* The model substeps itself (frame / substeps, 600 Hz for the seed);
+     * each of its substeps is one engine substep of the seed's 8 velocity
+     * and 3 position iterations. */
+    def.solver.substeps = 1;
+    def.solver.velocity_iterations = 8;
+    def.solver.position_iterations = 3;
+    rb_status status = rb_world_create(&def, &model->world);
+    if (status == RB_OK) {
+        status = mu_curves_create_seed_tables(MU_INTERPOLATION_LINEAR, &model->curves[MU_MODEL_CURVES_TABULATED]);
+    }
+    if (status == RB_OK) {
+        mu_analytic_curves analytic = mu_default_analytic_curves();
+        status = mu_curves_create_analytic(&analytic, &model->curves[MU_MODEL_CURVES_ANALYTIC]);
+    }
+    return status;
+}
+
+rb_status mu_model_create(const mu_model_desc *desc, const mu_model_options *options, mu_model **out)
+{
+    if (out == NULL || desc == NULL || options == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_create: desc, options and out must not be NULL");
+    }
+    *out = NULL;
+    if (options->level < 0 || options->level > 4) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_create: level %d, expected 0 .. 4", options->level);
+    }
+    if (options->variant < 0 || options->variant >= desc->variant_count) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_create: variant %d, expected 0 .. %d",
+                               options->variant, desc->variant_count - 1);
+    }
+    mu_model *model = calloc(1, sizeof *model);
+    if (model == NULL) {
+        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "mu_model_create: out of memory");
+    }
+    model->desc = desc;
+    model->options = *options;
+    bool merge = !options->weld_glues && options->level >= 2;
+    rb_status status = allocate(model);
+    if (status == RB_OK) {
+        status = create_world_and_curves(model);
+    }
+    if (status == RB_OK && options->level >= 1) {
+        status = build_bodies(model, merge);
+    }
+    if (status == RB_OK && options->level >= 2) {
+        status = build_hinges(model);
+    }
+    if (status == RB_OK && options->level >= 2 && !merge) {
+        status = build_welds(model);
+    }
+    if (status == RB_OK && options->level >= 3) {
+        status = build_muscles(model);
+    }
+    if (status == RB_OK && options->level >= 4) {
+        status = build_weight(model, merge);
+    }
+    if (status != RB_OK) {
+        mu_model_destroy(model);
+        return status;
+    }
+    *out = model;
+    return RB_OK;
+}
+
+void mu_model_destroy(mu_model *model)
+{
+    if (model == NULL) {
+        return;
+    }
+    for (int m = 0; m < model->desc->muscle_count && model->muscles != NULL; ++m) {
+        mu_muscle_destroy(model->muscles[m], model->world);
+    }
+    rb_world_destroy(model->world);
+    mu_curves_destroy(model->curves[0]);
+    mu_curves_destroy(model->curves[1]);
+    free(model->bodies);
+    free(model->parts);
+    free(model->muscles);
+    free(model->built_muscles);
+    free(model->hinges);
+    free(model);
+}
+
+/* ---- running ------------------------------------------------------------------------- */
+
+rb_world *mu_model_world(mu_model *model) { return model->world; }
+const mu_model_desc *mu_model_description(const mu_model *model) { return model->desc; }
+double mu_model_time(const mu_model *model) { return model->time; }
+double mu_model_frame_duration(const mu_model *model) { return 1.0 / model->desc->frame_rate; }
+
+rb_status mu_model_step(mu_model *model)
+{
+    if (model == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_step: model is NULL");
+    }
+    int substeps = model->desc->substeps;
+    double h = mu_model_frame_duration(model) / substeps;
+    for (int s = 0; s < substeps; ++s) {
+        for (int i = 0; i < model->built_muscle_count; ++i) {
+            rb_status status = mu_muscle_prepare(model->muscles[model->built_muscles[i]], model->world, h);
+            if (status != RB_OK) {
+                return status;
+            }
+        }
+        rb_status status = rb_world_step(model->world, h);
+        if (status != RB_OK) {
+            return status;
+        }
+        for (int i = 0; i < model->built_muscle_count; ++i) {
+            mu_muscle_measure(model->muscles[model->built_muscles[i]], model->world);
+        }
+    }
+    model->time += mu_model_frame_duration(model);
+    return RB_OK;
+}
+
+/* Applies `set` to every built muscle of the muscle or group `name`. */
+static rb_status for_each_muscle(mu_model *model, const char *name, const char *function,
+                                 rb_status (*set)(mu_muscle *, double), double value)
+{
+    mu_model_ref ref;
+    if (name == NULL || !mu_model_desc_find(model->desc, name, &ref) ||
+        (ref.kind != MU_MODEL_MUSCLE && ref.kind != MU_MODEL_GROUP)) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: no muscle or group named '%s'", function,
+                               name != NULL ? name : "(null)");
+    }
+    int count = ref.kind == MU_MODEL_MUSCLE ? 1 : model->desc->groups[ref.index].muscle_count;
+    for (int i = 0; i < count; ++i) {
+        int m = ref.kind == MU_MODEL_MUSCLE ? ref.index : model->desc->groups[ref.index].muscles[i];
+        if (model->muscles[m] != NULL) {
+            rb_status status = set(model->muscles[m], value);
+            if (status != RB_OK) {
+                return status;
+            }
+        }
+    }
+    return RB_OK;
+}
+
+rb_status mu_model_set_activation(mu_model *model, const char *name, double activation)
+{
+    return for_each_muscle(model, name, "mu_model_set_activation", mu_muscle_set_activation, activation);
+}
+
+rb_status mu_model_set_tension(mu_model *model, const char *name, double newtons)
+{
+    return for_each_muscle(model, name, "mu_model_set_tension", mu_muscle_set_target_tension, newtons);
+}
+
+double mu_model_group_activation(const mu_model *model, const char *name)
+{
+    mu_model_ref ref;
+    if (name == NULL || !mu_model_desc_find(model->desc, name, &ref) ||
+        (ref.kind != MU_MODEL_MUSCLE && ref.kind != MU_MODEL_GROUP)) {
+        rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_group_activation: no muscle or group named '%s'",
+                        name != NULL ? name : "(null)");
+        return NAN;
+    }
+    int count = ref.kind == MU_MODEL_MUSCLE ? 1 : model->desc->groups[ref.index].muscle_count;
+    double sum = 0.0;
+    int built = 0;
+    for (int i = 0; i < count; ++i) {
+        int m = ref.kind == MU_MODEL_MUSCLE ? ref.index : model->desc->groups[ref.index].muscles[i];
+        if (model->muscles[m] != NULL) {
+            sum += mu_muscle_read(model->muscles[m]).activation;
+            ++built;
+        }
+    }
+    return built > 0 ? sum / built : 0.0;
+}
+
+rb_status mu_model_set_gravity(mu_model *model, rb_vec2 gravity) { return rb_world_set_gravity(model->world, gravity); }
+
+int mu_model_muscle_count(const mu_model *model) { return model->built_muscle_count; }
+const char *mu_model_muscle_name(const mu_model *model, int index)
+{
+    return model->desc->muscles[model->built_muscles[index]].name;
+}
+mu_muscle_readout mu_model_muscle_readout(const mu_model *model, int index)
+{
+    return mu_muscle_read(model->muscles[model->built_muscles[index]]);
+}
+const char *mu_model_warnings(const mu_model *model) { return model->warnings; }
+
+int mu_model_hinge_count(const mu_model *model) { return model->desc->hinge_count; }
+const char *mu_model_hinge_name(const mu_model *model, int index) { return model->desc->hinges[index].name; }
+double mu_model_hinge_angle(const mu_model *model, int index)
+{
+    if (rb_joint_id_is_null(model->hinges[index])) {
+        return NAN;
+    }
+    /* The engine's reference angle holds the bones' offsets in their
+     * bodies, so its joint angle is already angle(bone B) - angle(bone A). */
+    return rb_revolute_joint_angle(model->world, model->hinges[index]) * DEGREES;
+}
+
+int mu_model_part_count(const mu_model *model) { return model->part_count; }
+const char *mu_model_part_name(const mu_model *model, int index)
+{
+    const mu_model_desc *desc = model->desc;
+    return index < desc->nail_count ? desc->nails[index].name : desc->bones[index - desc->nail_count].name;
+}
+
+static rb_transform part_world_pose(const mu_model *model, int index)
+{
+    const part *p = &model->parts[index];
+    return rb_mul_transforms(rb_body_transform(model->world, model->bodies[p->body]), p->offset);
+}
+
+rb_vec2 mu_model_part_centre(const mu_model *model, int index)
+{
+    return model->parts[index].built ? part_world_pose(model, index).p : rb_v2(NAN, NAN);
+}
+
+double mu_model_part_angle(const mu_model *model, int index)
+{
+    return model->parts[index].built ? rb_rot_angle(part_world_pose(model, index).q) * DEGREES : NAN;
+}
+
+int mu_model_body_count(const mu_model *model) { return model->body_count; }
+int mu_model_joint_count(const mu_model *model) { return model->joint_count; }
