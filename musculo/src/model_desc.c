@@ -1,0 +1,247 @@
+/* Loading a model file, freeing its description, finding objects in it. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "model_schema.h"
+#include "mu/model_desc.h"
+
+/* Reads the whole file into *text (not terminated; jansson takes a length). */
+static rb_status read_file(const char *path, char **text, size_t *length)
+{
+    FILE *file = fopen(path, "rb");
+    if (file == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: cannot open: %s, expected a readable model file", path,
+                               strerror(errno));
+    }
+    size_t capacity = 4096, used = 0;
+    char *buffer = malloc(capacity);
+    while (buffer != NULL) {
+        used += fread(buffer + used, 1, capacity - used, file);
+        if (used < capacity) {
+            break;
+        }
+        capacity *= 2;
+        char *grown = realloc(buffer, capacity);
+        if (grown == NULL) {
+            free(buffer);
+        }
+        buffer = grown;
+    }
+    int read_error = ferror(file) ? errno : 0;
+    fclose(file);
+    if (buffer == NULL) {
+        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "mu_model_desc_load: out of memory reading %s", path);
+    }
+    if (read_error != 0) {
+        free(buffer);
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: cannot read: %s, expected a readable model file", path,
+                               strerror(read_error));
+    }
+    *text = buffer;
+    *length = used;
+    return RB_OK;
+}
+
+rb_status mu_model_desc_load(const char *path, mu_model_desc **out)
+{
+    if (out == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_desc_load: out is NULL");
+    }
+    *out = NULL;
+    if (path == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_desc_load: path is NULL");
+    }
+    char *text = NULL;
+    size_t length = 0;
+    rb_status status = read_file(path, &text, &length);
+    if (status != RB_OK) {
+        return status;
+    }
+    /* Duplicate keys are rejected here, so that every JSON path names one value. */
+    json_error_t error;
+    json_t *root = json_loadb(text, length, JSON_REJECT_DUPLICATES, &error);
+    if (root == NULL) {
+        free(text);
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s:%d:%d: invalid JSON: %s", path, error.line, error.column,
+                               error.text);
+    }
+    mu_model_desc *desc = calloc(1, sizeof *desc);
+    if (desc == NULL) {
+        status = rb_report_error(RB_ERR_OUT_OF_MEMORY, "mu_model_desc_load: out of memory");
+    } else {
+        mu_json_reader reader = {.file = path, .text = text, .length = length};
+        status = mu_model_parse(&reader, root, desc);
+    }
+    json_decref(root);
+    free(text);
+    if (status != RB_OK) {
+        mu_model_desc_destroy(desc);
+        return status;
+    }
+    *out = desc;
+    return RB_OK;
+}
+
+rb_status mu_model_desc_load_builtin(const char *name, mu_model_desc **out)
+{
+    if (out == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_desc_load_builtin: out is NULL");
+    }
+    *out = NULL;
+    /* A plain name keeps the path inside models/. */
+    if (name == NULL || name[0] == '\0' || strspn(name, "abcdefghijklmnopqrstuvwxyz0123456789_-") != strlen(name)) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                               "mu_model_desc_load_builtin: name is \"%s\", expected a built-in model's name "
+                               "(lower-case letters, digits, '_' or '-')",
+                               name != NULL ? name : "(null)");
+    }
+    char path[4096];
+    int written = snprintf(path, sizeof path, "%s/%s.json", SINEW_DATA_DIR, name);
+    if (written < 0 || (size_t)written >= sizeof path) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_desc_load_builtin: name \"%s\" is too long", name);
+    }
+    return mu_model_desc_load(path, out);
+}
+
+void mu_model_desc_destroy(mu_model_desc *desc)
+{
+    if (desc == NULL) {
+        return;
+    }
+    free(desc->name);
+    for (int i = 0; i < desc->nail_count; ++i) {
+        free(desc->nails[i].name);
+    }
+    free(desc->nails);
+    for (int i = 0; i < desc->bone_count; ++i) {
+        free(desc->bones[i].name);
+    }
+    free(desc->bones);
+    for (int i = 0; i < desc->hinge_count; ++i) {
+        free(desc->hinges[i].name);
+    }
+    free(desc->hinges);
+    for (int i = 0; i < desc->glue_count; ++i) {
+        free(desc->glues[i].name);
+    }
+    free(desc->glues);
+    free(desc->weight.name);
+    free(desc->weight.masses);
+    for (int i = 0; i < desc->muscle_count; ++i) {
+        free(desc->muscles[i].name);
+    }
+    free(desc->muscles);
+    for (int i = 0; i < desc->group_count; ++i) {
+        free(desc->groups[i].name);
+        free(desc->groups[i].muscles);
+    }
+    free(desc->groups);
+    for (int i = 0; i < desc->variant_count; ++i) {
+        free(desc->variants[i].name);
+        free(desc->variants[i].muscles);
+        free(desc->variants[i].bones);
+    }
+    free(desc->variants);
+    free(desc);
+}
+
+static int object_count(const mu_model_desc *desc, mu_model_kind kind)
+{
+    switch (kind) {
+    case MU_MODEL_NAIL:
+        return desc->nail_count;
+    case MU_MODEL_BONE:
+        return desc->bone_count;
+    case MU_MODEL_HINGE:
+        return desc->hinge_count;
+    case MU_MODEL_GLUE:
+        return desc->glue_count;
+    case MU_MODEL_WEIGHT:
+        return desc->has_weight ? 1 : 0;
+    case MU_MODEL_MUSCLE:
+        return desc->muscle_count;
+    case MU_MODEL_GROUP:
+        return desc->group_count;
+    }
+    return 0;
+}
+
+const char *mu_model_desc_name_of(const mu_model_desc *desc, mu_model_ref ref)
+{
+    if (desc == NULL || ref.index < 0 || ref.index >= object_count(desc, ref.kind)) {
+        return NULL;
+    }
+    switch (ref.kind) {
+    case MU_MODEL_NAIL:
+        return desc->nails[ref.index].name;
+    case MU_MODEL_BONE:
+        return desc->bones[ref.index].name;
+    case MU_MODEL_HINGE:
+        return desc->hinges[ref.index].name;
+    case MU_MODEL_GLUE:
+        return desc->glues[ref.index].name;
+    case MU_MODEL_WEIGHT:
+        return desc->weight.name;
+    case MU_MODEL_MUSCLE:
+        return desc->muscles[ref.index].name;
+    case MU_MODEL_GROUP:
+        return desc->groups[ref.index].name;
+    }
+    return NULL;
+}
+
+bool mu_model_desc_find(const mu_model_desc *desc, const char *name, mu_model_ref *out)
+{
+    if (desc == NULL || name == NULL || out == NULL) {
+        return false;
+    }
+    static const mu_model_kind kinds[] = {MU_MODEL_NAIL,   MU_MODEL_BONE,   MU_MODEL_HINGE, MU_MODEL_GLUE,
+                                          MU_MODEL_WEIGHT, MU_MODEL_MUSCLE, MU_MODEL_GROUP};
+    for (size_t k = 0; k < sizeof kinds / sizeof kinds[0]; ++k) {
+        for (int i = 0; i < object_count(desc, kinds[k]); ++i) {
+            mu_model_ref ref = {kinds[k], i};
+            /* While a file is read, the object being read has no name yet. */
+            const char *other = mu_model_desc_name_of(desc, ref);
+            if (other != NULL && strcmp(other, name) == 0) {
+                *out = ref;
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+int mu_model_desc_find_variant(const mu_model_desc *desc, const char *name)
+{
+    if (desc == NULL || name == NULL) {
+        return -1;
+    }
+    for (int i = 0; i < desc->variant_count; ++i) {
+        if (desc->variants[i].name != NULL && strcmp(desc->variants[i].name, name) == 0) {
+            return i;
+        }
+    }
+    return -1;
+}
+
+static bool contains(const int *indices, int count, int index)
+{
+    for (int i = 0; i < count; ++i) {
+        if (indices[i] == index) {
+            return true;
+        }
+    }
+    return false;
+}
+
+bool mu_model_variant_has_muscle(const mu_model_variant *variant, int index)
+{
+    return variant != NULL && contains(variant->muscles, variant->muscle_count, index);
+}
+
+bool mu_model_variant_has_bone(const mu_model_variant *variant, int index)
+{
+    return variant != NULL && contains(variant->bones, variant->bone_count, index);
+}

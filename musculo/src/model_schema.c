@@ -1,0 +1,569 @@
+/* Reads a model file into a mu_model_desc, section by section: nails and
+ * bones first, so that the joints, the weight and the muscles after them
+ * can name them; muscles before the groups and variants that list them.
+ * The first problem found stops the read. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "model_schema.h"
+
+/* The seed's defaults (framework.md §2–§4). */
+#define DEFAULT_GRAVITY_Y (-9.8)       /* m/s² */
+#define DEFAULT_FRAME_RATE 60.0        /* Hz */
+#define DEFAULT_SUBSTEPS 10            /* per frame */
+#define DEFAULT_BONE_DENSITY 1900.0    /* kg/m³ */
+#define DEFAULT_SPECIFIC_TENSION 1.5e6 /* N/m², the seed's code (its report's table says 3e5) */
+#define DEFAULT_MAX_VELOCITY 0.25      /* m/s */
+#define DEFAULT_START_NORMALIZED_LENGTH 1.0
+#define DEFAULT_SYMMETRY 0.5
+/* The seed's named minimal and maximal normalized lengths (framework.md
+ * §4): the range its muscles work in. */
+#define MIN_START_NORMALIZED_LENGTH 0.5
+#define MAX_START_NORMALIZED_LENGTH 1.5
+/* A hinge limit beyond a full turn is a mistake, usually the seed's ±999°
+ * for "no limit", which the format says by leaving the limit out. */
+#define MAX_LIMIT_DEGREES 360.0
+#define MAX_SUBSTEPS 1000
+
+static const char *const kind_singular[] = {"nail", "bone", "hinge", "glue", "weight", "muscle", "group"};
+static const char *const kind_list[] = {"nails", "bones", "hinges", "glues", "weight", "muscles", "groups"};
+
+static rb_status out_of_memory(void)
+{
+    return rb_report_error(RB_ERR_OUT_OF_MEMORY, "mu_model_desc_load: out of memory");
+}
+
+static rb_status copy_string(const char *text, char **out)
+{
+    size_t size = strlen(text) + 1;
+    *out = malloc(size);
+    if (*out == NULL) {
+        return out_of_memory();
+    }
+    memcpy(*out, text, size);
+    return RB_OK;
+}
+
+/* Fails after a calloc of `count` items that returned NULL (0 items may
+ * give NULL and are no failure). */
+static rb_status check_allocation(const void *items, size_t count)
+{
+    return items == NULL && count > 0 ? out_of_memory() : RB_OK;
+}
+
+/* "where" names the object a name already belongs to: "bones[2]", "weight". */
+static void format_ref(mu_model_ref ref, char *buffer, size_t size)
+{
+    if (ref.kind == MU_MODEL_WEIGHT) {
+        snprintf(buffer, size, "weight");
+    } else {
+        snprintf(buffer, size, "%s[%d]", kind_list[ref.kind], ref.index);
+    }
+}
+
+/* Reads the required "name" of an object of the shared namespace and
+ * copies it to *out, failing if another object has it already. */
+static rb_status read_object_name(mu_json_reader *reader, const json_t *object, const mu_model_desc *desc, char **out)
+{
+    const char *name;
+    MU_JSON_TRY(mu_json_read_string(reader, object, "name", MU_JSON_REQUIRED, "the object's name", &name));
+    mu_model_ref other;
+    if (mu_model_desc_find(desc, name, &other)) {
+        char where[32];
+        format_ref(other, where, sizeof where);
+        mu_json_push_key(reader, "name");
+        return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                            "\"%s\" is already the name of %s, expected a name that no other nail, bone, hinge, "
+                            "glue, weight, muscle or group has",
+                            name, where);
+    }
+    return copy_string(name, out);
+}
+
+/* Reads the member `key`, the name of a nail or a bone. */
+static rb_status read_body(mu_json_reader *reader, const json_t *object, const char *key, const mu_model_desc *desc,
+                           mu_model_ref *out)
+{
+    const char *what = "the name of a nail or bone";
+    const char *name;
+    MU_JSON_TRY(mu_json_read_string(reader, object, key, MU_JSON_REQUIRED, what, &name));
+    mu_json_push_key(reader, key);
+    if (!mu_model_desc_find(desc, name, out)) {
+        return mu_json_fail(reader, MU_JSON_AT_VALUE, "no nail or bone is named \"%s\", expected %s", name, what);
+    }
+    if (out->kind != MU_MODEL_NAIL && out->kind != MU_MODEL_BONE) {
+        return mu_json_fail(reader, MU_JSON_AT_VALUE, "\"%s\" is a %s, expected %s", name, kind_singular[out->kind],
+                            what);
+    }
+    mu_json_pop(reader);
+    return RB_OK;
+}
+
+/* Reads body_a and body_b of a joint, which must differ. */
+static rb_status read_body_pair(mu_json_reader *reader, const json_t *object, const mu_model_desc *desc,
+                                mu_model_ref *body_a, mu_model_ref *body_b)
+{
+    MU_JSON_TRY(read_body(reader, object, "body_a", desc, body_a));
+    MU_JSON_TRY(read_body(reader, object, "body_b", desc, body_b));
+    if (body_a->kind == body_b->kind && body_a->index == body_b->index) {
+        mu_json_push_key(reader, "body_b");
+        return mu_json_fail(reader, MU_JSON_AT_VALUE, "\"%s\" is body_a too, expected a different body",
+                            mu_model_desc_name_of(desc, *body_b));
+    }
+    return RB_OK;
+}
+
+/* Reads the element at the current path, the name of an object of `kind`,
+ * and checks that the first `count` entries of `taken` do not hold it. */
+static rb_status read_member_ref(mu_json_reader *reader, const json_t *value, const mu_model_desc *desc,
+                                 mu_model_kind kind, const int *taken, int count, int *out)
+{
+    char what[32];
+    snprintf(what, sizeof what, "the name of a %s", kind_singular[kind]);
+    const char *name;
+    MU_JSON_TRY(mu_json_expect_string(reader, value, what, &name));
+    mu_model_ref ref;
+    if (!mu_model_desc_find(desc, name, &ref) || ref.kind != kind) {
+        return mu_json_fail(reader, MU_JSON_AT_VALUE, "no %s is named \"%s\", expected %s", kind_singular[kind], name,
+                            what);
+    }
+    for (int i = 0; i < count; ++i) {
+        if (taken[i] == ref.index) {
+            return mu_json_fail(reader, MU_JSON_AT_VALUE, "\"%s\" is listed twice, expected each %s once", name,
+                                kind_singular[kind]);
+        }
+    }
+    *out = ref.index;
+    return RB_OK;
+}
+
+/* ---- one object of each kind ------------------------------------------ */
+
+static rb_status parse_nail(mu_json_reader *reader, const json_t *object, mu_model_desc *desc)
+{
+    static const char *const keys[] = {"name", "position", NULL};
+    MU_JSON_TRY(mu_json_check_object(reader, object, keys));
+    mu_model_nail *nail = &desc->nails[desc->nail_count++];
+    MU_JSON_TRY(read_object_name(reader, object, desc, &nail->name));
+    return mu_json_read_vec2(reader, object, "position", MU_JSON_REQUIRED, mu_json_any, "the nail's position in m",
+                             &nail->position);
+}
+
+static rb_status parse_bone(mu_json_reader *reader, const json_t *object, mu_model_desc *desc)
+{
+    static const char *const keys[] = {"name", "centre", "size", "angle", "depth", "static", "density", NULL};
+    MU_JSON_TRY(mu_json_check_object(reader, object, keys));
+    mu_model_bone *bone = &desc->bones[desc->bone_count++];
+    MU_JSON_TRY(read_object_name(reader, object, desc, &bone->name));
+    MU_JSON_TRY(mu_json_read_vec2(reader, object, "centre", MU_JSON_REQUIRED, mu_json_any, "the bone's centre in m",
+                                  &bone->centre));
+    MU_JSON_TRY(mu_json_read_vec2(reader, object, "size", MU_JSON_REQUIRED, mu_json_positive,
+                                  "the bone's x and y extents in m", &bone->size));
+    MU_JSON_TRY(mu_json_read_number(reader, object, "angle", MU_JSON_OPTIONAL, mu_json_any,
+                                    "the bone's angle in degrees", &bone->angle));
+    bone->depth = bone->size.x < bone->size.y ? bone->size.x : bone->size.y;
+    MU_JSON_TRY(mu_json_read_number(reader, object, "depth", MU_JSON_OPTIONAL, mu_json_positive,
+                                    "the bone's depth in m", &bone->depth));
+    MU_JSON_TRY(
+        mu_json_read_bool(reader, object, "static", MU_JSON_OPTIONAL, "whether the bone is static", &bone->is_static));
+    bone->density = DEFAULT_BONE_DENSITY;
+    return mu_json_read_number(reader, object, "density", MU_JSON_OPTIONAL, mu_json_positive,
+                               "the bone's density in kg/m³", &bone->density);
+}
+
+static rb_status parse_hinge(mu_json_reader *reader, const json_t *object, mu_model_desc *desc)
+{
+    static const char *const keys[] = {"name",   "body_a", "anchor_a", "body_b", "anchor_b",
+                                       "radius", "lower",  "upper",    NULL};
+    const mu_json_bounds limit = {-MAX_LIMIT_DEGREES, MAX_LIMIT_DEGREES, false, false};
+    const char *limit_what = "a joint angle limit in degrees, left out for no limit";
+    MU_JSON_TRY(mu_json_check_object(reader, object, keys));
+    mu_model_hinge *hinge = &desc->hinges[desc->hinge_count++];
+    MU_JSON_TRY(read_object_name(reader, object, desc, &hinge->name));
+    MU_JSON_TRY(read_body_pair(reader, object, desc, &hinge->body_a, &hinge->body_b));
+    MU_JSON_TRY(mu_json_read_vec2(reader, object, "anchor_a", MU_JSON_REQUIRED, mu_json_any,
+                                  "the pin in body A's frame, in m", &hinge->anchor_a));
+    MU_JSON_TRY(mu_json_read_vec2(reader, object, "anchor_b", MU_JSON_REQUIRED, mu_json_any,
+                                  "the pin in body B's frame, in m", &hinge->anchor_b));
+    MU_JSON_TRY(mu_json_read_number(reader, object, "radius", MU_JSON_REQUIRED, mu_json_positive,
+                                    "the hinge's drawn radius in m", &hinge->radius));
+    hinge->has_lower = json_object_get(object, "lower") != NULL;
+    hinge->has_upper = json_object_get(object, "upper") != NULL;
+    MU_JSON_TRY(mu_json_read_number(reader, object, "lower", MU_JSON_OPTIONAL, limit, limit_what, &hinge->lower));
+    MU_JSON_TRY(mu_json_read_number(reader, object, "upper", MU_JSON_OPTIONAL, limit, limit_what, &hinge->upper));
+    if (hinge->has_lower && hinge->has_upper && hinge->lower > hinge->upper) {
+        mu_json_push_key(reader, "lower");
+        return mu_json_fail(reader, MU_JSON_AT_VALUE, "%g is above upper (%g), expected lower <= upper", hinge->lower,
+                            hinge->upper);
+    }
+    return RB_OK;
+}
+
+static rb_status parse_glue(mu_json_reader *reader, const json_t *object, mu_model_desc *desc)
+{
+    static const char *const keys[] = {"name", "body_a", "body_b", NULL};
+    MU_JSON_TRY(mu_json_check_object(reader, object, keys));
+    mu_model_glue *glue = &desc->glues[desc->glue_count++];
+    MU_JSON_TRY(read_object_name(reader, object, desc, &glue->name));
+    return read_body_pair(reader, object, desc, &glue->body_a, &glue->body_b);
+}
+
+static rb_status parse_path_point(mu_json_reader *reader, const json_t *object, const mu_model_desc *desc,
+                                  mu_model_path_point *point)
+{
+    static const char *const keys[] = {"body", "point", NULL};
+    MU_JSON_TRY(mu_json_check_object(reader, object, keys));
+    MU_JSON_TRY(read_body(reader, object, "body", desc, &point->body));
+    return mu_json_read_vec2(reader, object, "point", MU_JSON_REQUIRED, mu_json_any,
+                             "the point in the body's frame, in m", &point->point);
+}
+
+/* The muscle's force: max_force, or rest_width with specific_tension. */
+static rb_status parse_muscle_force(mu_json_reader *reader, const json_t *object, mu_model_muscle *muscle)
+{
+    MU_JSON_TRY(mu_json_read_number(reader, object, "max_force", MU_JSON_OPTIONAL, mu_json_positive,
+                                    "the maximal isometric force in N", &muscle->max_force));
+    bool has_max_force = muscle->max_force > 0.0;
+    MU_JSON_TRY(mu_json_read_number(reader, object, "rest_width", MU_JSON_OPTIONAL, mu_json_positive,
+                                    "the belly's width at rest in m", &muscle->rest_width));
+    if (!has_max_force && muscle->rest_width == 0.0) {
+        return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                            "missing key \"rest_width\", expected the belly's width at rest in m, or max_force");
+    }
+    muscle->specific_tension = DEFAULT_SPECIFIC_TENSION;
+    MU_JSON_TRY(mu_json_read_number(reader, object, "specific_tension", MU_JSON_OPTIONAL, mu_json_positive,
+                                    "the specific tension in N/m²", &muscle->specific_tension));
+    if (has_max_force && json_object_get(object, "specific_tension") != NULL) {
+        mu_json_push_key(reader, "specific_tension");
+        return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                            "given with max_force, expected either max_force or rest_width with specific_tension");
+    }
+    return RB_OK;
+}
+
+/* Where the belly starts: start_normalized_length or tendon_length. */
+static rb_status parse_muscle_start(mu_json_reader *reader, const json_t *object, mu_model_muscle *muscle)
+{
+    const mu_json_bounds normalized = {MIN_START_NORMALIZED_LENGTH, MAX_START_NORMALIZED_LENGTH, false, false};
+    muscle->start_normalized_length = DEFAULT_START_NORMALIZED_LENGTH;
+    MU_JSON_TRY(mu_json_read_number(reader, object, "start_normalized_length", MU_JSON_OPTIONAL, normalized,
+                                    "the belly's length at creation over its rest length",
+                                    &muscle->start_normalized_length));
+    muscle->tendon_length = -1.0;
+    MU_JSON_TRY(mu_json_read_number(reader, object, "tendon_length", MU_JSON_OPTIONAL, mu_json_non_negative,
+                                    "the tendon's length in m", &muscle->tendon_length));
+    if (muscle->tendon_length >= 0.0 && json_object_get(object, "start_normalized_length") != NULL) {
+        mu_json_push_key(reader, "tendon_length");
+        return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                            "given with start_normalized_length, expected one of the two (the tendon's length, or "
+                            "the belly's start length that derives it)");
+    }
+    return RB_OK;
+}
+
+static rb_status parse_muscle_path(mu_json_reader *reader, const json_t *object, const mu_model_desc *desc,
+                                   mu_model_muscle *muscle)
+{
+    const json_t *path;
+    MU_JSON_TRY(mu_json_read_array(reader, object, "path", MU_JSON_REQUIRED, 2, RB_MAX_CABLE_POINTS,
+                                   "path points {body, point}: origin, via points, insertion", &path));
+    mu_json_push_key(reader, "path");
+    for (size_t i = 0; i < json_array_size(path); ++i) {
+        mu_json_push_index(reader, i);
+        MU_JSON_TRY(parse_path_point(reader, json_array_get(path, i), desc, &muscle->path[i]));
+        muscle->point_count = (int)i + 1;
+        mu_json_pop(reader);
+    }
+    mu_json_pop(reader);
+    return RB_OK;
+}
+
+static rb_status parse_muscle(mu_json_reader *reader, const json_t *object, mu_model_desc *desc)
+{
+    static const char *const keys[] = {"name",
+                                       "rest_length",
+                                       "rest_width",
+                                       "specific_tension",
+                                       "max_force",
+                                       "max_velocity",
+                                       "start_normalized_length",
+                                       "tendon_length",
+                                       "symmetry",
+                                       "curves",
+                                       "path",
+                                       NULL};
+    MU_JSON_TRY(mu_json_check_object(reader, object, keys));
+    mu_model_muscle *muscle = &desc->muscles[desc->muscle_count++];
+    MU_JSON_TRY(read_object_name(reader, object, desc, &muscle->name));
+    MU_JSON_TRY(mu_json_read_number(reader, object, "rest_length", MU_JSON_REQUIRED, mu_json_positive,
+                                    "the belly's rest length in m", &muscle->rest_length));
+    MU_JSON_TRY(parse_muscle_force(reader, object, muscle));
+    muscle->max_velocity = DEFAULT_MAX_VELOCITY;
+    MU_JSON_TRY(mu_json_read_number(reader, object, "max_velocity", MU_JSON_OPTIONAL, mu_json_positive,
+                                    "the maximal shortening speed in m/s", &muscle->max_velocity));
+    MU_JSON_TRY(parse_muscle_start(reader, object, muscle));
+    const mu_json_bounds unit = {0.0, 1.0, false, false};
+    muscle->symmetry = DEFAULT_SYMMETRY;
+    MU_JSON_TRY(mu_json_read_number(reader, object, "symmetry", MU_JSON_OPTIONAL, unit,
+                                    "where the belly sits between the path's ends", &muscle->symmetry));
+    const char *curves = "tabulated";
+    const char *curves_what = "the curve set, \"tabulated\" or \"analytic\"";
+    MU_JSON_TRY(mu_json_read_string(reader, object, "curves", MU_JSON_OPTIONAL, curves_what, &curves));
+    if (strcmp(curves, "analytic") == 0) {
+        muscle->curves = MU_MODEL_CURVES_ANALYTIC;
+    } else if (strcmp(curves, "tabulated") == 0) {
+        muscle->curves = MU_MODEL_CURVES_TABULATED;
+    } else {
+        mu_json_push_key(reader, "curves");
+        return mu_json_fail(reader, MU_JSON_AT_VALUE, "\"%s\" is no curve set, expected %s", curves, curves_what);
+    }
+    return parse_muscle_path(reader, object, desc, muscle);
+}
+
+static rb_status parse_group(mu_json_reader *reader, const json_t *object, mu_model_desc *desc)
+{
+    static const char *const keys[] = {"name", "muscles", NULL};
+    MU_JSON_TRY(mu_json_check_object(reader, object, keys));
+    mu_model_group *group = &desc->groups[desc->group_count++];
+    MU_JSON_TRY(read_object_name(reader, object, desc, &group->name));
+    const json_t *muscles;
+    MU_JSON_TRY(mu_json_read_array(reader, object, "muscles", MU_JSON_REQUIRED, 1, MU_MODEL_MAX_OBJECTS, "muscle names",
+                                   &muscles));
+    group->muscles = calloc(json_array_size(muscles), sizeof *group->muscles);
+    MU_JSON_TRY(check_allocation(group->muscles, json_array_size(muscles)));
+    mu_json_push_key(reader, "muscles");
+    for (size_t i = 0; i < json_array_size(muscles); ++i) {
+        mu_json_push_index(reader, i);
+        MU_JSON_TRY(read_member_ref(reader, json_array_get(muscles, i), desc, MU_MODEL_MUSCLE, group->muscles,
+                                    group->muscle_count, &group->muscles[i]));
+        ++group->muscle_count;
+        mu_json_pop(reader);
+    }
+    mu_json_pop(reader);
+    return RB_OK;
+}
+
+static rb_status parse_weight(mu_json_reader *reader, const json_t *object, mu_model_desc *desc)
+{
+    static const char *const keys[] = {"name", "body", "position", "masses", NULL};
+    MU_JSON_TRY(mu_json_check_object(reader, object, keys));
+    desc->has_weight = true;
+    mu_model_weight *weight = &desc->weight;
+    MU_JSON_TRY(read_object_name(reader, object, desc, &weight->name));
+    MU_JSON_TRY(read_body(reader, object, "body", desc, &weight->body));
+    MU_JSON_TRY(mu_json_read_vec2(reader, object, "position", MU_JSON_REQUIRED, mu_json_any, "the weight's centre in m",
+                                  &weight->position));
+    const json_t *masses;
+    MU_JSON_TRY(mu_json_read_array(reader, object, "masses", MU_JSON_REQUIRED, 1, MU_MODEL_MAX_OBJECTS,
+                                   "weight choices in kg", &masses));
+    weight->masses = calloc(json_array_size(masses), sizeof *weight->masses);
+    MU_JSON_TRY(check_allocation(weight->masses, json_array_size(masses)));
+    weight->mass_count = (int)json_array_size(masses);
+    mu_json_push_key(reader, "masses");
+    for (size_t i = 0; i < json_array_size(masses); ++i) {
+        mu_json_push_index(reader, i);
+        MU_JSON_TRY(mu_json_expect_number(reader, json_array_get(masses, i), mu_json_non_negative,
+                                          "a mass in kg, 0 for no weight", &weight->masses[i]));
+        mu_json_pop(reader);
+    }
+    mu_json_pop(reader);
+    return RB_OK;
+}
+
+/* ---- variants ------------------------------------------------------------ */
+
+/* Fails if a muscle of the variant runs over a bone the variant leaves out. */
+static rb_status check_variant_bones(mu_json_reader *reader, const mu_model_desc *desc, const mu_model_variant *variant)
+{
+    for (int m = 0; m < variant->muscle_count; ++m) {
+        const mu_model_muscle *muscle = &desc->muscles[variant->muscles[m]];
+        for (int p = 0; p < muscle->point_count; ++p) {
+            mu_model_ref body = muscle->path[p].body;
+            if (body.kind == MU_MODEL_BONE && !mu_model_variant_has_bone(variant, body.index)) {
+                mu_json_push_key(reader, "muscles");
+                mu_json_push_index(reader, (size_t)m);
+                return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                                    "muscle \"%s\" runs over bone \"%s\", which the variant's bones leave out, "
+                                    "expected a muscle whose bones are all in the variant",
+                                    muscle->name, desc->bones[body.index].name);
+            }
+        }
+    }
+    return RB_OK;
+}
+
+/* Reads the list `key` of names of objects of `kind` into *indices. */
+static rb_status read_variant_list(mu_json_reader *reader, const json_t *object, const char *key, mu_model_kind kind,
+                                   const mu_model_desc *desc, int **indices, int *count)
+{
+    char what[32];
+    snprintf(what, sizeof what, "%s names", kind_singular[kind]);
+    const json_t *names;
+    MU_JSON_TRY(mu_json_read_array(reader, object, key, MU_JSON_REQUIRED, 0, MU_MODEL_MAX_OBJECTS, what, &names));
+    *indices = calloc(json_array_size(names), sizeof **indices);
+    MU_JSON_TRY(check_allocation(*indices, json_array_size(names)));
+    mu_json_push_key(reader, key);
+    for (size_t i = 0; i < json_array_size(names); ++i) {
+        mu_json_push_index(reader, i);
+        MU_JSON_TRY(read_member_ref(reader, json_array_get(names, i), desc, kind, *indices, *count, &(*indices)[i]));
+        ++*count;
+        mu_json_pop(reader);
+    }
+    mu_json_pop(reader);
+    return RB_OK;
+}
+
+/* Every bone, for a variant that does not list its bones. */
+static rb_status all_bones(const mu_model_desc *desc, mu_model_variant *variant)
+{
+    variant->bones = calloc((size_t)desc->bone_count, sizeof *variant->bones);
+    MU_JSON_TRY(check_allocation(variant->bones, (size_t)desc->bone_count));
+    for (int i = 0; i < desc->bone_count; ++i) {
+        variant->bones[variant->bone_count++] = i;
+    }
+    return RB_OK;
+}
+
+static rb_status parse_variant(mu_json_reader *reader, const json_t *object, mu_model_desc *desc)
+{
+    static const char *const keys[] = {"name", "muscles", "bones", NULL};
+    MU_JSON_TRY(mu_json_check_object(reader, object, keys));
+    mu_model_variant *variant = &desc->variants[desc->variant_count++];
+    const char *name;
+    MU_JSON_TRY(mu_json_read_string(reader, object, "name", MU_JSON_REQUIRED, "the variant's name", &name));
+    int other = mu_model_desc_find_variant(desc, name);
+    if (other >= 0) {
+        mu_json_push_key(reader, "name");
+        return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                            "\"%s\" is already the name of variants[%d], expected a name that no other variant has",
+                            name, other);
+    }
+    MU_JSON_TRY(copy_string(name, &variant->name));
+    MU_JSON_TRY(
+        read_variant_list(reader, object, "muscles", MU_MODEL_MUSCLE, desc, &variant->muscles, &variant->muscle_count));
+    if (json_object_get(object, "bones") != NULL) {
+        MU_JSON_TRY(
+            read_variant_list(reader, object, "bones", MU_MODEL_BONE, desc, &variant->bones, &variant->bone_count));
+    } else {
+        MU_JSON_TRY(all_bones(desc, variant));
+    }
+    return check_variant_bones(reader, desc, variant);
+}
+
+/* Without "variants", the model has one variant with everything in it. */
+static rb_status default_variant(mu_model_desc *desc)
+{
+    desc->variants = calloc(1, sizeof *desc->variants);
+    MU_JSON_TRY(check_allocation(desc->variants, 1));
+    mu_model_variant *variant = &desc->variants[desc->variant_count++];
+    MU_JSON_TRY(copy_string("Default", &variant->name));
+    variant->muscles = calloc((size_t)desc->muscle_count, sizeof *variant->muscles);
+    MU_JSON_TRY(check_allocation(variant->muscles, (size_t)desc->muscle_count));
+    for (int i = 0; i < desc->muscle_count; ++i) {
+        variant->muscles[variant->muscle_count++] = i;
+    }
+    return all_bones(desc, variant);
+}
+
+/* ---- the model ------------------------------------------------------------- */
+
+typedef rb_status (*parse_element)(mu_json_reader *reader, const json_t *object, mu_model_desc *desc);
+
+/* Parses each element of the list `key` (NULL: absent) with `parse`,
+ * which appends to the array it fills. */
+static rb_status for_each(mu_json_reader *reader, const char *key, const json_t *list, mu_model_desc *desc,
+                          parse_element parse)
+{
+    if (list == NULL) {
+        return RB_OK;
+    }
+    mu_json_push_key(reader, key);
+    for (size_t i = 0; i < json_array_size(list); ++i) {
+        mu_json_push_index(reader, i);
+        MU_JSON_TRY(parse(reader, json_array_get(list, i), desc));
+        mu_json_pop(reader);
+    }
+    mu_json_pop(reader);
+    return RB_OK;
+}
+
+/* The optional list `key` of `what`; *out is NULL when it is absent. */
+static rb_status read_list(mu_json_reader *reader, const json_t *root, const char *key, size_t min_count,
+                           const char *what, const json_t **out)
+{
+    return mu_json_read_array(reader, root, key, MU_JSON_OPTIONAL, min_count, MU_MODEL_MAX_OBJECTS, what, out);
+}
+
+static rb_status parse_settings(mu_json_reader *reader, const json_t *root, mu_model_desc *desc)
+{
+    const char *name;
+    MU_JSON_TRY(mu_json_read_string(reader, root, "name", MU_JSON_REQUIRED, "the model's name", &name));
+    MU_JSON_TRY(copy_string(name, &desc->name));
+    desc->gravity = rb_v2(0.0, DEFAULT_GRAVITY_Y);
+    MU_JSON_TRY(mu_json_read_vec2(reader, root, "gravity", MU_JSON_OPTIONAL, mu_json_any, "the gravity in m/s²",
+                                  &desc->gravity));
+    desc->frame_rate = DEFAULT_FRAME_RATE;
+    MU_JSON_TRY(mu_json_read_number(reader, root, "frame_rate", MU_JSON_OPTIONAL, mu_json_positive,
+                                    "the frame rate in Hz", &desc->frame_rate));
+    desc->substeps = DEFAULT_SUBSTEPS;
+    MU_JSON_TRY(mu_json_read_int(reader, root, "substeps", MU_JSON_OPTIONAL, 1, MAX_SUBSTEPS, "the substeps per frame",
+                                 &desc->substeps));
+    return mu_json_read_vec2(reader, root, "placement", MU_JSON_OPTIONAL, mu_json_any, "the model's offset in m",
+                             &desc->placement);
+}
+
+rb_status mu_model_parse(mu_json_reader *reader, const json_t *root, mu_model_desc *desc)
+{
+    static const char *const keys[] = {"name",   "gravity", "frame_rate", "substeps", "placement", "nails",    "bones",
+                                       "hinges", "glues",   "weight",     "muscles",  "groups",    "variants", NULL};
+    MU_JSON_TRY(mu_json_check_object(reader, root, keys));
+    MU_JSON_TRY(parse_settings(reader, root, desc));
+    const json_t *list;
+
+    MU_JSON_TRY(read_list(reader, root, "nails", 0, "nails {name, position}", &list));
+    desc->nails = calloc(json_array_size(list), sizeof *desc->nails);
+    MU_JSON_TRY(check_allocation(desc->nails, json_array_size(list)));
+    MU_JSON_TRY(for_each(reader, "nails", list, desc, parse_nail));
+
+    MU_JSON_TRY(read_list(reader, root, "bones", 0, "bones {name, centre, size, ...}", &list));
+    desc->bones = calloc(json_array_size(list), sizeof *desc->bones);
+    MU_JSON_TRY(check_allocation(desc->bones, json_array_size(list)));
+    MU_JSON_TRY(for_each(reader, "bones", list, desc, parse_bone));
+
+    MU_JSON_TRY(
+        read_list(reader, root, "hinges", 0, "hinges {name, body_a, anchor_a, body_b, anchor_b, radius, ...}", &list));
+    desc->hinges = calloc(json_array_size(list), sizeof *desc->hinges);
+    MU_JSON_TRY(check_allocation(desc->hinges, json_array_size(list)));
+    MU_JSON_TRY(for_each(reader, "hinges", list, desc, parse_hinge));
+
+    MU_JSON_TRY(read_list(reader, root, "glues", 0, "glues {name, body_a, body_b}", &list));
+    desc->glues = calloc(json_array_size(list), sizeof *desc->glues);
+    MU_JSON_TRY(check_allocation(desc->glues, json_array_size(list)));
+    MU_JSON_TRY(for_each(reader, "glues", list, desc, parse_glue));
+
+    const json_t *weight = json_object_get(root, "weight");
+    if (weight != NULL) {
+        mu_json_push_key(reader, "weight");
+        MU_JSON_TRY(parse_weight(reader, weight, desc));
+        mu_json_pop(reader);
+    }
+
+    MU_JSON_TRY(read_list(reader, root, "muscles", 0, "muscles {name, rest_length, path, ...}", &list));
+    desc->muscles = calloc(json_array_size(list), sizeof *desc->muscles);
+    MU_JSON_TRY(check_allocation(desc->muscles, json_array_size(list)));
+    MU_JSON_TRY(for_each(reader, "muscles", list, desc, parse_muscle));
+
+    MU_JSON_TRY(read_list(reader, root, "groups", 0, "groups {name, muscles}", &list));
+    desc->groups = calloc(json_array_size(list), sizeof *desc->groups);
+    MU_JSON_TRY(check_allocation(desc->groups, json_array_size(list)));
+    MU_JSON_TRY(for_each(reader, "groups", list, desc, parse_group));
+
+    MU_JSON_TRY(read_list(reader, root, "variants", 1, "variants {name, muscles, bones}", &list));
+    if (list == NULL) {
+        return default_variant(desc);
+    }
+    desc->variants = calloc(json_array_size(list), sizeof *desc->variants);
+    MU_JSON_TRY(check_allocation(desc->variants, json_array_size(list)));
+    return for_each(reader, "variants", list, desc, parse_variant);
+}
