@@ -282,7 +282,7 @@ void rb_cables_solve(rb_world *world, double h)
 {
     for (int c = 0; c < world->cable_slots; ++c) {
         rb_cable *cable = &world->cables[c];
-        if (!cable->in_use || cable->inverse_mass <= 0.0) {
+        if (!cable->in_use) {
             continue;
         }
         /* L' = -Σ (pull · v + angular · ω): the pulls point inwards. */
@@ -290,6 +290,13 @@ void rb_cables_solve(rb_world *world, double h)
         for (int b = 0; b < cable->body_count; ++b) {
             const rb_body_state *s = &world->states[cable->solver_bodies[b]];
             speed -= rb_dot(cable->linear[b], s->linear_velocity) + cable->angular[b] * s->angular_velocity;
+        }
+        if (cable->inverse_mass <= 0.0) {
+            /* No tension can move the path's bodies (static, or kinematic
+             * with imposed velocities): the tension is the law's at the
+             * speed they impose, acting on nothing. */
+            cable->impulse = h * fmax(cable->base_tension + cable->damping * speed, 0.0);
+            continue;
         }
         double c_k = cable->damping * cable->inverse_mass;
         double total = h * (cable->base_tension + cable->damping * speed + c_k * cable->impulse) / (1.0 + h * c_k);

@@ -390,11 +390,13 @@ static rb_status create_world_and_curves(mu_model *model)
     rb_world_def def = rb_default_world_def();
     def.gravity = model->desc->gravity;
     /* The model substeps itself (frame / substeps, 600 Hz for the seed);
-     * each of its substeps is one engine substep of the seed's 8 velocity
-     * and 3 position iterations. */
+     * each of its substeps is one engine substep. At 600 Hz, 4 velocity
+     * and 1 position pass give the motion the seed's 8 and 3 give (the
+     * arm's biceps holds the elbow at 134.5 degrees either way, the model
+     * tests pass) for 70 % of the time. */
     def.solver.substeps = 1;
-    def.solver.velocity_iterations = 8;
-    def.solver.position_iterations = 3;
+    def.solver.velocity_iterations = 4;
+    def.solver.position_iterations = 1;
     rb_status status = rb_world_create(&def, &model->world);
     if (status == RB_OK) {
         status = mu_curves_create_seed_tables(MU_INTERPOLATION_LINEAR, &model->curves[MU_MODEL_CURVES_TABULATED]);

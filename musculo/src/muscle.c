@@ -188,10 +188,12 @@ rb_status mu_muscle_measure(mu_muscle *muscle, const rb_world *world)
     }
     double l = length / muscle->rest_length;
     double passive = muscle->max_force * mu_curve_passive_length(muscle->curves, l);
-    /* The law's tension at the velocity the substep ended with: what the
-     * implicit solve applied (and, between bodies that cannot move, what
-     * they would feel). */
-    double total = fmax(muscle->base_tension + muscle->damping * velocity, 0.0);
+    /* The tension the solver applied: the law at the velocity it solved
+     * for, which the iterations reach only approximately when the muscle
+     * shares its bodies with joints and other muscles. (Evaluating the
+     * law at the end velocity instead would amplify a residual of a few
+     * mm/s by the 10⁴-10⁵ N·s/m of the force-velocity slope.) */
+    double total = rb_cable_tension(world, muscle->cable);
     muscle->readout = (mu_muscle_readout){
         .activation = muscle->activation,
         .target_tension = muscle->target_tension,

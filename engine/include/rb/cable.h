@@ -47,7 +47,8 @@ rb_status rb_cable_set_tension_law(rb_world *world, rb_cable_id cable, double ba
 
 double rb_cable_length(const rb_world *world, rb_cable_id cable);            /* m, now */
 double rb_cable_lengthening_speed(const rb_world *world, rb_cable_id cable); /* m/s, now; < 0 while shortening */
-/* The tension (N, >= 0) the cable applied in the last substep. */
+/* The tension (N, >= 0) the cable carried in the last substep: what the
+ * solver applied; between bodies that cannot move, the law at rest. */
 double rb_cable_tension(const rb_world *world, rb_cable_id cable);
 /* The world positions of the path's points now; returns the count. */
 int rb_cable_points(const rb_world *world, rb_cable_id cable, rb_vec2 *out, int capacity);
