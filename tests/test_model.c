@@ -268,3 +268,23 @@ Test(model, muscles_do_not_ring_at_the_substep_frequency)
     mu_model_destroy(model);
     mu_model_desc_destroy(desc);
 }
+
+Test(model, a_hanging_load_is_held_by_the_tension_its_weight_asks)
+{
+    /* The sample's Bone2 hangs from its muscle alone, straight below
+     * Bone1 (models.md). At rest the muscle carries exactly the weight
+     * below it: Bone2 (1900 kg/m³ · 0.05 · 0.05 · 0.05 m = 0.2375 kg) and
+     * the 5 kg disc, times g = 9.8. 1 % leaves room for the last of the
+     * settling; a force read from the wrong place is off by far more. */
+    mu_model_desc *desc = load("sample");
+    mu_model *model = build(desc, 4, 0, 2, false);
+    cr_assert_eq(desc->weight.masses[2], 5.0, "weight choice 2 of the sample is 5 kg");
+    cr_assert_eq(mu_model_set_activation(model, "Muscle", 0.5), RB_OK);
+    run_seconds(model, 8.0);
+    const double weight = (1900.0 * 0.05 * 0.05 * 0.05 + 5.0) * 9.8;
+    const mu_muscle_readout r = mu_model_muscle_readout(model, 0);
+    expect_near(r.total_force, weight, 0.01 * weight, "the muscle's tension holding the load");
+    cr_expect(fabs(r.velocity) < 1e-4, "the load still moves at %g m/s", r.velocity);
+    mu_model_destroy(model);
+    mu_model_desc_destroy(desc);
+}

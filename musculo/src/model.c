@@ -573,6 +573,10 @@ mu_muscle_readout mu_model_muscle_readout(const mu_model *model, int index)
 {
     return mu_muscle_read(model->muscles[model->built_muscles[index]]);
 }
+const mu_muscle *mu_model_built_muscle(const mu_model *model, int index)
+{
+    return model->muscles[model->built_muscles[index]];
+}
 const char *mu_model_warnings(const mu_model *model) { return model->warnings; }
 
 int mu_model_hinge_count(const mu_model *model) { return model->desc->hinge_count; }

@@ -25,9 +25,11 @@ typedef struct rb_body_def {
     double angle;            /* rad */
     rb_vec2 linear_velocity; /* m/s, of the centre of mass */
     double angular_velocity; /* rad/s */
-    /* Damping: each (sub)step of length h the velocities are divided by
-     * (1 + h·c), the backward-Euler step of dv/dt = -c·v, stable for any
-     * c and h; over a time t it decays as exp(-c·t) when h·c << 1. */
+    /* Damping: each (sub)step of length h, after the constraints are
+     * solved, the velocities are divided by (1 + h·c), the backward-Euler
+     * step of dv/dt = -c·v, stable for any c and h; over a time t it
+     * decays as exp(-c·t) when h·c << 1. Acting after the constraints, it
+     * leaves a supported body's full weight on its supports. */
     double linear_damping;  /* 1/s, >= 0, default 0 */
     double angular_damping; /* 1/s, >= 0, default 0 */
     double gravity_scale;   /* multiplies the world's gravity, default 1 */

@@ -60,6 +60,7 @@ rb_status mu_model_set_gravity(mu_model *model, rb_vec2 gravity);
 int mu_model_muscle_count(const mu_model *model);
 const char *mu_model_muscle_name(const mu_model *model, int index);
 mu_muscle_readout mu_model_muscle_readout(const mu_model *model, int index);
+const mu_muscle *mu_model_built_muscle(const mu_model *model, int index);
 /* The warnings of the build (e.g. a muscle whose path is shorter than its
  * rest length starts below the asked normalized length): one per line. */
 const char *mu_model_warnings(const mu_model *model);
