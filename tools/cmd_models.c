@@ -1,0 +1,169 @@
+/* `sinew models` lists the built-in muscle models; `sinew check FILE`
+ * validates a model file. Both describe a model by the same counts.
+ */
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "commands.h"
+#include "model_source.h"
+#include "mu/model.h"
+
+static const char models_usage[] = "usage: sinew models\n"
+                                   "\n"
+                                   "Lists the built-in models (models/*.json) with their variants, weight choices,\n"
+                                   "muscles and groups: the names `sinew run` takes.\n";
+
+static const char check_usage[] = "usage: sinew check FILE\n"
+                                  "\n"
+                                  "Validates the model file FILE (format: models/README.md) and builds it in each\n"
+                                  "of its variants. Prints a one-line summary and exits 0, or prints what is wrong\n"
+                                  "and where (file:line:column, the JSON path, what was expected) and exits 1.\n";
+
+static const char *plural(int count) { return count == 1 ? "" : "s"; }
+
+/* The counts of a description, as one phrase. */
+static void print_counts(const mu_model_desc *desc)
+{
+    printf("%d bodies (%d nail%s, %d bone%s), %d hinge%s, %d glue%s, %d muscle%s, %d group%s",
+           desc->nail_count + desc->bone_count, desc->nail_count, plural(desc->nail_count), desc->bone_count,
+           plural(desc->bone_count), desc->hinge_count, plural(desc->hinge_count), desc->glue_count,
+           plural(desc->glue_count), desc->muscle_count, plural(desc->muscle_count), desc->group_count,
+           plural(desc->group_count));
+}
+
+static void print_builtin(const char *name, const mu_model_desc *desc)
+{
+    printf("%s: ", name);
+    print_counts(desc);
+    printf("\n  variants:");
+    for (int v = 0; v < desc->variant_count; ++v) {
+        const mu_model_variant *variant = &desc->variants[v];
+        printf("%s%d \"%s\" (%d muscle%s)\n", v == 0 ? "  " : "             ", v, variant->name, variant->muscle_count,
+               plural(variant->muscle_count));
+    }
+    printf("  weights:   ");
+    if (!desc->has_weight) {
+        printf("none\n");
+    }
+    for (int w = 0; desc->has_weight && w < desc->weight.mass_count; ++w) {
+        printf("%g%s", desc->weight.masses[w], w + 1 < desc->weight.mass_count ? ", " : " kg\n");
+    }
+    printf("  muscles:   ");
+    for (int m = 0; m < desc->muscle_count; ++m) {
+        printf("%s\"%s\"", m == 0 ? "" : ", ", desc->muscles[m].name);
+    }
+    printf("%s\n  groups:    ", desc->muscle_count == 0 ? "none" : "");
+    for (int g = 0; g < desc->group_count; ++g) {
+        printf("%s\"%s\"", g == 0 ? "" : ", ", desc->groups[g].name);
+    }
+    printf("%s\n", desc->group_count == 0 ? "none" : "");
+}
+
+int cmd_models(int argc, char **argv)
+{
+    if (argc > 0 && (strcmp(argv[0], "--help") == 0 || strcmp(argv[0], "-h") == 0)) {
+        fputs(models_usage, stdout);
+        return EXIT_SUCCESS;
+    }
+    if (argc > 0) {
+        fprintf(stderr, "sinew: models takes no arguments, got \"%s\"\n", argv[0]);
+        return EXIT_USAGE;
+    }
+    for (int k = 0; k < MODEL_BUILTIN_COUNT; ++k) {
+        mu_model_desc *desc;
+        int code = model_source_load(model_builtin_names[k], &desc);
+        if (code != 0) {
+            return code;
+        }
+        printf("%s", k == 0 ? "" : "\n");
+        print_builtin(model_builtin_names[k], desc);
+        mu_model_desc_destroy(desc);
+    }
+    printf("\nRun one with `sinew run MODEL [--variant NAME|N] [--weight KG]` (see `sinew run --help`).\n");
+    return EXIT_SUCCESS;
+}
+
+/* Prints the warning lines of `warnings` not in *printed yet, and adds
+ * them to it: variants share muscles, and so their warnings. Returns
+ * false when out of memory. */
+static bool print_new_warnings(const char *path, const char *warnings, char **printed, size_t *printed_length)
+{
+    while (*warnings != '\0') {
+        size_t length = strcspn(warnings, "\n");
+        bool seen = false;
+        for (const char *line = *printed; !seen && line < *printed + *printed_length; line += strlen(line) + 1) {
+            seen = strlen(line) == length && strncmp(line, warnings, length) == 0;
+        }
+        if (!seen) {
+            fprintf(stderr, "sinew: warning: %s: %.*s\n", path, (int)length, warnings);
+            char *grown = realloc(*printed, *printed_length + length + 1);
+            if (grown == NULL) {
+                return false;
+            }
+            memcpy(grown + *printed_length, warnings, length);
+            grown[*printed_length + length] = '\0';
+            *printed = grown;
+            *printed_length += length + 1;
+        }
+        warnings += length + (warnings[length] == '\n');
+    }
+    return true;
+}
+
+/* Builds the description in each variant, at the full level and the
+ * first weight choice: a file can be valid and still not build (a path
+ * the engine rejects). Warnings go to stderr, each once, and do not fail
+ * the check. */
+static int build_every_variant(const char *path, const mu_model_desc *desc)
+{
+    char *printed = NULL; /* the warnings printed, each followed by a NUL */
+    size_t printed_length = 0;
+    int code = 0;
+    for (int v = 0; code == 0 && v < desc->variant_count; ++v) {
+        mu_model_options options = mu_default_model_options();
+        options.variant = v;
+        mu_model *model;
+        if (mu_model_create(desc, &options, &model) != RB_OK) {
+            fprintf(stderr, "sinew: %s: variant \"%s\" does not build: %s\n", path, desc->variants[v].name,
+                    rb_last_error());
+            code = EXIT_FAILURE;
+            break;
+        }
+        if (!print_new_warnings(path, mu_model_warnings(model), &printed, &printed_length)) {
+            fputs("sinew: out of memory\n", stderr);
+            code = EXIT_FAILURE;
+        }
+        mu_model_destroy(model);
+    }
+    free(printed);
+    return code;
+}
+
+int cmd_check(int argc, char **argv)
+{
+    if (argc > 0 && (strcmp(argv[0], "--help") == 0 || strcmp(argv[0], "-h") == 0)) {
+        fputs(check_usage, stdout);
+        return EXIT_SUCCESS;
+    }
+    if (argc != 1) {
+        fprintf(stderr, "sinew: check takes one model file, got %d arguments (see `sinew check --help`)\n", argc);
+        return EXIT_USAGE;
+    }
+    const char *path = argv[0];
+    mu_model_desc *desc;
+    if (mu_model_desc_load(path, &desc) != RB_OK) {
+        fprintf(stderr, "sinew: %s\n", rb_last_error());
+        return EXIT_FAILURE;
+    }
+    int code = build_every_variant(path, desc);
+    if (code == 0) {
+        printf("%s: valid model \"%s\": ", path, desc->name);
+        print_counts(desc);
+        printf(", %d variant%s, %d weight choice%s\n", desc->variant_count, plural(desc->variant_count),
+               desc->has_weight ? desc->weight.mass_count : 0, plural(desc->has_weight ? desc->weight.mass_count : 0));
+    }
+    mu_model_desc_destroy(desc);
+    return code;
+}

@@ -1,0 +1,571 @@
+/* `sinew run MODEL [options]`: build a muscle model, drive its muscles
+ * from the command line and a control file, step it frame by frame,
+ * write a CSV of every frame (recorder.h) and print a summary.
+ *
+ * Everything that can be checked is checked before the first frame: the
+ * options, the model file, the variant and weight, every control (names
+ * against the model), and that the CSV can be created; a run then fails
+ * only if the engine or the disk does.
+ */
+#include <errno.h>
+#include <math.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "cli/option_value.h"
+#include "commands.h"
+#include "control_file.h"
+#include "controls.h"
+#include "model_source.h"
+#include "progress.h"
+#include "recorder.h"
+
+static const char usage_text[] =
+    "usage: sinew run MODEL [options]\n"
+    "\n"
+    "Runs a muscle model, writes a CSV of every frame and prints a summary.\n"
+    "MODEL is a built-in model (sample, arm, leg; see `sinew models`) or a model file\n"
+    "(a path containing '/' or ending in .json).\n"
+    "\n"
+    "options:\n"
+    "  --variant NAME|N        the variant, by name or index (default 0)\n"
+    "  --weight KG             the weight choice of that mass (default: the first choice)\n"
+    "  --weight-index N        the weight choice by index\n"
+    "  --level N               0 nothing, 1 bones, 2 + joints, 3 + muscles, 4 + weight (default 4)\n"
+    "  --duration S            simulated time, > 0 .. 1e6 s (default 10)\n"
+    "  --activation NAME=A     activation 0 .. 1 of a muscle or group from t = 0 (repeatable)\n"
+    "  --tension NAME=N        tension target in N of a muscle or group from t = 0 (repeatable)\n"
+    "  --control FILE          scheduled controls: lines `TIME activation NAME VALUE`,\n"
+    "                          `TIME tension NAME NEWTONS`, `TIME pulse NAME [VALUE]`;\n"
+    "                          '#' comments; names with spaces in double quotes\n"
+    "  --out DIR               directory of the CSV, DIR/MODEL.csv (default .)\n"
+    "  --weld-glues            keep glues as weld joints instead of merged bodies\n"
+    "  --help                  print this text\n"
+    "\n"
+    "Controls act in order: the command line's, then the file's. The CSV has one row per\n"
+    "frame: time_s, then per muscle NAME.activation, NAME.target_tension_N, NAME.length_m,\n"
+    "NAME.normalized_length, NAME.velocity_m_s, NAME.normalized_velocity,\n"
+    "NAME.contraction_m, NAME.normalized_contraction, NAME.active_force_N,\n"
+    "NAME.passive_force_N, NAME.total_force_N; per hinge NAME.angle_deg; per part\n"
+    "NAME.x_m, NAME.y_m, NAME.angle_deg (README.md, \"Running models\").\n";
+
+/* Most frames a run may have: beyond any useful run, and a bound on the
+ * CSV a typing mistake could start writing. */
+#define MAX_FRAMES 1e9
+
+/* --------------------------------------------------------------- options */
+
+typedef struct command_line_control {
+    control_kind kind;
+    const char *text; /* NAME=VALUE as given */
+} command_line_control;
+
+typedef struct run_options {
+    const char *model;
+    const char *variant; /* NULL: variant 0 */
+    double weight_kg;    /* when has_weight_kg */
+    bool has_weight_kg;
+    int weight_index; /* -1: not given */
+    int level;
+    double duration;
+    command_line_control *controls; /* in the order given */
+    int control_count;
+    const char *control_path; /* NULL: none */
+    const char *out_dir;
+    bool weld_glues;
+} run_options;
+
+static int usage_error(const char *message, const char *detail)
+{
+    fputs("sinew: ", stderr);
+    fprintf(stderr, message, detail);
+    fputs(" (see `sinew run --help`)\n", stderr);
+    return EXIT_USAGE;
+}
+
+/* Parses one option's value; returns 0 or an exit status. */
+static int parse_option_value(const char *option, const char *value, run_options *opts)
+{
+    char error[OPTION_ERROR_SIZE];
+    bool ok = true;
+    if (strcmp(option, "--variant") == 0) {
+        opts->variant = value;
+    } else if (strcmp(option, "--weight") == 0) {
+        ok = option_parse_double(option, value, 0.0, false, 1e9, &opts->weight_kg, error, sizeof error);
+        opts->has_weight_kg = ok;
+    } else if (strcmp(option, "--weight-index") == 0) {
+        ok = option_parse_int(option, value, 0, MU_MODEL_MAX_OBJECTS - 1, &opts->weight_index, error, sizeof error);
+    } else if (strcmp(option, "--level") == 0) {
+        ok = option_parse_int(option, value, 0, 4, &opts->level, error, sizeof error);
+    } else if (strcmp(option, "--duration") == 0) {
+        ok = option_parse_double(option, value, 0.0, true, 1e6, &opts->duration, error, sizeof error);
+    } else if (strcmp(option, "--activation") == 0 || strcmp(option, "--tension") == 0) {
+        opts->controls[opts->control_count++] = (command_line_control){
+            .kind = option[2] == 'a' ? CONTROL_ACTIVATION : CONTROL_TENSION,
+            .text = value,
+        };
+    } else if (strcmp(option, "--control") == 0) {
+        ok = option_parse_path(option, value, &opts->control_path, error, sizeof error);
+    } else {
+        ok = option_parse_path(option, value, &opts->out_dir, error, sizeof error);
+    }
+    if (!ok) {
+        fprintf(stderr, "sinew: %s\n", error);
+        return EXIT_USAGE;
+    }
+    return 0;
+}
+
+typedef enum parse_result { PARSE_OK, PARSE_HELP, PARSE_ERROR } parse_result;
+
+/* Parses the arguments after `sinew run`: one MODEL and options, each
+ * `--name value` or `--name=value`, in any order. opts->controls must
+ * hold argc entries. */
+static parse_result parse_arguments(int argc, char **argv, run_options *opts)
+{
+    static const char *const with_value[] = {"--variant",    "--weight",  "--weight-index", "--level", "--duration",
+                                             "--activation", "--tension", "--control",      "--out"};
+    for (int i = 0; i < argc; ++i) {
+        const char *argument = argv[i];
+        if (strcmp(argument, "--help") == 0 || strcmp(argument, "-h") == 0) {
+            return PARSE_HELP;
+        }
+        if (strcmp(argument, "--weld-glues") == 0) {
+            opts->weld_glues = true;
+            continue;
+        }
+        if (strncmp(argument, "--", 2) != 0) {
+            if (opts->model != NULL) {
+                usage_error("unexpected argument \"%s\": give one model", argument);
+                return PARSE_ERROR;
+            }
+            opts->model = argument;
+            continue;
+        }
+        const char *equals = strchr(argument, '=');
+        size_t name_length = equals != NULL ? (size_t)(equals - argument) : strlen(argument);
+        const char *option = NULL;
+        for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; ++k) {
+            if (strlen(with_value[k]) == name_length && strncmp(argument, with_value[k], name_length) == 0) {
+                option = with_value[k];
+            }
+        }
+        if (option == NULL) {
+            usage_error("unknown option \"%s\"", argument);
+            return PARSE_ERROR;
+        }
+        const char *value = NULL;
+        if (equals != NULL) {
+            value = equals + 1;
+        } else if (i + 1 < argc && strncmp(argv[i + 1], "--", 2) != 0) {
+            value = argv[++i];
+        } else {
+            usage_error("%s needs a value", option);
+            return PARSE_ERROR;
+        }
+        if (parse_option_value(option, value, opts) != 0) {
+            return PARSE_ERROR;
+        }
+    }
+    if (opts->model == NULL) {
+        usage_error("%s", "missing the model (sample, arm, leg or a .json file)");
+        return PARSE_ERROR;
+    }
+    if (opts->has_weight_kg && opts->weight_index >= 0) {
+        usage_error("%s", "give --weight or --weight-index, not both");
+        return PARSE_ERROR;
+    }
+    return PARSE_OK;
+}
+
+/* ------------------------------------------- choices against the model */
+
+static void print_weight_choices(FILE *stream, const mu_model_desc *desc)
+{
+    for (int w = 0; w < desc->weight.mass_count; ++w) {
+        fprintf(stream, "%s%g", w == 0 ? "" : ", ", desc->weight.masses[w]);
+    }
+    fputs(" kg", stream);
+}
+
+/* The variant named or numbered `text` (a name first: a variant may be
+ * called "2"); returns 0 or an exit status. */
+static int choose_variant(const mu_model_desc *desc, const char *text, int *variant)
+{
+    *variant = 0;
+    if (text == NULL) {
+        return 0;
+    }
+    *variant = mu_model_desc_find_variant(desc, text);
+    char error[OPTION_ERROR_SIZE];
+    if (*variant >= 0 ||
+        option_parse_int("--variant", text, 0, desc->variant_count - 1, variant, error, sizeof error)) {
+        return 0;
+    }
+    fprintf(stderr, "sinew: unknown variant \"%s\" of model %s; the variants are", text, desc->name);
+    for (int v = 0; v < desc->variant_count; ++v) {
+        fprintf(stderr, "%s %d \"%s\"", v == 0 ? "" : ",", v, desc->variants[v].name);
+    }
+    fputs("\n", stderr);
+    return EXIT_USAGE;
+}
+
+/* The weight choice asked for; returns 0 or an exit status. */
+static int choose_weight(const mu_model_desc *desc, const run_options *opts, int *weight_index)
+{
+    *weight_index = 0;
+    bool asked = opts->has_weight_kg || opts->weight_index >= 0;
+    if (asked && !desc->has_weight) {
+        fprintf(stderr, "sinew: model %s has no weight; leave out %s\n", desc->name,
+                opts->has_weight_kg ? "--weight" : "--weight-index");
+        return EXIT_USAGE;
+    }
+    if (opts->weight_index >= desc->weight.mass_count) {
+        fprintf(stderr, "sinew: --weight-index %d: model %s has weight choices 0 .. %d (", opts->weight_index,
+                desc->name, desc->weight.mass_count - 1);
+        print_weight_choices(stderr, desc);
+        fputs(")\n", stderr);
+        return EXIT_USAGE;
+    }
+    if (opts->weight_index >= 0) {
+        *weight_index = opts->weight_index;
+        return 0;
+    }
+    if (!opts->has_weight_kg) {
+        return 0;
+    }
+    for (int w = 0; w < desc->weight.mass_count; ++w) {
+        double mass = desc->weight.masses[w];
+        if (fabs(mass - opts->weight_kg) <= 1e-9 * fmax(1.0, mass)) {
+            *weight_index = w;
+            return 0;
+        }
+    }
+    fprintf(stderr, "sinew: --weight %g: model %s has no such weight choice; its choices are ", opts->weight_kg,
+            desc->name);
+    print_weight_choices(stderr, desc);
+    fputs("\n", stderr);
+    return EXIT_USAGE;
+}
+
+/* Adds the command line's controls at t = 0, in the order given; returns
+ * 0 or an exit status. */
+static int add_command_line_controls(const run_options *opts, controls *schedule)
+{
+    for (int k = 0; k < opts->control_count; ++k) {
+        const command_line_control *control = &opts->controls[k];
+        const char *option = control->kind == CONTROL_ACTIVATION ? "--activation" : "--tension";
+        /* The last '=': a model's names may hold one, its numbers cannot. */
+        const char *equals = strrchr(control->text, '=');
+        if (equals == NULL || equals == control->text) {
+            fprintf(stderr, "sinew: %s expects MUSCLE_OR_GROUP=VALUE, got \"%s\"\n", option, control->text);
+            return EXIT_USAGE;
+        }
+        char name[1024];
+        snprintf(name, sizeof name, "%.*s", (int)(equals - control->text), control->text);
+        double value;
+        char error[OPTION_ERROR_SIZE];
+        double max = control->kind == CONTROL_ACTIVATION ? 1.0 : CONTROL_MAX_TENSION;
+        const char *quantity = control->kind == CONTROL_ACTIVATION ? "the activation" : "the tension in N";
+        if (!option_parse_double(quantity, equals + 1, 0.0, false, max, &value, error, sizeof error) ||
+            !controls_add(schedule, 0.0, control->kind, name, value, error, sizeof error)) {
+            fprintf(stderr, "sinew: %s \"%s\": %s\n", option, control->text, error);
+            return EXIT_USAGE;
+        }
+    }
+    return 0;
+}
+
+/* DIR/STEM.csv; returns 0 or an exit status. The directory is checked
+ * here so that the message names --out rather than a temporary file. */
+static int csv_path_for(const run_options *opts, char *path, size_t path_size)
+{
+    struct stat info;
+    if (stat(opts->out_dir, &info) != 0) {
+        fprintf(stderr, "sinew: --out %s: %s\n", opts->out_dir, strerror(errno));
+        return EXIT_FAILURE;
+    }
+    if (!S_ISDIR(info.st_mode)) {
+        fprintf(stderr, "sinew: --out %s: not a directory\n", opts->out_dir);
+        return EXIT_FAILURE;
+    }
+    char stem[MODEL_STEM_SIZE];
+    model_source_stem(opts->model, stem, sizeof stem);
+    size_t length = strlen(opts->out_dir);
+    const char *separator = opts->out_dir[length - 1] == '/' ? "" : "/";
+    int written = snprintf(path, path_size, "%s%s%s.csv", opts->out_dir, separator, stem);
+    if (written < 0 || (size_t)written >= path_size) {
+        fprintf(stderr, "sinew: --out %s: the path of the CSV is too long\n", opts->out_dir);
+        return EXIT_FAILURE;
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------------ run */
+
+typedef struct run_state {
+    const run_options *opts;
+    mu_model_desc *desc;
+    int variant;
+    int weight_index;
+    long frames;
+    mu_model *model;
+    controls schedule;
+    recorder csv;
+    char csv_path[ATOMIC_FILE_PATH_MAX];
+    double *peak_force; /* N, by built muscle */
+    double *peak_time;  /* s */
+    double *angle_min;  /* deg, by hinge; NaN for a hinge not built */
+    double *angle_max;
+    double wall_seconds, step_seconds;
+} run_state;
+
+static int engine_failure(const char *what)
+{
+    fprintf(stderr, "sinew: %s failed: %s (%s)\n", what, rb_last_error(), rb_status_name(rb_last_status()));
+    return EXIT_FAILURE;
+}
+
+/* The extremes the summary reports, sampled at the end of each frame. */
+static void track_extremes(run_state *run, double time)
+{
+    for (int m = 0; m < mu_model_muscle_count(run->model); ++m) {
+        double force = mu_model_muscle_readout(run->model, m).total_force;
+        if (force > run->peak_force[m]) {
+            run->peak_force[m] = force;
+            run->peak_time[m] = time;
+        }
+    }
+    for (int h = 0; h < mu_model_hinge_count(run->model); ++h) {
+        double angle = mu_model_hinge_angle(run->model, h);
+        /* fmin and fmax ignore a NaN start, so the first frame sets both. */
+        run->angle_min[h] = fmin(run->angle_min[h], angle);
+        run->angle_max[h] = fmax(run->angle_max[h], angle);
+    }
+}
+
+/* Steps every frame, applying the controls before it and recording it
+ * after; returns 0 or an exit status, the CSV committed or abandoned. */
+static int run_frames(run_state *run)
+{
+    const double frame_rate = run->desc->frame_rate;
+    char error[ATOMIC_FILE_ERROR_SIZE];
+    progress bar;
+    progress_start(&bar, run->frames, 1.0 / frame_rate);
+    const double start = progress_now();
+    for (long frame = 0; frame < run->frames; ++frame) {
+        if (controls_apply(&run->schedule, run->model, frame) != RB_OK) {
+            progress_finish(&bar);
+            recorder_abandon(&run->csv);
+            return engine_failure("applying the controls");
+        }
+        const double step_start = progress_now();
+        rb_status status = mu_model_step(run->model);
+        run->step_seconds += progress_now() - step_start;
+        if (status != RB_OK) {
+            progress_finish(&bar);
+            recorder_abandon(&run->csv);
+            return engine_failure("mu_model_step");
+        }
+        /* (frame + 1)/rate rather than a running sum, which would drift. */
+        const double time = (double)(frame + 1) / frame_rate;
+        track_extremes(run, time);
+        if (!recorder_write_row(&run->csv, run->model, time, error, sizeof error)) {
+            progress_finish(&bar);
+            recorder_abandon(&run->csv);
+            fprintf(stderr, "sinew: %s\n", error);
+            return EXIT_FAILURE;
+        }
+        progress_update(&bar, frame + 1);
+    }
+    progress_finish(&bar);
+    if (!recorder_commit(&run->csv, error, sizeof error)) {
+        fprintf(stderr, "sinew: %s\n", error);
+        return EXIT_FAILURE;
+    }
+    run->wall_seconds = progress_now() - start;
+    return 0;
+}
+
+/* -------------------------------------------------------------- summary */
+
+static const char *const level_names[] = {"nothing built", "bones and nails", "bones, joints", "bones, joints, muscles",
+                                          "bones, joints, muscles, weight"};
+
+static void print_lines(const char *label, const char *text)
+{
+    if (*text == '\0') {
+        printf("%-13s(none)\n", label);
+    }
+    for (bool first = true; *text != '\0'; first = false) {
+        size_t length = strcspn(text, "\n");
+        printf("%-13s%.*s\n", first ? label : "", (int)length, text);
+        text += length + (text[length] == '\n');
+    }
+}
+
+static void print_summary(const run_state *run)
+{
+    const mu_model_desc *desc = run->desc;
+    const mu_model_variant *variant = &desc->variants[run->variant];
+    double simulated = (double)run->frames / desc->frame_rate;
+    long substeps = run->frames * desc->substeps;
+    if (model_source_is_builtin(run->opts->model)) {
+        printf("model        %s (built-in)\n", desc->name);
+    } else {
+        printf("model        %s (from %s)\n", desc->name, run->opts->model);
+    }
+    printf("variant      %d \"%s\" (%d muscle%s)\n", run->variant, variant->name, variant->muscle_count,
+           variant->muscle_count == 1 ? "" : "s");
+    if (desc->has_weight) {
+        printf("weight       %g kg, choice %d of ", desc->weight.masses[run->weight_index], run->weight_index);
+        print_weight_choices(stdout, desc);
+        printf("%s\n", run->opts->level < 4 ? " (not built below level 4)" : "");
+    } else {
+        printf("weight       none in this model\n");
+    }
+    printf("level        %d (%s)%s\n", run->opts->level, level_names[run->opts->level],
+           run->opts->weld_glues ? ", glues as weld joints" : "");
+    printf("frames       %ld at %g Hz, %d substeps each: %d bodies, %d joints in the engine\n", run->frames,
+           desc->frame_rate, desc->substeps, mu_model_body_count(run->model), mu_model_joint_count(run->model));
+    printf("simulated    %g s\n", simulated);
+    printf("wall time    %.3f s, %.3f s of it stepping (%.2f us per substep)\n", run->wall_seconds, run->step_seconds,
+           1e6 * run->step_seconds / (double)substeps);
+    printf("real time    %.1fx (stepping alone %.1fx)\n", simulated / run->wall_seconds, simulated / run->step_seconds);
+    print_lines("warnings", mu_model_warnings(run->model));
+    int pending = controls_pending(&run->schedule);
+    printf("controls     %d applied", run->schedule.event_count - pending);
+    printf(pending > 0 ? ", %d after the end of the run not applied\n" : "\n", pending);
+    int muscles = mu_model_muscle_count(run->model);
+    for (int m = 0; m < muscles; ++m) {
+        printf("%-13s%-24s %10.2f N at %.3f s\n", m == 0 ? "peak force" : "", mu_model_muscle_name(run->model, m),
+               run->peak_force[m], run->peak_time[m]);
+    }
+    if (muscles == 0) {
+        printf("peak force   (no muscles built)\n");
+    }
+    bool any_hinge = false;
+    for (int h = 0; h < mu_model_hinge_count(run->model); ++h) {
+        double angle = mu_model_hinge_angle(run->model, h);
+        if (!isnan(angle)) {
+            printf("%-13s%-24s %10.2f deg (%.2f .. %.2f over the run)\n", any_hinge ? "" : "final angle",
+                   mu_model_hinge_name(run->model, h), angle, run->angle_min[h], run->angle_max[h]);
+            any_hinge = true;
+        }
+    }
+    if (!any_hinge) {
+        printf("final angle  (no hinges built)\n");
+    }
+    printf("csv          %s (%ld rows, %d columns)\n", run->csv_path, run->csv.rows,
+           recorder_column_count(&run->csv, run->model));
+}
+
+/* -------------------------------------------------------------- command */
+
+/* Everything before the first frame; returns 0 or an exit status. */
+static int prepare(run_state *run)
+{
+    const run_options *opts = run->opts;
+    int code = model_source_load(opts->model, &run->desc);
+    if (code == 0) {
+        code = choose_variant(run->desc, opts->variant, &run->variant);
+    }
+    if (code == 0) {
+        code = choose_weight(run->desc, opts, &run->weight_index);
+    }
+    if (code != 0) {
+        return code;
+    }
+    double frames = nearbyint(opts->duration * run->desc->frame_rate);
+    if (frames < 1.0 || frames > MAX_FRAMES) {
+        fprintf(stderr, "sinew: --duration %g s is %.0f frames at %g Hz; a run has 1 .. %.0f\n", opts->duration, frames,
+                run->desc->frame_rate, MAX_FRAMES);
+        return EXIT_USAGE;
+    }
+    run->frames = (long)frames;
+    if (!controls_init(&run->schedule, run->desc, run->variant)) {
+        fputs("sinew: out of memory\n", stderr);
+        return EXIT_FAILURE;
+    }
+    code = add_command_line_controls(opts, &run->schedule);
+    if (code != 0) {
+        return code;
+    }
+    char error[ATOMIC_FILE_ERROR_SIZE];
+    if (opts->control_path != NULL && !control_file_read(opts->control_path, &run->schedule, error, sizeof error)) {
+        fprintf(stderr, "sinew: %s\n", error);
+        return EXIT_FAILURE;
+    }
+    code = csv_path_for(opts, run->csv_path, sizeof run->csv_path);
+    if (code != 0) {
+        return code;
+    }
+    mu_model_options options = mu_default_model_options();
+    options.level = opts->level;
+    options.variant = run->variant;
+    options.weight_index = run->weight_index;
+    options.weld_glues = opts->weld_glues;
+    if (mu_model_create(run->desc, &options, &run->model) != RB_OK) {
+        return engine_failure("building the model");
+    }
+    size_t muscles = (size_t)mu_model_muscle_count(run->model) + 1;
+    run->peak_force = calloc(muscles, sizeof *run->peak_force);
+    run->peak_time = calloc(muscles, sizeof *run->peak_time);
+    size_t hinges = (size_t)mu_model_hinge_count(run->model) + 1;
+    run->angle_min = malloc(hinges * sizeof *run->angle_min);
+    run->angle_max = malloc(hinges * sizeof *run->angle_max);
+    if (run->peak_force == NULL || run->peak_time == NULL || run->angle_min == NULL || run->angle_max == NULL) {
+        fputs("sinew: out of memory\n", stderr);
+        return EXIT_FAILURE;
+    }
+    for (size_t h = 0; h < hinges; ++h) {
+        run->angle_min[h] = NAN;
+        run->angle_max[h] = NAN;
+    }
+    if (!recorder_open(&run->csv, run->csv_path, run->model, error, sizeof error)) {
+        fprintf(stderr, "sinew: --out: %s\n", error);
+        return EXIT_FAILURE;
+    }
+    return 0;
+}
+
+int cmd_run(int argc, char **argv)
+{
+    run_options opts = {.weight_index = -1, .level = 4, .duration = 10.0, .out_dir = "."};
+    opts.controls = malloc(((size_t)argc + 1) * sizeof *opts.controls);
+    if (opts.controls == NULL) {
+        fputs("sinew: out of memory\n", stderr);
+        return EXIT_FAILURE;
+    }
+    switch (parse_arguments(argc, argv, &opts)) {
+    case PARSE_HELP:
+        fputs(usage_text, stdout);
+        free(opts.controls);
+        return EXIT_SUCCESS;
+    case PARSE_ERROR:
+        free(opts.controls);
+        return EXIT_USAGE;
+    case PARSE_OK:
+        break;
+    }
+    run_state run = {.opts = &opts};
+    int code = prepare(&run);
+    if (code == 0) {
+        code = run_frames(&run);
+    }
+    if (code == 0) {
+        print_summary(&run);
+    }
+    mu_model_destroy(run.model);
+    controls_free(&run.schedule);
+    mu_model_desc_destroy(run.desc);
+    free(run.peak_force);
+    free(run.peak_time);
+    free(run.angle_min);
+    free(run.angle_max);
+    free(opts.controls);
+    return code;
+}

@@ -1,0 +1,18 @@
+/* The subcommands of `sinew`, one per file (cmd_*.c), and the exit
+ * statuses they share. Each takes the arguments after its own name and
+ * returns the program's exit status; every error is one line on stderr.
+ */
+#ifndef SINEW_COMMANDS_H
+#define SINEW_COMMANDS_H
+
+/* Exit statuses: EXIT_SUCCESS (0); EXIT_FAILURE (1) when the engine, a
+ * model or control file, or the file system failed; EXIT_USAGE for a bad
+ * command line. */
+enum { EXIT_USAGE = 2 };
+
+int cmd_scene(int argc, char **argv);  /* sinew scene NAME [options] */
+int cmd_models(int argc, char **argv); /* sinew models */
+int cmd_check(int argc, char **argv);  /* sinew check FILE */
+int cmd_run(int argc, char **argv);    /* sinew run MODEL [options] */
+
+#endif

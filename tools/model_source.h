@@ -1,0 +1,35 @@
+/* Where a model comes from: the MODEL argument of `sinew run` names a
+ * built-in model (the models/ directory of the source tree, read through
+ * mu_model_desc_load_builtin) or a model file.
+ */
+#ifndef SINEW_MODEL_SOURCE_H
+#define SINEW_MODEL_SOURCE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "mu/model_desc.h"
+
+enum { MODEL_BUILTIN_COUNT = 3 };
+extern const char *const model_builtin_names[MODEL_BUILTIN_COUNT]; /* "sample", "arm", "leg" */
+
+/* Bytes of a model's stem (model_source_stem), its NUL included. */
+#define MODEL_STEM_SIZE 256
+
+/* Whether `argument` is the name of a built-in model. */
+bool model_source_is_builtin(const char *argument);
+
+/* Loads the model `argument` names: a built-in name as it is, anything
+ * else as a path when it contains a '/' or ends in ".json". Returns 0 with
+ * *out set, or an exit status after one line on stderr: EXIT_USAGE for a
+ * name that is neither, EXIT_FAILURE when the file cannot be read or is
+ * invalid (the loader's message names the file, line, column and JSON
+ * path). */
+int model_source_load(const char *argument, mu_model_desc **out);
+
+/* The name outputs are called after: a built-in name as it is, a path's
+ * file name without its directory and ".json" (truncated to fit; "model"
+ * when nothing is left). */
+void model_source_stem(const char *argument, char *stem, size_t stem_size);
+
+#endif

@@ -1,0 +1,149 @@
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "recorder.h"
+
+static const char *const muscle_columns[RECORDER_MUSCLE_COLUMNS] = {
+    "activation",     "target_tension_N",    "length_m",      "normalized_length",
+    "velocity_m_s",   "normalized_velocity", "contraction_m", "normalized_contraction",
+    "active_force_N", "passive_force_N",     "total_force_N",
+};
+static const char *const part_columns[RECORDER_PART_COLUMNS] = {"x_m", "y_m", "angle_deg"};
+
+/* Writes ",NAME.QUANTITY", quoted when RFC 4180 requires it. */
+static void write_header_field(FILE *stream, const char *name, const char *quantity)
+{
+    if (strpbrk(name, ",\"\r\n") == NULL) {
+        fprintf(stream, ",%s.%s", name, quantity);
+        return;
+    }
+    fputs(",\"", stream);
+    for (const char *c = name; *c != '\0'; ++c) {
+        if (*c == '"') {
+            fputc('"', stream); /* a quote inside a quoted field is doubled */
+        }
+        fputc(*c, stream);
+    }
+    fprintf(stream, ".%s\"", quantity);
+}
+
+static void write_header(FILE *stream, const recorder *csv, const mu_model *model)
+{
+    fputs("time_s", stream);
+    for (int m = 0; m < mu_model_muscle_count(model); ++m) {
+        for (int c = 0; c < RECORDER_MUSCLE_COLUMNS; ++c) {
+            write_header_field(stream, mu_model_muscle_name(model, m), muscle_columns[c]);
+        }
+    }
+    for (int h = 0; h < csv->hinge_count; ++h) {
+        write_header_field(stream, mu_model_hinge_name(model, csv->hinges[h]), "angle_deg");
+    }
+    for (int p = 0; p < csv->part_count; ++p) {
+        for (int c = 0; c < RECORDER_PART_COLUMNS; ++c) {
+            write_header_field(stream, mu_model_part_name(model, csv->parts[p]), part_columns[c]);
+        }
+    }
+    fputc('\n', stream);
+}
+
+/* The model reports a hinge or part that the level or the variant left
+ * out with a NaN pose; such columns would be NaN all along, so they are
+ * left out of the file instead. */
+static bool collect_built(recorder *csv, const mu_model *model)
+{
+    csv->hinges = malloc(((size_t)mu_model_hinge_count(model) + 1) * sizeof *csv->hinges);
+    csv->parts = malloc(((size_t)mu_model_part_count(model) + 1) * sizeof *csv->parts);
+    if (csv->hinges == NULL || csv->parts == NULL) {
+        return false;
+    }
+    for (int h = 0; h < mu_model_hinge_count(model); ++h) {
+        if (isfinite(mu_model_hinge_angle(model, h))) {
+            csv->hinges[csv->hinge_count++] = h;
+        }
+    }
+    for (int p = 0; p < mu_model_part_count(model); ++p) {
+        if (isfinite(mu_model_part_centre(model, p).x)) {
+            csv->parts[csv->part_count++] = p;
+        }
+    }
+    return true;
+}
+
+static void free_lists(recorder *csv)
+{
+    free(csv->hinges);
+    free(csv->parts);
+    csv->hinges = NULL;
+    csv->parts = NULL;
+}
+
+bool recorder_open(recorder *csv, const char *path, const mu_model *model, char *error, size_t error_size)
+{
+    *csv = (recorder){.hinges = NULL};
+    if (!collect_built(csv, model)) {
+        snprintf(error, error_size, "out of memory");
+        free_lists(csv);
+        return false;
+    }
+    if (!atomic_file_open(&csv->file, path, error, error_size)) {
+        free_lists(csv);
+        return false;
+    }
+    write_header(csv->file.stream, csv, model);
+    if (ferror(csv->file.stream)) {
+        snprintf(error, error_size, "cannot write %s: %s", csv->file.temp_path, strerror(errno));
+        recorder_abandon(csv);
+        return false;
+    }
+    return true;
+}
+
+/* Ten significant digits resolve 1e-9 of a metre-sized value, below any
+ * effect the file is read for, and keep a row of the arm under 1.5 kB. */
+bool recorder_write_row(recorder *csv, const mu_model *model, double time, char *error, size_t error_size)
+{
+    FILE *stream = csv->file.stream;
+    fprintf(stream, "%.10g", time);
+    for (int m = 0; m < mu_model_muscle_count(model); ++m) {
+        mu_muscle_readout r = mu_model_muscle_readout(model, m);
+        fprintf(stream, ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g", r.activation,
+                r.target_tension, r.length, r.normalized_length, r.velocity, r.normalized_velocity, r.contraction,
+                r.normalized_contraction, r.active_force, r.passive_force, r.total_force);
+    }
+    for (int h = 0; h < csv->hinge_count; ++h) {
+        fprintf(stream, ",%.10g", mu_model_hinge_angle(model, csv->hinges[h]));
+    }
+    for (int p = 0; p < csv->part_count; ++p) {
+        rb_vec2 centre = mu_model_part_centre(model, csv->parts[p]);
+        fprintf(stream, ",%.10g,%.10g,%.10g", centre.x, centre.y, mu_model_part_angle(model, csv->parts[p]));
+    }
+    /* A failed write (a full disk) stops the run at once rather than at
+     * the commit. */
+    if (fputc('\n', stream) == EOF || ferror(stream)) {
+        snprintf(error, error_size, "cannot write %s: %s", csv->file.temp_path, strerror(errno));
+        return false;
+    }
+    csv->rows += 1;
+    return true;
+}
+
+bool recorder_commit(recorder *csv, char *error, size_t error_size)
+{
+    free_lists(csv);
+    return atomic_file_commit(&csv->file, error, error_size);
+}
+
+void recorder_abandon(recorder *csv)
+{
+    free_lists(csv);
+    atomic_file_abandon(&csv->file);
+}
+
+int recorder_column_count(const recorder *csv, const mu_model *model)
+{
+    return 1 + RECORDER_MUSCLE_COLUMNS * mu_model_muscle_count(model) + RECORDER_HINGE_COLUMNS * csv->hinge_count +
+           RECORDER_PART_COLUMNS * csv->part_count;
+}

@@ -1,0 +1,50 @@
+/* The CSV of a run (`sinew run`): one row per frame, written through an
+ * atomic_file (io/atomic_file.h), so a failed or interrupted run leaves
+ * no half-written file and an earlier file of that name is kept.
+ *
+ * Columns: time_s (the end of the frame), then for every built muscle, in
+ * the model's order, NAME.activation, NAME.target_tension_N, NAME.length_m,
+ * NAME.normalized_length, NAME.velocity_m_s, NAME.normalized_velocity,
+ * NAME.contraction_m, NAME.normalized_contraction, NAME.active_force_N,
+ * NAME.passive_force_N, NAME.total_force_N (mu_muscle_readout); for every
+ * built hinge NAME.angle_deg; for every built part (nails, then bones)
+ * NAME.x_m, NAME.y_m, NAME.angle_deg. A header field holding a comma, a
+ * quote or a line break is quoted as RFC 4180 says.
+ */
+#ifndef SINEW_RECORDER_H
+#define SINEW_RECORDER_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "io/atomic_file.h"
+#include "mu/model.h"
+
+/* Quantities recorded per muscle, per hinge and per part. */
+enum { RECORDER_MUSCLE_COLUMNS = 11, RECORDER_HINGE_COLUMNS = 1, RECORDER_PART_COLUMNS = 3 };
+
+typedef struct recorder {
+    atomic_file file;
+    int *hinges; /* model indices of the built hinges */
+    int hinge_count;
+    int *parts; /* model indices of the built parts */
+    int part_count;
+    long rows;
+} recorder;
+
+/* Opens `path` and writes the header for the model as built. On failure
+ * nothing is left on disk and `error` says why. */
+bool recorder_open(recorder *csv, const char *path, const mu_model *model, char *error, size_t error_size);
+
+/* Writes the row of the model's present state at `time` s. */
+bool recorder_write_row(recorder *csv, const mu_model *model, double time, char *error, size_t error_size);
+
+/* Renames the file into place; either way the recorder is closed after. */
+bool recorder_commit(recorder *csv, char *error, size_t error_size);
+
+/* Removes the temporary file; the recorder is closed after. */
+void recorder_abandon(recorder *csv);
+
+int recorder_column_count(const recorder *csv, const mu_model *model);
+
+#endif
