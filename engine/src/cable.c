@@ -19,9 +19,13 @@
 
 rb_cable_def rb_default_cable_def(void) { return (rb_cable_def){.point_count = 0}; }
 
+/* A point of the path in the world: from its body's centre of mass,
+ * turned with the body (no origin transform needed). */
 static rb_vec2 world_point(const rb_world *world, const rb_cable *cable, int i)
 {
-    return rb_transform_point(rb_body_origin_transform(world, cable->bodies[i]), cable->local_points[i]);
+    const rb_body_state *s = &world->states[cable->bodies[i]];
+    rb_vec2 from_center = rb_sub(cable->local_points[i], world->bodies[cable->bodies[i]].local_center);
+    return rb_add(s->center, rb_rotate(s->rotation, from_center));
 }
 
 rb_status rb_cable_create(rb_world *world, const rb_cable_def *def, rb_cable_id *out)
@@ -141,42 +145,53 @@ rb_status rb_cable_set_tension_law(rb_world *world, rb_cable_id id, double base_
 
 /* ---- read-outs ---------------------------------------------------------------- */
 
-double rb_cable_length(const rb_world *world, rb_cable_id id)
+/* Length and lengthening speed in one pass over the path: L is the sum
+ * of the segments, L' = Σ u·(v_{i+1} - v_i) with each point's velocity
+ * v + ω × r from its body. */
+static void measure(const rb_world *world, const rb_cable *cable, double *length, double *speed)
 {
-    rb_clear_error();
-    int index = -1;
-    if (find_cable(world, id, "rb_cable_length", &index) != RB_OK) {
-        return 0.0;
-    }
-    const rb_cable *cable = &world->cables[index];
-    double length = 0.0;
+    *length = 0.0;
+    *speed = 0.0;
+    rb_vec2 p = world_point(world, cable, 0);
     for (int i = 0; i + 1 < cable->point_count; ++i) {
-        length += rb_distance(world_point(world, cable, i), world_point(world, cable, i + 1));
-    }
-    return length;
-}
-
-double rb_cable_lengthening_speed(const rb_world *world, rb_cable_id id)
-{
-    rb_clear_error();
-    int index = -1;
-    if (find_cable(world, id, "rb_cable_lengthening_speed", &index) != RB_OK) {
-        return 0.0;
-    }
-    const rb_cable *cable = &world->cables[index];
-    /* L' = Σ over segments of u·(v_{i+1} - v_i), each point's velocity
-     * v + ω × r from its body. */
-    double speed = 0.0;
-    for (int i = 0; i + 1 < cable->point_count; ++i) {
-        rb_vec2 p = world_point(world, cable, i);
         rb_vec2 q = world_point(world, cable, i + 1);
         const rb_body_state *sp = &world->states[cable->bodies[i]];
         const rb_body_state *sq = &world->states[cable->bodies[i + 1]];
         rb_vec2 vp = rb_add(sp->linear_velocity, rb_cross_sv(sp->angular_velocity, rb_sub(p, sp->center)));
         rb_vec2 vq = rb_add(sq->linear_velocity, rb_cross_sv(sq->angular_velocity, rb_sub(q, sq->center)));
-        speed += rb_dot(rb_normalize(rb_sub(q, p)), rb_sub(vq, vp));
+        rb_vec2 segment = rb_sub(q, p);
+        double segment_length = rb_length(segment);
+        *length += segment_length;
+        if (segment_length > 0.0) {
+            *speed += rb_dot(segment, rb_sub(vq, vp)) / segment_length;
+        }
+        p = q;
     }
-    return speed;
+}
+
+rb_status rb_cable_state(const rb_world *world, rb_cable_id id, double *length, double *lengthening_speed)
+{
+    rb_clear_error();
+    int index = -1;
+    RB_TRY(find_cable(world, id, "rb_cable_state", &index));
+    RB_TRY(rb_check_pointer("rb_cable_state", "length", length));
+    RB_TRY(rb_check_pointer("rb_cable_state", "lengthening_speed", lengthening_speed));
+    measure(world, &world->cables[index], length, lengthening_speed);
+    return RB_OK;
+}
+
+double rb_cable_length(const rb_world *world, rb_cable_id id)
+{
+    double length = 0.0;
+    double speed = 0.0;
+    return rb_cable_state(world, id, &length, &speed) == RB_OK ? length : 0.0;
+}
+
+double rb_cable_lengthening_speed(const rb_world *world, rb_cable_id id)
+{
+    double length = 0.0;
+    double speed = 0.0;
+    return rb_cable_state(world, id, &length, &speed) == RB_OK ? speed : 0.0;
 }
 
 double rb_cable_tension(const rb_world *world, rb_cable_id id)

@@ -23,7 +23,6 @@
 #include "error.h"
 #include "joint_solver.h"
 #include "solver.h"
-#include "timer.h"
 
 static bool is_simulated(const rb_body *body) { return body->in_use && body->awake; }
 
@@ -105,11 +104,11 @@ rb_status rb_solver_step(rb_world *world, double dt)
     int velocity_iterations = 0;
     int position_iterations = 0;
 
-    double t = rb_now_ms();
+    double t = rb_world_clock(world);
     if (rb_contact_solver_prepare(world) < 0) {
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for contact constraints");
     }
-    profile->prepare = rb_now_ms() - t;
+    profile->prepare = rb_world_clock(world) - t;
 
     if (!settings->warm_starting) {
         rb_joints_reset_impulses(world);
@@ -117,47 +116,47 @@ rb_status rb_solver_step(rb_world *world, double dt)
     }
 
     for (int substep = 0; substep < substeps; ++substep) {
-        t = rb_now_ms();
+        t = rb_world_clock(world);
         integrate_velocities(world, h);
-        profile->integrate_velocities += rb_now_ms() - t;
+        profile->integrate_velocities += rb_world_clock(world) - t;
 
-        t = rb_now_ms();
+        t = rb_world_clock(world);
         rb_cables_prepare(world);
         rb_joints_prepare(world, h);
         rb_contact_solver_prepare_substep(world, h, substep == 0);
         rb_cables_warm_start(world);
         rb_joints_warm_start(world);
         rb_contact_solver_warm_start(world);
-        profile->warm_start += rb_now_ms() - t;
+        profile->warm_start += rb_world_clock(world) - t;
 
-        t = rb_now_ms();
+        t = rb_world_clock(world);
         for (int iteration = 0; iteration < settings->velocity_iterations; ++iteration) {
             rb_cables_solve(world, h);
             rb_joints_solve_velocities(world, h, iteration % 2 == 1);
             rb_contact_solver_solve_velocities(world);
         }
         velocity_iterations += settings->velocity_iterations;
-        profile->solve_velocities += rb_now_ms() - t;
+        profile->solve_velocities += rb_world_clock(world) - t;
 
-        t = rb_now_ms();
+        t = rb_world_clock(world);
         apply_damping(world, h);
         integrate_positions(world, h);
-        profile->integrate_positions += rb_now_ms() - t;
+        profile->integrate_positions += rb_world_clock(world) - t;
 
         if (ngs) {
-            t = rb_now_ms();
+            t = rb_world_clock(world);
             position_iterations += correct_positions(world);
-            profile->correct_positions += rb_now_ms() - t;
+            profile->correct_positions += rb_world_clock(world) - t;
         }
     }
 
-    t = rb_now_ms();
+    t = rb_world_clock(world);
     rb_contact_solver_apply_restitution(world);
-    profile->restitution = rb_now_ms() - t;
+    profile->restitution = rb_world_clock(world) - t;
 
-    t = rb_now_ms();
+    t = rb_world_clock(world);
     world->statistics.max_penetration = rb_contact_solver_store_impulses(world);
-    profile->store_impulses = rb_now_ms() - t;
+    profile->store_impulses = rb_world_clock(world) - t;
 
     world->last_substep = h;
     world->statistics.velocity_iterations = velocity_iterations;

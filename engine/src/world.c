@@ -36,7 +36,7 @@ rb_solver_settings rb_default_solver_settings(void)
 
 rb_world_def rb_default_world_def(void)
 {
-    return (rb_world_def){.gravity = {0.0, -9.8}, .solver = rb_default_solver_settings()};
+    return (rb_world_def){.gravity = {0.0, -9.8}, .solver = rb_default_solver_settings(), .enable_profile = true};
 }
 
 static rb_status check_settings(const rb_solver_settings *s, const char *function)
@@ -73,6 +73,7 @@ rb_status rb_world_create(const rb_world_def *def, rb_world **out)
     world->serial = (uint16_t)(serial % 0xffffu + 1u);
     world->gravity = def->gravity;
     world->settings = def->solver;
+    world->profiling = def->enable_profile;
     world->body_free = -1;
     world->shape_free = -1;
     world->joint_free = -1;
@@ -127,6 +128,16 @@ rb_status rb_world_set_solver_settings(rb_world *world, const rb_solver_settings
 rb_solver_settings rb_world_solver_settings(const rb_world *world)
 {
     return world != NULL ? world->settings : rb_default_solver_settings();
+}
+
+double rb_world_clock(const rb_world *world) { return world->profiling ? rb_now_ms() : 0.0; }
+
+rb_status rb_world_enable_profile(rb_world *world, bool enable)
+{
+    rb_clear_error();
+    RB_TRY(rb_check_pointer("rb_world_enable_profile", "world", world));
+    world->profiling = enable;
+    return RB_OK;
 }
 
 rb_profile rb_world_profile(const rb_world *world) { return world != NULL ? world->profile : (rb_profile){0}; }
@@ -268,19 +279,19 @@ rb_status rb_world_step(rb_world *world, double dt)
     world->locked = true;
     rb_profile *profile = &world->profile;
     *profile = (rb_profile){0};
-    double start = rb_now_ms();
+    double start = rb_world_clock(world);
 
-    double t = rb_now_ms();
+    double t = rb_world_clock(world);
     rb_status status = rb_broad_phase_update_pairs(world, dt);
     if (status == RB_OK) {
         status = rb_contacts_update(world);
     }
-    profile->pairs = rb_now_ms() - t;
+    profile->pairs = rb_world_clock(world) - t;
 
     if (status == RB_OK) {
-        t = rb_now_ms();
+        t = rb_world_clock(world);
         rb_contacts_collide(world, dt);
-        profile->collide = rb_now_ms() - t;
+        profile->collide = rb_world_clock(world) - t;
         status = rb_solver_step(world, dt);
     }
     if (status != RB_OK) {
@@ -288,15 +299,15 @@ rb_status rb_world_step(rb_world *world, double dt)
         return status;
     }
 
-    t = rb_now_ms();
+    t = rb_world_clock(world);
     rb_contacts_update_sensors(world);
-    profile->sensors = rb_now_ms() - t;
+    profile->sensors = rb_world_clock(world) - t;
 
-    t = rb_now_ms();
+    t = rb_world_clock(world);
     finalize_step(world);
-    profile->finalize = rb_now_ms() - t;
+    profile->finalize = rb_world_clock(world) - t;
 
-    profile->step = rb_now_ms() - start;
+    profile->step = rb_world_clock(world) - start;
     world->locked = false;
     return RB_OK;
 }

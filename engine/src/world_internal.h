@@ -183,7 +183,8 @@ typedef struct rb_joint {
 
 struct rb_world {
     uint16_t serial;
-    bool locked; /* inside rb_world_step */
+    bool locked;    /* inside rb_world_step */
+    bool profiling; /* time the phases of the step */
     rb_vec2 gravity;
     rb_solver_settings settings;
 
@@ -230,6 +231,10 @@ struct rb_world {
     rb_profile profile;
     rb_statistics statistics;
 };
+
+/* Milliseconds on the monotonic clock while the world is profiling, else
+ * 0 (the step's phase times then stay 0 without reading the clock). */
+double rb_world_clock(const rb_world *world);
 
 /* Looks up a live object; on failure records an error naming `function`. */
 rb_status rb_world_find_body(const rb_world *world, rb_body_id id, const char *function, int *index);

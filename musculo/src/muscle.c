@@ -156,11 +156,13 @@ rb_cable_id mu_muscle_cable(const mu_muscle *muscle) { return muscle->cable; }
 rb_status mu_muscle_prepare(mu_muscle *muscle, rb_world *world, double h)
 {
     (void)h;
-    double length = rb_cable_length(world, muscle->cable) - muscle->tendon_length;
-    double velocity = rb_cable_lengthening_speed(world, muscle->cable);
-    if (rb_last_status() != RB_OK) {
-        return rb_last_status();
+    double path = 0.0;
+    double velocity = 0.0;
+    rb_status status = rb_cable_state(world, muscle->cable, &path, &velocity);
+    if (status != RB_OK) {
+        return status;
     }
+    double length = path - muscle->tendon_length;
     if (muscle->target_tension >= 0.0) {
         /* The seed's proportional controller on the active force, once per
          * substep (report annex C.7). */
@@ -181,11 +183,13 @@ rb_status mu_muscle_prepare(mu_muscle *muscle, rb_world *world, double h)
 
 rb_status mu_muscle_measure(mu_muscle *muscle, const rb_world *world)
 {
-    double length = rb_cable_length(world, muscle->cable) - muscle->tendon_length;
-    double velocity = rb_cable_lengthening_speed(world, muscle->cable);
-    if (rb_last_status() != RB_OK) {
-        return rb_last_status();
+    double path = 0.0;
+    double velocity = 0.0;
+    rb_status status = rb_cable_state(world, muscle->cable, &path, &velocity);
+    if (status != RB_OK) {
+        return status;
     }
+    double length = path - muscle->tendon_length;
     double l = length / muscle->rest_length;
     double passive = muscle->max_force * mu_curve_passive_length(muscle->curves, l);
     /* The tension the solver applied: the law at the velocity it solved

@@ -45,6 +45,9 @@ bool rb_cable_is_valid(const rb_world *world, rb_cable_id cable);
  * damping (N·s/m, >= 0, finite). Both 0 (the default): a slack cable. */
 rb_status rb_cable_set_tension_law(rb_world *world, rb_cable_id cable, double base_tension, double damping);
 
+/* Length (m) and lengthening speed (m/s, < 0 while shortening) now, in
+ * one pass over the path. */
+rb_status rb_cable_state(const rb_world *world, rb_cable_id cable, double *length, double *lengthening_speed);
 double rb_cable_length(const rb_world *world, rb_cable_id cable);            /* m, now */
 double rb_cable_lengthening_speed(const rb_world *world, rb_cable_id cable); /* m/s, now; < 0 while shortening */
 /* The tension (N, >= 0) the cable carried in the last substep: what the

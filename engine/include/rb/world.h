@@ -40,6 +40,10 @@ typedef struct rb_solver_settings {
 typedef struct rb_world_def {
     rb_vec2 gravity;           /* m/s², default (0, -9.8) as the seed */
     rb_solver_settings solver; /* default rb_default_solver_settings() */
+    /* Time each phase of the step into rb_world_profile() (default true).
+     * The clock reads cost about 0.3 µs a step: a tenth of a small
+     * model's step, nothing for a large scene. */
+    bool enable_profile;
 } rb_world_def;
 
 /* Time spent in each phase of the last step, in milliseconds. */
@@ -97,7 +101,9 @@ rb_vec2 rb_world_gravity(const rb_world *world);
 rb_status rb_world_set_solver_settings(rb_world *world, const rb_solver_settings *settings);
 rb_solver_settings rb_world_solver_settings(const rb_world *world);
 
+/* All zero while profiling is off. */
 rb_profile rb_world_profile(const rb_world *world);
+rb_status rb_world_enable_profile(rb_world *world, bool enable);
 rb_statistics rb_world_statistics(const rb_world *world);
 
 /* Bytes this world holds now. */
