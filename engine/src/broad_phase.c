@@ -90,24 +90,46 @@ static rb_status add_pair(rb_world *world, int shape_a, int shape_b)
     return RB_OK;
 }
 
+/* Insertion sort by (lower x, shape index): from one step to the next
+ * the boxes barely move, so last step's order is nearly sorted and this
+ * takes O(n) (a full sort would take O(n log n) every step). */
+static void sort_sweep(struct rb_sweep_entry *sweep, int count)
+{
+    for (int i = 1; i < count; ++i) {
+        struct rb_sweep_entry entry = sweep[i];
+        int j = i;
+        while (j > 0 && compare_sweep_entries(&sweep[j - 1], &entry) > 0) {
+            sweep[j] = sweep[j - 1];
+            --j;
+        }
+        sweep[j] = entry;
+    }
+}
+
 rb_status rb_broad_phase_update_pairs(rb_world *world, double dt)
 {
     double speculative_distance = RB_SPECULATIVE_SLOPS * world->settings.linear_slop;
-    if (rb_grow_array((void **)&world->sweep, &world->sweep_capacity, world->shape_count, sizeof *world->sweep) != 0) {
-        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for the broad phase");
-    }
-    int count = 0;
-    for (int i = 0; i < world->shape_slots; ++i) {
-        rb_shape *shape = &world->shapes[i];
-        if (!shape->in_use) {
-            continue;
+    if (world->sweep_stale || world->sweep_count != world->shape_count) {
+        if (rb_grow_array((void **)&world->sweep, &world->sweep_capacity, world->shape_count, sizeof *world->sweep) !=
+            0) {
+            return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for the broad phase");
         }
-        shape->aabb = swept_aabb(world, i, dt, speculative_distance);
-        world->sweep[count++] = (struct rb_sweep_entry){shape->aabb.lower.x, i};
+        int rebuilt = 0;
+        for (int i = 0; i < world->shape_slots; ++i) {
+            if (world->shapes[i].in_use) {
+                world->sweep[rebuilt++].shape = i;
+            }
+        }
+        world->sweep_count = rebuilt;
+        world->sweep_stale = false;
     }
-    if (count > 1) {
-        qsort(world->sweep, (size_t)count, sizeof *world->sweep, compare_sweep_entries);
+    int count = world->sweep_count;
+    for (int k = 0; k < count; ++k) {
+        rb_shape *shape = &world->shapes[world->sweep[k].shape];
+        shape->aabb = swept_aabb(world, world->sweep[k].shape, dt, speculative_distance);
+        world->sweep[k].lower_x = shape->aabb.lower.x;
     }
+    sort_sweep(world->sweep, count);
 
     world->pair_count = 0;
     for (int i = 0; i < count; ++i) {

@@ -120,6 +120,7 @@ static rb_status create_shape(rb_world *world, rb_body_id body_id, const rb_shap
     *link = index;
     owner->shape_count++;
     world->shape_count++;
+    world->sweep_stale = true;
     rb_body_update_mass(world, body_index);
     shape->aabb = rb_shape_tight_aabb(world, index);
     *out = rb_make_shape_id(world, index);
@@ -176,6 +177,7 @@ rb_status rb_shape_destroy(rb_world *world, rb_shape_id id)
     shape->next_free = world->shape_free;
     world->shape_free = index;
     world->shape_count--;
+    world->sweep_stale = true;
     rb_body_update_mass(world, shape->body);
     return RB_OK;
 }

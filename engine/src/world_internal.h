@@ -208,8 +208,10 @@ struct rb_world {
     int spare_capacity;
     rb_pair *pairs;
     int pair_count, pair_capacity;
-    struct rb_sweep_entry *sweep; /* broad-phase scratch */
+    struct rb_sweep_entry *sweep; /* broad phase: the shapes sorted by lower x, kept from step to step */
     int sweep_capacity;
+    int sweep_count;
+    bool sweep_stale; /* shapes were created or destroyed: rebuild the sweep */
 
     rb_contact_constraint *constraints;
     int constraint_count, constraint_capacity;
