@@ -199,19 +199,11 @@ static parse_result parse_options(int argc, char **argv, bench_options *opts)
         }
         static const char *const with_value[] = {"--scene", "--method", "--runs",    "--csv",
                                                  "--vel",   "--pos",    "--substeps"};
-        bool known = false;
-        for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; ++k) {
-            known = known || strcmp(option, with_value[k]) == 0;
-        }
-        if (!known) {
-            fprintf(stderr, "bench_solver: unknown option \"%s\"\n%s", option, usage_text);
+        const char *value = option_take_value(argc, argv, &i, "bench_solver", with_value,
+                                              sizeof with_value / sizeof with_value[0], usage_text);
+        if (value == NULL) {
             return PARSE_ERROR;
         }
-        if (i + 1 >= argc) {
-            fprintf(stderr, "bench_solver: %s needs a value\n", option);
-            return PARSE_ERROR;
-        }
-        const char *value = argv[++i];
         char error[OPTION_ERROR_SIZE];
         bool ok = true;
         if (strcmp(option, "--scene") == 0) {

@@ -2,6 +2,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "cli/option_value.h"
 
@@ -64,4 +65,24 @@ bool option_parse_path(const char *option, const char *text, const char **out, c
     }
     *out = text;
     return true;
+}
+
+const char *option_take_value(int argc, char **argv, int *i, const char *program, const char *const *known,
+                              size_t count, const char *usage)
+{
+    const char *option = argv[*i];
+    bool is_known = false;
+    for (size_t k = 0; k < count && !is_known; ++k) {
+        is_known = strcmp(option, known[k]) == 0;
+    }
+    if (!is_known) {
+        fprintf(stderr, "%s: unknown option \"%s\"\n%s", program, option, usage);
+        return NULL;
+    }
+    if (*i + 1 >= argc) {
+        fprintf(stderr, "%s: %s needs a value\n", program, option);
+        return NULL;
+    }
+    *i += 1;
+    return argv[*i];
 }

@@ -36,4 +36,12 @@ bool option_parse_u64(const char *option, const char *text, uint64_t *out, char 
 /* A file name: any non-empty text. *out points into `text`. */
 bool option_parse_path(const char *option, const char *text, const char **out, char *error, size_t error_size);
 
+/* For `option`, the value that follows it on the command line: checks
+ * that the option is one of the `count` names in `known` and that a value
+ * follows at argv[*i + 1]. On success advances *i past the value and
+ * returns it; otherwise prints one line to stderr, prefixed by `program`
+ * (for an unknown option followed by `usage`), and returns NULL. */
+const char *option_take_value(int argc, char **argv, int *i, const char *program, const char *const *known,
+                              size_t count, const char *usage);
+
 #endif
