@@ -288,3 +288,31 @@ Test(model, a_hanging_load_is_held_by_the_tension_its_weight_asks)
     mu_model_destroy(model);
     mu_model_desc_destroy(desc);
 }
+
+Test(model, muscles_are_addressed_by_name_index_or_group)
+{
+    /* The arm's "All Biceps" variant builds Biceps Short and Biceps Long,
+     * in the file's order. A group's mean activation is the mean of its
+     * built muscles'; an unknown name or an index out of range is an
+     * error that changes nothing. */
+    mu_model_desc *desc = load("arm");
+    mu_model *model = build(desc, 3, 2, 0, false);
+    cr_assert_eq(mu_model_muscle_count(model), 2);
+    cr_expect_str_eq(mu_model_muscle_name(model, 0), "Biceps Short");
+    cr_assert_eq(mu_model_set_activation_at(model, 0, 0.2), RB_OK, "%s", rb_last_error());
+    cr_assert_eq(mu_model_set_activation(model, "Biceps Long", 0.6), RB_OK, "%s", rb_last_error());
+    run_seconds(model, 1.0 / 60.0);
+    expect_near(mu_model_group_activation(model, "Biceps Short + Biceps Long"), 0.4, 1e-12, "mean activation");
+    cr_assert_eq(mu_model_set_activation(model, "Biceps Short + Biceps Long", 1.0), RB_OK);
+    run_seconds(model, 1.0 / 60.0);
+    expect_near(mu_model_group_activation(model, "Biceps Short"), 1.0, 1e-12, "a muscle is its own group");
+    cr_expect_eq(mu_model_set_activation_at(model, 2, 1.0), RB_ERR_INVALID_ARGUMENT, "index out of range");
+    cr_expect_eq(mu_model_set_tension_at(model, -1, 10.0), RB_ERR_INVALID_ARGUMENT, "negative index");
+    cr_expect_eq(mu_model_set_activation(model, "Deltoid", 1.0), RB_ERR_INVALID_ARGUMENT, "unknown muscle");
+    cr_expect(isnan(mu_model_group_activation(model, "Deltoid")), "unknown group");
+    cr_assert_eq(mu_model_set_tension_at(model, 1, 100.0), RB_OK, "%s", rb_last_error());
+    run_seconds(model, 1.0 / 60.0); /* readouts are taken as the model steps */
+    cr_expect_eq(mu_model_muscle_readout(model, 1).target_tension, 100.0);
+    mu_model_destroy(model);
+    mu_model_desc_destroy(desc);
+}

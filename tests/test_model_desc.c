@@ -448,6 +448,8 @@ typedef struct bad_model {
 } bad_model;
 
 static const bad_model bad_models[] = {
+    {"vmax_twice.json", "vmax_twice.json:7:114: muscles[0].max_velocity_rest_lengths: given with max_velocity, "
+                        "expected either max_velocity (m/s) or max_velocity_rest_lengths (rest lengths per second)"},
     {"syntax_error.json", "syntax_error.json:7:49: invalid JSON: '}' expected near '\"size\"'"},
     {"number_overflow.json", "number_overflow.json:7:58: invalid JSON: real number overflow near '1e999'"},
     {"duplicate_key.json", "duplicate_key.json:7:71: invalid JSON: duplicate object key near '\"size\"'"},
@@ -658,4 +660,12 @@ Test(model_desc, a_file_without_read_permission_fails)
     cr_expect_null(desc);
     cr_expect(strstr(rb_last_error(), "cannot open: Permission denied") != NULL, "%s", rb_last_error());
     remove(path);
+}
+
+Test(model_desc, max_velocity_in_rest_lengths_per_second)
+{
+    /* 10 rest lengths per second of a 0.3 m muscle: Vmax = 3 m/s. */
+    mu_model_desc *desc = load(SINEW_SOURCE_DIR "/tests/data/models/vmax_rest_lengths.json");
+    cr_expect_eq(desc->muscles[0].max_velocity, 3.0, "Vmax %g m/s, expected 3", desc->muscles[0].max_velocity);
+    mu_model_desc_destroy(desc);
 }

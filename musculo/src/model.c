@@ -541,6 +541,28 @@ rb_status mu_model_set_tension(mu_model *model, const char *name, double newtons
     return for_each_muscle(model, name, "mu_model_set_tension", mu_muscle_set_target_tension, newtons);
 }
 
+static rb_status find_built(const mu_model *model, int index, const char *function)
+{
+    if (model == NULL || index < 0 || index >= model->built_muscle_count) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: muscle index %d, expected 0 .. %d", function, index,
+                               model != NULL ? model->built_muscle_count - 1 : -1);
+    }
+    return RB_OK;
+}
+
+rb_status mu_model_set_activation_at(mu_model *model, int index, double activation)
+{
+    rb_status status = find_built(model, index, "mu_model_set_activation_at");
+    return status != RB_OK ? status : mu_muscle_set_activation(model->muscles[model->built_muscles[index]], activation);
+}
+
+rb_status mu_model_set_tension_at(mu_model *model, int index, double newtons)
+{
+    rb_status status = find_built(model, index, "mu_model_set_tension_at");
+    return status != RB_OK ? status
+                           : mu_muscle_set_target_tension(model->muscles[model->built_muscles[index]], newtons);
+}
+
 double mu_model_group_activation(const mu_model *model, const char *name)
 {
     mu_model_ref ref;

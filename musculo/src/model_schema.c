@@ -242,6 +242,30 @@ static rb_status parse_muscle_force(mu_json_reader *reader, const json_t *object
     return RB_OK;
 }
 
+/* Vmax: max_velocity in m/s (the seed's), or max_velocity_rest_lengths in
+ * rest lengths per second (as physiology states it, e.g. 10 /s), stored
+ * in m/s. */
+static rb_status parse_muscle_velocity(mu_json_reader *reader, const json_t *object, mu_model_muscle *muscle)
+{
+    muscle->max_velocity = DEFAULT_MAX_VELOCITY;
+    MU_JSON_TRY(mu_json_read_number(reader, object, "max_velocity", MU_JSON_OPTIONAL, mu_json_positive,
+                                    "the maximal shortening speed in m/s", &muscle->max_velocity));
+    double rest_lengths_per_second = 0.0;
+    MU_JSON_TRY(mu_json_read_number(reader, object, "max_velocity_rest_lengths", MU_JSON_OPTIONAL, mu_json_positive,
+                                    "the maximal shortening speed in rest lengths per second",
+                                    &rest_lengths_per_second));
+    if (rest_lengths_per_second > 0.0) {
+        if (json_object_get(object, "max_velocity") != NULL) {
+            mu_json_push_key(reader, "max_velocity_rest_lengths");
+            return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                                "given with max_velocity, expected either max_velocity (m/s) or "
+                                "max_velocity_rest_lengths (rest lengths per second)");
+        }
+        muscle->max_velocity = rest_lengths_per_second * muscle->rest_length;
+    }
+    return RB_OK;
+}
+
 /* Where the belly starts: start_normalized_length or tendon_length. */
 static rb_status parse_muscle_start(mu_json_reader *reader, const json_t *object, mu_model_muscle *muscle)
 {
@@ -287,6 +311,7 @@ static rb_status parse_muscle(mu_json_reader *reader, const json_t *object, mu_m
                                        "specific_tension",
                                        "max_force",
                                        "max_velocity",
+                                       "max_velocity_rest_lengths",
                                        "start_normalized_length",
                                        "tendon_length",
                                        "symmetry",
@@ -299,9 +324,7 @@ static rb_status parse_muscle(mu_json_reader *reader, const json_t *object, mu_m
     MU_JSON_TRY(mu_json_read_number(reader, object, "rest_length", MU_JSON_REQUIRED, mu_json_positive,
                                     "the belly's rest length in m", &muscle->rest_length));
     MU_JSON_TRY(parse_muscle_force(reader, object, muscle));
-    muscle->max_velocity = DEFAULT_MAX_VELOCITY;
-    MU_JSON_TRY(mu_json_read_number(reader, object, "max_velocity", MU_JSON_OPTIONAL, mu_json_positive,
-                                    "the maximal shortening speed in m/s", &muscle->max_velocity));
+    MU_JSON_TRY(parse_muscle_velocity(reader, object, muscle));
     MU_JSON_TRY(parse_muscle_start(reader, object, muscle));
     const mu_json_bounds unit = {0.0, 1.0, false, false};
     muscle->symmetry = DEFAULT_SYMMETRY;

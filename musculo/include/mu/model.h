@@ -51,6 +51,9 @@ double mu_model_frame_duration(const mu_model *model); /* s */
  * every muscle of the group that exists in the built variant. */
 rb_status mu_model_set_activation(mu_model *model, const char *name, double activation);
 rb_status mu_model_set_tension(mu_model *model, const char *name, double newtons);
+/* The same by index among the built muscles (0 .. mu_model_muscle_count - 1). */
+rb_status mu_model_set_activation_at(mu_model *model, int index, double activation);
+rb_status mu_model_set_tension_at(mu_model *model, int index, double newtons);
 /* Mean activation of the group's built muscles; NaN with an error for an
  * unknown name. */
 double mu_model_group_activation(const mu_model *model, const char *name);
