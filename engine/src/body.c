@@ -342,18 +342,42 @@ rb_status rb_body_set_angular_velocity(rb_world *world, rb_body_id id, double om
     return RB_OK;
 }
 
+/* Forces and impulses act on dynamic bodies only, and wake them; on a
+ * static or kinematic body they are accepted and ignored. */
+static void add_force(rb_world *world, int index, rb_vec2 force, double torque)
+{
+    rb_body *body = &world->bodies[index];
+    if (body->type == RB_BODY_DYNAMIC) {
+        body->force = rb_add(body->force, force);
+        body->torque += torque;
+        body->awake = true;
+    }
+}
+
+static void add_impulse(rb_world *world, int index, rb_vec2 impulse, double angular_impulse)
+{
+    rb_body *body = &world->bodies[index];
+    rb_body_state *state = &world->states[index];
+    if (body->type == RB_BODY_DYNAMIC) {
+        state->linear_velocity = rb_mul_add(state->linear_velocity, body->inv_mass, impulse);
+        state->angular_velocity += body->inv_inertia * angular_impulse;
+        body->awake = true;
+    }
+}
+
+/* The moment r × v about the body's centre of mass of v applied at p. */
+static double moment_about_center(const rb_world *world, int index, rb_vec2 p, rb_vec2 v)
+{
+    return rb_cross(rb_sub(p, world->states[index].center), v);
+}
+
 rb_status rb_body_apply_force(rb_world *world, rb_body_id id, rb_vec2 force, rb_vec2 world_point)
 {
     int index;
     RB_TRY(find_for_change(world, id, "rb_body_apply_force", &index));
     RB_TRY(rb_check_vec2("rb_body_apply_force", "force", force));
     RB_TRY(rb_check_vec2("rb_body_apply_force", "world_point", world_point));
-    rb_body *body = &world->bodies[index];
-    if (body->type == RB_BODY_DYNAMIC) {
-        body->force = rb_add(body->force, force);
-        body->torque += rb_cross(rb_sub(world_point, world->states[index].center), force);
-        body->awake = true;
-    }
+    add_force(world, index, force, moment_about_center(world, index, world_point, force));
     return RB_OK;
 }
 
@@ -362,11 +386,7 @@ rb_status rb_body_apply_force_to_center(rb_world *world, rb_body_id id, rb_vec2 
     int index;
     RB_TRY(find_for_change(world, id, "rb_body_apply_force_to_center", &index));
     RB_TRY(rb_check_vec2("rb_body_apply_force_to_center", "force", force));
-    rb_body *body = &world->bodies[index];
-    if (body->type == RB_BODY_DYNAMIC) {
-        body->force = rb_add(body->force, force);
-        body->awake = true;
-    }
+    add_force(world, index, force, 0.0);
     return RB_OK;
 }
 
@@ -375,11 +395,7 @@ rb_status rb_body_apply_torque(rb_world *world, rb_body_id id, double torque)
     int index;
     RB_TRY(find_for_change(world, id, "rb_body_apply_torque", &index));
     RB_TRY(rb_check_finite("rb_body_apply_torque", "torque", torque));
-    rb_body *body = &world->bodies[index];
-    if (body->type == RB_BODY_DYNAMIC) {
-        body->torque += torque;
-        body->awake = true;
-    }
+    add_force(world, index, rb_v2(0.0, 0.0), torque);
     return RB_OK;
 }
 
@@ -389,13 +405,7 @@ rb_status rb_body_apply_linear_impulse(rb_world *world, rb_body_id id, rb_vec2 i
     RB_TRY(find_for_change(world, id, "rb_body_apply_linear_impulse", &index));
     RB_TRY(rb_check_vec2("rb_body_apply_linear_impulse", "impulse", impulse));
     RB_TRY(rb_check_vec2("rb_body_apply_linear_impulse", "world_point", world_point));
-    rb_body *body = &world->bodies[index];
-    rb_body_state *state = &world->states[index];
-    if (body->type == RB_BODY_DYNAMIC) {
-        state->linear_velocity = rb_mul_add(state->linear_velocity, body->inv_mass, impulse);
-        state->angular_velocity += body->inv_inertia * rb_cross(rb_sub(world_point, state->center), impulse);
-        body->awake = true;
-    }
+    add_impulse(world, index, impulse, moment_about_center(world, index, world_point, impulse));
     return RB_OK;
 }
 
@@ -404,12 +414,7 @@ rb_status rb_body_apply_linear_impulse_to_center(rb_world *world, rb_body_id id,
     int index;
     RB_TRY(find_for_change(world, id, "rb_body_apply_linear_impulse_to_center", &index));
     RB_TRY(rb_check_vec2("rb_body_apply_linear_impulse_to_center", "impulse", impulse));
-    rb_body *body = &world->bodies[index];
-    if (body->type == RB_BODY_DYNAMIC) {
-        world->states[index].linear_velocity =
-            rb_mul_add(world->states[index].linear_velocity, body->inv_mass, impulse);
-        body->awake = true;
-    }
+    add_impulse(world, index, impulse, 0.0);
     return RB_OK;
 }
 
@@ -418,11 +423,7 @@ rb_status rb_body_apply_angular_impulse(rb_world *world, rb_body_id id, double i
     int index;
     RB_TRY(find_for_change(world, id, "rb_body_apply_angular_impulse", &index));
     RB_TRY(rb_check_finite("rb_body_apply_angular_impulse", "impulse", impulse));
-    rb_body *body = &world->bodies[index];
-    if (body->type == RB_BODY_DYNAMIC) {
-        world->states[index].angular_velocity += body->inv_inertia * impulse;
-        body->awake = true;
-    }
+    add_impulse(world, index, rb_v2(0.0, 0.0), impulse);
     return RB_OK;
 }
 
