@@ -138,7 +138,7 @@ rb_status rb_world_draw(const rb_world *world, const rb_debug_draw *draw)
             draw_shape(world, i, draw);
         }
         if (draw->draw_aabbs && draw->draw_polygon != NULL) {
-            draw_aabb(world->shapes[i].aabb, draw);
+            draw_aabb(rb_shape_tight_aabb(world, i), draw);
         }
     }
     if (draw->draw_mass && draw->draw_transform != NULL) {

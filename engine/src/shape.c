@@ -120,9 +120,9 @@ static rb_status create_shape(rb_world *world, rb_body_id body_id, const rb_shap
     *link = index;
     owner->shape_count++;
     world->shape_count++;
+    world->solid_shape_count += shape->sensor ? 0 : 1;
     world->sweep_stale = true;
     rb_body_update_mass(world, body_index);
-    shape->aabb = rb_shape_tight_aabb(world, index);
     *out = rb_make_shape_id(world, index);
     return RB_OK;
 }
@@ -177,6 +177,7 @@ rb_status rb_shape_destroy(rb_world *world, rb_shape_id id)
     shape->next_free = world->shape_free;
     world->shape_free = index;
     world->shape_count--;
+    world->solid_shape_count -= shape->sensor ? 0 : 1;
     world->sweep_stale = true;
     rb_body_update_mass(world, shape->body);
     return RB_OK;
@@ -222,13 +223,22 @@ SHAPE_GETTER(rb_body_id, rb_shape_body, no_body, rb_make_body_id(world, shape->b
 SHAPE_GETTER(rb_circle, rb_shape_circle, no_circle, shape->type == RB_SHAPE_CIRCLE ? shape->geometry.circle : no_circle)
 SHAPE_GETTER(rb_polygon, rb_shape_polygon, no_polygon,
              shape->type == RB_SHAPE_POLYGON ? shape->geometry.polygon : no_polygon)
-SHAPE_GETTER(rb_aabb, rb_shape_aabb, no_aabb, shape->aabb)
 SHAPE_GETTER(double, rb_shape_friction, 0.0, shape->friction)
 SHAPE_GETTER(double, rb_shape_restitution, 0.0, shape->restitution)
 SHAPE_GETTER(double, rb_shape_density, 0.0, shape->density)
 SHAPE_GETTER(bool, rb_shape_is_sensor, false, shape->sensor)
 SHAPE_GETTER(rb_filter, rb_shape_filter, no_filter, shape->filter)
 SHAPE_GETTER(void *, rb_shape_user_data, NULL, shape->user_data)
+
+rb_aabb rb_shape_aabb(const rb_world *world, rb_shape_id id)
+{
+    rb_clear_error();
+    int index = -1;
+    if (rb_world_find_shape(world, id, "rb_shape_aabb", &index) != RB_OK) {
+        return no_aabb;
+    }
+    return rb_shape_tight_aabb(world, index);
+}
 
 static rb_status find_shape_for_change(rb_world *world, rb_shape_id id, const char *function, int *index)
 {

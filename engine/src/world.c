@@ -125,6 +125,16 @@ rb_status rb_world_set_solver_settings(rb_world *world, const rb_solver_settings
     return RB_OK;
 }
 
+rb_status rb_world_set_substep_callback(rb_world *world, rb_substep_fn *callback, void *context)
+{
+    rb_clear_error();
+    RB_TRY(rb_check_pointer("rb_world_set_substep_callback", "world", world));
+    RB_TRY(rb_world_check_unlocked(world, "rb_world_set_substep_callback"));
+    world->substep_callback = callback;
+    world->substep_context = context;
+    return RB_OK;
+}
+
 rb_solver_settings rb_world_solver_settings(const rb_world *world)
 {
     return world != NULL ? world->settings : rb_default_solver_settings();
@@ -171,6 +181,11 @@ rb_status rb_world_check_unlocked(const rb_world *world, const char *function)
         return rb_report_error(RB_ERR_LOCKED, "%s: the world is stepping; change it between steps", function);
     }
     return RB_OK;
+}
+
+rb_status rb_world_check_unlocked_or_in_substep_callback(const rb_world *world, const char *function)
+{
+    return world->in_substep_callback ? RB_OK : rb_world_check_unlocked(world, function);
 }
 
 static rb_status find_slot(const rb_world *world, int32_t index, uint16_t id_world, uint16_t generation,

@@ -63,7 +63,7 @@ typedef struct rb_shape {
     rb_filter filter;
     void *user_data;
     double extent; /* m, farthest point of the shape from the body's centre of mass */
-    rb_aabb aabb;  /* m, world box enlarged by the step's speculative margin */
+    rb_aabb aabb;  /* m, broad phase: the box swept over the step and grown by the speculative margin */
 } rb_shape;
 
 /* A pair of shapes whose boxes overlap. Contacts are kept sorted by
@@ -94,11 +94,19 @@ typedef struct rb_contact_constraint rb_contact_constraint;
 
 /* The parts of a joint's solver state shared by every type, refreshed at
  * the start of each substep. */
+/* The point constraint's effective-mass matrix K (joint_point.c), symmetric. */
+typedef struct rb_point_mass {
+    double k11, k12, k22, k13, k23, k33;
+} rb_point_mass;
+
 typedef struct rb_joint_frame {
     double inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b; /* 0 for a body that cannot move */
     rb_vec2 local_a, local_b; /* m, anchors relative to each centre of mass, in the body frames */
     rb_vec2 ra, rb;           /* m, the same turned into the world, now */
     double omega_a, omega_b;  /* rad/s, the bodies' angular velocities at the start of the substep */
+    /* Pins and welds only, fixed for the substep: */
+    rb_point_mass point_mass; /* K at ra, rb */
+    rb_vec2 point_drift;      /* m/s, the anchors' centripetal drift over the substep (joint_point.c) */
 } rb_joint_frame;
 
 typedef struct rb_revolute_data {
@@ -183,7 +191,10 @@ typedef struct rb_joint {
 
 struct rb_world {
     uint16_t serial;
-    bool locked;    /* inside rb_world_step */
+    bool locked;              /* inside rb_world_step */
+    bool in_substep_callback; /* inside the user's substep callback, which may set cable laws */
+    rb_substep_fn *substep_callback;
+    void *substep_context;
     bool profiling; /* time the phases of the step */
     rb_vec2 gravity;
     rb_solver_settings settings;
@@ -210,8 +221,9 @@ struct rb_world {
     int pair_count, pair_capacity;
     struct rb_sweep_entry *sweep; /* broad phase: the shapes sorted by lower x, kept from step to step */
     int sweep_capacity;
-    int sweep_count;
-    bool sweep_stale; /* shapes were created or destroyed: rebuild the sweep */
+    int sweep_count;       /* shapes in the sweep: all of them, or none while no shape is solid */
+    bool sweep_stale;      /* shapes were created or destroyed: rebuild the sweep */
+    int solid_shape_count; /* shapes that are not sensors */
 
     rb_contact_constraint *constraints;
     int constraint_count, constraint_capacity;
@@ -243,6 +255,9 @@ rb_status rb_world_find_body(const rb_world *world, rb_body_id id, const char *f
 rb_status rb_world_find_shape(const rb_world *world, rb_shape_id id, const char *function, int *index);
 /* Also fails with RB_ERR_LOCKED while the world is stepping. */
 rb_status rb_world_check_unlocked(const rb_world *world, const char *function);
+/* For the few changes allowed inside the substep callback too (cable
+ * tension laws): they alter forces, not the set of objects. */
+rb_status rb_world_check_unlocked_or_in_substep_callback(const rb_world *world, const char *function);
 
 rb_status rb_world_find_joint(const rb_world *world, rb_joint_id id, const char *function, int *index);
 

@@ -47,7 +47,7 @@ rb_shape_type rb_shape_type_of(const rb_world *world, rb_shape_id shape);
 rb_body_id rb_shape_body(const rb_world *world, rb_shape_id shape);
 rb_circle rb_shape_circle(const rb_world *world, rb_shape_id shape);
 rb_polygon rb_shape_polygon(const rb_world *world, rb_shape_id shape);
-/* The shape's bounding box at the end of the last step (or creation). */
+/* The smallest axis-aligned box around the shape at its body's current pose. */
 rb_aabb rb_shape_aabb(const rb_world *world, rb_shape_id shape);
 
 rb_status rb_shape_set_friction(rb_world *world, rb_shape_id shape, double friction);

@@ -49,9 +49,10 @@ typedef struct rb_world_def {
 /* Time spent in each phase of the last step, in milliseconds. */
 typedef struct rb_profile {
     double step;
-    double pairs;   /* broad phase: find overlapping bounding boxes */
-    double collide; /* narrow phase: manifolds, impulse carry-over */
-    double prepare; /* constraint set-up */
+    double pairs;            /* broad phase: find overlapping bounding boxes */
+    double collide;          /* narrow phase: manifolds, impulse carry-over */
+    double prepare;          /* constraint set-up */
+    double substep_callback; /* the user's, see rb_world_set_substep_callback */
     double integrate_velocities;
     double warm_start;
     double solve_velocities;
@@ -100,6 +101,21 @@ rb_vec2 rb_world_gravity(const rb_world *world);
 
 rb_status rb_world_set_solver_settings(rb_world *world, const rb_solver_settings *settings);
 rb_solver_settings rb_world_solver_settings(const rb_world *world);
+
+/* A function the step calls at the start of every substep, before
+ * gravity and forces act, with the substep's index (0 .. substeps - 1)
+ * and length h (s). The bodies are at the substep's starting poses and
+ * velocities, and rb_cable_tension() gives the previous substep's
+ * tension. It may read anything and set cable tension laws
+ * (rb_cable_set_tension_law); every other change is refused with
+ * RB_ERR_LOCKED, since the step is under way.
+ *
+ * This is how a force that depends on the state (a muscle's) is updated
+ * every substep while the broad and narrow phases run once per step. */
+typedef void rb_substep_fn(rb_world *world, int substep, double h, void *context);
+
+/* Replaces the callback; NULL removes it. Not allowed during a step. */
+rb_status rb_world_set_substep_callback(rb_world *world, rb_substep_fn *callback, void *context);
 
 /* All zero while profiling is off. */
 rb_profile rb_world_profile(const rb_world *world);

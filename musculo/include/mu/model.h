@@ -9,9 +9,11 @@
  * `weld_glues` keeps them as weld joints instead, for study. Names still
  * address the parts either way.
  *
- * One frame of 1/frame_rate s is split into the model's substeps (the
- * seed: 60 Hz, 10 substeps); each substep sets every muscle's tension law
- * from its state, steps the world by one substep, and reads the muscles.
+ * One frame of 1/frame_rate s is one engine step split into the model's
+ * substeps (the seed: 60 Hz, 10 substeps); at the start of each substep
+ * every muscle reads what the previous substep did and sets its tension
+ * law from its state (the engine's substep callback). Collision runs
+ * once per frame.
  */
 #ifndef MU_MODEL_H
 #define MU_MODEL_H
