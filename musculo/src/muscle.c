@@ -20,6 +20,7 @@ struct mu_muscle {
     rb_cable_id cable;
     double rest_length, max_force, max_velocity, tendon_length, tension_gain;
     const mu_curves *curves;
+    mu_curve_hint hint; /* where this muscle's last curve look-ups fell */
     double activation;
     double target_tension;        /* < 0: activation control */
     double base_tension, damping; /* the law handed to the cable this substep */
@@ -162,9 +163,10 @@ static rb_status read_belly(const mu_muscle *muscle, const rb_world *world, doub
     return status;
 }
 
-static double passive_force(const mu_muscle *muscle, double length)
+static double passive_force(mu_muscle *muscle, double length)
 {
-    return muscle->max_force * mu_curve_passive_length(muscle->curves, length / muscle->rest_length);
+    return muscle->max_force *
+           mu_curve_passive_length_hinted(muscle->curves, &muscle->hint, length / muscle->rest_length);
 }
 
 /* Sets the cable's tension law for the next substep from the belly's
@@ -180,10 +182,11 @@ static rb_status set_tension_law(mu_muscle *muscle, rb_world *world, double leng
     }
     double l = length / muscle->rest_length;
     double v = velocity / muscle->max_velocity;
-    double fl = mu_curve_active_length(muscle->curves, l);
-    double active = muscle->max_force * muscle->activation * fl * mu_curve_velocity(muscle->curves, v);
-    muscle->damping =
-        muscle->max_force * muscle->activation * fl * mu_curve_velocity_slope(muscle->curves, v) / muscle->max_velocity;
+    double fl = mu_curve_active_length_hinted(muscle->curves, &muscle->hint, l);
+    double active =
+        muscle->max_force * muscle->activation * fl * mu_curve_velocity_hinted(muscle->curves, &muscle->hint, v);
+    muscle->damping = muscle->max_force * muscle->activation * fl *
+                      mu_curve_velocity_slope_hinted(muscle->curves, &muscle->hint, v) / muscle->max_velocity;
     muscle->base_tension = active + passive - muscle->damping * velocity;
     return rb_cable_set_tension_law(world, muscle->cable, muscle->base_tension, muscle->damping);
 }
