@@ -35,7 +35,13 @@ typedef struct rb_body_def {
     double gravity_scale;   /* multiplies the world's gravity, default 1 */
     bool fixed_rotation;    /* never rotates (infinite rotational inertia) */
     bool awake;             /* default true; a sleeping body is not simulated */
-    bool bullet;            /* fast body: continuous collision (see issue 5) */
+    /* Box2D's flag for a fast body, read back by rb_body_is_bullet. Every
+     * body already collides continuously: each pair whose surfaces can
+     * meet within the step gets a speculative contact, which the solver
+     * does not let close faster than its gap (contact.c); a 0.05 m ball
+     * at 300 m/s stops at a 0.1 m wall, static or dynamic
+     * (tests/test_tunnelling.c). */
+    bool bullet;
     void *user_data;
 } rb_body_def;
 
