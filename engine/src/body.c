@@ -4,6 +4,7 @@
 
 #include "allocator.h"
 #include "error.h"
+#include "sleep.h"
 #include "world_internal.h"
 
 rb_body_def rb_default_body_def(void)
@@ -12,6 +13,7 @@ rb_body_def rb_default_body_def(void)
         .type = RB_BODY_STATIC,
         .gravity_scale = 1.0,
         .awake = true,
+        .enable_sleep = true,
     };
 }
 
@@ -72,6 +74,8 @@ rb_status rb_body_create(rb_world *world, const rb_body_def *def, rb_body_id *ou
     body->gravity_scale = def->gravity_scale;
     body->fixed_rotation = def->fixed_rotation;
     body->awake = def->awake;
+    body->enable_sleep = def->enable_sleep;
+    body->sleep_time = 0.0;
     body->bullet = def->bullet;
     body->user_data = def->user_data;
     body->first_shape = -1;
@@ -239,6 +243,7 @@ BODY_GETTER(double, rb_body_angular_damping, 0.0, body->angular_damping)
 BODY_GETTER(double, rb_body_gravity_scale, 0.0, body->gravity_scale)
 BODY_GETTER(bool, rb_body_is_fixed_rotation, false, body->fixed_rotation)
 BODY_GETTER(bool, rb_body_is_awake, false, body->awake)
+BODY_GETTER(bool, rb_body_is_sleep_enabled, false, body->enable_sleep)
 BODY_GETTER(bool, rb_body_is_bullet, false, body->bullet)
 BODY_GETTER(void *, rb_body_user_data, NULL, body->user_data)
 BODY_GETTER(int, rb_body_shape_count, 0, body->shape_count)
@@ -535,13 +540,26 @@ rb_status rb_body_set_awake(rb_world *world, rb_body_id id, bool awake)
     int index;
     RB_TRY(find_for_change(world, id, "rb_body_set_awake", &index));
     rb_body *body = &world->bodies[index];
-    body->awake = awake;
-    if (!awake) {
+    if (awake) {
+        rb_body_wake(world, index);
+    } else {
+        body->awake = false;
         /* A body put to sleep stops where it is. */
         world->states[index].linear_velocity = rb_v2(0.0, 0.0);
         world->states[index].angular_velocity = 0.0;
         body->force = rb_v2(0.0, 0.0);
         body->torque = 0.0;
+    }
+    return RB_OK;
+}
+
+rb_status rb_body_enable_sleep(rb_world *world, rb_body_id id, bool enable)
+{
+    int index;
+    RB_TRY(find_for_change(world, id, "rb_body_enable_sleep", &index));
+    world->bodies[index].enable_sleep = enable;
+    if (!enable) {
+        rb_body_wake(world, index);
     }
     return RB_OK;
 }

@@ -10,6 +10,7 @@
 #include "contact_solver.h"
 #include "error.h"
 #include "joint_solver.h"
+#include "sleep.h"
 #include "solver.h"
 #include "timer.h"
 #include "world_internal.h"
@@ -36,7 +37,8 @@ rb_solver_settings rb_default_solver_settings(void)
 
 rb_world_def rb_default_world_def(void)
 {
-    return (rb_world_def){.gravity = {0.0, -9.8}, .solver = rb_default_solver_settings(), .enable_profile = true};
+    return (rb_world_def){
+        .gravity = {0.0, -9.8}, .solver = rb_default_solver_settings(), .enable_profile = true, .enable_sleep = true};
 }
 
 static rb_status check_settings(const rb_solver_settings *s, const char *function)
@@ -74,6 +76,7 @@ rb_status rb_world_create(const rb_world_def *def, rb_world **out)
     world->gravity = def->gravity;
     world->settings = def->solver;
     world->profiling = def->enable_profile;
+    world->enable_sleep = def->enable_sleep;
     world->body_free = -1;
     world->shape_free = -1;
     world->joint_free = -1;
@@ -95,6 +98,9 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->spare_contacts, &world->spare_capacity, sizeof *world->spare_contacts);
     rb_free_array((void **)&world->pairs, &world->pair_capacity, sizeof *world->pairs);
     rb_free_array((void **)&world->sweep, &world->sweep_capacity, sizeof *world->sweep);
+    rb_free_array((void **)&world->island_parent, &world->island_capacity, sizeof *world->island_parent);
+    rb_free_array((void **)&world->island_size, &world->island_size_capacity, sizeof *world->island_size);
+    rb_free_array((void **)&world->island_rest, &world->island_rest_capacity, sizeof *world->island_rest);
     rb_free_array((void **)&world->constraints, &world->constraint_capacity, sizeof *world->constraints);
     rb_free_array((void **)&world->joints, &world->joint_capacity, sizeof *world->joints);
     rb_free_array((void **)&world->cables, &world->cable_capacity, sizeof *world->cables);
@@ -134,6 +140,22 @@ rb_status rb_world_set_substep_callback(rb_world *world, rb_substep_fn *callback
     world->substep_context = context;
     return RB_OK;
 }
+
+rb_status rb_world_enable_sleep(rb_world *world, bool enable)
+{
+    rb_clear_error();
+    RB_TRY(rb_check_pointer("rb_world_enable_sleep", "world", world));
+    RB_TRY(rb_world_check_unlocked(world, "rb_world_enable_sleep"));
+    world->enable_sleep = enable;
+    for (int i = 0; !enable && i < world->body_slots; ++i) {
+        if (world->bodies[i].in_use) {
+            rb_body_wake(world, i);
+        }
+    }
+    return RB_OK;
+}
+
+bool rb_world_is_sleep_enabled(const rb_world *world) { return world != NULL && world->enable_sleep; }
 
 rb_solver_settings rb_world_solver_settings(const rb_world *world)
 {
@@ -307,6 +329,11 @@ rb_status rb_world_step(rb_world *world, double dt)
         t = rb_world_clock(world);
         rb_contacts_collide(world, dt);
         profile->collide = rb_world_clock(world) - t;
+        t = rb_world_clock(world);
+        status = rb_islands_wake(world);
+        profile->islands = rb_world_clock(world) - t;
+    }
+    if (status == RB_OK) {
         status = rb_solver_step(world, dt);
     }
     if (status != RB_OK) {
@@ -321,6 +348,10 @@ rb_status rb_world_step(rb_world *world, double dt)
     t = rb_world_clock(world);
     finalize_step(world);
     profile->finalize = rb_world_clock(world) - t;
+
+    t = rb_world_clock(world);
+    rb_islands_sleep(world, dt);
+    profile->islands += rb_world_clock(world) - t;
 
     profile->step = rb_world_clock(world) - start;
     world->locked = false;

@@ -41,6 +41,8 @@ typedef struct rb_body {
     rb_mass_data mass_override;
     double linear_damping, angular_damping, gravity_scale;
     bool fixed_rotation, awake, bullet;
+    bool enable_sleep;
+    double sleep_time; /* s the body has been slower than the sleep tolerances (sleep.c) */
     void *user_data;
     int first_shape; /* -1 when none; shapes link through rb_shape.next_in_body */
     int shape_count;
@@ -92,12 +94,13 @@ typedef struct rb_contact {
 
 typedef struct rb_contact_constraint rb_contact_constraint;
 
-/* The parts of a joint's solver state shared by every type, refreshed at
- * the start of each substep. */
 /* The point constraint's effective-mass matrix K (joint_point.c), symmetric. */
 typedef struct rb_point_mass {
     double k11, k12, k22, k13, k23, k33;
 } rb_point_mass;
+
+/* The parts of a joint's solver state shared by every type, refreshed at
+ * the start of each substep. */
 
 typedef struct rb_joint_frame {
     double inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b; /* 0 for a body that cannot move */
@@ -196,6 +199,7 @@ struct rb_world {
     rb_substep_fn *substep_callback;
     void *substep_context;
     bool profiling; /* time the phases of the step */
+    bool enable_sleep;
     rb_vec2 gravity;
     rb_solver_settings settings;
 
@@ -221,6 +225,12 @@ struct rb_world {
     int pair_count, pair_capacity;
     struct rb_sweep_entry *sweep; /* broad phase: the shapes sorted by lower x, kept from step to step */
     int sweep_capacity;
+    int *island_parent; /* union-find over bodies, found anew each step (sleep.c) */
+    int island_capacity;
+    int *island_size;
+    int island_size_capacity;
+    double *island_rest; /* s, by island root: the shortest time at rest */
+    int island_rest_capacity;
     int sweep_count;       /* shapes in the sweep: all of them, or none while no shape is solid */
     bool sweep_stale;      /* shapes were created or destroyed: rebuild the sweep */
     int solid_shape_count; /* shapes that are not sensors */

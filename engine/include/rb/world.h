@@ -44,6 +44,8 @@ typedef struct rb_world_def {
      * The clock reads cost about 0.3 µs a step: a tenth of a small
      * model's step, nothing for a large scene. */
     bool enable_profile;
+    /* Let resting islands fall asleep (default true; see rb_body_def.awake). */
+    bool enable_sleep;
 } rb_world_def;
 
 /* Time spent in each phase of the last step, in milliseconds. */
@@ -60,6 +62,7 @@ typedef struct rb_profile {
     double correct_positions;
     double restitution;
     double store_impulses;
+    double islands;  /* islands: wake the ones touched, put the resting ones to sleep */
     double sensors;  /* sensor overlaps at the final poses */
     double finalize; /* transforms, bounding boxes, clearing forces */
 } rb_profile;
@@ -67,6 +70,8 @@ typedef struct rb_profile {
 /* Counters of the last step. */
 typedef struct rb_statistics {
     int body_count;
+    int awake_body_count; /* dynamic bodies awake after the step */
+    int island_count;     /* groups of dynamic bodies linked by touching contacts, joints and cables */
     int shape_count;
     int pair_count;    /* shape pairs whose bounding boxes overlap */
     int contact_count; /* pairs with at least one manifold point */
@@ -121,6 +126,10 @@ rb_status rb_world_set_substep_callback(rb_world *world, rb_substep_fn *callback
 rb_profile rb_world_profile(const rb_world *world);
 rb_status rb_world_enable_profile(rb_world *world, bool enable);
 rb_statistics rb_world_statistics(const rb_world *world);
+
+/* Disabling sleep wakes every body. */
+rb_status rb_world_enable_sleep(rb_world *world, bool enable);
+bool rb_world_is_sleep_enabled(const rb_world *world);
 
 /* Bytes this world holds now. */
 size_t rb_world_bytes_in_use(const rb_world *world);
