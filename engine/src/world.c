@@ -282,6 +282,23 @@ rb_shape_id rb_make_shape_id(const rb_world *world, int index)
 
 /* ---- the step ------------------------------------------------------------ */
 
+static double mechanical_energy(const rb_world *world)
+{
+    double energy = 0.0;
+    for (int i = 0; i < world->body_slots; ++i) {
+        const rb_body *body = &world->bodies[i];
+        if (!body->in_use || body->type != RB_BODY_DYNAMIC) {
+            continue;
+        }
+        const rb_body_state *s = &world->states[i];
+        rb_vec2 gravity = rb_scale(body->gravity_scale, world->gravity);
+        energy += 0.5 * body->mass * rb_length_squared(s->linear_velocity) +
+                  0.5 * body->inertia * s->angular_velocity * s->angular_velocity -
+                  body->mass * rb_dot(gravity, s->center);
+    }
+    return energy;
+}
+
 /* Clears the forces applied for this step and refreshes the counters. */
 static void finalize_step(rb_world *world)
 {
@@ -303,6 +320,7 @@ static void finalize_step(rb_world *world)
     }
     stats->joint_count = world->joint_count;
     rb_joints_measure_errors(world, &stats->max_joint_gap, &stats->max_joint_angle_error);
+    stats->energy = mechanical_energy(world);
 }
 
 rb_status rb_world_step(rb_world *world, double dt)

@@ -87,6 +87,11 @@ typedef struct rb_statistics {
     /* rad, >= 0, after the step: the largest rigid weld angle error or
      * revolute limit violation. */
     double max_joint_angle_error;
+    /* J, after the step: the dynamic bodies' kinetic energy ½m·v² + ½I·ω²
+     * plus their potential energy -m·(gravity_scale·g)·x in the world's
+     * gravity (zero at the origin). Constant for a conservative system up
+     * to the integrator's error; what solvers add or remove shows here. */
+    double energy;
 } rb_statistics;
 
 rb_solver_settings rb_default_solver_settings(void);
