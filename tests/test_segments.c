@@ -208,6 +208,17 @@ Test(segments, chain_circle_regions)
             .point_count,
         0, "behind the chain");
 
+    /* Right above the joint at point2 the face still answers (and the
+     * next segment's face too): never a gap at a joint. */
+    rb_manifold above_joint =
+        rb_collide_chain_segment_and_circle(&chain, rb_transform_identity(), &circle, pose(1.0, 0.4, 0.0), 0.0);
+    cr_assert_eq(above_joint.point_count, 1, "above the joint");
+    expect_vec_near(above_joint.normal, rb_v2(0.0, 1.0), TOLERANCE, "face normal above the joint");
+    rb_chain_segment next = {.segment = {{1.0, 0.0}, {2.0, 0.0}}, .ghost1 = {0.0, 0.0}, .has_ghost1 = true};
+    cr_expect_eq(rb_collide_chain_segment_and_circle(&next, rb_transform_identity(), &circle, pose(1.0, 0.4, 0.0), 0.0)
+                     .point_count,
+                 1, "the next segment above its first point");
+
     chain.has_ghost2 = false;
     rb_manifold end = rb_collide_chain_segment_and_circle(&chain, rb_transform_identity(), &circle, beyond_point2, 0.0);
     cr_assert_eq(end.point_count, 1, "beyond a free end");

@@ -33,16 +33,9 @@ static rb_sensor_event sensor_event(const rb_world *world, const rb_contact *con
 rb_status rb_contact_events_start_step(rb_world *world)
 {
     rb_event_arrays *e = &world->events;
-    int touching = 0;
-    int sensors_touching = 0;
-    for (int i = 0; i < world->contact_count; ++i) {
-        const rb_contact *c = &world->contacts[i];
-        touching += c->reported_touching && !c->sensor ? 1 : 0;
-        sensors_touching += c->reported_touching && c->sensor ? 1 : 0;
-    }
-    RB_TRY(reserve((void **)&e->ends, &e->end_capacity, e->pending_end_count + touching, sizeof *e->ends));
-    RB_TRY(reserve((void **)&e->sensor_ends, &e->sensor_end_capacity, e->pending_sensor_end_count + sensors_touching,
-                   sizeof *e->sensor_ends));
+    RB_TRY(reserve((void **)&e->ends, &e->end_capacity, e->pending_end_count + world->contact_count, sizeof *e->ends));
+    RB_TRY(reserve((void **)&e->sensor_ends, &e->sensor_end_capacity,
+                   e->pending_sensor_end_count + world->contact_count, sizeof *e->sensor_ends));
     e->begin_count = 0;
     e->sensor_begin_count = 0;
     e->end_count = e->pending_end_count;
@@ -61,15 +54,9 @@ rb_status rb_contact_events_start_step(rb_world *world)
 rb_status rb_contact_events_reserve_begins(rb_world *world)
 {
     rb_event_arrays *e = &world->events;
-    int begins = 0;
-    int sensor_begins = 0;
-    for (int i = 0; i < world->contact_count; ++i) {
-        const rb_contact *c = &world->contacts[i];
-        begins += !c->reported_touching && !c->sensor ? 1 : 0;
-        sensor_begins += !c->reported_touching && c->sensor ? 1 : 0;
-    }
-    RB_TRY(reserve((void **)&e->begins, &e->begin_capacity, begins, sizeof *e->begins));
-    RB_TRY(reserve((void **)&e->sensor_begins, &e->sensor_begin_capacity, sensor_begins, sizeof *e->sensor_begins));
+    RB_TRY(reserve((void **)&e->begins, &e->begin_capacity, world->contact_count, sizeof *e->begins));
+    RB_TRY(
+        reserve((void **)&e->sensor_begins, &e->sensor_begin_capacity, world->contact_count, sizeof *e->sensor_begins));
     return RB_OK;
 }
 

@@ -3,19 +3,22 @@
  *
  * Every array is reserved before the phases that fill it, in
  * rb_contacts_update (which can report running out of memory), so
- * recording an event never allocates and never fails. */
+ * recording an event never allocates and never fails. Each holds one
+ * event per contact, whatever the contacts do: the arrays grow only
+ * when the contacts' own arrays do, so a step whose contact count stays
+ * within what it has had allocates nothing (bench_engine counts). */
 #ifndef RB_CONTACT_EVENTS_H
 #define RB_CONTACT_EVENTS_H
 
 #include "world_internal.h"
 
 /* Starts a step's events: drops the last step's, brings in the end
- * events of shapes destroyed since, and reserves room for the end events
- * of every contact that touches now (what the step can end). */
+ * events of shapes destroyed since, and reserves room for an end event
+ * per contact (what the step can end). */
 rb_status rb_contact_events_start_step(rb_world *world);
 
-/* Reserves room for the begin events of every contact that does not
- * touch yet (what the step can begin), once the contacts are updated. */
+/* Reserves room for a begin event per contact (what the step can
+ * begin), once the contacts are updated. */
 rb_status rb_contact_events_reserve_begins(rb_world *world);
 
 /* Records a begin or an end when a non-sensor contact's touching state

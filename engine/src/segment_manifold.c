@@ -120,7 +120,9 @@ rb_manifold rb_collide_chain_segment_and_circle(const rb_chain_segment *a, rb_tr
     }
     double along = rb_dot(rb_sub(c, f.p1), f.tangent);
     double length = rb_distance(f.p1, f.p2);
-    if (along <= 0.0) {
+    /* The face owns its ends (a centre right above a joint gets the face
+     * point from both segments, never from neither). */
+    if (along < 0.0) {
         /* Before point1: the previous segment's face owns the centres that
          * project onto it; what remains is the wedge of a convex joint (or
          * everything, at a free end). */
@@ -128,7 +130,7 @@ rb_manifold rb_collide_chain_segment_and_circle(const rb_chain_segment *a, rb_tr
             return m;
         }
         m = vertex_point(f.p1, c, f.normal, b->radius, speculative_distance);
-    } else if (along >= length) {
+    } else if (along > length) {
         /* Beyond point2: the next segment owns the joint. */
         if (a->has_ghost2) {
             return m;
