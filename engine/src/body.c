@@ -131,6 +131,11 @@ static double shape_extent(const rb_shape *shape, rb_vec2 local_center)
     if (shape->type == RB_SHAPE_CIRCLE) {
         return rb_distance(shape->geometry.circle.center, local_center) + shape->geometry.circle.radius;
     }
+    if (shape->type == RB_SHAPE_SEGMENT || shape->type == RB_SHAPE_CHAIN_SEGMENT) {
+        const rb_segment *segment =
+            shape->type == RB_SHAPE_SEGMENT ? &shape->geometry.segment : &shape->geometry.chain_segment.segment;
+        return fmax(rb_distance(segment->point1, local_center), rb_distance(segment->point2, local_center));
+    }
     double extent = 0.0;
     for (int i = 0; i < shape->geometry.polygon.count; ++i) {
         extent = fmax(extent, rb_distance(shape->geometry.polygon.vertices[i], local_center));
@@ -145,6 +150,9 @@ static rb_mass_data shapes_mass(const rb_world *world, const rb_body *body)
     double inertia_at_origin = 0.0;
     for (int s = body->first_shape; s >= 0; s = world->shapes[s].next_in_body) {
         const rb_shape *shape = &world->shapes[s];
+        if (shape->type != RB_SHAPE_CIRCLE && shape->type != RB_SHAPE_POLYGON) {
+            continue; /* segments have no area, hence no mass */
+        }
         rb_mass_data m = shape->type == RB_SHAPE_CIRCLE ? rb_circle_mass(&shape->geometry.circle, shape->density)
                                                         : rb_polygon_mass(&shape->geometry.polygon, shape->density);
         mass += m.mass;
@@ -441,6 +449,13 @@ static rb_status check_shapes_have_mass(const rb_world *world, int index, const 
         return RB_OK;
     }
     for (int s = body->first_shape; s >= 0; s = world->shapes[s].next_in_body) {
+        rb_shape_type type = world->shapes[s].type;
+        if (type == RB_SHAPE_SEGMENT || type == RB_SHAPE_CHAIN_SEGMENT) {
+            return rb_report_error(RB_ERR_NO_MASS,
+                                   "%s: shape %d is a segment (no mass) on a dynamic body without a mass override; "
+                                   "expected rb_body_set_mass_data first",
+                                   function, s);
+        }
         if (!(world->shapes[s].density > 0.0)) {
             return rb_report_error(RB_ERR_NO_MASS,
                                    "%s: shape %d has density %g on a dynamic body without a mass override; "

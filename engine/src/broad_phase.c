@@ -151,3 +151,19 @@ rb_status rb_broad_phase_update_pairs(rb_world *world, double dt)
     }
     return RB_OK;
 }
+
+/* Sort and sweep keeps the boxes of the last step's start, grown for
+ * that step's motion; bodies placed or stepped since may have left them,
+ * and shapes created since are not in the sweep. They cannot bound a
+ * query, so this is a pass over the shapes with their boxes as they are
+ * now: O(n) box tests, a few nanoseconds per shape. A tree of fat boxes
+ * kept around every shape would answer in O(log n + found). */
+void rb_broad_phase_query(const rb_world *world, rb_aabb box, rb_broad_phase_visit_fn *visit, void *context)
+{
+    for (int i = 0; i < world->shape_slots; ++i) {
+        if (world->shapes[i].in_use && rb_aabb_overlaps(rb_shape_tight_aabb(world, i), box) &&
+            !visit(world, i, context)) {
+            return;
+        }
+    }
+}

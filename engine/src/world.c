@@ -7,6 +7,7 @@
 #include "allocator.h"
 #include "broad_phase.h"
 #include "contact.h"
+#include "contact_events.h"
 #include "contact_solver.h"
 #include "error.h"
 #include "joint_solver.h"
@@ -104,6 +105,7 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->constraints, &world->constraint_capacity, sizeof *world->constraints);
     rb_free_array((void **)&world->joints, &world->joint_capacity, sizeof *world->joints);
     rb_free_array((void **)&world->cables, &world->cable_capacity, sizeof *world->cables);
+    rb_contact_events_free(world);
     rb_free(world, sizeof *world);
 }
 
@@ -192,7 +194,7 @@ size_t rb_world_bytes_in_use(const rb_world *world)
            (size_t)world->pair_capacity * sizeof *world->pairs + (size_t)world->sweep_capacity * sizeof *world->sweep +
            (size_t)world->constraint_capacity * sizeof *world->constraints +
            (size_t)world->joint_capacity * sizeof *world->joints +
-           (size_t)world->cable_capacity * sizeof *world->cables;
+           (size_t)world->cable_capacity * sizeof *world->cables + rb_contact_events_bytes(world);
 }
 
 /* ---- ids ----------------------------------------------------------------- */

@@ -11,6 +11,7 @@
 #include "rb/body.h"
 #include "rb/cable.h"
 #include "rb/collision.h"
+#include "rb/events.h"
 #include "rb/joint.h"
 #include "rb/shape.h"
 #include "rb/world.h"
@@ -59,6 +60,8 @@ typedef struct rb_shape {
     union {
         rb_circle circle;
         rb_polygon polygon;
+        rb_segment segment;
+        rb_chain_segment chain_segment;
     } geometry;
     double friction, restitution, density;
     bool sensor;
@@ -90,7 +93,26 @@ typedef struct rb_contact {
     double friction, restitution; /* mixed from the two shapes */
     bool sensor;
     bool touching;
+    bool reported_touching; /* the state the last begin or end event told */
 } rb_contact;
+
+/* The events of the last step, and the end events of shapes destroyed
+ * since, which join the next step's (so the published arrays never move
+ * between steps). */
+typedef struct rb_event_arrays {
+    rb_contact_begin_event *begins;
+    int begin_count, begin_capacity;
+    rb_contact_end_event *ends;
+    int end_count, end_capacity;
+    rb_sensor_event *sensor_begins;
+    int sensor_begin_count, sensor_begin_capacity;
+    rb_sensor_event *sensor_ends;
+    int sensor_end_count, sensor_end_capacity;
+    rb_contact_end_event *pending_ends;
+    int pending_end_count, pending_end_capacity;
+    rb_sensor_event *pending_sensor_ends;
+    int pending_sensor_end_count, pending_sensor_end_capacity;
+} rb_event_arrays;
 
 typedef struct rb_contact_constraint rb_contact_constraint;
 
@@ -254,6 +276,10 @@ struct rb_world {
 
     rb_profile profile;
     rb_statistics statistics;
+
+    rb_event_arrays events;
+    rb_pre_solve_fn *pre_solve;
+    void *pre_solve_context;
 };
 
 /* Milliseconds on the monotonic clock while the world is profiling, else
@@ -294,7 +320,8 @@ void rb_cables_remove_body(rb_world *world, int body);
 /* Destroys every joint attached to the body. */
 void rb_joints_remove_body(rb_world *world, int body);
 
-/* Removes every contact that involves the shape. */
-void rb_contacts_remove_shape(rb_world *world, int shape);
+/* Removes every contact that involves the shape, ending those that touch
+ * (their end events join the next step's). */
+rb_status rb_contacts_remove_shape(rb_world *world, int shape);
 
 #endif
