@@ -190,15 +190,17 @@ mu_fibre_tendon_step mu_fibre_tendon_solve(const mu_fibre_tendon *unit, double f
             break;
         }
     }
-    /* The tension's answer to the path's speed s, from T = F_T(L + h·s - X)
-     * and G(v) = T: dT/ds = k_T·h·(1 - X'·h·dv/ds), dv/ds = (dT/ds)/∂G/∂v,
-     * so dT/ds = k_T·h·∂G/∂v/(∂G/∂v + k_T·h²·X') (the denominator is at
-     * least ∂G/∂v > 0). */
+    /* The tension's answer to the path's speed s, from
+     * T = F_T(L + h·s - X(l_f + h·v)) and G(v) = T:
+     *   dT/ds = k_T·h·(1 - X'·dv/ds),  dv/ds = (dT/ds)/(∂G/∂v),
+     * so dT/ds = k_T·h·∂G/∂v/(∂G/∂v + k_T·h·X'): the springs k_T·h and
+     * ∂G/∂v/X' in series (the denominator is at least ∂G/∂v > 0). As
+     * k_T → ∞ it tends to ∂G/∂v·cos α, the rigid tendon's damping. */
     const double spring_h = t.tendon_slope > 0.0 ? t.tendon_spring * h : 0.0;
     return (mu_fibre_tendon_step){
         .velocity = v,
         .tension = t.tension,
         .velocity_per_tension = 1.0 / t.fibre_slope,
-        .path_damping = spring_h * t.fibre_slope / (t.fibre_slope + spring_h * h * t.extent_slope),
+        .path_damping = spring_h * t.fibre_slope / (t.fibre_slope + spring_h * t.extent_slope),
     };
 }

@@ -73,7 +73,7 @@ typedef struct mu_fibre_tendon_step {
     double velocity_per_tension;
     /* dT/dL', N·s/m >= 0: the tension's answer to the path's speed over
      * the step, the series combination of the tendon's k_T·h and the
-     * fibre's ∂G/∂v/(h·X'); the cable takes it as its damping. */
+     * fibre's ∂G/∂v/X'; the cable takes it as its damping. */
     double path_damping;
 } mu_fibre_tendon_step;
 

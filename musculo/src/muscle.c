@@ -20,12 +20,12 @@
  * is the series combination of the tendon's k_T·h (the spring's
  * backward-Euler stiffness over the substep, as Box2D v3's soft springs
  * take it) and the fibre's damping, so the stiff tendon too is taken
- * implicitly with the bodies. After the step, the tension the solver
- * applied sets the fibre's velocity, v = v* + (T - T*)·dv/dT: the fibre
- * balances the force the bodies felt.
+ * implicitly with the bodies. After the step the fibre takes its
+ * backward-Euler step against the path length the bodies reached.
  */
 #include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "fibre_tendon.h"
@@ -250,8 +250,11 @@ rb_status mu_muscle_create(rb_world *world, const mu_muscle_def *def, mu_muscle 
             : fmax(path - belly_extent(def->rest_length * def->start_normalized_length, muscle->width), 0.0);
     status = def->compliant_tendon ? set_up_compliant(muscle, def, path) : mu_muscle_measure(muscle, world);
     if (status != RB_OK) {
+        /* Destroying the cable clears the error: keep its message. */
+        char message[512];
+        snprintf(message, sizeof message, "%s", rb_last_error());
         mu_muscle_destroy(muscle, world);
-        return status;
+        return rb_report_error(status, "%s", message);
     }
     *out = muscle;
     return RB_OK;
@@ -361,15 +364,20 @@ rb_status mu_muscle_prepare(mu_muscle *muscle, rb_world *world, double h)
     return rb_cable_set_tension_law(world, muscle->cable, muscle->base_tension, muscle->damping);
 }
 
-/* The compliant fibre after the step: the velocity that balances the
- * tension the solver applied, to first order about the balance solved in
- * prepare. */
-static void advance_fibre(mu_muscle *muscle, double tension)
+/* The compliant fibre after the step: the backward-Euler step again, now
+ * against the path length the bodies reached, from the velocity that
+ * balances the tension the solver applied (to first order about the
+ * balance solved in prepare). Solving again rather than taking that
+ * first-order velocity keeps the fibre and the tendon consistent with the
+ * path: a stiff tendon's toe turns a small error in the fibre's length
+ * into a large force. */
+static void advance_fibre(mu_muscle *muscle, double path, double tension)
 {
     const double h = muscle->substep;
-    const double velocity =
-        muscle->step.velocity + (tension - muscle->step.tension) * muscle->step.velocity_per_tension;
-    const double moved = fmax(muscle->fibre_length + h * velocity, muscle->unit.min_fibre_length);
+    const double guess = muscle->step.velocity + (tension - muscle->step.tension) * muscle->step.velocity_per_tension;
+    const mu_fibre_tendon_step step =
+        mu_fibre_tendon_solve(&muscle->unit, muscle->fibre_length, muscle->activation, path, h, guess);
+    const double moved = fmax(muscle->fibre_length + h * step.velocity, muscle->unit.min_fibre_length);
     muscle->fibre_velocity = (moved - muscle->fibre_length) / h;
     muscle->fibre_length = moved;
     muscle->substep = 0.0;
@@ -394,7 +402,7 @@ rb_status mu_muscle_measure(mu_muscle *muscle, const rb_world *world)
     const double total = rb_cable_tension(world, muscle->cable);
     if (muscle->compliant) {
         if (muscle->substep > 0.0) {
-            advance_fibre(muscle, total);
+            advance_fibre(muscle, path, total);
         }
         fill_compliant_readout(muscle, path, total);
         return RB_OK;
