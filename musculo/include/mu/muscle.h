@@ -20,7 +20,9 @@
  * Each substep: mu_muscle_prepare before rb_world_step sets the cable's
  * tension law from the muscle's state; mu_muscle_measure after it reads
  * the force the implicit solve produced, advances the fibre and fills the
- * readout.
+ * readout. h is the step's duration; the law is made for a world that
+ * takes it as one engine substep (the models do), which a compliant
+ * tendon needs: its law holds the tendon's stiffness over h.
  */
 #ifndef MU_MUSCLE_H
 #define MU_MUSCLE_H
