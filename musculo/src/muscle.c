@@ -142,6 +142,14 @@ static double pennation_cosine(double fibre_length, double width)
                         : belly_extent(fibre_length, width) / fmax(fibre_length, mu_pennation_min_fibre_length(width));
 }
 
+/* The rigid tendon's fibre: the belly itself without pennation (the
+ * seed's, any sign), else √(x² + w²). */
+static double rigid_fibre_length(const mu_muscle *muscle, double path)
+{
+    const double belly = path - muscle->tendon_length;
+    return muscle->width > 0.0 ? mu_pennation_fibre_length(belly, muscle->width) : belly;
+}
+
 static void fill_readout(mu_muscle *muscle, double path, double fibre_length, double velocity, double active,
                          double passive, double total)
 {
@@ -162,7 +170,7 @@ static void fill_readout(mu_muscle *muscle, double path, double fibre_length, do
         .excitation = muscle->excitation,
         .fibre_length = fibre_length,
         .tendon_length = tendon,
-        .pennation_angle = mu_pennation_angle(fibre_length, muscle->width),
+        .pennation_angle = muscle->width > 0.0 ? mu_pennation_angle(fibre_length, muscle->width) : 0.0,
     };
 }
 
@@ -321,7 +329,7 @@ static void control_tension(mu_muscle *muscle)
  * slope in the path's speed (see the top of this file). */
 static void prepare_rigid(mu_muscle *muscle, double path, double speed)
 {
-    const double fibre_length = mu_pennation_fibre_length(path - muscle->tendon_length, muscle->width);
+    const double fibre_length = rigid_fibre_length(muscle, path);
     const double cosine = pennation_cosine(fibre_length, muscle->width);
     const double l = fibre_length / muscle->rest_length;
     const double v = speed * cosine / muscle->max_velocity;
@@ -407,7 +415,7 @@ rb_status mu_muscle_measure(mu_muscle *muscle, const rb_world *world)
         fill_compliant_readout(muscle, path, total);
         return RB_OK;
     }
-    const double fibre_length = mu_pennation_fibre_length(path - muscle->tendon_length, muscle->width);
+    const double fibre_length = rigid_fibre_length(muscle, path);
     const double cosine = pennation_cosine(fibre_length, muscle->width);
     const double passive =
         muscle->max_force * mu_curve_passive_length(muscle->curves, fibre_length / muscle->rest_length) * cosine;
@@ -433,7 +441,7 @@ rb_status mu_muscle_solve_equilibrium(mu_muscle *muscle, const rb_world *world)
         fill_compliant_readout(muscle, path, mu_fibre_tendon_tension(&muscle->unit, path, muscle->fibre_length));
         return RB_OK;
     }
-    const double fibre_length = mu_pennation_fibre_length(path - muscle->tendon_length, muscle->width);
+    const double fibre_length = rigid_fibre_length(muscle, path);
     const double cosine = pennation_cosine(fibre_length, muscle->width);
     const double l = fibre_length / muscle->rest_length;
     const double active = muscle->max_force * muscle->activation * mu_curve_active_length(muscle->curves, l) *
