@@ -49,7 +49,8 @@ static const char usage_text[] =
     "frame: time_s, then per muscle NAME.activation, NAME.target_tension_N, NAME.length_m,\n"
     "NAME.normalized_length, NAME.velocity_m_s, NAME.normalized_velocity,\n"
     "NAME.contraction_m, NAME.normalized_contraction, NAME.active_force_N,\n"
-    "NAME.passive_force_N, NAME.total_force_N; per hinge NAME.angle_deg; per part\n"
+    "NAME.passive_force_N, NAME.total_force_N, NAME.excitation, NAME.fibre_length_m,\n"
+    "NAME.tendon_length_m, NAME.pennation_angle_deg; per hinge NAME.angle_deg; per part\n"
     "NAME.x_m, NAME.y_m, NAME.angle_deg (README.md, \"Running models\").\n";
 
 /* Most frames a run may have: beyond any useful run, and a bound on the

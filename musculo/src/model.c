@@ -353,13 +353,23 @@ static rb_status build_muscles(mu_model *model)
         def.start_normalized_length = muscle->start_normalized_length;
         def.tendon_length = muscle->tendon_length;
         def.curves = model->curves[muscle->curves];
+        def.pennation_angle = muscle->pennation_angle / DEGREES;
+        def.activation_dynamics = muscle->activation_dynamics;
+        def.activation_time = muscle->activation_time;
+        def.deactivation_time = muscle->deactivation_time;
+        def.compliant_tendon = muscle->compliant_tendon;
+        def.tendon_strain_at_max_force = muscle->tendon_strain_at_max_force;
+        def.fibre_damping = muscle->fibre_damping;
         rb_status status = mu_muscle_create(model->world, &def, &model->muscles[m]);
         if (status != RB_OK) {
             return status;
         }
         model->built_muscles[model->built_muscle_count++] = m;
         mu_muscle_readout r = mu_muscle_read(model->muscles[m]);
-        if (muscle->tendon_length < 0.0 && fabs(r.normalized_length - muscle->start_normalized_length) > 1e-9) {
+        /* (A compliant tendon's fibre starts in equilibrium, not at the
+         * start length, and its slack length was checked at load.) */
+        if (muscle->tendon_length < 0.0 && !muscle->compliant_tendon &&
+            fabs(r.normalized_length - muscle->start_normalized_length) > 1e-9) {
             warn(model,
                  "muscle '%s': its path is shorter than rest length × start normalized length (%.4f m), so its "
                  "tendon has length 0 and its belly starts at %.3f of its rest length, not %.3f",

@@ -103,7 +103,7 @@ typedef struct mu_model_path_point {
 /* A Hill muscle (framework.md §4); the fields map onto mu_muscle_def. */
 typedef struct mu_model_muscle {
     char *name;
-    double rest_length; /* m, > 0 */
+    double rest_length; /* m, > 0: the fibres' optimal length */
     /* Maximal isometric force: max_force when > 0, else the circular
      * cross-section π·rest_width²/4 times specific_tension. */
     double max_force;               /* N, > 0, or 0 when not given */
@@ -116,6 +116,22 @@ typedef struct mu_model_muscle {
     mu_model_curve_set curves;      /* default MU_MODEL_CURVES_TABULATED */
     int point_count;                /* 2 .. RB_MAX_CABLE_POINTS */
     mu_model_path_point path[RB_MAX_CABLE_POINTS];
+    /* Geometry-derived lengths (geometry_lengths.h): the tendon's share of
+     * the path's length at the model's start pose, in [0, 1), or -1 when
+     * not given. When given, rest_length and tendon_length above hold the
+     * lengths derived from it at load. */
+    double tendon_fraction;
+    double pennation_angle; /* degrees in [0, 80] at the optimal fibre length; default 0 */
+    /* Activation dynamics (activation.h): off by default. */
+    bool activation_dynamics;
+    double activation_time;   /* s, > 0; default 0.010 */
+    double deactivation_time; /* s, > 0; default 0.040 */
+    /* A compliant tendon (tendon.h): off by default (rigid). Its slack
+     * length, tendon_length or the one derived at build, is > 0: checked
+     * at load against the path's length at the start pose. */
+    bool compliant_tendon;
+    double tendon_strain_at_max_force; /* in (0, 1]; default 0.049 */
+    double fibre_damping;              /* > 0; default 0.1 */
 } mu_model_muscle;
 
 /* Muscles driven together. Each muscle is also a group of its own, which
