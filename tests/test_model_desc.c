@@ -538,7 +538,8 @@ static const bad_model bad_models[] = {
     {"joint_as_body.json",
      "joint_as_body.json:14:33: glues[0].body_a: \"Hinge\" is a hinge, expected the name of a nail or bone"},
     {"duplicate_name.json", "duplicate_name.json:14:15: glues[0].name: \"Bone2\" is already the name of bones[1], "
-                            "expected a name that no other nail, bone, hinge, glue, weight, muscle or group has"},
+                            "expected a name that no other nail, bone, hinge, glue, weight, muscle, group or "
+                            "torque muscle has"},
     {"duplicate_variant_name.json", "duplicate_variant_name.json:32:15: variants[1].name: \"Default\" is already the "
                                     "name of variants[0], expected a name that no other variant has"},
     {"variant_unknown_muscle.json", "variant_unknown_muscle.json:31:48: variants[0].muscles[1]: no muscle is named "
