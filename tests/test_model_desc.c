@@ -478,6 +478,13 @@ typedef struct bad_model {
 } bad_model;
 
 static const bad_model bad_models[] = {
+    {"torque_muscle_strongest_below_weakest.json",
+     "torque_muscle_strongest_below_weakest.json:10:65: torque_muscles[0].motor_pool.strongest: 1 is below weakest "
+     "(5), expected a strength >= weakest"},
+    {"torque_muscle_on_a_nail.json",
+     "torque_muscle_on_a_nail.json:10:32: torque_muscles[0].body: \"Nail\" is a nail, expected the name of a bone"},
+    {"torque_muscle_without_pool.json", "torque_muscle_without_pool.json:7:5: torque_muscles[0]: missing key "
+                                        "\"motor_pool\", expected the motor pool {neurons, weakest, strongest}"},
     {"vmax_twice.json", "vmax_twice.json:7:114: muscles[0].max_velocity_rest_lengths: given with max_velocity, "
                         "expected either max_velocity (m/s) or max_velocity_rest_lengths (rest lengths per second)"},
     {"syntax_error.json", "syntax_error.json:7:49: invalid JSON: '}' expected near '\"size\"'"},
@@ -531,7 +538,8 @@ static const bad_model bad_models[] = {
     {"joint_as_body.json",
      "joint_as_body.json:14:33: glues[0].body_a: \"Hinge\" is a hinge, expected the name of a nail or bone"},
     {"duplicate_name.json", "duplicate_name.json:14:15: glues[0].name: \"Bone2\" is already the name of bones[1], "
-                            "expected a name that no other nail, bone, hinge, glue, weight, muscle or group has"},
+                            "expected a name that no other nail, bone, hinge, glue, weight, muscle, group or "
+                            "torque muscle has"},
     {"duplicate_variant_name.json", "duplicate_variant_name.json:32:15: variants[1].name: \"Default\" is already the "
                                     "name of variants[0], expected a name that no other variant has"},
     {"variant_unknown_muscle.json", "variant_unknown_muscle.json:31:48: variants[0].muscles[1]: no muscle is named "

@@ -16,6 +16,7 @@ packages=(
     libgsl-dev       # GNU Scientific Library
     libcriterion-dev # unit tests (tests/)
     libjansson-dev   # model files (musculo/)
+    libcairo2-dev    # motor-pool profile images (musculo/), figures
     clang-format     # formatting check in tools/check.sh
     valgrind         # memory and cache profiling
 )

@@ -9,6 +9,7 @@
 
 #include "model_schema.h"
 #include "mu/geometry_lengths.h"
+#include "mu/motor_pool.h"
 #include "mu/muscle.h"
 
 /* The seed's defaults (framework.md §2–§4). */
@@ -33,8 +34,10 @@
 #define MAX_LIMIT_DEGREES 360.0
 #define MAX_SUBSTEPS 1000
 
-static const char *const kind_singular[] = {"nail", "bone", "hinge", "glue", "weight", "muscle", "group"};
-static const char *const kind_list[] = {"nails", "bones", "hinges", "glues", "weight", "muscles", "groups"};
+static const char *const kind_singular[] = {"nail",   "bone",   "hinge", "glue",
+                                            "weight", "muscle", "group", "torque muscle"};
+static const char *const kind_list[] = {"nails",  "bones",   "hinges", "glues",
+                                        "weight", "muscles", "groups", "torque_muscles"};
 
 static rb_status out_of_memory(void)
 {
@@ -82,7 +85,7 @@ static rb_status read_object_name(mu_json_reader *reader, const json_t *object, 
         mu_json_push_key(reader, "name");
         return mu_json_fail(reader, MU_JSON_AT_VALUE,
                             "\"%s\" is already the name of %s, expected a name that no other nail, bone, hinge, "
-                            "glue, weight, muscle or group has",
+                            "glue, weight, muscle, group or torque muscle has",
                             name, where);
     }
     return copy_string(name, out);
@@ -487,6 +490,60 @@ static rb_status parse_muscle(mu_json_reader *reader, const json_t *object, mu_m
     return RB_OK;
 }
 
+/* The torque muscle's exponential motor pool (motor_pool.h). */
+static rb_status parse_motor_pool(mu_json_reader *reader, const json_t *object, mu_model_torque_muscle *muscle)
+{
+    static const char *const keys[] = {"neurons", "weakest", "strongest", NULL};
+    const json_t *pool = json_object_get(object, "motor_pool");
+    if (pool == NULL) {
+        return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                            "missing key \"motor_pool\", expected the motor pool {neurons, weakest, strongest}");
+    }
+    mu_json_push_key(reader, "motor_pool");
+    MU_JSON_TRY(mu_json_check_object(reader, pool, keys));
+    MU_JSON_TRY(mu_json_read_int(reader, pool, "neurons", MU_JSON_REQUIRED, 1, MU_MAX_MOTOR_NEURONS,
+                                 "the number of motor neurons", &muscle->neurons));
+    MU_JSON_TRY(mu_json_read_number(reader, pool, "weakest", MU_JSON_REQUIRED, mu_json_positive,
+                                    "the first (weakest) neuron's strength", &muscle->weakest));
+    MU_JSON_TRY(mu_json_read_number(reader, pool, "strongest", MU_JSON_REQUIRED, mu_json_positive,
+                                    "the last (strongest) neuron's strength", &muscle->strongest));
+    if (muscle->strongest < muscle->weakest) {
+        mu_json_push_key(reader, "strongest");
+        return mu_json_fail(reader, MU_JSON_AT_VALUE, "%g is below weakest (%g), expected a strength >= weakest",
+                            muscle->strongest, muscle->weakest);
+    }
+    mu_json_pop(reader);
+    return RB_OK;
+}
+
+static rb_status parse_torque_muscle(mu_json_reader *reader, const json_t *object, mu_model_desc *desc)
+{
+    static const char *const keys[] = {"name", "body", "reaction_body", "peak_torque", "motor_pool", "recruited", NULL};
+    MU_JSON_TRY(mu_json_check_object(reader, object, keys));
+    mu_model_torque_muscle *muscle = &desc->torque_muscles[desc->torque_muscle_count++];
+    MU_JSON_TRY(read_object_name(reader, object, desc, &muscle->name));
+    MU_JSON_TRY(read_body(reader, object, "body", desc, &muscle->body));
+    if (muscle->body.kind != MU_MODEL_BONE) {
+        mu_json_push_key(reader, "body");
+        return mu_json_fail(reader, MU_JSON_AT_VALUE, "\"%s\" is a nail, expected the name of a bone",
+                            mu_model_desc_name_of(desc, muscle->body));
+    }
+    muscle->has_reaction_body = json_object_get(object, "reaction_body") != NULL;
+    if (muscle->has_reaction_body) {
+        MU_JSON_TRY(read_body(reader, object, "reaction_body", desc, &muscle->reaction_body));
+        if (muscle->reaction_body.kind == muscle->body.kind && muscle->reaction_body.index == muscle->body.index) {
+            mu_json_push_key(reader, "reaction_body");
+            return mu_json_fail(reader, MU_JSON_AT_VALUE, "\"%s\" is body too, expected a different body",
+                                mu_model_desc_name_of(desc, muscle->body));
+        }
+    }
+    MU_JSON_TRY(mu_json_read_number(reader, object, "peak_torque", MU_JSON_REQUIRED, mu_json_any,
+                                    "the torque at full recruitment in N·m", &muscle->peak_torque));
+    MU_JSON_TRY(parse_motor_pool(reader, object, muscle));
+    return mu_json_read_int(reader, object, "recruited", MU_JSON_OPTIONAL, 0, muscle->neurons,
+                            "the neurons recruited at the start", &muscle->recruited);
+}
+
 static rb_status parse_group(mu_json_reader *reader, const json_t *object, mu_model_desc *desc)
 {
     static const char *const keys[] = {"name", "muscles", NULL};
@@ -681,8 +738,9 @@ static rb_status parse_settings(mu_json_reader *reader, const json_t *root, mu_m
 
 rb_status mu_model_parse(mu_json_reader *reader, const json_t *root, mu_model_desc *desc)
 {
-    static const char *const keys[] = {"name",   "gravity", "frame_rate", "substeps", "placement", "nails",    "bones",
-                                       "hinges", "glues",   "weight",     "muscles",  "groups",    "variants", NULL};
+    static const char *const keys[] = {"name",    "gravity", "frame_rate", "substeps",       "placement",
+                                       "nails",   "bones",   "hinges",     "glues",          "weight",
+                                       "muscles", "groups",  "variants",   "torque_muscles", NULL};
     MU_JSON_TRY(mu_json_check_object(reader, root, keys));
     MU_JSON_TRY(parse_settings(reader, root, desc));
     const json_t *list;
@@ -724,6 +782,12 @@ rb_status mu_model_parse(mu_json_reader *reader, const json_t *root, mu_model_de
     desc->groups = calloc(json_array_size(list), sizeof *desc->groups);
     MU_JSON_TRY(check_allocation(desc->groups, json_array_size(list)));
     MU_JSON_TRY(for_each(reader, "groups", list, desc, parse_group));
+
+    MU_JSON_TRY(read_list(reader, root, "torque_muscles", 0,
+                          "torque muscles {name, body, reaction_body, peak_torque, motor_pool, recruited}", &list));
+    desc->torque_muscles = calloc(json_array_size(list), sizeof *desc->torque_muscles);
+    MU_JSON_TRY(check_allocation(desc->torque_muscles, json_array_size(list)));
+    MU_JSON_TRY(for_each(reader, "torque_muscles", list, desc, parse_torque_muscle));
 
     MU_JSON_TRY(read_list(reader, root, "variants", 1, "variants {name, muscles, bones}", &list));
     if (list == NULL) {

@@ -36,6 +36,7 @@ typedef enum mu_model_kind {
     MU_MODEL_WEIGHT,
     MU_MODEL_MUSCLE,
     MU_MODEL_GROUP,
+    MU_MODEL_TORQUE_MUSCLE,
 } mu_model_kind;
 
 /* One object of the description: desc->nails[index], desc->bones[index],
@@ -134,6 +135,22 @@ typedef struct mu_model_muscle {
     double fibre_damping;              /* > 0; default 0.1 */
 } mu_model_muscle;
 
+/* A torque muscle (seed 001, framework.md §8; torque_actuator.h and
+ * motor_pool.h): exertion · peak_torque on `body` about the axis out of
+ * the plane, its reaction on `reaction_body` (or the world), the exertion
+ * set by recruiting neurons of an exponential motor pool. Built at level 3
+ * and above when its bones are in the variant. */
+typedef struct mu_model_torque_muscle {
+    char *name;
+    mu_model_ref body;          /* a bone */
+    bool has_reaction_body;     /* default false: the reaction goes to the world */
+    mu_model_ref reaction_body; /* a nail or bone other than body */
+    double peak_torque;         /* N·m, finite: the torque at full recruitment, counter-clockwise when > 0 */
+    int neurons;                /* 1 .. MU_MAX_MOTOR_NEURONS */
+    double weakest, strongest;  /* strengths of the first and last neuron, 0 < weakest <= strongest */
+    int recruited;              /* neurons recruited at the start, 0 .. neurons; default 0 */
+} mu_model_torque_muscle;
+
 /* Muscles driven together. Each muscle is also a group of its own, which
  * the model provides; these are the groups the file adds. */
 typedef struct mu_model_group {
@@ -172,6 +189,8 @@ typedef struct mu_model_desc {
     mu_model_muscle *muscles;
     int group_count;
     mu_model_group *groups;
+    int torque_muscle_count;
+    mu_model_torque_muscle *torque_muscles;
     int variant_count; /* >= 1: without "variants" in the file, one variant "Default" with everything */
     mu_model_variant *variants;
 } mu_model_desc;
