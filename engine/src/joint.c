@@ -191,6 +191,10 @@ static rb_vec2 linear_impulse(const rb_joint *joint)
     }
     case RB_JOINT_MOUSE:
         return joint->as.mouse.impulse;
+    case RB_JOINT_PRISMATIC:
+        return rb_prismatic_linear_impulse(joint);
+    case RB_JOINT_PULLEY:
+        return rb_pulley_impulse_on_b(joint);
     }
     return rb_v2(0.0, 0.0);
 }
@@ -209,8 +213,11 @@ static double angular_impulse(const rb_joint *joint)
     }
     case RB_JOINT_WELD:
         return joint->as.weld.angular_impulse;
+    case RB_JOINT_PRISMATIC:
+        return rb_prismatic_angular_impulse(joint);
     case RB_JOINT_DISTANCE:
     case RB_JOINT_MOUSE:
+    case RB_JOINT_PULLEY:
         break;
     }
     return 0.0;
@@ -272,6 +279,34 @@ rb_softness rb_make_softness(double hertz, double zeta, double effective_mass, d
     double c = 2.0 * effective_mass * zeta * omega;
     double gamma = 1.0 / (h * (c + h * k));
     return (rb_softness){gamma, h * k * gamma};
+}
+
+bool rb_block_solve2(const rb_block_matrix *k, rb_vec2 v, rb_vec2 *x)
+{
+    double det = k->k11 * k->k22 - k->k12 * k->k12;
+    if (!(det > 0.0)) {
+        return false;
+    }
+    *x = rb_v2((k->k22 * v.x - k->k12 * v.y) / det, (k->k11 * v.y - k->k12 * v.x) / det);
+    return true;
+}
+
+/* A body that cannot turn makes an angle row redundant, and K singular. */
+bool rb_block_solve3(const rb_block_matrix *k, rb_vec2 v, double w, rb_vec2 *x, double *z)
+{
+    double c11 = k->k22 * k->k33 - k->k23 * k->k23;
+    double c12 = k->k13 * k->k23 - k->k12 * k->k33;
+    double c13 = k->k12 * k->k23 - k->k13 * k->k22;
+    double det = k->k11 * c11 + k->k12 * c12 + k->k13 * c13;
+    if (!(fabs(det) > 1e-300)) {
+        return false;
+    }
+    double c22 = k->k11 * k->k33 - k->k13 * k->k13;
+    double c23 = k->k13 * k->k12 - k->k11 * k->k23;
+    double c33 = k->k11 * k->k22 - k->k12 * k->k12;
+    *x = rb_v2((c11 * v.x + c12 * v.y + c13 * w) / det, (c12 * v.x + c22 * v.y + c23 * w) / det);
+    *z = (c13 * v.x + c23 * v.y + c33 * w) / det;
+    return true;
 }
 
 double rb_joint_baumgarte_rate(const rb_world *world, double h)
@@ -379,6 +414,12 @@ void rb_joints_prepare(rb_world *world, double h)
         case RB_JOINT_MOUSE:
             rb_mouse_prepare(world, joint, h);
             break;
+        case RB_JOINT_PRISMATIC:
+            rb_prismatic_prepare(world, joint, h);
+            break;
+        case RB_JOINT_PULLEY:
+            rb_pulley_prepare(world, joint, h);
+            break;
         }
     }
 }
@@ -402,6 +443,12 @@ void rb_joints_warm_start(rb_world *world)
             break;
         case RB_JOINT_MOUSE:
             rb_mouse_warm_start(world, joint);
+            break;
+        case RB_JOINT_PRISMATIC:
+            rb_prismatic_warm_start(world, joint);
+            break;
+        case RB_JOINT_PULLEY:
+            rb_pulley_warm_start(world, joint);
             break;
         }
     }
@@ -427,6 +474,12 @@ void rb_joints_solve_velocities(rb_world *world, double h, bool backwards)
         case RB_JOINT_MOUSE:
             rb_mouse_solve(world, joint, h);
             break;
+        case RB_JOINT_PRISMATIC:
+            rb_prismatic_solve(world, joint, h);
+            break;
+        case RB_JOINT_PULLEY:
+            rb_pulley_solve(world, joint, h);
+            break;
         }
     }
 }
@@ -449,6 +502,12 @@ bool rb_joints_correct_positions(rb_world *world, bool backwards)
             break;
         case RB_JOINT_DISTANCE:
             within = rb_distance_correct(world, joint);
+            break;
+        case RB_JOINT_PRISMATIC:
+            within = rb_prismatic_correct(world, joint);
+            break;
+        case RB_JOINT_PULLEY:
+            within = rb_pulley_correct(world, joint);
             break;
         case RB_JOINT_MOUSE:
             break; /* soft: it has no position error to remove */
@@ -482,6 +541,15 @@ void rb_joints_reset_impulses(rb_world *world)
         case RB_JOINT_MOUSE:
             joint->as.mouse.impulse = rb_v2(0.0, 0.0);
             break;
+        case RB_JOINT_PRISMATIC: {
+            rb_prismatic_data *p = &joint->as.prismatic;
+            p->impulse = rb_v2(0.0, 0.0);
+            p->motor_impulse = p->spring_impulse = p->lower_impulse = p->upper_impulse = 0.0;
+            break;
+        }
+        case RB_JOINT_PULLEY:
+            joint->as.pulley.impulse = joint->as.pulley.stop_a_impulse = joint->as.pulley.stop_b_impulse = 0.0;
+            break;
         }
     }
 }
@@ -509,6 +577,13 @@ void rb_joints_measure_errors(const rb_world *world, double *max_gap, double *ma
             break;
         case RB_JOINT_DISTANCE:
             *max_gap = fmax(*max_gap, rb_distance_error(world, joint));
+            break;
+        case RB_JOINT_PRISMATIC:
+            *max_gap = fmax(*max_gap, rb_prismatic_gap(world, joint));
+            *max_angle = fmax(*max_angle, rb_prismatic_angle_error(world, joint));
+            break;
+        case RB_JOINT_PULLEY:
+            *max_gap = fmax(*max_gap, rb_pulley_gap(world, joint));
             break;
         case RB_JOINT_MOUSE:
             break; /* soft by design: its offset is not an error */

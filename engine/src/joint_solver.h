@@ -76,6 +76,18 @@ rb_vec2 rb_joint_force_on_b(const rb_world *world, const rb_joint *joint);
 /* angle(B) - angle(A) - reference. */
 double rb_joint_relative_angle(const rb_world *world, const rb_joint *joint, double reference);
 
+/* A symmetric 3x3 block of a joint's rows (kg⁻¹, m⁻¹·kg⁻¹ or
+ * m⁻²·kg⁻¹ by row), whose upper-left 2x2 is solved alone when the third
+ * row is not active. */
+typedef struct rb_block_matrix {
+    double k11, k12, k22, k13, k23, k33;
+} rb_block_matrix;
+
+/* Solves the 2x2 block K2·x = v; false when K2 is not positive definite. */
+bool rb_block_solve2(const rb_block_matrix *k, rb_vec2 v, rb_vec2 *x);
+/* Solves K·(x, z) = (v, w) by Cramer's rule; false when K is singular. */
+bool rb_block_solve3(const rb_block_matrix *k, rb_vec2 v, double w, rb_vec2 *x, double *z);
+
 /* The point constraint shared by revolute and weld joints: the anchors
  * coincide. Optionally solved together with one angular row
  * sign·(ωB - ωA) + bias = 0 whose impulse accumulates in *accumulated,
@@ -119,5 +131,26 @@ double rb_distance_error(const rb_world *world, const rb_joint *joint);
 void rb_mouse_prepare(rb_world *world, rb_joint *joint, double h);
 void rb_mouse_warm_start(rb_world *world, rb_joint *joint);
 void rb_mouse_solve(rb_world *world, rb_joint *joint, double h);
+
+void rb_prismatic_prepare(rb_world *world, rb_joint *joint, double h);
+void rb_prismatic_warm_start(rb_world *world, rb_joint *joint);
+void rb_prismatic_solve(rb_world *world, rb_joint *joint, double h);
+bool rb_prismatic_correct(rb_world *world, rb_joint *joint);
+/* Anchor B's distance off the axis or beyond an enabled limit (m, >= 0). */
+double rb_prismatic_gap(const rb_world *world, const rb_joint *joint);
+double rb_prismatic_angle_error(const rb_world *world, const rb_joint *joint); /* rad, >= 0 */
+/* The impulses on body B in the last substep: linear (N·s, world) and
+ * angular (N·m·s). */
+rb_vec2 rb_prismatic_linear_impulse(const rb_joint *joint);
+double rb_prismatic_angular_impulse(const rb_joint *joint);
+
+void rb_pulley_prepare(rb_world *world, rb_joint *joint, double h);
+void rb_pulley_warm_start(rb_world *world, rb_joint *joint);
+void rb_pulley_solve(rb_world *world, rb_joint *joint, double h);
+bool rb_pulley_correct(rb_world *world, rb_joint *joint);
+/* How far the rope is longer than its constant, or a side beyond its stop (m, >= 0). */
+double rb_pulley_gap(const rb_world *world, const rb_joint *joint);
+/* The pull on body B of the last substep (N·s). */
+rb_vec2 rb_pulley_impulse_on_b(const rb_joint *joint);
 
 #endif
