@@ -13,12 +13,12 @@
  * λ pulls A towards gA with λ and B towards gB with ratio·λ: the tension
  * of a gear of that ratio, the ground taking the rest.
  *
- * The directions are undefined where a side's length is 0. Each side is
- * therefore kept at least min_length long: when side b reaches it, side a
- * stops at max_length_a = constant - ratio·min_length (and conversely,
- * max_length_b = (constant - min_length)/ratio). These stops are one-sided
- * rows on one body each, l_a <= max_length_a and l_b <= max_length_b, as
- * the "maximum length" rows of Box2D 2.1's pulley. */
+ * The directions are undefined where a side's length is 0, so each body
+ * meets its pulley min_length from it: one-sided stops
+ * l_a - min_length >= 0 and l_b - min_length >= 0 on one body each, whose
+ * impulses push the body away from its pulley. A stop holds whatever
+ * brought the body there: the rope (the other body outweighs it) or its
+ * own momentum (a rope cannot hold that back). */
 #include <float.h>
 
 #include "error.h"
@@ -89,8 +89,7 @@ rb_status rb_pulley_joint_create(rb_world *world, const rb_pulley_joint_def *def
                 .ground_b = def->ground_anchor_b,
                 .ratio = def->ratio,
                 .constant = constant,
-                .max_length_a = constant - def->ratio * def->min_length,
-                .max_length_b = (constant - def->min_length) / def->ratio,
+                .min_length = def->min_length,
             },
     };
     return rb_joint_create(world, &joint, out, f);
@@ -137,7 +136,8 @@ static rope_side measure_side(rb_vec2 ground, rb_vec2 center, rb_vec2 r)
     return side;
 }
 
-/* 1/m of a unit pull along a side: 1/m + (r × u)²/I. */
+/* How fast a unit impulse along a side changes its rate (1/kg):
+ * 1/m + (r × u)²/I. */
 static double side_inverse_mass(double inv_mass, double inv_inertia, const rope_side *side)
 {
     return rb_length_squared(side->direction) * inv_mass + inv_inertia * side->cross * side->cross;
@@ -163,38 +163,39 @@ void rb_pulley_prepare(rb_world *world, rb_joint *joint, double h)
     p->mass_b = inverse_to_mass(k_b);
 }
 
-/* Pulls the body's anchor towards its pulley with `impulse` (N·s, >= 0). */
-static void pull(rb_body_state *state, double inv_mass, double inv_inertia, rb_vec2 r, rb_vec2 direction,
+/* Pushes the body's anchor away from its pulley with `impulse` (N·s; the
+ * rope pulls with a negative one). */
+static void push(rb_body_state *state, double inv_mass, double inv_inertia, rb_vec2 r, rb_vec2 direction,
                  double impulse)
 {
-    rb_vec2 linear = rb_scale(-impulse, direction);
+    rb_vec2 linear = rb_scale(impulse, direction);
     state->linear_velocity = rb_mul_add(state->linear_velocity, inv_mass, linear);
     state->angular_velocity += inv_inertia * rb_cross(r, linear);
 }
 
-static void pull_a(rb_world *world, const rb_joint *joint, double impulse)
+static void push_a(rb_world *world, const rb_joint *joint, double impulse)
 {
     const rb_joint_frame *f = &joint->frame;
-    pull(&world->states[joint->body_a], f->inv_mass_a, f->inv_inertia_a, f->ra, joint->as.pulley.direction_a, impulse);
+    push(&world->states[joint->body_a], f->inv_mass_a, f->inv_inertia_a, f->ra, joint->as.pulley.direction_a, impulse);
 }
 
-static void pull_b(rb_world *world, const rb_joint *joint, double impulse)
+static void push_b(rb_world *world, const rb_joint *joint, double impulse)
 {
     const rb_joint_frame *f = &joint->frame;
-    pull(&world->states[joint->body_b], f->inv_mass_b, f->inv_inertia_b, f->rb, joint->as.pulley.direction_b, impulse);
+    push(&world->states[joint->body_b], f->inv_mass_b, f->inv_inertia_b, f->rb, joint->as.pulley.direction_b, impulse);
 }
 
 void rb_pulley_warm_start(rb_world *world, rb_joint *joint)
 {
     const rb_pulley_data *p = &joint->as.pulley;
-    pull_a(world, joint, p->impulse + p->stop_a_impulse);
-    pull_b(world, joint, p->ratio * p->impulse + p->stop_b_impulse);
+    push_a(world, joint, p->stop_a_impulse - p->impulse);
+    push_b(world, joint, p->stop_b_impulse - p->ratio * p->impulse);
 }
 
 rb_vec2 rb_pulley_impulse_on_b(const rb_joint *joint)
 {
     const rb_pulley_data *p = &joint->as.pulley;
-    return rb_scale(-(p->ratio * p->impulse + p->stop_b_impulse), p->direction_b);
+    return rb_scale(p->stop_b_impulse - p->ratio * p->impulse, p->direction_b);
 }
 
 /* The rate at which a side lengthens: u·(v + ω × r). */
@@ -211,14 +212,20 @@ static double one_sided_bias(const rb_world *world, double c, double h)
     return c > 0.0 ? c / h : rb_joint_baumgarte_rate(world, h) * c;
 }
 
-/* λ for the row margin c with rate cdot and effective mass m, its
- * accumulated impulse kept >= 0; returns the increment. */
+/* The impulse of a one-sided row of rate cdot, bias and effective mass
+ * `mass`, its accumulated impulse kept >= 0; returns the increment. */
 static double clamp_increment(double *accumulated, double mass, double cdot, double bias)
 {
     double total = fmax(*accumulated - mass * (cdot + bias), 0.0);
     double increment = total - *accumulated;
     *accumulated = total;
     return increment;
+}
+
+/* The rope's margin (m, >= 0 while it is not too long) at the given lengths. */
+static double rope_margin(const rb_pulley_data *p, double length_a, double length_b)
+{
+    return p->constant - length_a - p->ratio * length_b;
 }
 
 void rb_pulley_solve(rb_world *world, rb_joint *joint, double h)
@@ -228,28 +235,22 @@ void rb_pulley_solve(rb_world *world, rb_joint *joint, double h)
     const rb_body_state *a = &world->states[joint->body_a];
     const rb_body_state *b = &world->states[joint->body_b];
     if (p->mass_a > 0.0) {
-        double c = p->max_length_a - p->length_a;
-        double cdot = -side_rate(a, f->ra, p->direction_a);
-        pull_a(world, joint, clamp_increment(&p->stop_a_impulse, p->mass_a, cdot, one_sided_bias(world, c, h)));
+        double c = p->length_a - p->min_length;
+        double cdot = side_rate(a, f->ra, p->direction_a);
+        push_a(world, joint, clamp_increment(&p->stop_a_impulse, p->mass_a, cdot, one_sided_bias(world, c, h)));
     }
     if (p->mass_b > 0.0) {
-        double c = p->max_length_b - p->length_b;
-        double cdot = -side_rate(b, f->rb, p->direction_b);
-        pull_b(world, joint, clamp_increment(&p->stop_b_impulse, p->mass_b, cdot, one_sided_bias(world, c, h)));
+        double c = p->length_b - p->min_length;
+        double cdot = side_rate(b, f->rb, p->direction_b);
+        push_b(world, joint, clamp_increment(&p->stop_b_impulse, p->mass_b, cdot, one_sided_bias(world, c, h)));
     }
     if (p->mass > 0.0) {
-        double c = p->constant - p->length_a - p->ratio * p->length_b;
+        double c = rope_margin(p, p->length_a, p->length_b);
         double cdot = -side_rate(a, f->ra, p->direction_a) - p->ratio * side_rate(b, f->rb, p->direction_b);
         double impulse = clamp_increment(&p->impulse, p->mass, cdot, one_sided_bias(world, c, h));
-        pull_a(world, joint, impulse);
-        pull_b(world, joint, p->ratio * impulse);
+        push_a(world, joint, -impulse);
+        push_b(world, joint, -p->ratio * impulse);
     }
-}
-
-/* The rope's margin (m, >= 0 while it is not too long) at the given lengths. */
-static double rope_margin(const rb_pulley_data *p, double length_a, double length_b)
-{
-    return p->constant - length_a - p->ratio * length_b;
 }
 
 double rb_pulley_gap(const rb_world *world, const rb_joint *joint)
@@ -258,16 +259,16 @@ double rb_pulley_gap(const rb_world *world, const rb_joint *joint)
     double length_a = rb_distance(p->ground_a, rb_joint_anchor_a(world, joint));
     double length_b = rb_distance(p->ground_b, rb_joint_anchor_b(world, joint));
     double gap = fmax(0.0, -rope_margin(p, length_a, length_b));
-    gap = fmax(gap, length_a - p->max_length_a);
-    return fmax(gap, length_b - p->max_length_b);
+    gap = fmax(gap, p->min_length - length_a);
+    return fmax(gap, p->min_length - length_b);
 }
 
-/* Moves a body's anchor towards its pulley by the position impulse
- * `impulse` (kg·m, >= 0). */
+/* Moves a body's anchor away from its pulley by the position impulse
+ * `impulse` (kg·m; towards it when negative). */
 static void shift(rb_body_state *state, double inv_mass, double inv_inertia, rb_vec2 r, rb_vec2 direction,
                   double impulse)
 {
-    rb_vec2 linear = rb_scale(-impulse, direction);
+    rb_vec2 linear = rb_scale(impulse, direction);
     state->center = rb_mul_add(state->center, inv_mass, linear);
     if (inv_inertia > 0.0) {
         state->angle += inv_inertia * rb_cross(r, linear);
@@ -275,8 +276,10 @@ static void shift(rb_body_state *state, double inv_mass, double inv_inertia, rb_
     }
 }
 
-/* One NGS pass: each stop, then the rope, shortened by what it is too
- * long (capped), at the poses as the previous row left them. */
+/* One NGS pass: each stop, then the rope, by what it is violated
+ * (capped), at the poses as the previous row left them. A stop moves its
+ * body away from its pulley; the rope moves both towards theirs, body B
+ * ratio times as hard. */
 bool rb_pulley_correct(rb_world *world, rb_joint *joint)
 {
     const rb_pulley_data *p = &joint->as.pulley;
@@ -285,26 +288,27 @@ bool rb_pulley_correct(rb_world *world, rb_joint *joint)
     rb_body_state *b = rb_joint_state_b(world, joint);
     double max_correction = world->settings.max_linear_correction;
     double worst = 0.0;
-    for (int row = 0; row < 3; ++row) {
+    enum { STOP_A, STOP_B, ROPE };
+    for (int row = STOP_A; row <= ROPE; ++row) {
         rb_vec2 ra = rb_rotate(a->rotation, f->local_a);
         rb_vec2 rb = rb_rotate(b->rotation, f->local_b);
         rope_side side_a = measure_side(p->ground_a, a->center, ra);
         rope_side side_b = measure_side(p->ground_b, b->center, rb);
         double k_a = side_inverse_mass(f->inv_mass_a, f->inv_inertia_a, &side_a);
         double k_b = side_inverse_mass(f->inv_mass_b, f->inv_inertia_b, &side_b);
-        double c;
-        double k;
-        double share_a = row != 1 ? 1.0 : 0.0; /* how much of the impulse pulls A, and B */
-        double share_b = row == 0 ? 0.0 : (row == 1 ? 1.0 : p->ratio);
-        if (row == 0) {
-            c = p->max_length_a - side_a.length;
-            k = k_a;
-        } else if (row == 1) {
-            c = p->max_length_b - side_b.length;
+        /* The margin c (>= 0 when met), 1/m of the row, and how much of
+         * the row's impulse pushes A and B away from their pulleys. */
+        double c = side_a.length - p->min_length, k = k_a, share_a = 1.0, share_b = 0.0;
+        if (row == STOP_B) {
+            c = side_b.length - p->min_length;
             k = k_b;
-        } else {
+            share_a = 0.0;
+            share_b = 1.0;
+        } else if (row == ROPE) {
             c = rope_margin(p, side_a.length, side_b.length);
             k = k_a + p->ratio * p->ratio * k_b;
+            share_a = -1.0;
+            share_b = -p->ratio;
         }
         worst = fmax(worst, -c);
         if (c >= 0.0 || !(k > 0.0)) {

@@ -162,12 +162,12 @@ typedef struct rb_prismatic_data {
 typedef struct rb_pulley_data {
     rb_vec2 ground_a, ground_b; /* m, world */
     double ratio;
-    double constant;                   /* m, length_a + ratio·length_b when taut */
-    double max_length_a, max_length_b; /* m, where the other side reaches min_length */
+    double constant;   /* m, length_a + ratio·length_b when taut */
+    double min_length; /* m, where a body meets its pulley */
     /* This substep: */
     rb_vec2 direction_a, direction_b; /* unit, from each ground anchor to its body anchor; 0 when undefined */
     double length_a, length_b;        /* m */
-    double mass, mass_a, mass_b;      /* kg, effective masses of the rope and of each side's stop */
+    double mass, mass_a, mass_b;      /* kg, effective masses of the rope and of each body's stop */
     double impulse, stop_a_impulse, stop_b_impulse; /* N·s, >= 0 */
 } rb_pulley_data;
 

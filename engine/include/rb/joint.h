@@ -197,17 +197,18 @@ rb_status rb_prismatic_joint_set_spring(rb_world *world, rb_joint_id joint, bool
  * with length_a = |anchor A - ground A| and length_b likewise,
  *   length_a + ratio·length_b <= constant = def.length_a + ratio·def.length_b.
  * A rope only pulls: it goes slack when the bodies come closer to their
- * pulleys. Neither side gets shorter than min_length (the other side
- * stops there), which keeps the rope's directions defined. The reaction
- * force is the pull on body B; body A is pulled towards its pulley by
- * 1/ratio of it (the pulleys take the rest). */
+ * pulleys. A body meets its pulley min_length from it and stops there
+ * (the pulley pushes back), which keeps the rope's directions defined.
+ * The reaction force is what the joint applied to body B: the rope's pull,
+ * ratio times its tension, plus the push of B's pulley; body A is pulled
+ * by the tension itself (the pulleys take the rest). */
 typedef struct rb_pulley_joint_def {
     rb_body_id body_a, body_b;
     rb_vec2 ground_anchor_a, ground_anchor_b; /* m, world */
     rb_vec2 local_anchor_a, local_anchor_b;   /* m, in each body's frame */
     double length_a, length_b;                /* m, >= min_length: the rope's two sides when taut */
     double ratio;                             /* > 0, default 1: how much side A pays out per metre of side B */
-    double min_length;                        /* m, > 0, default 0.05 */
+    double min_length;                        /* m, > 0, default 0.05: how near a body comes to its pulley */
     bool collide_connected;
     void *user_data;
 } rb_pulley_joint_def;
