@@ -178,7 +178,7 @@ double rb_joint_relative_angle(const rb_world *world, const rb_joint *joint, dou
 }
 
 /* Impulses accumulated over the last substep, as forces on body B. */
-static rb_vec2 linear_impulse(const rb_joint *joint)
+static rb_vec2 linear_impulse(const rb_world *world, const rb_joint *joint)
 {
     switch (joint->type) {
     case RB_JOINT_REVOLUTE:
@@ -192,16 +192,16 @@ static rb_vec2 linear_impulse(const rb_joint *joint)
     case RB_JOINT_MOUSE:
         return joint->as.mouse.impulse;
     case RB_JOINT_PRISMATIC:
-        return rb_prismatic_linear_impulse(joint);
+        return rb_prismatic_linear_impulse(world, joint);
     case RB_JOINT_PULLEY:
-        return rb_pulley_impulse_on_b(joint);
+        return rb_pulley_impulse_on_b(world, joint);
     }
     return rb_v2(0.0, 0.0);
 }
 
 rb_vec2 rb_joint_force_on_b(const rb_world *world, const rb_joint *joint)
 {
-    return rb_scale(1.0 / world->last_substep, linear_impulse(joint));
+    return rb_scale(1.0 / world->last_substep, linear_impulse(world, joint));
 }
 
 static double angular_impulse(const rb_joint *joint)
@@ -279,34 +279,6 @@ rb_softness rb_make_softness(double hertz, double zeta, double effective_mass, d
     double c = 2.0 * effective_mass * zeta * omega;
     double gamma = 1.0 / (h * (c + h * k));
     return (rb_softness){gamma, h * k * gamma};
-}
-
-bool rb_block_solve2(const rb_block_matrix *k, rb_vec2 v, rb_vec2 *x)
-{
-    double det = k->k11 * k->k22 - k->k12 * k->k12;
-    if (!(det > 0.0)) {
-        return false;
-    }
-    *x = rb_v2((k->k22 * v.x - k->k12 * v.y) / det, (k->k11 * v.y - k->k12 * v.x) / det);
-    return true;
-}
-
-/* A body that cannot turn makes an angle row redundant, and K singular. */
-bool rb_block_solve3(const rb_block_matrix *k, rb_vec2 v, double w, rb_vec2 *x, double *z)
-{
-    double c11 = k->k22 * k->k33 - k->k23 * k->k23;
-    double c12 = k->k13 * k->k23 - k->k12 * k->k33;
-    double c13 = k->k12 * k->k23 - k->k13 * k->k22;
-    double det = k->k11 * c11 + k->k12 * c12 + k->k13 * c13;
-    if (!(fabs(det) > 1e-300)) {
-        return false;
-    }
-    double c22 = k->k11 * k->k33 - k->k13 * k->k13;
-    double c23 = k->k13 * k->k12 - k->k11 * k->k23;
-    double c33 = k->k11 * k->k22 - k->k12 * k->k12;
-    *x = rb_v2((c11 * v.x + c12 * v.y + c13 * w) / det, (c12 * v.x + c22 * v.y + c23 * w) / det);
-    *z = (c13 * v.x + c23 * v.y + c33 * w) / det;
-    return true;
 }
 
 double rb_joint_baumgarte_rate(const rb_world *world, double h)
@@ -418,8 +390,7 @@ void rb_joints_prepare(rb_world *world, double h)
             rb_prismatic_prepare(world, joint, h);
             break;
         case RB_JOINT_PULLEY:
-            rb_pulley_prepare(world, joint, h);
-            break;
+            break; /* its rows are computed when solved */
         }
     }
 }

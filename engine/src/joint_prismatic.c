@@ -131,8 +131,6 @@ rb_status rb_prismatic_joint_create(rb_world *world, const rb_prismatic_joint_de
                 .enable_spring = def->enable_spring,
                 .spring_hertz = def->spring_hertz,
                 .spring_damping_ratio = def->spring_damping_ratio,
-                .axis = {1.0, 0.0},
-                .normal = {0.0, 1.0},
             },
     };
     return rb_joint_create(world, &joint, out, f);
@@ -285,40 +283,77 @@ static rb_block_matrix make_block(const rb_joint_frame *f, double s_a, double s_
     };
 }
 
+/* A pair that cannot turn leaves the angle row empty: a unit diagonal
+ * (and a zero right side) keep the block regular and its impulse 0. */
+static bool make_regular(rb_block_matrix *k)
+{
+    if (k->k22 > 0.0) {
+        return true;
+    }
+    k->k22 = 1.0;
+    return false;
+}
+
+/* The rows at the poses of this substep. They are not cached in the
+ * joint: computed from the frame when needed (the poses do not change
+ * during the velocity passes, so every pass sees the same values), they
+ * keep rb_prismatic_data no larger than the revolute's, and with it the
+ * stride of the joint array the solver walks for every joint type. */
+typedef struct slide_rows {
+    rb_vec2 axis, normal;      /* world; normal = axis turned +90° */
+    double translation;        /* m, s = u·d */
+    double offset;             /* m, C_n = n·d */
+    double axial_a, axial_b;   /* m, a_a and a_b */
+    double normal_a, normal_b; /* m, s_a and s_b */
+    rb_block_matrix k;         /* made regular */
+    bool turns;                /* whether either body can turn (the angle row is not empty) */
+    double axial_mass;         /* kg */
+} slide_rows;
+
 /* The mass the axis sees while the rigid rows hold: a unit impulse along
  * the axis, followed by the block's answer, changes ds/dt by the Schur
  * complement k_uu - k_u·K2⁻¹·k_u = 1/(K⁻¹)₃₃ of the rigid 2x2 block, not
- * by k_uu alone, so the mass is (K⁻¹)₃₃. With it a spring of f Hz oscillates at f
- * whatever the lever arms (with 1/k_uu a box whose anchor is 5 cm off
- * its centre would ring at 0.93·f), and the motor meets its speed in one
- * pass. A pair that cannot turn has an empty angle row (unit diagonal). */
-static double axial_mass(const rb_joint_frame *f, const rb_prismatic_data *p)
+ * by k_uu alone, so the mass is (K⁻¹)₃₃. With it a spring of f Hz
+ * oscillates at f whatever the lever arms (with 1/k_uu a box whose anchor
+ * is 5 cm off its centre would ring at 0.93·f), and the motor meets its
+ * speed in one pass. */
+static double axial_mass(const rb_block_matrix *k)
 {
-    rb_block_matrix k = make_block(f, p->normal_a, p->normal_b, p->axial_a, p->axial_b);
-    if (!(k.k22 > 0.0)) {
-        k.k22 = 1.0;
-    }
     rb_vec2 rigid;
     double mass;
-    if (rb_block_solve3(&k, rb_v2(0.0, 0.0), 1.0, &rigid, &mass) && mass > 0.0) {
+    if (rb_block_solve3(k, rb_v2(0.0, 0.0), 1.0, &rigid, &mass) && mass > 0.0) {
         return mass;
     }
-    return k.k33 > 0.0 ? 1.0 / k.k33 : 0.0;
+    return k->k33 > 0.0 ? 1.0 / k->k33 : 0.0;
+}
+
+static slide_rows rows_now(const rb_world *world, const rb_joint *joint)
+{
+    const rb_joint_frame *f = &joint->frame;
+    const rb_body_state *a = &world->states[joint->body_a];
+    const rb_body_state *b = &world->states[joint->body_b];
+    slide_rows r;
+    r.axis = rb_rotate(a->rotation, joint->as.prismatic.local_axis_a);
+    r.normal = rb_left_perp(r.axis);
+    rb_vec2 d = rb_sub(rb_add(b->center, f->rb), rb_add(a->center, f->ra));
+    rb_vec2 arm_a = rb_add(d, f->ra);
+    r.translation = rb_dot(r.axis, d);
+    r.offset = rb_dot(r.normal, d);
+    r.axial_a = rb_cross(arm_a, r.axis);
+    r.axial_b = rb_cross(f->rb, r.axis);
+    r.normal_a = rb_cross(arm_a, r.normal);
+    r.normal_b = rb_cross(f->rb, r.normal);
+    r.k = make_block(f, r.normal_a, r.normal_b, r.axial_a, r.axial_b);
+    r.turns = make_regular(&r.k);
+    r.axial_mass = axial_mass(&r.k);
+    return r;
 }
 
 void rb_prismatic_prepare(rb_world *world, rb_joint *joint, double h)
 {
+    (void)world;
     (void)h;
     rb_prismatic_data *p = &joint->as.prismatic;
-    slide_geometry g = measure(world, joint);
-    p->axis = g.axis;
-    p->normal = g.normal;
-    p->translation = rb_dot(g.axis, g.d);
-    p->axial_a = rb_cross(g.arm_a, g.axis);
-    p->axial_b = rb_cross(g.rb, g.axis);
-    p->normal_a = rb_cross(g.arm_a, g.normal);
-    p->normal_b = rb_cross(g.rb, g.normal);
-    p->axial_mass = axial_mass(&joint->frame, p);
     if (!p->enable_motor) {
         p->motor_impulse = 0.0;
     }
@@ -334,16 +369,15 @@ void rb_prismatic_prepare(rb_world *world, rb_joint *joint, double h)
 }
 
 /* Applies Jᵀ·(across, angular, along): +P, +L on B, -P, -L on A. */
-static void apply(const rb_joint *joint, rb_body_state *a, rb_body_state *b, double across, double angular,
-                  double along)
+static void apply(const rb_joint *joint, const slide_rows *r, rb_body_state *a, rb_body_state *b, double across,
+                  double angular, double along)
 {
-    const rb_prismatic_data *p = &joint->as.prismatic;
     const rb_joint_frame *f = &joint->frame;
-    rb_vec2 impulse = rb_add(rb_scale(across, p->normal), rb_scale(along, p->axis));
+    rb_vec2 impulse = rb_add(rb_scale(across, r->normal), rb_scale(along, r->axis));
     a->linear_velocity = rb_mul_sub(a->linear_velocity, f->inv_mass_a, impulse);
-    a->angular_velocity -= f->inv_inertia_a * (across * p->normal_a + angular + along * p->axial_a);
+    a->angular_velocity -= f->inv_inertia_a * (across * r->normal_a + angular + along * r->axial_a);
     b->linear_velocity = rb_mul_add(b->linear_velocity, f->inv_mass_b, impulse);
-    b->angular_velocity += f->inv_inertia_b * (across * p->normal_b + angular + along * p->axial_b);
+    b->angular_velocity += f->inv_inertia_b * (across * r->normal_b + angular + along * r->axial_b);
 }
 
 static double axial_total(const rb_prismatic_data *p)
@@ -354,31 +388,34 @@ static double axial_total(const rb_prismatic_data *p)
 void rb_prismatic_warm_start(rb_world *world, rb_joint *joint)
 {
     const rb_prismatic_data *p = &joint->as.prismatic;
-    apply(joint, rb_joint_state_a(world, joint), rb_joint_state_b(world, joint), p->impulse.x, p->impulse.y,
+    slide_rows r = rows_now(world, joint);
+    apply(joint, &r, rb_joint_state_a(world, joint), rb_joint_state_b(world, joint), p->impulse.x, p->impulse.y,
           axial_total(p));
 }
 
-rb_vec2 rb_prismatic_linear_impulse(const rb_joint *joint)
+/* Along the axis and across it at the poses now. */
+rb_vec2 rb_prismatic_linear_impulse(const rb_world *world, const rb_joint *joint)
 {
     const rb_prismatic_data *p = &joint->as.prismatic;
-    return rb_add(rb_scale(p->impulse.x, p->normal), rb_scale(axial_total(p), p->axis));
+    slide_geometry g = measure(world, joint);
+    return rb_add(rb_scale(p->impulse.x, g.normal), rb_scale(axial_total(p), g.axis));
 }
 
 /* The torque about B's centre is the angular row's alone: the axial and
  * perpendicular rows act at anchor B, as the reaction force. */
 double rb_prismatic_angular_impulse(const rb_joint *joint) { return joint->as.prismatic.impulse.y; }
 
-/* The rates of the rows: across the axis, about it, along it. */
-static double across_rate(const rb_prismatic_data *p, const rb_body_state *a, const rb_body_state *b)
+/* The rates of the rows: across the axis and along it. */
+static double across_rate(const slide_rows *r, const rb_body_state *a, const rb_body_state *b)
 {
-    return rb_dot(p->normal, rb_sub(b->linear_velocity, a->linear_velocity)) + p->normal_b * b->angular_velocity -
-           p->normal_a * a->angular_velocity;
+    return rb_dot(r->normal, rb_sub(b->linear_velocity, a->linear_velocity)) + r->normal_b * b->angular_velocity -
+           r->normal_a * a->angular_velocity;
 }
 
-static double along_rate(const rb_prismatic_data *p, const rb_body_state *a, const rb_body_state *b)
+static double along_rate(const slide_rows *r, const rb_body_state *a, const rb_body_state *b)
 {
-    return rb_dot(p->axis, rb_sub(b->linear_velocity, a->linear_velocity)) + p->axial_b * b->angular_velocity -
-           p->axial_a * a->angular_velocity;
+    return rb_dot(r->axis, rb_sub(b->linear_velocity, a->linear_velocity)) + r->axial_b * b->angular_velocity -
+           r->axial_a * a->angular_velocity;
 }
 
 /* Velocity bias of a one-sided limit whose margin is c (>= 0 while met):
@@ -390,50 +427,42 @@ static double limit_bias(const rb_world *world, double c, double h)
 }
 
 /* A limit alone, on the axial mass: it only releases what it held. */
-static void solve_limit_alone(rb_world *world, rb_joint *joint, rb_body_state *a, rb_body_state *b, bool lower,
-                              double h)
+static void solve_limit_alone(rb_world *world, rb_joint *joint, const slide_rows *r, rb_body_state *a, rb_body_state *b,
+                              bool lower, double h)
 {
     rb_prismatic_data *p = &joint->as.prismatic;
     double sign = lower ? 1.0 : -1.0;
-    double margin = lower ? p->translation - p->lower : p->upper - p->translation;
+    double margin = lower ? r->translation - p->lower : p->upper - r->translation;
     double *accumulated = lower ? &p->lower_impulse : &p->upper_impulse;
-    double cdot = sign * along_rate(p, a, b);
-    double total = fmax(*accumulated - p->axial_mass * (cdot + limit_bias(world, margin, h)), 0.0);
-    apply(joint, a, b, 0.0, 0.0, sign * (total - *accumulated));
+    double cdot = sign * along_rate(r, a, b);
+    double total = fmax(*accumulated - r->axial_mass * (cdot + limit_bias(world, margin, h)), 0.0);
+    apply(joint, r, a, b, 0.0, 0.0, sign * (total - *accumulated));
     *accumulated = total;
 }
 
 /* The rigid rows across the axis and about it, with the limit row of
  * sign σ (+1 lower, -1 upper) when `limit` is not 0: σ·ds/dt + bias >= 0,
  * its impulse kept >= 0. In K the limit row's couplings take the sign σ. */
-static void solve_block(rb_world *world, rb_joint *joint, rb_body_state *a, rb_body_state *b, int limit, double h)
+static void solve_block(rb_world *world, rb_joint *joint, const slide_rows *r, rb_body_state *a, rb_body_state *b,
+                        int limit, double h)
 {
     rb_prismatic_data *p = &joint->as.prismatic;
-    const rb_joint_frame *f = &joint->frame;
-    rb_block_matrix k = make_block(f, p->normal_a, p->normal_b, p->axial_a, p->axial_b);
-    /* A pair that cannot turn leaves the angle row empty: a unit diagonal
-     * and a zero right side keep the block regular and its impulse 0. */
-    bool turns = k.k22 > 0.0;
-    if (!turns) {
-        k.k22 = 1.0;
-    }
-    rb_vec2 cdot = rb_v2(across_rate(p, a, b), turns ? b->angular_velocity - a->angular_velocity : 0.0);
+    rb_vec2 cdot = rb_v2(across_rate(r, a, b), r->turns ? b->angular_velocity - a->angular_velocity : 0.0);
     double rate = rb_joint_baumgarte_rate(world, h);
     if (rate > 0.0) {
-        slide_geometry g = measure(world, joint);
-        double angle = turns ? rb_joint_relative_angle(world, joint, p->reference_angle) : 0.0;
-        cdot = rb_add(cdot, rb_scale(rate, rb_v2(rb_dot(g.normal, g.d), angle)));
+        double angle = r->turns ? rb_joint_relative_angle(world, joint, p->reference_angle) : 0.0;
+        cdot = rb_add(cdot, rb_scale(rate, rb_v2(r->offset, angle)));
     }
     rb_vec2 impulse;
     if (limit != 0) {
         double sign = limit;
         bool lower = limit > 0;
-        double margin = lower ? p->translation - p->lower : p->upper - p->translation;
+        double margin = lower ? r->translation - p->lower : p->upper - r->translation;
         double *accumulated = lower ? &p->lower_impulse : &p->upper_impulse;
-        rb_block_matrix ks = k;
+        rb_block_matrix ks = r->k;
         ks.k13 *= sign;
         ks.k23 *= sign;
-        double wdot = sign * along_rate(p, a, b) + limit_bias(world, margin, h);
+        double wdot = sign * along_rate(r, a, b) + limit_bias(world, margin, h);
         double along;
         if (rb_block_solve3(&ks, rb_neg(cdot), -wdot, &impulse, &along)) {
             if (*accumulated + along < 0.0) {
@@ -441,19 +470,19 @@ static void solve_block(rb_world *world, rb_joint *joint, rb_body_state *a, rb_b
                  * rows alone, net of the release's effect on them. */
                 along = -*accumulated;
                 rb_vec2 rhs = rb_neg(rb_add(cdot, rb_scale(along, rb_v2(ks.k13, ks.k23))));
-                if (!rb_block_solve2(&k, rhs, &impulse)) {
+                if (!rb_block_solve2(&r->k, rhs, &impulse)) {
                     impulse = rb_v2(0.0, 0.0);
                 }
             }
             *accumulated += along;
             p->impulse = rb_add(p->impulse, impulse);
-            apply(joint, a, b, impulse.x, impulse.y, sign * along);
+            apply(joint, r, a, b, impulse.x, impulse.y, sign * along);
             return;
         }
     }
-    if (rb_block_solve2(&k, rb_neg(cdot), &impulse)) {
+    if (rb_block_solve2(&r->k, rb_neg(cdot), &impulse)) {
         p->impulse = rb_add(p->impulse, impulse);
-        apply(joint, a, b, impulse.x, impulse.y, 0.0);
+        apply(joint, r, a, b, impulse.x, impulse.y, 0.0);
     }
 }
 
@@ -462,37 +491,38 @@ void rb_prismatic_solve(rb_world *world, rb_joint *joint, double h)
     rb_body_state *a = rb_joint_state_a(world, joint);
     rb_body_state *b = rb_joint_state_b(world, joint);
     rb_prismatic_data *p = &joint->as.prismatic;
+    slide_rows r = rows_now(world, joint);
     int block_limit = 0;
-    if (p->axial_mass > 0.0) {
+    if (r.axial_mass > 0.0) {
         if (p->enable_spring && p->spring_hertz > 0.0) {
-            rb_softness soft = rb_make_softness(p->spring_hertz, p->spring_damping_ratio, p->axial_mass, h);
-            double cdot = along_rate(p, a, b);
-            double impulse = -(cdot + soft.bias_rate * p->translation + soft.gamma * p->spring_impulse) /
-                             (1.0 / p->axial_mass + soft.gamma);
+            rb_softness soft = rb_make_softness(p->spring_hertz, p->spring_damping_ratio, r.axial_mass, h);
+            double cdot = along_rate(&r, a, b);
+            double impulse = -(cdot + soft.bias_rate * r.translation + soft.gamma * p->spring_impulse) /
+                             (1.0 / r.axial_mass + soft.gamma);
             p->spring_impulse += impulse;
-            apply(joint, a, b, 0.0, 0.0, impulse);
+            apply(joint, &r, a, b, 0.0, 0.0, impulse);
         }
         if (p->enable_motor) {
-            double cdot = along_rate(p, a, b) - p->motor_speed;
+            double cdot = along_rate(&r, a, b) - p->motor_speed;
             double limit = p->max_motor_force * h;
-            double accumulated = fmin(fmax(p->motor_impulse - p->axial_mass * cdot, -limit), limit);
+            double accumulated = fmin(fmax(p->motor_impulse - r.axial_mass * cdot, -limit), limit);
             double impulse = accumulated - p->motor_impulse;
             p->motor_impulse = accumulated;
-            apply(joint, a, b, 0.0, 0.0, impulse);
+            apply(joint, &r, a, b, 0.0, 0.0, impulse);
         }
         /* The nearer enabled limit goes into the block, the other alone. */
         bool lower_nearer =
-            p->enable_lower && (!p->enable_upper || p->translation - p->lower <= p->upper - p->translation);
+            p->enable_lower && (!p->enable_upper || r.translation - p->lower <= p->upper - r.translation);
         bool upper_nearer = p->enable_upper && !lower_nearer;
         if (p->enable_lower && !lower_nearer) {
-            solve_limit_alone(world, joint, a, b, true, h);
+            solve_limit_alone(world, joint, &r, a, b, true, h);
         }
         if (p->enable_upper && !upper_nearer) {
-            solve_limit_alone(world, joint, a, b, false, h);
+            solve_limit_alone(world, joint, &r, a, b, false, h);
         }
         block_limit = lower_nearer ? 1 : (upper_nearer ? -1 : 0);
     }
-    solve_block(world, joint, a, b, block_limit, h);
+    solve_block(world, joint, &r, a, b, block_limit, h);
 }
 
 /* How far the translation lies beyond an enabled limit: negative below
@@ -535,14 +565,10 @@ bool rb_prismatic_correct(rb_world *world, rb_joint *joint)
     double a_a = rb_cross(g.arm_a, g.axis);
     double a_b = rb_cross(g.rb, g.axis);
     rb_block_matrix k = make_block(f, s_a, s_b, a_a, a_b);
-    /* As in the velocity block: an angle no body can change is left alone. */
-    bool turns = k.k22 > 0.0;
-    if (!turns) {
-        k.k22 = 1.0;
-    }
+    bool turns = make_regular(&k);
     double across = rb_dot(g.normal, g.d);
     double angle = turns ? rb_joint_relative_angle(world, joint, p->reference_angle) : 0.0;
-    double violation = p->axial_mass > 0.0 ? limit_violation(p, rb_dot(g.axis, g.d)) : 0.0;
+    double violation = limit_violation(p, rb_dot(g.axis, g.d));
     bool within = fabs(across) <= world->settings.linear_slop && fabs(angle) <= RB_ANGULAR_SLOP &&
                   fabs(violation) <= world->settings.linear_slop;
     double max_linear = world->settings.max_linear_correction;

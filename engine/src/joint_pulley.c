@@ -145,22 +145,27 @@ static double side_inverse_mass(double inv_mass, double inv_inertia, const rope_
 
 static double inverse_to_mass(double k) { return k > 0.0 ? 1.0 / k : 0.0; }
 
-void rb_pulley_prepare(rb_world *world, rb_joint *joint, double h)
+/* The rope's rows at the poses of this substep, from the frame; not
+ * cached in the joint (see world_internal.h), and the same in every
+ * velocity pass since the poses do not change during them. */
+typedef struct rope_rows {
+    rope_side a, b;
+    double mass, mass_a, mass_b; /* kg, effective masses of the rope and of each body's stop */
+} rope_rows;
+
+static rope_rows rows_now(const rb_world *world, const rb_joint *joint)
 {
-    (void)h;
-    rb_pulley_data *p = &joint->as.pulley;
+    const rb_pulley_data *p = &joint->as.pulley;
     const rb_joint_frame *f = &joint->frame;
-    rope_side side_a = measure_side(p->ground_a, world->states[joint->body_a].center, f->ra);
-    rope_side side_b = measure_side(p->ground_b, world->states[joint->body_b].center, f->rb);
-    p->direction_a = side_a.direction;
-    p->direction_b = side_b.direction;
-    p->length_a = side_a.length;
-    p->length_b = side_b.length;
-    double k_a = side_inverse_mass(f->inv_mass_a, f->inv_inertia_a, &side_a);
-    double k_b = side_inverse_mass(f->inv_mass_b, f->inv_inertia_b, &side_b);
-    p->mass = inverse_to_mass(k_a + p->ratio * p->ratio * k_b);
-    p->mass_a = inverse_to_mass(k_a);
-    p->mass_b = inverse_to_mass(k_b);
+    rope_rows r;
+    r.a = measure_side(p->ground_a, world->states[joint->body_a].center, f->ra);
+    r.b = measure_side(p->ground_b, world->states[joint->body_b].center, f->rb);
+    double k_a = side_inverse_mass(f->inv_mass_a, f->inv_inertia_a, &r.a);
+    double k_b = side_inverse_mass(f->inv_mass_b, f->inv_inertia_b, &r.b);
+    r.mass = inverse_to_mass(k_a + p->ratio * p->ratio * k_b);
+    r.mass_a = inverse_to_mass(k_a);
+    r.mass_b = inverse_to_mass(k_b);
+    return r;
 }
 
 /* Pushes the body's anchor away from its pulley with `impulse` (N·s; the
@@ -173,29 +178,34 @@ static void push(rb_body_state *state, double inv_mass, double inv_inertia, rb_v
     state->angular_velocity += inv_inertia * rb_cross(r, linear);
 }
 
-static void push_a(rb_world *world, const rb_joint *joint, double impulse)
+static void push_a(rb_world *world, const rb_joint *joint, const rope_rows *r, double impulse)
 {
     const rb_joint_frame *f = &joint->frame;
-    push(&world->states[joint->body_a], f->inv_mass_a, f->inv_inertia_a, f->ra, joint->as.pulley.direction_a, impulse);
+    push(&world->states[joint->body_a], f->inv_mass_a, f->inv_inertia_a, f->ra, r->a.direction, impulse);
 }
 
-static void push_b(rb_world *world, const rb_joint *joint, double impulse)
+static void push_b(rb_world *world, const rb_joint *joint, const rope_rows *r, double impulse)
 {
     const rb_joint_frame *f = &joint->frame;
-    push(&world->states[joint->body_b], f->inv_mass_b, f->inv_inertia_b, f->rb, joint->as.pulley.direction_b, impulse);
+    push(&world->states[joint->body_b], f->inv_mass_b, f->inv_inertia_b, f->rb, r->b.direction, impulse);
 }
 
 void rb_pulley_warm_start(rb_world *world, rb_joint *joint)
 {
     const rb_pulley_data *p = &joint->as.pulley;
-    push_a(world, joint, p->stop_a_impulse - p->impulse);
-    push_b(world, joint, p->stop_b_impulse - p->ratio * p->impulse);
+    rope_rows r = rows_now(world, joint);
+    push_a(world, joint, &r, p->stop_a_impulse - p->impulse);
+    push_b(world, joint, &r, p->stop_b_impulse - p->ratio * p->impulse);
 }
 
-rb_vec2 rb_pulley_impulse_on_b(const rb_joint *joint)
+/* Along side b at the poses now. */
+rb_vec2 rb_pulley_impulse_on_b(const rb_world *world, const rb_joint *joint)
 {
     const rb_pulley_data *p = &joint->as.pulley;
-    return rb_scale(p->stop_b_impulse - p->ratio * p->impulse, p->direction_b);
+    rb_vec2 delta = rb_sub(rb_joint_anchor_b(world, joint), p->ground_b);
+    double length = rb_length(delta);
+    rb_vec2 direction = length > MIN_DIRECTION_LENGTH ? rb_scale(1.0 / length, delta) : rb_v2(0.0, 0.0);
+    return rb_scale(p->stop_b_impulse - p->ratio * p->impulse, direction);
 }
 
 /* The rate at which a side lengthens: u·(v + ω × r). */
@@ -234,22 +244,23 @@ void rb_pulley_solve(rb_world *world, rb_joint *joint, double h)
     const rb_joint_frame *f = &joint->frame;
     const rb_body_state *a = &world->states[joint->body_a];
     const rb_body_state *b = &world->states[joint->body_b];
-    if (p->mass_a > 0.0) {
-        double c = p->length_a - p->min_length;
-        double cdot = side_rate(a, f->ra, p->direction_a);
-        push_a(world, joint, clamp_increment(&p->stop_a_impulse, p->mass_a, cdot, one_sided_bias(world, c, h)));
+    rope_rows r = rows_now(world, joint);
+    if (r.mass_a > 0.0) {
+        double c = r.a.length - p->min_length;
+        double cdot = side_rate(a, f->ra, r.a.direction);
+        push_a(world, joint, &r, clamp_increment(&p->stop_a_impulse, r.mass_a, cdot, one_sided_bias(world, c, h)));
     }
-    if (p->mass_b > 0.0) {
-        double c = p->length_b - p->min_length;
-        double cdot = side_rate(b, f->rb, p->direction_b);
-        push_b(world, joint, clamp_increment(&p->stop_b_impulse, p->mass_b, cdot, one_sided_bias(world, c, h)));
+    if (r.mass_b > 0.0) {
+        double c = r.b.length - p->min_length;
+        double cdot = side_rate(b, f->rb, r.b.direction);
+        push_b(world, joint, &r, clamp_increment(&p->stop_b_impulse, r.mass_b, cdot, one_sided_bias(world, c, h)));
     }
-    if (p->mass > 0.0) {
-        double c = rope_margin(p, p->length_a, p->length_b);
-        double cdot = -side_rate(a, f->ra, p->direction_a) - p->ratio * side_rate(b, f->rb, p->direction_b);
-        double impulse = clamp_increment(&p->impulse, p->mass, cdot, one_sided_bias(world, c, h));
-        push_a(world, joint, -impulse);
-        push_b(world, joint, -p->ratio * impulse);
+    if (r.mass > 0.0) {
+        double c = rope_margin(p, r.a.length, r.b.length);
+        double cdot = -side_rate(a, f->ra, r.a.direction) - p->ratio * side_rate(b, f->rb, r.b.direction);
+        double impulse = clamp_increment(&p->impulse, r.mass, cdot, one_sided_bias(world, c, h));
+        push_a(world, joint, &r, -impulse);
+        push_b(world, joint, &r, -p->ratio * impulse);
     }
 }
 

@@ -140,34 +140,25 @@ typedef struct rb_mouse_data {
     rb_vec2 impulse;
 } rb_mouse_data;
 
+/* A prismatic joint and a pulley keep no per-substep rows: they compute
+ * them from the frame when solved, which keeps their data no larger than
+ * the revolute's and the joint array's stride as it was. */
 typedef struct rb_prismatic_data {
     rb_vec2 local_axis_a; /* unit, in body A's frame */
     double reference_angle;
-    bool enable_lower, enable_upper;
     double lower, upper; /* m */
-    bool enable_motor;
     double motor_speed, max_motor_force;
-    bool enable_spring;
     double spring_hertz, spring_damping_ratio;
     rb_vec2 impulse; /* accumulated: x across the axis (N·s), y about it (N·m·s) */
     double motor_impulse, spring_impulse, lower_impulse, upper_impulse; /* N·s along the axis */
-    /* This substep: */
-    rb_vec2 axis, normal;      /* world; normal = axis turned +90° */
-    double translation;        /* m */
-    double axial_a, axial_b;   /* m, (d + rA) × axis and rB × axis */
-    double normal_a, normal_b; /* m, (d + rA) × normal and rB × normal */
-    double axial_mass;         /* kg, effective mass along the axis with the rigid rows held */
+    bool enable_lower, enable_upper, enable_motor, enable_spring;
 } rb_prismatic_data;
 
 typedef struct rb_pulley_data {
     rb_vec2 ground_a, ground_b; /* m, world */
     double ratio;
-    double constant;   /* m, length_a + ratio·length_b when taut */
-    double min_length; /* m, where a body meets its pulley */
-    /* This substep: */
-    rb_vec2 direction_a, direction_b; /* unit, from each ground anchor to its body anchor; 0 when undefined */
-    double length_a, length_b;        /* m */
-    double mass, mass_a, mass_b;      /* kg, effective masses of the rope and of each body's stop */
+    double constant;                                /* m, length_a + ratio·length_b when taut */
+    double min_length;                              /* m, where a body meets its pulley */
     double impulse, stop_a_impulse, stop_b_impulse; /* N·s, >= 0 */
 } rb_pulley_data;
 
