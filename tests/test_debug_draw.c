@@ -478,3 +478,66 @@ Test(debug_draw, joints_and_their_reactions)
     cr_expect_eq(reactions.segments[0].color, RB_COLOR_JOINT_REACTION);
     destroy_world_and_expect_no_leak(world);
 }
+
+/* Whether recorded segment i joins p and q, either way round (1e-12). */
+static bool segment_joins(const recorder *r, int i, rb_vec2 p, rb_vec2 q)
+{
+    const rb_vec2 p1 = r->segments[i].p1, p2 = r->segments[i].p2;
+    return (rb_distance(p1, p) < 1e-12 && rb_distance(p2, q) < 1e-12) ||
+           (rb_distance(p1, q) < 1e-12 && rb_distance(p2, p) < 1e-12);
+}
+
+static int count_segments(const recorder *r, rb_vec2 p, rb_vec2 q, uint32_t color)
+{
+    int count = 0;
+    for (int i = 0; i < r->segment_count; ++i) {
+        count += r->segments[i].color == color && segment_joins(r, i, p, q);
+    }
+    return count;
+}
+
+/* Before any step (nothing has moved): a prismatic joint along +x from a
+ * static body's anchor at the origin to a box's anchor at (0.3, 0), limits
+ * at -0.5 and 0.5 m, draws its slide from anchor to anchor and a tick
+ * across the axis at each limit, normal_length on each side ((±0.5,
+ * ±0.1)); a pulley with pulleys at (2, 3) and (4, 3) and balls at (2, 0)
+ * and (4, 0) draws the rope's three lines. Besides them each joint draws
+ * its two centre-to-anchor segments: 2 + 3 + 2 + 3 segments in all. */
+Test(debug_draw, prismatic_slides_and_pulley_ropes)
+{
+    rb_world *world = make_world(rb_v2(0.0, -10.0));
+    rb_body_id ground = make_body(world, RB_BODY_STATIC, rb_v2(0.0, 0.0), 0.0);
+    rb_body_id box = make_body(world, RB_BODY_DYNAMIC, rb_v2(0.3, 0.0), 0.0);
+    add_box(world, box, 0.1, 0.1, 1.0);
+    rb_prismatic_joint_def slide = rb_default_prismatic_joint_def();
+    slide.body_a = ground;
+    slide.body_b = box;
+    slide.enable_lower_limit = slide.enable_upper_limit = true;
+    slide.lower_translation = -0.5;
+    slide.upper_translation = 0.5;
+    rb_joint_id joint;
+    cr_assert_eq(rb_prismatic_joint_create(world, &slide, &joint), RB_OK, "%s", rb_last_error());
+    rb_body_id left = make_body(world, RB_BODY_DYNAMIC, rb_v2(2.0, 0.0), 0.0);
+    add_circle(world, left, rb_v2(0.0, 0.0), 0.1, 1.0);
+    rb_body_id right = make_body(world, RB_BODY_DYNAMIC, rb_v2(4.0, 0.0), 0.0);
+    add_circle(world, right, rb_v2(0.0, 0.0), 0.1, 1.0);
+    rb_pulley_joint_def rope = rb_default_pulley_joint_def();
+    cr_assert_eq(rb_pulley_joint_def_between(&rope, world, left, right, rb_v2(2.0, 3.0), rb_v2(4.0, 3.0),
+                                             rb_v2(2.0, 0.0), rb_v2(4.0, 0.0)),
+                 RB_OK, "%s", rb_last_error());
+    cr_assert_eq(rb_pulley_joint_create(world, &rope, &joint), RB_OK, "%s", rb_last_error());
+
+    recorder r = {0};
+    rb_debug_draw draw = recording_draw(&r);
+    draw.draw_joints = true;
+    cr_assert_eq(rb_world_draw(world, &draw), RB_OK, "%s", rb_last_error());
+    cr_expect_eq(r.segment_count, 10, "%d segments, expected 10", r.segment_count);
+    cr_expect_eq(count_segments(&r, rb_v2(0.0, 0.0), rb_v2(0.3, 0.0), RB_COLOR_JOINT), 1, "the slide");
+    const double n = draw.normal_length;
+    cr_expect_eq(count_segments(&r, rb_v2(-0.5, -n), rb_v2(-0.5, n), RB_COLOR_JOINT_LIMIT), 1, "the lower tick");
+    cr_expect_eq(count_segments(&r, rb_v2(0.5, -n), rb_v2(0.5, n), RB_COLOR_JOINT_LIMIT), 1, "the upper tick");
+    cr_expect_eq(count_segments(&r, rb_v2(2.0, 3.0), rb_v2(2.0, 0.0), RB_COLOR_JOINT), 1, "rope side A");
+    cr_expect_eq(count_segments(&r, rb_v2(2.0, 3.0), rb_v2(4.0, 3.0), RB_COLOR_JOINT), 1, "rope over the pulleys");
+    cr_expect_eq(count_segments(&r, rb_v2(4.0, 3.0), rb_v2(4.0, 0.0), RB_COLOR_JOINT), 1, "rope side B");
+    destroy_world_and_expect_no_leak(world);
+}

@@ -106,6 +106,57 @@ static void draw_limit(const rb_world *world, const rb_joint *joint, double limi
                        RB_COLOR_JOINT_LIMIT, draw->context);
 }
 
+/* A prismatic limit is drawn as a tick across the axis where anchor B
+ * stops, normal_length long on each side. */
+static void draw_slide_limit(const rb_world *world, const rb_joint *joint, double limit, const rb_debug_draw *draw)
+{
+    rb_vec2 axis = rb_rotate(world->states[joint->body_a].rotation, joint->as.prismatic.local_axis_a);
+    rb_vec2 stop = rb_mul_add(rb_joint_anchor_a(world, joint), limit, axis);
+    rb_vec2 across = rb_scale(draw->normal_length, rb_left_perp(axis));
+    draw->draw_segment(rb_sub(stop, across), rb_add(stop, across), RB_COLOR_JOINT_LIMIT, draw->context);
+}
+
+/* The lines a joint type adds between its anchors: a distance or mouse
+ * joint's link, a prismatic joint's slide, a pulley's rope. */
+static void draw_joint_lines(const rb_world *world, const rb_joint *joint, rb_vec2 anchor_a, rb_vec2 anchor_b,
+                             const rb_debug_draw *draw)
+{
+    switch (joint->type) {
+    case RB_JOINT_DISTANCE:
+    case RB_JOINT_MOUSE:
+        draw->draw_segment(anchor_a, anchor_b, RB_COLOR_JOINT, draw->context);
+        break;
+    case RB_JOINT_PRISMATIC: {
+        const rb_prismatic_data *p = &joint->as.prismatic;
+        draw->draw_segment(anchor_a, anchor_b, RB_COLOR_JOINT, draw->context);
+        if (p->enable_lower) {
+            draw_slide_limit(world, joint, p->lower, draw);
+        }
+        if (p->enable_upper) {
+            draw_slide_limit(world, joint, p->upper, draw);
+        }
+        break;
+    }
+    case RB_JOINT_PULLEY: {
+        const rb_pulley_data *p = &joint->as.pulley;
+        draw->draw_segment(p->ground_a, anchor_a, RB_COLOR_JOINT, draw->context);
+        draw->draw_segment(p->ground_a, p->ground_b, RB_COLOR_JOINT, draw->context);
+        draw->draw_segment(p->ground_b, anchor_b, RB_COLOR_JOINT, draw->context);
+        break;
+    }
+    case RB_JOINT_REVOLUTE:
+        if (joint->as.revolute.enable_lower) {
+            draw_limit(world, joint, joint->as.revolute.lower, draw);
+        }
+        if (joint->as.revolute.enable_upper) {
+            draw_limit(world, joint, joint->as.revolute.upper, draw);
+        }
+        break;
+    case RB_JOINT_WELD:
+        break;
+    }
+}
+
 static void draw_joint(const rb_world *world, const rb_joint *joint, const rb_debug_draw *draw)
 {
     rb_vec2 anchor_a = rb_joint_anchor_a(world, joint);
@@ -115,15 +166,7 @@ static void draw_joint(const rb_world *world, const rb_joint *joint, const rb_de
             draw->draw_segment(world->states[joint->body_a].center, anchor_a, RB_COLOR_JOINT, draw->context);
         }
         draw->draw_segment(world->states[joint->body_b].center, anchor_b, RB_COLOR_JOINT, draw->context);
-        if (joint->type == RB_JOINT_DISTANCE || joint->type == RB_JOINT_MOUSE) {
-            draw->draw_segment(anchor_a, anchor_b, RB_COLOR_JOINT, draw->context);
-        }
-        if (joint->type == RB_JOINT_REVOLUTE && joint->as.revolute.enable_lower) {
-            draw_limit(world, joint, joint->as.revolute.lower, draw);
-        }
-        if (joint->type == RB_JOINT_REVOLUTE && joint->as.revolute.enable_upper) {
-            draw_limit(world, joint, joint->as.revolute.upper, draw);
-        }
+        draw_joint_lines(world, joint, anchor_a, anchor_b, draw);
     }
     if (draw->draw_joints && draw->draw_point != NULL) {
         draw->draw_point(anchor_a, 4.0, RB_COLOR_JOINT, draw->context);

@@ -178,7 +178,7 @@ double rb_joint_relative_angle(const rb_world *world, const rb_joint *joint, dou
 }
 
 /* Impulses accumulated over the last substep, as forces on body B. */
-static rb_vec2 linear_impulse(const rb_joint *joint)
+static rb_vec2 linear_impulse(const rb_world *world, const rb_joint *joint)
 {
     switch (joint->type) {
     case RB_JOINT_REVOLUTE:
@@ -191,13 +191,17 @@ static rb_vec2 linear_impulse(const rb_joint *joint)
     }
     case RB_JOINT_MOUSE:
         return joint->as.mouse.impulse;
+    case RB_JOINT_PRISMATIC:
+        return rb_prismatic_linear_impulse(world, joint);
+    case RB_JOINT_PULLEY:
+        return rb_pulley_impulse_on_b(world, joint);
     }
     return rb_v2(0.0, 0.0);
 }
 
 rb_vec2 rb_joint_force_on_b(const rb_world *world, const rb_joint *joint)
 {
-    return rb_scale(1.0 / world->last_substep, linear_impulse(joint));
+    return rb_scale(1.0 / world->last_substep, linear_impulse(world, joint));
 }
 
 static double angular_impulse(const rb_joint *joint)
@@ -209,8 +213,11 @@ static double angular_impulse(const rb_joint *joint)
     }
     case RB_JOINT_WELD:
         return joint->as.weld.angular_impulse;
+    case RB_JOINT_PRISMATIC:
+        return rb_prismatic_angular_impulse(joint);
     case RB_JOINT_DISTANCE:
     case RB_JOINT_MOUSE:
+    case RB_JOINT_PULLEY:
         break;
     }
     return 0.0;
@@ -379,6 +386,11 @@ void rb_joints_prepare(rb_world *world, double h)
         case RB_JOINT_MOUSE:
             rb_mouse_prepare(world, joint, h);
             break;
+        case RB_JOINT_PRISMATIC:
+            rb_prismatic_prepare(world, joint, h);
+            break;
+        case RB_JOINT_PULLEY:
+            break; /* its rows are computed when solved */
         }
     }
 }
@@ -402,6 +414,12 @@ void rb_joints_warm_start(rb_world *world)
             break;
         case RB_JOINT_MOUSE:
             rb_mouse_warm_start(world, joint);
+            break;
+        case RB_JOINT_PRISMATIC:
+            rb_prismatic_warm_start(world, joint);
+            break;
+        case RB_JOINT_PULLEY:
+            rb_pulley_warm_start(world, joint);
             break;
         }
     }
@@ -427,6 +445,12 @@ void rb_joints_solve_velocities(rb_world *world, double h, bool backwards)
         case RB_JOINT_MOUSE:
             rb_mouse_solve(world, joint, h);
             break;
+        case RB_JOINT_PRISMATIC:
+            rb_prismatic_solve(world, joint, h);
+            break;
+        case RB_JOINT_PULLEY:
+            rb_pulley_solve(world, joint, h);
+            break;
         }
     }
 }
@@ -449,6 +473,12 @@ bool rb_joints_correct_positions(rb_world *world, bool backwards)
             break;
         case RB_JOINT_DISTANCE:
             within = rb_distance_correct(world, joint);
+            break;
+        case RB_JOINT_PRISMATIC:
+            within = rb_prismatic_correct(world, joint);
+            break;
+        case RB_JOINT_PULLEY:
+            within = rb_pulley_correct(world, joint);
             break;
         case RB_JOINT_MOUSE:
             break; /* soft: it has no position error to remove */
@@ -482,6 +512,15 @@ void rb_joints_reset_impulses(rb_world *world)
         case RB_JOINT_MOUSE:
             joint->as.mouse.impulse = rb_v2(0.0, 0.0);
             break;
+        case RB_JOINT_PRISMATIC: {
+            rb_prismatic_data *p = &joint->as.prismatic;
+            p->impulse = rb_v2(0.0, 0.0);
+            p->motor_impulse = p->spring_impulse = p->lower_impulse = p->upper_impulse = 0.0;
+            break;
+        }
+        case RB_JOINT_PULLEY:
+            joint->as.pulley.impulse = joint->as.pulley.stop_a_impulse = joint->as.pulley.stop_b_impulse = 0.0;
+            break;
         }
     }
 }
@@ -509,6 +548,13 @@ void rb_joints_measure_errors(const rb_world *world, double *max_gap, double *ma
             break;
         case RB_JOINT_DISTANCE:
             *max_gap = fmax(*max_gap, rb_distance_error(world, joint));
+            break;
+        case RB_JOINT_PRISMATIC:
+            *max_gap = fmax(*max_gap, rb_prismatic_gap(world, joint));
+            *max_angle = fmax(*max_angle, rb_prismatic_angle_error(world, joint));
+            break;
+        case RB_JOINT_PULLEY:
+            *max_gap = fmax(*max_gap, rb_pulley_gap(world, joint));
             break;
         case RB_JOINT_MOUSE:
             break; /* soft by design: its offset is not an error */

@@ -16,12 +16,12 @@
  * limit correction). */
 #include "joint_solver.h"
 
-static rb_point_mass make_mass_matrix(const rb_joint_frame *f, rb_vec2 ra, rb_vec2 rb)
+static rb_block_matrix make_mass_matrix(const rb_joint_frame *f, rb_vec2 ra, rb_vec2 rb)
 {
     double m = f->inv_mass_a + f->inv_mass_b;
     double ia = f->inv_inertia_a;
     double ib = f->inv_inertia_b;
-    return (rb_point_mass){
+    return (rb_block_matrix){
         .k11 = m + ia * ra.y * ra.y + ib * rb.y * rb.y,
         .k12 = -ia * ra.x * ra.y - ib * rb.x * rb.y,
         .k22 = m + ia * ra.x * ra.x + ib * rb.x * rb.x,
@@ -29,36 +29,6 @@ static rb_point_mass make_mass_matrix(const rb_joint_frame *f, rb_vec2 ra, rb_ve
         .k23 = ia * ra.x + ib * rb.x,
         .k33 = ia + ib,
     };
-}
-
-/* Solves the 2x2 point block K2·x = v; false when K2 is singular. */
-static bool solve_point(const rb_point_mass *k, rb_vec2 v, rb_vec2 *x)
-{
-    double det = k->k11 * k->k22 - k->k12 * k->k12;
-    if (!(det > 0.0)) {
-        return false;
-    }
-    *x = rb_v2((k->k22 * v.x - k->k12 * v.y) / det, (k->k11 * v.y - k->k12 * v.x) / det);
-    return true;
-}
-
-/* Solves the 3x3 system K·(x, z) = (v, w) by Cramer's rule; false when
- * K is singular (a body that cannot turn makes the angle row redundant). */
-static bool solve_point_and_angle(const rb_point_mass *k, rb_vec2 v, double w, rb_vec2 *x, double *z)
-{
-    double c11 = k->k22 * k->k33 - k->k23 * k->k23;
-    double c12 = k->k13 * k->k23 - k->k12 * k->k33;
-    double c13 = k->k12 * k->k23 - k->k13 * k->k22;
-    double det = k->k11 * c11 + k->k12 * c12 + k->k13 * c13;
-    if (!(fabs(det) > 1e-300)) {
-        return false;
-    }
-    double c22 = k->k11 * k->k33 - k->k13 * k->k13;
-    double c23 = k->k13 * k->k12 - k->k11 * k->k23;
-    double c33 = k->k11 * k->k22 - k->k12 * k->k12;
-    *x = rb_v2((c11 * v.x + c12 * v.y + c13 * w) / det, (c12 * v.x + c22 * v.y + c23 * w) / det);
-    *z = (c13 * v.x + c23 * v.y + c33 * w) / det;
-    return true;
 }
 
 static void apply(const rb_joint *joint, rb_body_state *a, rb_body_state *b, rb_vec2 impulse, double angular)
@@ -104,7 +74,7 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
     rb_body_state *a = rb_joint_state_a(world, joint);
     rb_body_state *b = rb_joint_state_b(world, joint);
     const rb_joint_frame *f = &joint->frame;
-    const rb_point_mass k = f->point_mass;
+    const rb_block_matrix k = f->point_mass;
     rb_vec2 drift = f->point_drift;
     rb_vec2 cdot = rb_sub(rb_joint_relative_velocity(joint, a, b), drift);
     double baumgarte_rate = rb_joint_baumgarte_rate(world, h);
@@ -117,18 +87,18 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
     if (row != NULL) {
         /* The row is s·(ωB - ωA) + bias = 0 with s = ±1; in K its coupling
          * terms take the sign s. */
-        rb_point_mass ks = k;
+        rb_block_matrix ks = k;
         ks.k13 *= row->sign;
         ks.k23 *= row->sign;
         double wdot = row->sign * (b->angular_velocity - a->angular_velocity) + row->bias;
         double angular;
-        if (solve_point_and_angle(&ks, rb_neg(cdot), -wdot, &impulse, &angular)) {
+        if (rb_block_solve3(&ks, rb_neg(cdot), -wdot, &impulse, &angular)) {
             if (row->one_sided && *row->accumulated + angular < 0.0) {
                 /* The limit would pull: release it and hold the pin alone,
                  * net of the release's effect on the point. */
                 angular = -*row->accumulated;
                 rb_vec2 rhs = rb_neg(rb_add(cdot, rb_scale(angular, rb_v2(ks.k13, ks.k23))));
-                if (!solve_point(&k, rhs, &impulse)) {
+                if (!rb_block_solve2(&k, rhs, &impulse)) {
                     impulse = rb_v2(0.0, 0.0);
                 }
             }
@@ -138,7 +108,7 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
             return;
         }
     }
-    if (solve_point(&k, rb_neg(cdot), &impulse)) {
+    if (rb_block_solve2(&k, rb_neg(cdot), &impulse)) {
         *accumulated = rb_add(*accumulated, impulse);
         rb_joint_apply_linear(joint, a, b, impulse);
     }
@@ -153,11 +123,11 @@ double rb_point_constraint_correct(rb_world *world, rb_joint *joint, const doubl
     rb_vec2 rb = rb_rotate(b->rotation, f->local_b);
     rb_vec2 gap = rb_sub(rb_add(b->center, rb), rb_add(a->center, ra));
     double error = rb_length(gap);
-    rb_point_mass k = make_mass_matrix(f, ra, rb);
+    rb_block_matrix k = make_mass_matrix(f, ra, rb);
     rb_vec2 impulse = rb_v2(0.0, 0.0);
     double angular = 0.0;
-    bool solved = angle_error != NULL && solve_point_and_angle(&k, rb_neg(gap), -*angle_error, &impulse, &angular);
-    if (!solved && !solve_point(&k, rb_neg(gap), &impulse)) {
+    bool solved = angle_error != NULL && rb_block_solve3(&k, rb_neg(gap), -*angle_error, &impulse, &angular);
+    if (!solved && !rb_block_solve2(&k, rb_neg(gap), &impulse)) {
         return error;
     }
     a->center = rb_mul_sub(a->center, f->inv_mass_a, impulse);

@@ -76,6 +76,37 @@ rb_vec2 rb_joint_force_on_b(const rb_world *world, const rb_joint *joint);
 /* angle(B) - angle(A) - reference. */
 double rb_joint_relative_angle(const rb_world *world, const rb_joint *joint, double reference);
 
+/* Solves the 2x2 block K2·x = v; false when K2 is not positive definite.
+ * Inline: it runs in the innermost loop of every pin. */
+static inline bool rb_block_solve2(const rb_block_matrix *k, rb_vec2 v, rb_vec2 *x)
+{
+    double det = k->k11 * k->k22 - k->k12 * k->k12;
+    if (!(det > 0.0)) {
+        return false;
+    }
+    *x = rb_v2((k->k22 * v.x - k->k12 * v.y) / det, (k->k11 * v.y - k->k12 * v.x) / det);
+    return true;
+}
+
+/* Solves K·(x, z) = (v, w) by Cramer's rule; false when K is singular
+ * (a body that cannot turn makes an angle row redundant). */
+static inline bool rb_block_solve3(const rb_block_matrix *k, rb_vec2 v, double w, rb_vec2 *x, double *z)
+{
+    double c11 = k->k22 * k->k33 - k->k23 * k->k23;
+    double c12 = k->k13 * k->k23 - k->k12 * k->k33;
+    double c13 = k->k12 * k->k23 - k->k13 * k->k22;
+    double det = k->k11 * c11 + k->k12 * c12 + k->k13 * c13;
+    if (!(fabs(det) > 1e-300)) {
+        return false;
+    }
+    double c22 = k->k11 * k->k33 - k->k13 * k->k13;
+    double c23 = k->k13 * k->k12 - k->k11 * k->k23;
+    double c33 = k->k11 * k->k22 - k->k12 * k->k12;
+    *x = rb_v2((c11 * v.x + c12 * v.y + c13 * w) / det, (c12 * v.x + c22 * v.y + c23 * w) / det);
+    *z = (c13 * v.x + c23 * v.y + c33 * w) / det;
+    return true;
+}
+
 /* The point constraint shared by revolute and weld joints: the anchors
  * coincide. Optionally solved together with one angular row
  * sign·(ωB - ωA) + bias = 0 whose impulse accumulates in *accumulated,
@@ -122,5 +153,27 @@ double rb_distance_error(const rb_world *world, const rb_joint *joint);
 void rb_mouse_prepare(rb_world *world, rb_joint *joint, double h);
 void rb_mouse_warm_start(rb_world *world, rb_joint *joint);
 void rb_mouse_solve(rb_world *world, rb_joint *joint, double h);
+
+void rb_prismatic_prepare(rb_world *world, rb_joint *joint, double h);
+void rb_prismatic_warm_start(rb_world *world, rb_joint *joint);
+void rb_prismatic_solve(rb_world *world, rb_joint *joint, double h);
+bool rb_prismatic_correct(rb_world *world, rb_joint *joint);
+/* Anchor B's distance off the axis or beyond an enabled limit (m, >= 0). */
+double rb_prismatic_gap(const rb_world *world, const rb_joint *joint);
+double rb_prismatic_angle_error(const rb_world *world, const rb_joint *joint); /* rad, >= 0 */
+/* The impulses on body B in the last substep: linear (N·s, world) and
+ * angular (N·m·s). */
+rb_vec2 rb_prismatic_linear_impulse(const rb_world *world, const rb_joint *joint);
+double rb_prismatic_angular_impulse(const rb_joint *joint);
+
+void rb_pulley_warm_start(rb_world *world, rb_joint *joint);
+void rb_pulley_solve(rb_world *world, rb_joint *joint, double h);
+bool rb_pulley_correct(rb_world *world, rb_joint *joint);
+/* How far the rope is longer than its constant, or a body nearer its
+ * pulley than min_length (m, >= 0). */
+double rb_pulley_gap(const rb_world *world, const rb_joint *joint);
+/* The impulse on body B in the last substep, the rope's pull and the
+ * stop's push (N·s, world). */
+rb_vec2 rb_pulley_impulse_on_b(const rb_world *world, const rb_joint *joint);
 
 #endif

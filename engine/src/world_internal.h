@@ -116,10 +116,12 @@ typedef struct rb_event_arrays {
 
 typedef struct rb_contact_constraint rb_contact_constraint;
 
-/* The point constraint's effective-mass matrix K (joint_point.c), symmetric. */
-typedef struct rb_point_mass {
+/* A symmetric 3x3 block K = J·M⁻¹·Jᵀ of three of a joint's rows, whose
+ * upper-left 2x2 is solved alone when the third row is not active
+ * (joint_solver.h). */
+typedef struct rb_block_matrix {
     double k11, k12, k22, k13, k23, k33;
-} rb_point_mass;
+} rb_block_matrix;
 
 /* The parts of a joint's solver state shared by every type, refreshed at
  * the start of each substep. */
@@ -130,8 +132,8 @@ typedef struct rb_joint_frame {
     rb_vec2 ra, rb;           /* m, the same turned into the world, now */
     double omega_a, omega_b;  /* rad/s, the bodies' angular velocities at the start of the substep */
     /* Pins and welds only, fixed for the substep: */
-    rb_point_mass point_mass; /* K at ra, rb */
-    rb_vec2 point_drift;      /* m/s, the anchors' centripetal drift over the substep (joint_point.c) */
+    rb_block_matrix point_mass; /* the point constraint's K at ra, rb (joint_point.c) */
+    rb_vec2 point_drift;        /* m/s, the anchors' centripetal drift over the substep (joint_point.c) */
 } rb_joint_frame;
 
 typedef struct rb_revolute_data {
@@ -173,6 +175,28 @@ typedef struct rb_mouse_data {
     rb_vec2 impulse;
 } rb_mouse_data;
 
+/* A prismatic joint and a pulley keep no per-substep rows: they compute
+ * them from the frame when solved, which keeps their data no larger than
+ * the revolute's and the joint array's stride as it was. */
+typedef struct rb_prismatic_data {
+    rb_vec2 local_axis_a; /* unit, in body A's frame */
+    double reference_angle;
+    double lower, upper; /* m */
+    double motor_speed, max_motor_force;
+    double spring_hertz, spring_damping_ratio;
+    rb_vec2 impulse; /* accumulated: x across the axis (N·s), y about it (N·m·s) */
+    double motor_impulse, spring_impulse, lower_impulse, upper_impulse; /* N·s along the axis */
+    bool enable_lower, enable_upper, enable_motor, enable_spring;
+} rb_prismatic_data;
+
+typedef struct rb_pulley_data {
+    rb_vec2 ground_a, ground_b; /* m, world */
+    double ratio;
+    double constant;                                /* m, length_a + ratio·length_b when taut */
+    double min_length;                              /* m, where a body meets its pulley */
+    double impulse, stop_a_impulse, stop_b_impulse; /* N·s, >= 0 */
+} rb_pulley_data;
+
 /* A cable and, per substep, the direction of a unit tension's impulse on
  * each distinct body of its path. */
 typedef struct rb_cable {
@@ -211,6 +235,8 @@ typedef struct rb_joint {
         rb_weld_data weld;
         rb_distance_data distance;
         rb_mouse_data mouse;
+        rb_prismatic_data prismatic;
+        rb_pulley_data pulley;
     } as;
 } rb_joint;
 

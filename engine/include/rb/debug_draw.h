@@ -29,11 +29,16 @@ typedef struct rb_debug_draw {
     bool draw_contact_points;
     bool draw_contact_normals;
     bool draw_contact_impulses; /* normal impulse as a segment along the normal */
-    bool draw_joints;           /* anchors, and segments from each body's centre to its anchor */
-    bool draw_joint_reactions;  /* reaction force on body B as a segment from its anchor */
-    double force_scale;         /* m per N for reaction forces, default 0.01 */
-    double impulse_scale;       /* m per N·s for impulses, default 0.1 */
-    double normal_length;       /* m, default 0.1 */
+    /* Anchors, segments from each body's centre to its anchor, and each
+     * type's lines: a distance or mouse link, a prismatic slide from
+     * anchor A to anchor B with a tick across the axis at each enabled
+     * limit, a pulley's rope over its two ground anchors, revolute limit
+     * rays. */
+    bool draw_joints;
+    bool draw_joint_reactions; /* reaction force on body B as a segment from its anchor */
+    double force_scale;        /* m per N for reaction forces, default 0.01 */
+    double impulse_scale;      /* m per N·s for impulses, default 0.1 */
+    double normal_length;      /* m, default 0.1 */
     void *context;
 } rb_debug_draw;
 

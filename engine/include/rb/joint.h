@@ -22,10 +22,12 @@
 #include "rb/world.h"
 
 typedef enum rb_joint_type {
-    RB_JOINT_REVOLUTE, /* a pin: the anchors coincide, the bodies turn freely about it */
-    RB_JOINT_WELD,     /* the relative pose is frozen (the seed's glue) */
-    RB_JOINT_DISTANCE, /* bar, spring or rope between the anchors */
-    RB_JOINT_MOUSE,    /* pulls a body point towards a target with a bounded force */
+    RB_JOINT_REVOLUTE,  /* a pin: the anchors coincide, the bodies turn freely about it */
+    RB_JOINT_WELD,      /* the relative pose is frozen (the seed's glue) */
+    RB_JOINT_DISTANCE,  /* bar, spring or rope between the anchors */
+    RB_JOINT_MOUSE,     /* pulls a body point towards a target with a bounded force */
+    RB_JOINT_PRISMATIC, /* body B slides along an axis fixed in body A, without turning */
+    RB_JOINT_PULLEY,    /* a rope over two fixed pulleys: length_a + ratio·length_b at most a constant */
 } rb_joint_type;
 
 /* ---- revolute ------------------------------------------------------------ */
@@ -139,6 +141,92 @@ typedef struct rb_mouse_joint_def {
 rb_mouse_joint_def rb_default_mouse_joint_def(void);
 rb_status rb_mouse_joint_create(rb_world *world, const rb_mouse_joint_def *def, rb_joint_id *out);
 rb_status rb_mouse_joint_set_target(rb_world *world, rb_joint_id joint, rb_vec2 target);
+
+/* ---- prismatic ------------------------------------------------------------ */
+
+/* Body B slides along an axis fixed in body A through anchor A; the
+ * relative angle is held at the reference angle. The joint translation
+ * is s = (anchor B - anchor A)·axis (m), 0 where the anchors coincide. */
+typedef struct rb_prismatic_joint_def {
+    rb_body_id body_a, body_b;
+    rb_vec2 local_anchor_a; /* m, in body A's frame */
+    rb_vec2 local_anchor_b; /* m, in body B's frame */
+    rb_vec2 local_axis_a;   /* in body A's frame: any non-zero finite vector, normalised on creation; default (1, 0) */
+    double reference_angle; /* rad: angle(B) - angle(A) held */
+    /* Limits on the translation; each side is enabled alone. lower <=
+     * upper when both are on. */
+    bool enable_lower_limit, enable_upper_limit;
+    double lower_translation, upper_translation; /* m */
+    /* Motor: drives the translation speed to motor_speed with at most
+     * max_motor_force. */
+    bool enable_motor;
+    double motor_speed;     /* m/s, finite */
+    double max_motor_force; /* N, >= 0 */
+    /* Spring: pulls the translation towards 0 (anchor B on anchor A). */
+    bool enable_spring;
+    double spring_hertz;         /* Hz, >= 0 */
+    double spring_damping_ratio; /* >= 0 */
+    bool collide_connected;      /* whether the two bodies' shapes still collide (default false) */
+    void *user_data;
+} rb_prismatic_joint_def;
+
+rb_prismatic_joint_def rb_default_prismatic_joint_def(void);
+
+/* Fills bodies, local anchors, local axis and the reference angle so that
+ * body B slides along `world_axis` (non-zero) through `world_anchor`, at
+ * translation 0 and with the relative angle it has now. */
+rb_status rb_prismatic_joint_def_at(rb_prismatic_joint_def *def, const rb_world *world, rb_body_id body_a,
+                                    rb_body_id body_b, rb_vec2 world_anchor, rb_vec2 world_axis);
+
+rb_status rb_prismatic_joint_create(rb_world *world, const rb_prismatic_joint_def *def, rb_joint_id *out);
+
+double rb_prismatic_joint_translation(const rb_world *world, rb_joint_id joint); /* m */
+double rb_prismatic_joint_speed(const rb_world *world, rb_joint_id joint);       /* m/s, the translation's rate */
+/* The force the motor applied along the axis in the last step (N). */
+double rb_prismatic_joint_motor_force(const rb_world *world, rb_joint_id joint);
+rb_status rb_prismatic_joint_set_motor(rb_world *world, rb_joint_id joint, bool enable, double speed, double max_force);
+rb_status rb_prismatic_joint_set_limits(rb_world *world, rb_joint_id joint, bool enable_lower, double lower,
+                                        bool enable_upper, double upper);
+rb_status rb_prismatic_joint_set_spring(rb_world *world, rb_joint_id joint, bool enable, double hertz,
+                                        double damping_ratio);
+
+/* ---- pulley ------------------------------------------------------------------ */
+
+/* A rope from anchor A over a pulley at ground_anchor_a, then over one at
+ * ground_anchor_b down to anchor B (the pulleys are fixed world points):
+ * with length_a = |anchor A - ground A| and length_b likewise,
+ *   length_a + ratio·length_b <= constant = def.length_a + ratio·def.length_b.
+ * A rope only pulls: it goes slack when the bodies come closer to their
+ * pulleys. A body meets its pulley min_length from it and stops there
+ * (the pulley pushes back), which keeps the rope's directions defined.
+ * The reaction force is what the joint applied to body B: the rope's pull,
+ * ratio times its tension, plus the push of B's pulley; body A is pulled
+ * by the tension itself (the pulleys take the rest). */
+typedef struct rb_pulley_joint_def {
+    rb_body_id body_a, body_b;
+    rb_vec2 ground_anchor_a, ground_anchor_b; /* m, world */
+    rb_vec2 local_anchor_a, local_anchor_b;   /* m, in each body's frame */
+    double length_a, length_b;                /* m, >= min_length: the rope's two sides when taut */
+    double ratio;                             /* > 0, default 1: how much side A pays out per metre of side B */
+    double min_length;                        /* m, > 0, default 0.05: how near a body comes to its pulley */
+    bool collide_connected;
+    void *user_data;
+} rb_pulley_joint_def;
+
+rb_pulley_joint_def rb_default_pulley_joint_def(void);
+
+/* Fills bodies, ground anchors, local anchors (from the world points
+ * anchor_a and anchor_b) and both lengths from the current poses, so that
+ * the rope is just taut; ratio and min_length are left as they are. */
+rb_status rb_pulley_joint_def_between(rb_pulley_joint_def *def, const rb_world *world, rb_body_id body_a,
+                                      rb_body_id body_b, rb_vec2 ground_anchor_a, rb_vec2 ground_anchor_b,
+                                      rb_vec2 anchor_a, rb_vec2 anchor_b);
+
+rb_status rb_pulley_joint_create(rb_world *world, const rb_pulley_joint_def *def, rb_joint_id *out);
+
+/* The rope's two sides now: |anchor - ground anchor| (m). */
+double rb_pulley_joint_length_a(const rb_world *world, rb_joint_id joint);
+double rb_pulley_joint_length_b(const rb_world *world, rb_joint_id joint);
 
 /* ---- every joint ----------------------------------------------------------- */
 

@@ -81,11 +81,13 @@ typedef struct rb_statistics {
     double max_penetration;  /* m, >= 0: deepest overlap left after the step */
     int joint_count;
     /* m, >= 0, after the step: the largest distance between the two
-     * anchors of a pin or rigid weld, or between a distance joint's length
-     * and what its bar or limits allow. */
+     * anchors of a pin or rigid weld, between a distance joint's length
+     * and what its bar or limits allow, of a prismatic joint's anchor B
+     * off its axis or beyond a limit, or of a pulley's rope beyond its
+     * length or a side beyond its stop. */
     double max_joint_gap;
-    /* rad, >= 0, after the step: the largest rigid weld angle error or
-     * revolute limit violation. */
+    /* rad, >= 0, after the step: the largest rigid weld or prismatic
+     * angle error, or revolute limit violation. */
     double max_joint_angle_error;
     /* J, after the step: the dynamic bodies' kinetic energy ½m·v² + ½I·ω²
      * plus their potential energy -m·(gravity_scale·g)·x in the world's
