@@ -39,7 +39,7 @@ struct mu_model {
     int built_muscle_count;
     rb_joint_id *hinges; /* by description index; null id when not built */
     int joint_count;
-    double time;
+    long substeps_taken; /* since creation; the time is counted, not summed, so it does not drift */
     char warnings[WARNINGS_SIZE];
 };
 
@@ -479,32 +479,50 @@ void mu_model_destroy(mu_model *model)
 
 rb_world *mu_model_world(mu_model *model) { return model->world; }
 const mu_model_desc *mu_model_description(const mu_model *model) { return model->desc; }
-double mu_model_time(const mu_model *model) { return model->time; }
+double mu_model_time(const mu_model *model)
+{
+    return (double)model->substeps_taken / (model->desc->frame_rate * model->desc->substeps);
+}
 double mu_model_frame_duration(const mu_model *model) { return 1.0 / model->desc->frame_rate; }
+double mu_model_substep_duration(const mu_model *model)
+{
+    return 1.0 / (model->desc->frame_rate * model->desc->substeps);
+}
+
+rb_status mu_model_substep(mu_model *model)
+{
+    if (model == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_substep: model is NULL");
+    }
+    double h = mu_model_substep_duration(model);
+    for (int i = 0; i < model->built_muscle_count; ++i) {
+        rb_status status = mu_muscle_prepare(model->muscles[model->built_muscles[i]], model->world, h);
+        if (status != RB_OK) {
+            return status;
+        }
+    }
+    rb_status status = rb_world_step(model->world, h);
+    if (status != RB_OK) {
+        return status;
+    }
+    for (int i = 0; i < model->built_muscle_count; ++i) {
+        mu_muscle_measure(model->muscles[model->built_muscles[i]], model->world);
+    }
+    model->substeps_taken += 1;
+    return RB_OK;
+}
 
 rb_status mu_model_step(mu_model *model)
 {
     if (model == NULL) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_step: model is NULL");
     }
-    int substeps = model->desc->substeps;
-    double h = mu_model_frame_duration(model) / substeps;
-    for (int s = 0; s < substeps; ++s) {
-        for (int i = 0; i < model->built_muscle_count; ++i) {
-            rb_status status = mu_muscle_prepare(model->muscles[model->built_muscles[i]], model->world, h);
-            if (status != RB_OK) {
-                return status;
-            }
-        }
-        rb_status status = rb_world_step(model->world, h);
+    for (int s = 0; s < model->desc->substeps; ++s) {
+        rb_status status = mu_model_substep(model);
         if (status != RB_OK) {
             return status;
         }
-        for (int i = 0; i < model->built_muscle_count; ++i) {
-            mu_muscle_measure(model->muscles[model->built_muscles[i]], model->world);
-        }
     }
-    model->time += mu_model_frame_duration(model);
     return RB_OK;
 }
 
