@@ -7,8 +7,8 @@
 #include <string.h>
 
 #include "chart/chart.h"
+#include "chart/column_label.h"
 #include "cli/option_value.h"
-#include "column_label.h"
 #include "commands.h"
 #include "io/atomic_file.h"
 #include "io/csv_table.h"

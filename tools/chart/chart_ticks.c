@@ -53,20 +53,11 @@ bool chart_nice_ticks(double min, double max, int intervals, chart_ticks *ticks,
         return false;
     }
     double step = nice_step(span / intervals);
-    double first = floor(min / step);
-    double last = ceil(max / step);
-    /* min/step is rounded: make sure the ends do cover [min, max], and
-     * with no tick to spare. */
-    if (first * step > min) {
-        first -= 1.0;
-    } else if ((first + 1.0) * step <= min) {
-        first += 1.0;
-    }
-    if (last * step < max) {
-        last += 1.0;
-    } else if ((last - 1.0) * step >= max) {
-        last -= 1.0;
-    }
+    /* min/step is rounded (0.3/0.1 is 2.9999999999999996): an end within
+     * 1e-9 of a step of a tick counts as on it, so that 0.3 gets the tick
+     * 0.3 rather than a spare one at 0.2. */
+    double first = floor(min / step + 1e-9);
+    double last = ceil(max / step - 1e-9);
     if (last <= first) {
         last = first + 1.0;
     }

@@ -1,6 +1,7 @@
 /* "Nice" axis ticks: steps of 1, 2 or 5 times a power of ten, the first
  * tick at or below the data's minimum and the last at or above its
- * maximum (Heckbert, "Nice numbers for graph labels", Graphics Gems,
+ * maximum, to within 1e-9 of a step, the rounding of a tick's value
+ * (Heckbert, "Nice numbers for graph labels", Graphics Gems,
  * 1990, with the 1-2-5 series and covering ends).
  */
 #ifndef CHART_CHART_TICKS_H
@@ -21,7 +22,8 @@ typedef struct chart_ticks {
 /* Ticks covering [min, max] (finite, min <= max) with about `intervals`
  * intervals (1 .. CHART_MAX_TICK_INTERVALS; the step is the nice number
  * nearest (max - min)/intervals, so there may be up to about twice as
- * many or half as many). Equal ends get a range around their value: ±5 %
+ * many or half as many). Ends equal to within 1e-12 of their magnitude
+ * get a range around their value: ±5 %
  * of it, or ±1 about 0. Fails, with `error` saying why, on a NaN or an
  * infinite end, min > max, or a range so wide its width overflows. */
 bool chart_nice_ticks(double min, double max, int intervals, chart_ticks *ticks, char *error, size_t error_size);

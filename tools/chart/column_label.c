@@ -1,7 +1,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "column_label.h"
+#include "chart/column_label.h"
 
 /* The unit suffixes sinew writes, longest first so that "_m_s" is read as
  * metres per second and not as seconds. */

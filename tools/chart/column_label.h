@@ -3,8 +3,8 @@
  * "velocity_m_s" (recorder.h), or in brackets, "force [N]". A label reads
  * "time (s)", "Biceps Long.total force (N)", "force (N)".
  */
-#ifndef SINEW_COLUMN_LABEL_H
-#define SINEW_COLUMN_LABEL_H
+#ifndef CHART_COLUMN_LABEL_H
+#define CHART_COLUMN_LABEL_H
 
 #include <stdbool.h>
 #include <stddef.h>
