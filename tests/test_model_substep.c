@@ -1,0 +1,42 @@
+/* mu_model_substep: a frame is the model's substeps, so stepping
+ * substep by substep gives the very state mu_model_step gives, and the
+ * model's time counts substeps without drifting.
+ */
+#include <criterion/criterion.h>
+#include <string.h>
+
+#include "mu/model.h"
+
+Test(model_substep, substeps_add_up_to_frames_bit_for_bit)
+{
+    mu_model_desc *desc = NULL;
+    cr_assert_eq(mu_model_desc_load_builtin("arm", &desc), RB_OK, "%s", rb_last_error());
+    mu_model_options options = mu_default_model_options();
+    mu_model *by_frame = NULL, *by_substep = NULL;
+    cr_assert_eq(mu_model_create(desc, &options, &by_frame), RB_OK, "%s", rb_last_error());
+    cr_assert_eq(mu_model_create(desc, &options, &by_substep), RB_OK, "%s", rb_last_error());
+    cr_assert_eq(mu_model_set_activation(by_frame, "Biceps Short", 0.7), RB_OK);
+    cr_assert_eq(mu_model_set_activation(by_substep, "Biceps Short", 0.7), RB_OK);
+    const int frames = 120;
+    for (int f = 0; f < frames; ++f) {
+        cr_assert_eq(mu_model_step(by_frame), RB_OK, "%s", rb_last_error());
+        for (int s = 0; s < desc->substeps; ++s) {
+            cr_assert_eq(mu_model_substep(by_substep), RB_OK, "%s", rb_last_error());
+        }
+    }
+    cr_expect_eq(rb_world_state_hash(mu_model_world(by_frame)), rb_world_state_hash(mu_model_world(by_substep)));
+    cr_expect_eq(mu_model_muscle_readout(by_frame, 0).total_force, mu_model_muscle_readout(by_substep, 0).total_force);
+    /* 120 frames at 60 Hz: 2 s exactly, counted rather than summed. */
+    cr_expect_eq(mu_model_time(by_frame), 2.0);
+    cr_expect_eq(mu_model_time(by_substep), 2.0);
+    cr_expect_eq(mu_model_substep_duration(by_frame), 1.0 / (desc->frame_rate * desc->substeps));
+    /* One substep further: a tenth of a frame later. */
+    cr_assert_eq(mu_model_substep(by_substep), RB_OK);
+    cr_expect_float_eq(mu_model_time(by_substep), 2.0 + 1.0 / 600.0, 1e-15);
+    cr_expect_neq(mu_model_substep(NULL), RB_OK);
+    cr_expect(strstr(rb_last_error(), "mu_model_substep") != NULL, "%s", rb_last_error());
+    mu_model_destroy(by_frame);
+    mu_model_destroy(by_substep);
+    mu_model_desc_destroy(desc);
+    cr_expect_eq(rb_bytes_in_use(), 0);
+}
