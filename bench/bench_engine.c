@@ -213,6 +213,7 @@ static bool bench_world_create(bench_scene scene, const bench_options *opts, ben
     *bw = (bench_world){.world = NULL};
     rb_world_def def = rb_default_world_def();
     def.gravity = rb_v2(0.0, scene == BENCH_BALLS ? BENCH_BALLS_GRAVITY : BENCH_PYRAMID_GRAVITY);
+    def.enable_sleep = false; /* as the peers run: every body simulated every step */
     if (opts->velocity_iterations > 0) {
         def.solver.velocity_iterations = opts->velocity_iterations;
     }

@@ -393,6 +393,7 @@ static bool bench_world_create(bench_scene scene, const bench_setting *setting, 
     *bw = (bench_world){.scene = scene, .world = NULL};
     rb_world_def def = rb_default_world_def();
     def.gravity = rb_v2(0.0, BENCH_GRAVITY);
+    def.enable_sleep = false; /* as the peers run: every body simulated every step */
     def.solver.position_correction = setting->method;
     def.solver.velocity_iterations = setting->velocity_iterations;
     def.solver.position_iterations = setting->position_iterations;

@@ -447,6 +447,54 @@ Test(contacts, sensor_detects_overlap_but_never_pushes)
     destroy_world_and_expect_no_leak(world);
 }
 
+Test(contacts, a_moving_sensor_finds_a_solid_shape_created_later)
+{
+    /* The models' bones are sensors on moving bodies, their nails solid
+     * static boxes. While every shape is a sensor no pair can exist; a
+     * solid shape created later must still be found. A sensor ball of
+     * radius 0.25 falls from y = 1 in zero gravity at 1 m/s; after 10
+     * steps a static box spanning y = -0.1 .. 0.1 appears below it, and
+     * the ball overlaps it once its bottom passes y = 0.1 (t > 0.65 s). */
+    rb_world *world = make_world(rb_v2(0.0, 0.0));
+    rb_body_id ball = make_body(world, RB_BODY_DYNAMIC, rb_v2(0.0, 1.0), 0.0);
+    cr_assert_eq(rb_body_set_linear_velocity(world, ball, rb_v2(0.0, -1.0)), RB_OK);
+    rb_circle circle = {{0.0, 0.0}, 0.25};
+    rb_shape_def def = rb_default_shape_def();
+    def.is_sensor = true;
+    rb_shape_id sensor;
+    cr_assert_eq(rb_shape_create_circle(world, ball, &def, &circle, &sensor), RB_OK, "%s", rb_last_error());
+    step_world(world, TEST_DT, 10);
+    rb_body_id nail = make_body(world, RB_BODY_STATIC, rb_v2(0.0, 0.0), 0.0);
+    rb_shape_id box = add_box(world, nail, 0.5, 0.1, 0.0);
+    int first_overlap = -1;
+    for (int n = 11; n <= 60 && first_overlap < 0; ++n) {
+        step_world(world, TEST_DT, 1);
+        rb_shape_id found[2];
+        if (rb_shape_sensor_overlaps(world, sensor, found, 2) == 1) {
+            cr_expect(rb_shape_id_equals(found[0], box));
+            first_overlap = n;
+        }
+    }
+    /* The bottom is at 0.75 - t: below 0.1 from t = 0.65 s, first seen after step 40. */
+    cr_expect_eq(first_overlap, 40, "first overlap after step %d", first_overlap);
+    destroy_world_and_expect_no_leak(world);
+}
+
+Test(contacts, a_shape_bounding_box_follows_its_body)
+{
+    /* A 0.2 x 0.1 m half-extent box turned 90 degrees at (1, 2): its box
+     * spans 0.1 m in x and 0.2 m in y about the centre, also right after
+     * the body is moved, before any step. */
+    rb_world *world = make_world(rb_v2(0.0, 0.0));
+    rb_body_id body = make_body(world, RB_BODY_DYNAMIC, rb_v2(0.0, 0.0), 0.0);
+    rb_shape_id shape = add_box(world, body, 0.2, 0.1, 1.0);
+    cr_assert_eq(rb_body_set_transform(world, body, rb_v2(1.0, 2.0), 0.5 * RB_PI), RB_OK);
+    rb_aabb box = rb_shape_aabb(world, shape);
+    expect_vec_near(box.lower, rb_v2(0.9, 1.8), 1e-12, "lower corner");
+    expect_vec_near(box.upper, rb_v2(1.1, 2.2), 1e-12, "upper corner");
+    destroy_world_and_expect_no_leak(world);
+}
+
 /* ---- Collision filters ----------------------------------------------------
  *
  * A ball of radius 0.25 whose lowest point is 0.5 m above a ground box (top

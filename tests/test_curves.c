@@ -380,6 +380,32 @@ Test(curves, nan_in_nan_out)
     cr_expect(isnan(mu_curve_velocity(NULL, 0.0)), "f_V of NULL curves");
 }
 
+Test(curves, hinted_look_ups_equal_plain_ones)
+{
+    /* A hint only changes where GSL's search starts: the values must be
+     * bit-identical however far the inputs jump, back and forth across
+     * each table, and with a hint left by a longer table (out of range
+     * indices). The inputs follow a deterministic irregular walk. */
+    for (size_t i = 0; i < 2; i++) {
+        mu_curves *curves = seed_tables(interpolations[i]);
+        mu_curve_hint hint = {0};
+        double x = 0.0;
+        for (int n = 0; n < 2000; n++) {
+            x = fmod(x + 0.137 + 0.5 * sin(n), 4.0);
+            const double l = x - 0.5;     /* -0.5 .. 3.5: the length tables and beyond */
+            const double v = 0.8 * x - 2; /* -2 .. 1.2: the velocity table and beyond */
+            cr_expect_eq(mu_curve_active_length_hinted(curves, &hint, l), mu_curve_active_length(curves, l));
+            cr_expect_eq(mu_curve_passive_length_hinted(curves, &hint, l), mu_curve_passive_length(curves, l));
+            cr_expect_eq(mu_curve_velocity_hinted(curves, &hint, v), mu_curve_velocity(curves, v));
+            cr_expect_eq(mu_curve_velocity_slope_hinted(curves, &hint, v), mu_curve_velocity_slope(curves, v));
+            if (n == 1000) {
+                hint = (mu_curve_hint){{1000, 1000, 1000}};
+            }
+        }
+        mu_curves_destroy(curves);
+    }
+}
+
 /* A scratch directory for one test's files, removed by remove_scratch. */
 typedef struct scratch {
     char directory[64];

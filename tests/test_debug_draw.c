@@ -127,6 +127,9 @@ typedef struct scene {
 static scene make_scene(void)
 {
     scene s = {.world = make_world(rb_default_world_def().gravity)};
+    /* The resting box and ball would fall asleep: the scene is drawn
+     * awake, and sleeping_bodies_are_drawn_grey puts them to sleep. */
+    cr_assert_eq(rb_world_enable_sleep(s.world, false), RB_OK);
     s.ground = make_body(s.world, RB_BODY_STATIC, rb_v2(0.0, -1.0), 0.0);
     s.shapes[0] = add_box(s.world, s.ground, 10.0, 1.0, 1.0);
     s.box = make_body(s.world, RB_BODY_DYNAMIC, rb_v2(BOX_X, 0.5), 0.0);
@@ -167,6 +170,26 @@ static void expect_box_corners(const polygon_record *p, rb_transform xf, double 
         }
         cr_expect_eq(matches, 1, "%s: corner (%g, %g) drawn %d times", what, corner.x, corner.y, matches);
     }
+}
+
+Test(debug_draw, sleeping_bodies_are_drawn_grey)
+{
+    scene s = make_scene();
+    cr_assert_eq(rb_world_enable_sleep(s.world, true), RB_OK);
+    step_world(s.world, TEST_DT, 60);
+    cr_assert(!rb_body_is_awake(s.world, s.box) && !rb_body_is_awake(s.world, s.ball), "the scene rests: it sleeps");
+    recorder r = {0};
+    rb_debug_draw draw = recording_draw(&r);
+    draw.draw_shapes = true;
+    draw_world(&s, &draw);
+    expect_counts(&r, 2, 1, 0, 0);
+    int grey = 0;
+    for (int i = 0; i < r.polygon_count; ++i) {
+        grey += r.polygons[i].color == RB_COLOR_SLEEPING;
+    }
+    cr_expect_eq(grey, 1, "the box is drawn grey, the static ground in its own colour");
+    cr_expect(r.circle_count == 1 && r.circles[0].color == RB_COLOR_SLEEPING, "the ball is drawn grey");
+    destroy_world_and_expect_no_leak(s.world);
 }
 
 Test(debug_draw, shapes_draw_one_polygon_per_box_and_one_circle)

@@ -93,3 +93,36 @@ Test(stacking, base_twenty_pyramid_stands_for_ten_seconds)
     expect_shallow(world, deepest);
     destroy_world_and_expect_no_leak(world);
 }
+
+/* ---- Memory in the steady state ---------------------------------------------
+ *
+ * Once a scene has run for a while, its arrays (contacts, constraints,
+ * pairs, islands) have reached their size: a step must then take no heap
+ * memory at all, so that a long run never pays for the allocator or
+ * fragments it. rb_allocation_count() counts every allocation the engine
+ * makes. */
+
+static void expect_no_allocation_in_steady_steps(rb_world *world, const char *what)
+{
+    cr_assert_eq(rb_world_enable_sleep(world, false), RB_OK, "every body stays simulated");
+    step_world(world, TEST_DT, 60);
+    const uint64_t before = rb_allocation_count();
+    step_world(world, TEST_DT, 60);
+    cr_expect_eq(rb_allocation_count(), before, "%s: %llu allocations in 60 steady steps", what,
+                 (unsigned long long)(rb_allocation_count() - before));
+}
+
+Test(stacking, steady_steps_allocate_nothing)
+{
+    rb_world *world = make_world(rb_v2(0.0, -10.0));
+    scene_pyramid pyramid;
+    cr_assert_eq(scene_pyramid_create(world, 20, &pyramid), RB_OK, "%s", rb_last_error());
+    expect_no_allocation_in_steady_steps(world, "pyramid 20");
+    destroy_world_and_expect_no_leak(world);
+
+    world = make_world(rb_v2(0.0, -10.0));
+    scene_joint_grid grid;
+    cr_assert_eq(scene_joint_grid_create(world, 20, &grid), RB_OK, "%s", rb_last_error());
+    expect_no_allocation_in_steady_steps(world, "joint grid 20");
+    destroy_world_and_expect_no_leak(world);
+}

@@ -4,6 +4,7 @@
 
 #include "allocator.h"
 #include "error.h"
+#include "sleep.h"
 #include "world_internal.h"
 
 rb_body_def rb_default_body_def(void)
@@ -12,6 +13,7 @@ rb_body_def rb_default_body_def(void)
         .type = RB_BODY_STATIC,
         .gravity_scale = 1.0,
         .awake = true,
+        .enable_sleep = true,
     };
 }
 
@@ -72,6 +74,8 @@ rb_status rb_body_create(rb_world *world, const rb_body_def *def, rb_body_id *ou
     body->gravity_scale = def->gravity_scale;
     body->fixed_rotation = def->fixed_rotation;
     body->awake = def->awake;
+    body->enable_sleep = def->enable_sleep;
+    body->sleep_time = 0.0;
     body->bullet = def->bullet;
     body->user_data = def->user_data;
     body->first_shape = -1;
@@ -127,6 +131,11 @@ static double shape_extent(const rb_shape *shape, rb_vec2 local_center)
     if (shape->type == RB_SHAPE_CIRCLE) {
         return rb_distance(shape->geometry.circle.center, local_center) + shape->geometry.circle.radius;
     }
+    if (shape->type == RB_SHAPE_SEGMENT || shape->type == RB_SHAPE_CHAIN_SEGMENT) {
+        const rb_segment *segment =
+            shape->type == RB_SHAPE_SEGMENT ? &shape->geometry.segment : &shape->geometry.chain_segment.segment;
+        return fmax(rb_distance(segment->point1, local_center), rb_distance(segment->point2, local_center));
+    }
     double extent = 0.0;
     for (int i = 0; i < shape->geometry.polygon.count; ++i) {
         extent = fmax(extent, rb_distance(shape->geometry.polygon.vertices[i], local_center));
@@ -141,6 +150,9 @@ static rb_mass_data shapes_mass(const rb_world *world, const rb_body *body)
     double inertia_at_origin = 0.0;
     for (int s = body->first_shape; s >= 0; s = world->shapes[s].next_in_body) {
         const rb_shape *shape = &world->shapes[s];
+        if (shape->type != RB_SHAPE_CIRCLE && shape->type != RB_SHAPE_POLYGON) {
+            continue; /* segments have no area, hence no mass */
+        }
         rb_mass_data m = shape->type == RB_SHAPE_CIRCLE ? rb_circle_mass(&shape->geometry.circle, shape->density)
                                                         : rb_polygon_mass(&shape->geometry.polygon, shape->density);
         mass += m.mass;
@@ -239,6 +251,7 @@ BODY_GETTER(double, rb_body_angular_damping, 0.0, body->angular_damping)
 BODY_GETTER(double, rb_body_gravity_scale, 0.0, body->gravity_scale)
 BODY_GETTER(bool, rb_body_is_fixed_rotation, false, body->fixed_rotation)
 BODY_GETTER(bool, rb_body_is_awake, false, body->awake)
+BODY_GETTER(bool, rb_body_is_sleep_enabled, false, body->enable_sleep)
 BODY_GETTER(bool, rb_body_is_bullet, false, body->bullet)
 BODY_GETTER(void *, rb_body_user_data, NULL, body->user_data)
 BODY_GETTER(int, rb_body_shape_count, 0, body->shape_count)
@@ -436,6 +449,13 @@ static rb_status check_shapes_have_mass(const rb_world *world, int index, const 
         return RB_OK;
     }
     for (int s = body->first_shape; s >= 0; s = world->shapes[s].next_in_body) {
+        rb_shape_type type = world->shapes[s].type;
+        if (type == RB_SHAPE_SEGMENT || type == RB_SHAPE_CHAIN_SEGMENT) {
+            return rb_report_error(RB_ERR_NO_MASS,
+                                   "%s: shape %d is a segment (no mass) on a dynamic body without a mass override; "
+                                   "expected rb_body_set_mass_data first",
+                                   function, s);
+        }
         if (!(world->shapes[s].density > 0.0)) {
             return rb_report_error(RB_ERR_NO_MASS,
                                    "%s: shape %d has density %g on a dynamic body without a mass override; "
@@ -535,13 +555,26 @@ rb_status rb_body_set_awake(rb_world *world, rb_body_id id, bool awake)
     int index;
     RB_TRY(find_for_change(world, id, "rb_body_set_awake", &index));
     rb_body *body = &world->bodies[index];
-    body->awake = awake;
-    if (!awake) {
+    if (awake) {
+        rb_body_wake(world, index);
+    } else {
+        body->awake = false;
         /* A body put to sleep stops where it is. */
         world->states[index].linear_velocity = rb_v2(0.0, 0.0);
         world->states[index].angular_velocity = 0.0;
         body->force = rb_v2(0.0, 0.0);
         body->torque = 0.0;
+    }
+    return RB_OK;
+}
+
+rb_status rb_body_enable_sleep(rb_world *world, rb_body_id id, bool enable)
+{
+    int index;
+    RB_TRY(find_for_change(world, id, "rb_body_enable_sleep", &index));
+    world->bodies[index].enable_sleep = enable;
+    if (!enable) {
+        rb_body_wake(world, index);
     }
     return RB_OK;
 }

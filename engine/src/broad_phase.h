@@ -8,6 +8,15 @@
  * world->pairs, sorted by (body_key, shape_key). */
 rb_status rb_broad_phase_update_pairs(rb_world *world, double dt);
 
+/* Called for each shape found; return false to stop. */
+typedef bool rb_broad_phase_visit_fn(const rb_world *world, int shape, void *context);
+
+/* Visits every live shape whose tight box at the bodies' current poses
+ * overlaps `box`, in increasing shape index, until `visit` returns false.
+ * The world queries (query.c) find their candidates through this one
+ * function, so another broad phase only has to provide it. */
+void rb_broad_phase_query(const rb_world *world, rb_aabb box, rb_broad_phase_visit_fn *visit, void *context);
+
 /* Whether two shapes may ever touch: different bodies, at least one of
  * them dynamic, not two sensors, and their filters agree. */
 bool rb_should_collide(const rb_world *world, int shape_a, int shape_b);

@@ -131,7 +131,7 @@ rb_status rb_cable_set_tension_law(rb_world *world, rb_cable_id id, double base_
     rb_clear_error();
     int index = -1;
     RB_TRY(find_cable(world, id, f, &index));
-    RB_TRY(rb_world_check_unlocked(world, f));
+    RB_TRY(rb_world_check_unlocked_or_in_substep_callback(world, f));
     RB_TRY(rb_check_finite(f, "base_tension", base_tension));
     RB_TRY(rb_check_range(f, "damping", damping, 0.0, DBL_MAX));
     rb_cable *cable = &world->cables[index];

@@ -1,9 +1,11 @@
 /* Contacts: created and dropped as broad-phase pairs come and go, given
- * a manifold each step, and carrying solver impulses between steps. */
+ * a manifold each step, carrying solver impulses between steps, and
+ * reporting when they begin and end touching. */
 #include <assert.h>
 
 #include "allocator.h"
 #include "contact.h"
+#include "contact_events.h"
 #include "error.h"
 
 static int compare_pair_keys(const rb_pair *p, const rb_pair *q)
@@ -26,9 +28,11 @@ static rb_contact new_contact(const rb_world *world, const rb_pair *pair)
     };
 }
 
-/* Both lists are sorted by key, so one merge pass matches them. */
+/* Both lists are sorted by key, so one merge pass matches them; an old
+ * contact the merge passes over has lost its pair and ends. */
 rb_status rb_contacts_update(rb_world *world)
 {
+    RB_TRY(rb_contact_events_start_step(world));
     if (rb_grow_array((void **)&world->spare_contacts, &world->spare_capacity, world->pair_count,
                       sizeof *world->spare_contacts) != 0) {
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for contacts");
@@ -37,10 +41,14 @@ rb_status rb_contacts_update(rb_world *world)
     for (int i = 0; i < world->pair_count; ++i) {
         const rb_pair *pair = &world->pairs[i];
         while (old < world->contact_count && compare_pair_keys(&world->contacts[old].pair, pair) < 0) {
+            rb_contact_events_drop(world, &world->contacts[old]);
             ++old;
         }
         bool kept = old < world->contact_count && compare_pair_keys(&world->contacts[old].pair, pair) == 0;
-        world->spare_contacts[i] = kept ? world->contacts[old] : new_contact(world, pair);
+        world->spare_contacts[i] = kept ? world->contacts[old++] : new_contact(world, pair);
+    }
+    for (; old < world->contact_count; ++old) {
+        rb_contact_events_drop(world, &world->contacts[old]);
     }
     assert(world->pair_count <= world->spare_capacity);
     rb_contact *swap = world->contacts;
@@ -50,13 +58,45 @@ rb_status rb_contacts_update(rb_world *world)
     world->spare_contacts = swap;
     world->spare_capacity = swap_capacity;
     world->contact_count = world->pair_count;
-    return RB_OK;
+    return rb_contact_events_reserve_begins(world);
 }
 
-static rb_manifold flip_manifold(rb_manifold m)
+/* A manifold computed with the shapes swapped, told from A to B again:
+ * the normal turns round, and between outlines (polygons, segments) the
+ * reference face changes side, so the flip bit of each id does too.
+ * Circle points keep id 0. */
+static rb_manifold flip_manifold(rb_manifold m, bool outlines)
 {
     m.normal = rb_neg(m.normal);
+    for (int i = 0; outlines && i < m.point_count; ++i) {
+        m.points[i].id ^= rb_feature_id(1, 0, 0, 0);
+    }
     return m;
+}
+
+/* The manifold with a segment or chain segment `s` as shape A. */
+static rb_manifold collide_segment(const rb_shape *s, rb_transform xfs, const rb_shape *other, rb_transform xfo,
+                                   double speculative_distance)
+{
+    bool chain = s->type == RB_SHAPE_CHAIN_SEGMENT;
+    if (other->type == RB_SHAPE_CIRCLE) {
+        return chain ? rb_collide_chain_segment_and_circle(&s->geometry.chain_segment, xfs, &other->geometry.circle,
+                                                           xfo, speculative_distance)
+                     : rb_collide_segment_and_circle(&s->geometry.segment, xfs, &other->geometry.circle, xfo,
+                                                     speculative_distance);
+    }
+    if (other->type == RB_SHAPE_POLYGON) {
+        return chain ? rb_collide_chain_segment_and_polygon(&s->geometry.chain_segment, xfs, &other->geometry.polygon,
+                                                            xfo, speculative_distance)
+                     : rb_collide_segment_and_polygon(&s->geometry.segment, xfs, &other->geometry.polygon, xfo,
+                                                      speculative_distance);
+    }
+    return (rb_manifold){0}; /* segments do not collide with segments */
+}
+
+static bool is_segment(const rb_shape *shape)
+{
+    return shape->type == RB_SHAPE_SEGMENT || shape->type == RB_SHAPE_CHAIN_SEGMENT;
 }
 
 static rb_manifold compute_manifold(const rb_world *world, const rb_contact *contact, double speculative_distance)
@@ -65,6 +105,12 @@ static rb_manifold compute_manifold(const rb_world *world, const rb_contact *con
     const rb_shape *b = &world->shapes[contact->pair.shape_b];
     rb_transform xfa = rb_body_origin_transform(world, a->body);
     rb_transform xfb = rb_body_origin_transform(world, b->body);
+    if (is_segment(a)) {
+        return collide_segment(a, xfa, b, xfb, speculative_distance);
+    }
+    if (is_segment(b)) {
+        return flip_manifold(collide_segment(b, xfb, a, xfa, speculative_distance), a->type == RB_SHAPE_POLYGON);
+    }
     if (a->type == RB_SHAPE_CIRCLE && b->type == RB_SHAPE_CIRCLE) {
         return rb_collide_circles(&a->geometry.circle, xfa, &b->geometry.circle, xfb, speculative_distance);
     }
@@ -73,7 +119,8 @@ static rb_manifold compute_manifold(const rb_world *world, const rb_contact *con
     }
     if (a->type == RB_SHAPE_CIRCLE && b->type == RB_SHAPE_POLYGON) {
         return flip_manifold(
-            rb_collide_polygon_and_circle(&b->geometry.polygon, xfb, &a->geometry.circle, xfa, speculative_distance));
+            rb_collide_polygon_and_circle(&b->geometry.polygon, xfb, &a->geometry.circle, xfa, speculative_distance),
+            false);
     }
     return rb_collide_polygons(&a->geometry.polygon, xfa, &b->geometry.polygon, xfb, speculative_distance);
 }
@@ -131,6 +178,12 @@ void rb_contacts_collide(rb_world *world, double dt)
         contact->friction = sqrt(a->friction * b->friction);
         contact->restitution = fmax(a->restitution, b->restitution);
         contact->touching = manifold_touches(&fresh);
+        if (!contact->sensor) {
+            rb_contact_events_update(world, contact);
+            if (fresh.point_count > 0 && !rb_contact_events_pre_solve(world, contact)) {
+                contact->manifold.point_count = 0; /* disabled for this step */
+            }
+        }
 
         /* A moving body that reaches a sleeping one wakes it. */
         rb_body *body_a = &world->bodies[contact->body_a];
@@ -152,12 +205,14 @@ void rb_contacts_update_sensors(rb_world *world)
         if (contact->sensor) {
             contact->manifold = compute_manifold(world, contact, 0.0);
             contact->touching = manifold_touches(&contact->manifold);
+            rb_contact_events_update_sensor(world, contact);
         }
     }
 }
 
-void rb_contacts_remove_shape(rb_world *world, int shape)
+rb_status rb_contacts_remove_shape(rb_world *world, int shape)
 {
+    RB_TRY(rb_contact_events_remove_shape(world, shape));
     int kept = 0;
     for (int i = 0; i < world->contact_count; ++i) {
         const rb_contact *c = &world->contacts[i];
@@ -166,4 +221,5 @@ void rb_contacts_remove_shape(rb_world *world, int shape)
         }
     }
     world->contact_count = kept;
+    return RB_OK;
 }

@@ -39,18 +39,32 @@ static void draw_shape(const rb_world *world, int index, const rb_debug_draw *dr
     const rb_body *body = &world->bodies[shape->body];
     rb_transform xf = rb_body_origin_transform(world, shape->body);
     uint32_t color = shape_color(body, shape);
-    if (shape->type == RB_SHAPE_CIRCLE) {
+    switch (shape->type) {
+    case RB_SHAPE_CIRCLE:
         if (draw->draw_circle != NULL) {
             draw->draw_circle(rb_transform_point(xf, shape->geometry.circle.center), shape->geometry.circle.radius,
                               rb_rotate(xf.q, rb_v2(1.0, 0.0)), color, draw->context);
         }
-    } else if (draw->draw_polygon != NULL) {
-        rb_vec2 vertices[RB_MAX_POLYGON_VERTICES];
-        const rb_polygon *polygon = &shape->geometry.polygon;
-        for (int i = 0; i < polygon->count; ++i) {
-            vertices[i] = rb_transform_point(xf, polygon->vertices[i]);
+        break;
+    case RB_SHAPE_POLYGON:
+        if (draw->draw_polygon != NULL) {
+            rb_vec2 vertices[RB_MAX_POLYGON_VERTICES];
+            const rb_polygon *polygon = &shape->geometry.polygon;
+            for (int i = 0; i < polygon->count; ++i) {
+                vertices[i] = rb_transform_point(xf, polygon->vertices[i]);
+            }
+            draw->draw_polygon(vertices, polygon->count, color, draw->context);
         }
-        draw->draw_polygon(vertices, polygon->count, color, draw->context);
+        break;
+    case RB_SHAPE_SEGMENT:
+    case RB_SHAPE_CHAIN_SEGMENT:
+        if (draw->draw_segment != NULL) {
+            const rb_segment *segment =
+                shape->type == RB_SHAPE_SEGMENT ? &shape->geometry.segment : &shape->geometry.chain_segment.segment;
+            draw->draw_segment(rb_transform_point(xf, segment->point1), rb_transform_point(xf, segment->point2), color,
+                               draw->context);
+        }
+        break;
     }
 }
 
@@ -138,7 +152,7 @@ rb_status rb_world_draw(const rb_world *world, const rb_debug_draw *draw)
             draw_shape(world, i, draw);
         }
         if (draw->draw_aabbs && draw->draw_polygon != NULL) {
-            draw_aabb(world->shapes[i].aabb, draw);
+            draw_aabb(rb_shape_tight_aabb(world, i), draw);
         }
     }
     if (draw->draw_mass && draw->draw_transform != NULL) {

@@ -308,3 +308,10 @@ rb_aabb rb_polygon_aabb(const rb_polygon *polygon, rb_transform xf)
     }
     return (rb_aabb){lower, upper};
 }
+
+rb_aabb rb_segment_aabb(const rb_segment *segment, rb_transform xf)
+{
+    rb_vec2 p1 = rb_transform_point(xf, segment->point1);
+    rb_vec2 p2 = rb_transform_point(xf, segment->point2);
+    return (rb_aabb){rb_vmin(p1, p2), rb_vmax(p1, p2)};
+}

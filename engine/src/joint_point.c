@@ -16,16 +16,12 @@
  * limit correction). */
 #include "joint_solver.h"
 
-typedef struct mass_matrix {
-    double k11, k12, k22, k13, k23, k33;
-} mass_matrix;
-
-static mass_matrix make_mass_matrix(const rb_joint_frame *f, rb_vec2 ra, rb_vec2 rb)
+static rb_point_mass make_mass_matrix(const rb_joint_frame *f, rb_vec2 ra, rb_vec2 rb)
 {
     double m = f->inv_mass_a + f->inv_mass_b;
     double ia = f->inv_inertia_a;
     double ib = f->inv_inertia_b;
-    return (mass_matrix){
+    return (rb_point_mass){
         .k11 = m + ia * ra.y * ra.y + ib * rb.y * rb.y,
         .k12 = -ia * ra.x * ra.y - ib * rb.x * rb.y,
         .k22 = m + ia * ra.x * ra.x + ib * rb.x * rb.x,
@@ -36,7 +32,7 @@ static mass_matrix make_mass_matrix(const rb_joint_frame *f, rb_vec2 ra, rb_vec2
 }
 
 /* Solves the 2x2 point block K2·x = v; false when K2 is singular. */
-static bool solve_point(const mass_matrix *k, rb_vec2 v, rb_vec2 *x)
+static bool solve_point(const rb_point_mass *k, rb_vec2 v, rb_vec2 *x)
 {
     double det = k->k11 * k->k22 - k->k12 * k->k12;
     if (!(det > 0.0)) {
@@ -48,7 +44,7 @@ static bool solve_point(const mass_matrix *k, rb_vec2 v, rb_vec2 *x)
 
 /* Solves the 3x3 system K·(x, z) = (v, w) by Cramer's rule; false when
  * K is singular (a body that cannot turn makes the angle row redundant). */
-static bool solve_point_and_angle(const mass_matrix *k, rb_vec2 v, double w, rb_vec2 *x, double *z)
+static bool solve_point_and_angle(const rb_point_mass *k, rb_vec2 v, double w, rb_vec2 *x, double *z)
 {
     double c11 = k->k22 * k->k33 - k->k23 * k->k23;
     double c12 = k->k13 * k->k23 - k->k12 * k->k33;
@@ -71,13 +67,10 @@ static void apply(const rb_joint *joint, rb_body_state *a, rb_body_state *b, rb_
     rb_joint_apply_angular(joint, a, b, angular);
 }
 
-void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumulated, double h,
-                               const rb_angular_row *row)
+void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h)
 {
-    rb_body_state *a = rb_joint_state_a(world, joint);
-    rb_body_state *b = rb_joint_state_b(world, joint);
-    const rb_joint_frame *f = &joint->frame;
-    mass_matrix k = make_mass_matrix(f, f->ra, f->rb);
+    rb_joint_frame *f = &joint->frame;
+    f->point_mass = make_mass_matrix(f, f->ra, f->rb);
 
     /* Solve for the velocities that keep the anchors together at the end
      * of the substep, not just momentarily (SHAKE; Ryckaert, Ciccotti,
@@ -93,7 +86,8 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
      * any body the solver can follow. A larger one means bodies spin
      * faster than the iterations converge (a light link beside a heavy
      * one), and asking for it then feeds the spin until it explodes; it is
-     * capped at one linear slop per substep. */
+     * capped at one linear slop per substep. The angular velocities are
+     * the substep's starting ones, so the drift is fixed for the substep. */
     rb_vec2 drift =
         rb_scale(0.5 * h, rb_sub(rb_scale(f->omega_b * f->omega_b, f->rb), rb_scale(f->omega_a * f->omega_a, f->ra)));
     double drift_size = rb_length(drift);
@@ -101,6 +95,17 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
     if (drift_size > drift_cap) {
         drift = rb_scale(drift_cap / drift_size, drift);
     }
+    f->point_drift = drift;
+}
+
+void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumulated, double h,
+                               const rb_angular_row *row)
+{
+    rb_body_state *a = rb_joint_state_a(world, joint);
+    rb_body_state *b = rb_joint_state_b(world, joint);
+    const rb_joint_frame *f = &joint->frame;
+    const rb_point_mass k = f->point_mass;
+    rb_vec2 drift = f->point_drift;
     rb_vec2 cdot = rb_sub(rb_joint_relative_velocity(joint, a, b), drift);
     double baumgarte_rate = rb_joint_baumgarte_rate(world, h);
     if (baumgarte_rate > 0.0) {
@@ -112,7 +117,7 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
     if (row != NULL) {
         /* The row is s·(ωB - ωA) + bias = 0 with s = ±1; in K its coupling
          * terms take the sign s. */
-        mass_matrix ks = k;
+        rb_point_mass ks = k;
         ks.k13 *= row->sign;
         ks.k23 *= row->sign;
         double wdot = row->sign * (b->angular_velocity - a->angular_velocity) + row->bias;
@@ -148,7 +153,7 @@ double rb_point_constraint_correct(rb_world *world, rb_joint *joint, const doubl
     rb_vec2 rb = rb_rotate(b->rotation, f->local_b);
     rb_vec2 gap = rb_sub(rb_add(b->center, rb), rb_add(a->center, ra));
     double error = rb_length(gap);
-    mass_matrix k = make_mass_matrix(f, ra, rb);
+    rb_point_mass k = make_mass_matrix(f, ra, rb);
     rb_vec2 impulse = rb_v2(0.0, 0.0);
     double angular = 0.0;
     bool solved = angle_error != NULL && solve_point_and_angle(&k, rb_neg(gap), -*angle_error, &impulse, &angular);

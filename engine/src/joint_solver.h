@@ -87,6 +87,9 @@ typedef struct rb_angular_row {
     bool one_sided;
 } rb_angular_row;
 
+/* Sets the frame's point_mass and point_drift for the substep; after
+ * the frame is prepared, before any solve. */
+void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h);
 /* Velocity solve of the pin (and the row, if not NULL), with the
  * Baumgarte bias when the world uses it. */
 void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumulated, double h,

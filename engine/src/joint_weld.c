@@ -58,8 +58,7 @@ rb_status rb_weld_joint_create(rb_world *world, const rb_weld_joint_def *def, rb
 
 void rb_weld_prepare(rb_world *world, rb_joint *joint, double h)
 {
-    (void)world;
-    (void)h;
+    rb_point_constraint_prepare(world, joint, h);
     double inverse_axial = joint->frame.inv_inertia_a + joint->frame.inv_inertia_b;
     joint->as.weld.axial_mass = inverse_axial > 0.0 ? 1.0 / inverse_axial : 0.0;
 }

@@ -9,25 +9,12 @@
  * Everything is computed in shape A's frame and moved to the world at
  * the end.
  */
-#include "rb/collision.h"
-
-/* How much deeper shape B's best axis must be than shape A's before B
- * holds the reference face (m). Without this margin two nearly equal
- * axes would swap from frame to frame, and with them the feature ids
- * that carry impulses. */
-#define REFERENCE_FACE_TOLERANCE 0.5e-3
+#include "manifold_internal.h"
 
 /* Below this centre distance two circles have no defined normal (m). */
 #define COINCIDENT_DISTANCE 1e-12
 
-static rb_manifold empty_manifold(void)
-{
-    rb_manifold m = {0};
-    return m;
-}
-
-/* Moves a manifold computed in xf's local frame to the world. */
-static rb_manifold to_world(rb_manifold local, rb_transform xf)
+rb_manifold rb_manifold_to_world(rb_manifold local, rb_transform xf)
 {
     rb_manifold m = local;
     m.normal = rb_rotate(xf.q, local.normal);
@@ -37,7 +24,7 @@ static rb_manifold to_world(rb_manifold local, rb_transform xf)
     return m;
 }
 
-static void add_point(rb_manifold *m, rb_vec2 point, double separation, uint32_t id)
+void rb_manifold_add_point(rb_manifold *m, rb_vec2 point, double separation, uint32_t id)
 {
     rb_manifold_point *p = &m->points[m->point_count++];
     *p = (rb_manifold_point){0};
@@ -54,7 +41,7 @@ rb_manifold rb_collide_circles(const rb_circle *a, rb_transform xfa, const rb_ci
     rb_vec2 d = rb_sub(cb, ca);
     double distance = rb_length(d);
     double separation = distance - a->radius - b->radius;
-    rb_manifold m = empty_manifold();
+    rb_manifold m = (rb_manifold){0};
     if (separation > speculative_distance) {
         return m;
     }
@@ -62,7 +49,7 @@ rb_manifold rb_collide_circles(const rb_circle *a, rb_transform xfa, const rb_ci
     m.normal = distance > COINCIDENT_DISTANCE ? rb_scale(1.0 / distance, d) : rb_v2(0.0, 1.0);
     rb_vec2 surface_a = rb_mul_add(ca, a->radius, m.normal);
     rb_vec2 surface_b = rb_mul_sub(cb, b->radius, m.normal);
-    add_point(&m, rb_lerp(surface_a, surface_b, 0.5), separation, 0);
+    rb_manifold_add_point(&m, rb_lerp(surface_a, surface_b, 0.5), separation, 0);
     return m;
 }
 
@@ -82,7 +69,7 @@ rb_manifold rb_collide_polygon_and_circle(const rb_polygon *a, rb_transform xfa,
             face = i;
         }
     }
-    rb_manifold m = empty_manifold();
+    rb_manifold m = (rb_manifold){0};
     if (face_separation - radius > speculative_distance) {
         return m;
     }
@@ -113,20 +100,13 @@ rb_manifold rb_collide_polygon_and_circle(const rb_polygon *a, rb_transform xfa,
     }
     m.normal = normal;
     rb_vec2 surface_b = rb_mul_sub(c, radius, normal);
-    add_point(&m, rb_lerp(surface_a, surface_b, 0.5), separation, 0);
-    return to_world(m, xfa);
+    rb_manifold_add_point(&m, rb_lerp(surface_a, surface_b, 0.5), separation, 0);
+    return rb_manifold_to_world(m, xfa);
 }
 
-/* A polygon's vertices and normals moved into another frame. */
-typedef struct placed_polygon {
-    rb_vec2 vertices[RB_MAX_POLYGON_VERTICES];
-    rb_vec2 normals[RB_MAX_POLYGON_VERTICES];
-    int count;
-} placed_polygon;
-
-static placed_polygon place_polygon(const rb_polygon *polygon, rb_transform xf)
+rb_placed_polygon rb_place_polygon(const rb_polygon *polygon, rb_transform xf)
 {
-    placed_polygon placed;
+    rb_placed_polygon placed;
     placed.count = polygon->count;
     for (int i = 0; i < polygon->count; ++i) {
         placed.vertices[i] = rb_transform_point(xf, polygon->vertices[i]);
@@ -137,7 +117,7 @@ static placed_polygon place_polygon(const rb_polygon *polygon, rb_transform xf)
 
 /* The edge of `p` along whose normal `q` reaches least far below it:
  * the separation of the two polygons on that axis. */
-static double max_edge_separation(const placed_polygon *p, const placed_polygon *q, int *edge)
+static double max_edge_separation(const rb_placed_polygon *p, const rb_placed_polygon *q, int *edge)
 {
     double best = -INFINITY;
     *edge = 0;
@@ -175,27 +155,51 @@ static int clip_segment(const rb_vec2 in[2], rb_vec2 out[2], rb_vec2 normal, dou
     return 2;
 }
 
-rb_manifold rb_collide_polygons(const rb_polygon *a, rb_transform xfa, const rb_polygon *b, rb_transform xfb,
-                                double speculative_distance)
+rb_manifold rb_clip_incident_edge(rb_vec2 v1, rb_vec2 v2, rb_vec2 reference_normal, const rb_vec2 incident[2], int flip,
+                                  int reference_edge, int incident_edge, double speculative_distance)
 {
-    placed_polygon pa = place_polygon(a, rb_transform_identity());
-    placed_polygon pb = place_polygon(b, rb_inv_mul_transforms(xfa, xfb));
-    rb_manifold m = empty_manifold();
+    rb_manifold m = {0};
+    rb_vec2 tangent = rb_normalize(rb_sub(v2, v1));
+    rb_vec2 clipped_once[2];
+    rb_vec2 clipped[2];
+    if (clip_segment(incident, clipped_once, rb_neg(tangent), -rb_dot(tangent, v1)) < 2 ||
+        clip_segment(clipped_once, clipped, tangent, rb_dot(tangent, v2)) < 2) {
+        return m;
+    }
 
+    /* The manifold normal points from A to B. */
+    m.normal = flip ? rb_neg(reference_normal) : reference_normal;
+    for (int i = 0; i < 2; ++i) {
+        double separation = rb_dot(reference_normal, rb_sub(clipped[i], v1));
+        if (separation <= speculative_distance) {
+            /* The clipped point lies on the incident surface; the
+             * reference surface is `separation` behind it along the
+             * reference normal: report the midpoint. */
+            rb_vec2 midpoint = rb_mul_sub(clipped[i], 0.5 * separation, reference_normal);
+            rb_manifold_add_point(&m, midpoint, separation, rb_feature_id(flip, reference_edge, incident_edge, i));
+        }
+    }
+    return m;
+}
+
+rb_manifold rb_collide_placed_polygons(const rb_placed_polygon *pa, const rb_placed_polygon *pb,
+                                       double speculative_distance)
+{
+    rb_manifold m = {0};
     int edge_a;
-    double separation_a = max_edge_separation(&pa, &pb, &edge_a);
+    double separation_a = max_edge_separation(pa, pb, &edge_a);
     if (separation_a > speculative_distance) {
         return m;
     }
     int edge_b;
-    double separation_b = max_edge_separation(&pb, &pa, &edge_b);
+    double separation_b = max_edge_separation(pb, pa, &edge_b);
     if (separation_b > speculative_distance) {
         return m;
     }
 
-    int flip = separation_b > separation_a + REFERENCE_FACE_TOLERANCE;
-    const placed_polygon *reference = flip ? &pb : &pa;
-    const placed_polygon *incident = flip ? &pa : &pb;
+    int flip = separation_b > separation_a + RB_REFERENCE_FACE_TOLERANCE;
+    const rb_placed_polygon *reference = flip ? pb : pa;
+    const rb_placed_polygon *incident = flip ? pa : pb;
     int reference_edge = flip ? edge_b : edge_a;
     rb_vec2 reference_normal = reference->normals[reference_edge];
 
@@ -215,25 +219,14 @@ rb_manifold rb_collide_polygons(const rb_polygon *a, rb_transform xfa, const rb_
 
     rb_vec2 v1 = reference->vertices[reference_edge];
     rb_vec2 v2 = reference->vertices[reference_edge + 1 < reference->count ? reference_edge + 1 : 0];
-    rb_vec2 tangent = rb_normalize(rb_sub(v2, v1));
-    rb_vec2 clipped_once[2];
-    rb_vec2 clipped[2];
-    if (clip_segment(segment, clipped_once, rb_neg(tangent), -rb_dot(tangent, v1)) < 2 ||
-        clip_segment(clipped_once, clipped, tangent, rb_dot(tangent, v2)) < 2) {
-        return m;
-    }
+    return rb_clip_incident_edge(v1, v2, reference_normal, segment, flip, reference_edge, incident_edge,
+                                 speculative_distance);
+}
 
-    /* The manifold normal points from A to B. */
-    m.normal = flip ? rb_neg(reference_normal) : reference_normal;
-    for (int i = 0; i < 2; ++i) {
-        double separation = rb_dot(reference_normal, rb_sub(clipped[i], v1));
-        if (separation <= speculative_distance) {
-            /* The clipped point lies on the incident surface; the
-             * reference surface is `separation` behind it along the
-             * reference normal: report the midpoint. */
-            rb_vec2 midpoint = rb_mul_sub(clipped[i], 0.5 * separation, reference_normal);
-            add_point(&m, midpoint, separation, rb_feature_id(flip, reference_edge, incident_edge, i));
-        }
-    }
-    return to_world(m, xfa);
+rb_manifold rb_collide_polygons(const rb_polygon *a, rb_transform xfa, const rb_polygon *b, rb_transform xfb,
+                                double speculative_distance)
+{
+    rb_placed_polygon pa = rb_place_polygon(a, rb_transform_identity());
+    rb_placed_polygon pb = rb_place_polygon(b, rb_inv_mul_transforms(xfa, xfb));
+    return rb_manifold_to_world(rb_collide_placed_polygons(&pa, &pb, speculative_distance), xfa);
 }

@@ -1,4 +1,5 @@
-/* Shapes: creation on a body, materials, filters, sensor overlaps. */
+/* Shapes: creation on a body (chains as runs of segments), materials,
+ * filters, sensor overlaps. */
 #include <float.h>
 #include <string.h>
 
@@ -83,6 +84,13 @@ static rb_status create_shape(rb_world *world, rb_body_id body_id, const rb_shap
     RB_TRY(rb_world_find_body(world, body_id, f, &body_index));
     RB_TRY(rb_world_check_unlocked(world, f));
     const rb_body *body = &world->bodies[body_index];
+    bool massless = type == RB_SHAPE_SEGMENT || type == RB_SHAPE_CHAIN_SEGMENT;
+    if (body->type == RB_BODY_DYNAMIC && !body->has_mass_override && massless) {
+        return rb_report_error(RB_ERR_NO_MASS,
+                               "%s: a segment has no mass; put it on a static or kinematic body, or give the dynamic "
+                               "body a mass override (rb_body_set_mass_data) first",
+                               f);
+    }
     if (body->type == RB_BODY_DYNAMIC && !body->has_mass_override && !(def->density > 0.0)) {
         return rb_report_error(RB_ERR_NO_MASS,
                                "%s: density is %g on a dynamic body without a mass override; expected a density > 0 "
@@ -99,10 +107,19 @@ static rb_status create_shape(rb_world *world, rb_body_id body_id, const rb_shap
     shape->body = body_index;
     shape->next_in_body = -1;
     shape->type = type;
-    if (type == RB_SHAPE_CIRCLE) {
+    switch (type) {
+    case RB_SHAPE_CIRCLE:
         shape->geometry.circle = *(const rb_circle *)geometry;
-    } else {
+        break;
+    case RB_SHAPE_POLYGON:
         shape->geometry.polygon = *(const rb_polygon *)geometry;
+        break;
+    case RB_SHAPE_SEGMENT:
+        shape->geometry.segment = *(const rb_segment *)geometry;
+        break;
+    case RB_SHAPE_CHAIN_SEGMENT:
+        shape->geometry.chain_segment = *(const rb_chain_segment *)geometry;
+        break;
     }
     shape->friction = def->friction;
     shape->restitution = def->restitution;
@@ -120,9 +137,9 @@ static rb_status create_shape(rb_world *world, rb_body_id body_id, const rb_shap
     *link = index;
     owner->shape_count++;
     world->shape_count++;
+    world->solid_shape_count += shape->sensor ? 0 : 1;
     world->sweep_stale = true;
     rb_body_update_mass(world, body_index);
-    shape->aabb = rb_shape_tight_aabb(world, index);
     *out = rb_make_shape_id(world, index);
     return RB_OK;
 }
@@ -158,13 +175,9 @@ rb_status rb_shape_create_polygon(rb_world *world, rb_body_id body, const rb_sha
     return create_shape(world, body, def, RB_SHAPE_POLYGON, &clean, out, f);
 }
 
-rb_status rb_shape_destroy(rb_world *world, rb_shape_id id)
+/* Frees the slot of a shape that has no contacts left. */
+static void destroy_shape(rb_world *world, int index)
 {
-    rb_clear_error();
-    int index;
-    RB_TRY(rb_world_find_shape(world, id, "rb_shape_destroy", &index));
-    RB_TRY(rb_world_check_unlocked(world, "rb_shape_destroy"));
-    rb_contacts_remove_shape(world, index);
     rb_shape *shape = &world->shapes[index];
     rb_body *body = &world->bodies[shape->body];
     int *link = &body->first_shape;
@@ -177,8 +190,114 @@ rb_status rb_shape_destroy(rb_world *world, rb_shape_id id)
     shape->next_free = world->shape_free;
     world->shape_free = index;
     world->shape_count--;
+    world->solid_shape_count -= shape->sensor ? 0 : 1;
     world->sweep_stale = true;
     rb_body_update_mass(world, shape->body);
+}
+
+/* Two chain or segment points: finite, and far enough apart to give the
+ * segment a direction. */
+static rb_status check_segment_points(const char *f, const char *name, int index, rb_vec2 p1, rb_vec2 p2)
+{
+    if (!rb_vec2_is_finite(p1) || !rb_vec2_is_finite(p2)) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s %d has a non-finite point, expected finite coordinates",
+                               f, name, index);
+    }
+    if (rb_distance(p1, p2) < RB_POLYGON_WELD_DISTANCE) {
+        return rb_report_error(RB_ERR_DEGENERATE_SHAPE,
+                               "%s: %s %d from (%g, %g) to (%g, %g) is shorter than %g m, expected distinct points", f,
+                               name, index, p1.x, p1.y, p2.x, p2.y, RB_POLYGON_WELD_DISTANCE);
+    }
+    return RB_OK;
+}
+
+rb_status rb_shape_create_segment(rb_world *world, rb_body_id body, const rb_shape_def *def, const rb_segment *segment,
+                                  rb_shape_id *out)
+{
+    const char *f = "rb_shape_create_segment";
+    rb_clear_error();
+    RB_TRY(rb_check_pointer(f, "out", out));
+    *out = (rb_shape_id){0};
+    RB_TRY(check_shape_def(def, f));
+    RB_TRY(rb_check_pointer(f, "segment", segment));
+    RB_TRY(check_segment_points(f, "segment", 0, segment->point1, segment->point2));
+    return create_shape(world, body, def, RB_SHAPE_SEGMENT, segment, out, f);
+}
+
+/* Segment i of a chain of `count` points runs from point i to point
+ * i + 1 (wrapping for a loop); its ghosts are the points before and
+ * after, where they exist. */
+static rb_chain_segment chain_segment_at(const rb_vec2 *points, int count, bool loop, int i)
+{
+    rb_chain_segment c = {0};
+    c.segment.point1 = points[i];
+    c.segment.point2 = points[(i + 1) % count];
+    c.has_ghost1 = loop || i > 0;
+    c.has_ghost2 = loop || i + 2 < count;
+    if (c.has_ghost1) {
+        c.ghost1 = points[(i + count - 1) % count];
+    }
+    if (c.has_ghost2) {
+        c.ghost2 = points[(i + 2) % count];
+    }
+    return c;
+}
+
+rb_status rb_shape_create_chain(rb_world *world, rb_body_id body, const rb_shape_def *def, const rb_vec2 *points,
+                                int count, bool loop, rb_shape_id *out, int capacity)
+{
+    const char *f = "rb_shape_create_chain";
+    rb_clear_error();
+    RB_TRY(check_shape_def(def, f));
+    RB_TRY(rb_check_pointer(f, "points", points));
+    int minimum = loop ? 3 : 2;
+    if (count < minimum) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: count is %d, expected at least %d points for %s chain", f,
+                               count, minimum, loop ? "a loop" : "an open");
+    }
+    int segment_count = loop ? count : count - 1;
+    if (out != NULL && capacity < segment_count) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: capacity is %d, expected at least %d (one id per segment)",
+                               f, capacity, segment_count);
+    }
+    for (int i = 0; i < segment_count; ++i) {
+        RB_TRY(check_segment_points(f, "segment", i, points[i], points[(i + 1) % count]));
+    }
+    int body_index;
+    RB_TRY(rb_world_find_body(world, body, f, &body_index));
+    RB_TRY(rb_world_check_unlocked(world, f));
+    int shapes_before = world->bodies[body_index].shape_count;
+    for (int i = 0; i < segment_count; ++i) {
+        rb_chain_segment segment = chain_segment_at(points, count, loop, i);
+        rb_shape_id id;
+        rb_status status = create_shape(world, body, def, RB_SHAPE_CHAIN_SEGMENT, &segment, &id, f);
+        if (status != RB_OK) {
+            /* Leave no partial chain: the segments made so far are the
+             * last ones of the body's list. */
+            while (world->bodies[body_index].shape_count > shapes_before) {
+                int last = world->bodies[body_index].first_shape;
+                while (world->shapes[last].next_in_body >= 0) {
+                    last = world->shapes[last].next_in_body;
+                }
+                destroy_shape(world, last);
+            }
+            return status;
+        }
+        if (out != NULL) {
+            out[i] = id;
+        }
+    }
+    return RB_OK;
+}
+
+rb_status rb_shape_destroy(rb_world *world, rb_shape_id id)
+{
+    rb_clear_error();
+    int index;
+    RB_TRY(rb_world_find_shape(world, id, "rb_shape_destroy", &index));
+    RB_TRY(rb_world_check_unlocked(world, "rb_shape_destroy"));
+    RB_TRY(rb_contacts_remove_shape(world, index));
+    destroy_shape(world, index);
     return RB_OK;
 }
 
@@ -193,8 +312,17 @@ rb_aabb rb_shape_tight_aabb(const rb_world *world, int index)
 {
     const rb_shape *shape = &world->shapes[index];
     rb_transform xf = rb_body_origin_transform(world, shape->body);
-    return shape->type == RB_SHAPE_CIRCLE ? rb_circle_aabb(&shape->geometry.circle, xf)
-                                          : rb_polygon_aabb(&shape->geometry.polygon, xf);
+    switch (shape->type) {
+    case RB_SHAPE_CIRCLE:
+        return rb_circle_aabb(&shape->geometry.circle, xf);
+    case RB_SHAPE_POLYGON:
+        return rb_polygon_aabb(&shape->geometry.polygon, xf);
+    case RB_SHAPE_SEGMENT:
+        return rb_segment_aabb(&shape->geometry.segment, xf);
+    case RB_SHAPE_CHAIN_SEGMENT:
+        break;
+    }
+    return rb_segment_aabb(&shape->geometry.chain_segment.segment, xf);
 }
 
 /* ---- getters and setters ------------------------------------------------- */
@@ -213,6 +341,8 @@ rb_aabb rb_shape_tight_aabb(const rb_world *world, int index)
 
 static const rb_circle no_circle = {{0.0, 0.0}, 0.0};
 static const rb_polygon no_polygon = {0};
+static const rb_segment no_segment = {{0.0, 0.0}, {0.0, 0.0}};
+static const rb_chain_segment no_chain_segment = {0};
 static const rb_aabb no_aabb = {{0.0, 0.0}, {0.0, 0.0}};
 static const rb_filter no_filter = {0u, 0u, 0};
 static const rb_body_id no_body = {0, 0, 0};
@@ -222,13 +352,28 @@ SHAPE_GETTER(rb_body_id, rb_shape_body, no_body, rb_make_body_id(world, shape->b
 SHAPE_GETTER(rb_circle, rb_shape_circle, no_circle, shape->type == RB_SHAPE_CIRCLE ? shape->geometry.circle : no_circle)
 SHAPE_GETTER(rb_polygon, rb_shape_polygon, no_polygon,
              shape->type == RB_SHAPE_POLYGON ? shape->geometry.polygon : no_polygon)
-SHAPE_GETTER(rb_aabb, rb_shape_aabb, no_aabb, shape->aabb)
+SHAPE_GETTER(rb_segment, rb_shape_segment, no_segment,
+             shape->type == RB_SHAPE_SEGMENT         ? shape->geometry.segment
+             : shape->type == RB_SHAPE_CHAIN_SEGMENT ? shape->geometry.chain_segment.segment
+                                                     : no_segment)
+SHAPE_GETTER(rb_chain_segment, rb_shape_chain_segment, no_chain_segment,
+             shape->type == RB_SHAPE_CHAIN_SEGMENT ? shape->geometry.chain_segment : no_chain_segment)
 SHAPE_GETTER(double, rb_shape_friction, 0.0, shape->friction)
 SHAPE_GETTER(double, rb_shape_restitution, 0.0, shape->restitution)
 SHAPE_GETTER(double, rb_shape_density, 0.0, shape->density)
 SHAPE_GETTER(bool, rb_shape_is_sensor, false, shape->sensor)
 SHAPE_GETTER(rb_filter, rb_shape_filter, no_filter, shape->filter)
 SHAPE_GETTER(void *, rb_shape_user_data, NULL, shape->user_data)
+
+rb_aabb rb_shape_aabb(const rb_world *world, rb_shape_id id)
+{
+    rb_clear_error();
+    int index = -1;
+    if (rb_world_find_shape(world, id, "rb_shape_aabb", &index) != RB_OK) {
+        return no_aabb;
+    }
+    return rb_shape_tight_aabb(world, index);
+}
 
 static rb_status find_shape_for_change(rb_world *world, rb_shape_id id, const char *function, int *index)
 {

@@ -2,6 +2,7 @@
  *
  *   prepare contact constraints (surface points, impulses carried over)
  *   for each substep of length h = dt / substeps:
+ *       substep callback       the user's, e.g. muscles setting their cables' tension laws
  *       integrate velocities   v += h·(g·gravity_scale + F/m), ω += h·τ/I
  *       prepare substep        cables, contacts and joints: anchors, normals and masses
  *                              at the poses now
@@ -77,6 +78,15 @@ static void integrate_positions(rb_world *world, double h)
     }
 }
 
+static void call_substep_callback(rb_world *world, int substep, double h)
+{
+    if (world->substep_callback != NULL) {
+        world->in_substep_callback = true;
+        world->substep_callback(world, substep, h, world->substep_context);
+        world->in_substep_callback = false;
+    }
+}
+
 /* Non-linear Gauss-Seidel position passes over contacts, then joints,
  * until both are within tolerance or the iterations run out; returns the
  * passes done. */
@@ -116,6 +126,11 @@ rb_status rb_solver_step(rb_world *world, double dt)
     }
 
     for (int substep = 0; substep < substeps; ++substep) {
+        t = rb_world_clock(world);
+        call_substep_callback(world, substep, h);
+        profile->substep_callback += rb_world_clock(world) - t;
+        world->last_substep = h; /* after the callback, which reads the previous substep's forces */
+
         t = rb_world_clock(world);
         integrate_velocities(world, h);
         profile->integrate_velocities += rb_world_clock(world) - t;
@@ -158,7 +173,6 @@ rb_status rb_solver_step(rb_world *world, double dt)
     world->statistics.max_penetration = rb_contact_solver_store_impulses(world);
     profile->store_impulses = rb_world_clock(world) - t;
 
-    world->last_substep = h;
     world->statistics.velocity_iterations = velocity_iterations;
     world->statistics.position_iterations = position_iterations;
     return RB_OK;

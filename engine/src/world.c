@@ -7,9 +7,11 @@
 #include "allocator.h"
 #include "broad_phase.h"
 #include "contact.h"
+#include "contact_events.h"
 #include "contact_solver.h"
 #include "error.h"
 #include "joint_solver.h"
+#include "sleep.h"
 #include "solver.h"
 #include "timer.h"
 #include "world_internal.h"
@@ -36,7 +38,8 @@ rb_solver_settings rb_default_solver_settings(void)
 
 rb_world_def rb_default_world_def(void)
 {
-    return (rb_world_def){.gravity = {0.0, -9.8}, .solver = rb_default_solver_settings(), .enable_profile = true};
+    return (rb_world_def){
+        .gravity = {0.0, -9.8}, .solver = rb_default_solver_settings(), .enable_profile = true, .enable_sleep = true};
 }
 
 static rb_status check_settings(const rb_solver_settings *s, const char *function)
@@ -74,6 +77,7 @@ rb_status rb_world_create(const rb_world_def *def, rb_world **out)
     world->gravity = def->gravity;
     world->settings = def->solver;
     world->profiling = def->enable_profile;
+    world->enable_sleep = def->enable_sleep;
     world->body_free = -1;
     world->shape_free = -1;
     world->joint_free = -1;
@@ -95,9 +99,13 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->spare_contacts, &world->spare_capacity, sizeof *world->spare_contacts);
     rb_free_array((void **)&world->pairs, &world->pair_capacity, sizeof *world->pairs);
     rb_free_array((void **)&world->sweep, &world->sweep_capacity, sizeof *world->sweep);
+    rb_free_array((void **)&world->island_parent, &world->island_capacity, sizeof *world->island_parent);
+    rb_free_array((void **)&world->island_size, &world->island_size_capacity, sizeof *world->island_size);
+    rb_free_array((void **)&world->island_rest, &world->island_rest_capacity, sizeof *world->island_rest);
     rb_free_array((void **)&world->constraints, &world->constraint_capacity, sizeof *world->constraints);
     rb_free_array((void **)&world->joints, &world->joint_capacity, sizeof *world->joints);
     rb_free_array((void **)&world->cables, &world->cable_capacity, sizeof *world->cables);
+    rb_contact_events_free(world);
     rb_free(world, sizeof *world);
 }
 
@@ -124,6 +132,32 @@ rb_status rb_world_set_solver_settings(rb_world *world, const rb_solver_settings
     world->settings = *settings;
     return RB_OK;
 }
+
+rb_status rb_world_set_substep_callback(rb_world *world, rb_substep_fn *callback, void *context)
+{
+    rb_clear_error();
+    RB_TRY(rb_check_pointer("rb_world_set_substep_callback", "world", world));
+    RB_TRY(rb_world_check_unlocked(world, "rb_world_set_substep_callback"));
+    world->substep_callback = callback;
+    world->substep_context = context;
+    return RB_OK;
+}
+
+rb_status rb_world_enable_sleep(rb_world *world, bool enable)
+{
+    rb_clear_error();
+    RB_TRY(rb_check_pointer("rb_world_enable_sleep", "world", world));
+    RB_TRY(rb_world_check_unlocked(world, "rb_world_enable_sleep"));
+    world->enable_sleep = enable;
+    for (int i = 0; !enable && i < world->body_slots; ++i) {
+        if (world->bodies[i].in_use) {
+            rb_body_wake(world, i);
+        }
+    }
+    return RB_OK;
+}
+
+bool rb_world_is_sleep_enabled(const rb_world *world) { return world != NULL && world->enable_sleep; }
 
 rb_solver_settings rb_world_solver_settings(const rb_world *world)
 {
@@ -160,7 +194,7 @@ size_t rb_world_bytes_in_use(const rb_world *world)
            (size_t)world->pair_capacity * sizeof *world->pairs + (size_t)world->sweep_capacity * sizeof *world->sweep +
            (size_t)world->constraint_capacity * sizeof *world->constraints +
            (size_t)world->joint_capacity * sizeof *world->joints +
-           (size_t)world->cable_capacity * sizeof *world->cables;
+           (size_t)world->cable_capacity * sizeof *world->cables + rb_contact_events_bytes(world);
 }
 
 /* ---- ids ----------------------------------------------------------------- */
@@ -171,6 +205,11 @@ rb_status rb_world_check_unlocked(const rb_world *world, const char *function)
         return rb_report_error(RB_ERR_LOCKED, "%s: the world is stepping; change it between steps", function);
     }
     return RB_OK;
+}
+
+rb_status rb_world_check_unlocked_or_in_substep_callback(const rb_world *world, const char *function)
+{
+    return world->in_substep_callback ? RB_OK : rb_world_check_unlocked(world, function);
 }
 
 static rb_status find_slot(const rb_world *world, int32_t index, uint16_t id_world, uint16_t generation,
@@ -245,6 +284,23 @@ rb_shape_id rb_make_shape_id(const rb_world *world, int index)
 
 /* ---- the step ------------------------------------------------------------ */
 
+static double mechanical_energy(const rb_world *world)
+{
+    double energy = 0.0;
+    for (int i = 0; i < world->body_slots; ++i) {
+        const rb_body *body = &world->bodies[i];
+        if (!body->in_use || body->type != RB_BODY_DYNAMIC) {
+            continue;
+        }
+        const rb_body_state *s = &world->states[i];
+        rb_vec2 gravity = rb_scale(body->gravity_scale, world->gravity);
+        energy += 0.5 * body->mass * rb_length_squared(s->linear_velocity) +
+                  0.5 * body->inertia * s->angular_velocity * s->angular_velocity -
+                  body->mass * rb_dot(gravity, s->center);
+    }
+    return energy;
+}
+
 /* Clears the forces applied for this step and refreshes the counters. */
 static void finalize_step(rb_world *world)
 {
@@ -266,6 +322,7 @@ static void finalize_step(rb_world *world)
     }
     stats->joint_count = world->joint_count;
     rb_joints_measure_errors(world, &stats->max_joint_gap, &stats->max_joint_angle_error);
+    stats->energy = mechanical_energy(world);
 }
 
 rb_status rb_world_step(rb_world *world, double dt)
@@ -292,6 +349,11 @@ rb_status rb_world_step(rb_world *world, double dt)
         t = rb_world_clock(world);
         rb_contacts_collide(world, dt);
         profile->collide = rb_world_clock(world) - t;
+        t = rb_world_clock(world);
+        status = rb_islands_wake(world);
+        profile->islands = rb_world_clock(world) - t;
+    }
+    if (status == RB_OK) {
         status = rb_solver_step(world, dt);
     }
     if (status != RB_OK) {
@@ -306,6 +368,10 @@ rb_status rb_world_step(rb_world *world, double dt)
     t = rb_world_clock(world);
     finalize_step(world);
     profile->finalize = rb_world_clock(world) - t;
+
+    t = rb_world_clock(world);
+    rb_islands_sleep(world, dt);
+    profile->islands += rb_world_clock(world) - t;
 
     profile->step = rb_world_clock(world) - start;
     world->locked = false;

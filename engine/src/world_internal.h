@@ -11,6 +11,7 @@
 #include "rb/body.h"
 #include "rb/cable.h"
 #include "rb/collision.h"
+#include "rb/events.h"
 #include "rb/joint.h"
 #include "rb/shape.h"
 #include "rb/world.h"
@@ -41,6 +42,8 @@ typedef struct rb_body {
     rb_mass_data mass_override;
     double linear_damping, angular_damping, gravity_scale;
     bool fixed_rotation, awake, bullet;
+    bool enable_sleep;
+    double sleep_time; /* s the body has been slower than the sleep tolerances (sleep.c) */
     void *user_data;
     int first_shape; /* -1 when none; shapes link through rb_shape.next_in_body */
     int shape_count;
@@ -57,13 +60,15 @@ typedef struct rb_shape {
     union {
         rb_circle circle;
         rb_polygon polygon;
+        rb_segment segment;
+        rb_chain_segment chain_segment;
     } geometry;
     double friction, restitution, density;
     bool sensor;
     rb_filter filter;
     void *user_data;
     double extent; /* m, farthest point of the shape from the body's centre of mass */
-    rb_aabb aabb;  /* m, world box enlarged by the step's speculative margin */
+    rb_aabb aabb;  /* m, broad phase: the box swept over the step and grown by the speculative margin */
 } rb_shape;
 
 /* A pair of shapes whose boxes overlap. Contacts are kept sorted by
@@ -88,17 +93,45 @@ typedef struct rb_contact {
     double friction, restitution; /* mixed from the two shapes */
     bool sensor;
     bool touching;
+    bool reported_touching; /* the state the last begin or end event told */
 } rb_contact;
+
+/* The events of the last step, and the end events of shapes destroyed
+ * since, which join the next step's (so the published arrays never move
+ * between steps). */
+typedef struct rb_event_arrays {
+    rb_contact_begin_event *begins;
+    int begin_count, begin_capacity;
+    rb_contact_end_event *ends;
+    int end_count, end_capacity;
+    rb_sensor_event *sensor_begins;
+    int sensor_begin_count, sensor_begin_capacity;
+    rb_sensor_event *sensor_ends;
+    int sensor_end_count, sensor_end_capacity;
+    rb_contact_end_event *pending_ends;
+    int pending_end_count, pending_end_capacity;
+    rb_sensor_event *pending_sensor_ends;
+    int pending_sensor_end_count, pending_sensor_end_capacity;
+} rb_event_arrays;
 
 typedef struct rb_contact_constraint rb_contact_constraint;
 
+/* The point constraint's effective-mass matrix K (joint_point.c), symmetric. */
+typedef struct rb_point_mass {
+    double k11, k12, k22, k13, k23, k33;
+} rb_point_mass;
+
 /* The parts of a joint's solver state shared by every type, refreshed at
  * the start of each substep. */
+
 typedef struct rb_joint_frame {
     double inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b; /* 0 for a body that cannot move */
     rb_vec2 local_a, local_b; /* m, anchors relative to each centre of mass, in the body frames */
     rb_vec2 ra, rb;           /* m, the same turned into the world, now */
     double omega_a, omega_b;  /* rad/s, the bodies' angular velocities at the start of the substep */
+    /* Pins and welds only, fixed for the substep: */
+    rb_point_mass point_mass; /* K at ra, rb */
+    rb_vec2 point_drift;      /* m/s, the anchors' centripetal drift over the substep (joint_point.c) */
 } rb_joint_frame;
 
 typedef struct rb_revolute_data {
@@ -183,8 +216,12 @@ typedef struct rb_joint {
 
 struct rb_world {
     uint16_t serial;
-    bool locked;    /* inside rb_world_step */
+    bool locked;              /* inside rb_world_step */
+    bool in_substep_callback; /* inside the user's substep callback, which may set cable laws */
+    rb_substep_fn *substep_callback;
+    void *substep_context;
     bool profiling; /* time the phases of the step */
+    bool enable_sleep;
     rb_vec2 gravity;
     rb_solver_settings settings;
 
@@ -210,8 +247,15 @@ struct rb_world {
     int pair_count, pair_capacity;
     struct rb_sweep_entry *sweep; /* broad phase: the shapes sorted by lower x, kept from step to step */
     int sweep_capacity;
-    int sweep_count;
-    bool sweep_stale; /* shapes were created or destroyed: rebuild the sweep */
+    int *island_parent; /* union-find over bodies, found anew each step (sleep.c) */
+    int island_capacity;
+    int *island_size;
+    int island_size_capacity;
+    double *island_rest; /* s, by island root: the shortest time at rest */
+    int island_rest_capacity;
+    int sweep_count;       /* shapes in the sweep: all of them, or none while no shape is solid */
+    bool sweep_stale;      /* shapes were created or destroyed: rebuild the sweep */
+    int solid_shape_count; /* shapes that are not sensors */
 
     rb_contact_constraint *constraints;
     int constraint_count, constraint_capacity;
@@ -232,6 +276,10 @@ struct rb_world {
 
     rb_profile profile;
     rb_statistics statistics;
+
+    rb_event_arrays events;
+    rb_pre_solve_fn *pre_solve;
+    void *pre_solve_context;
 };
 
 /* Milliseconds on the monotonic clock while the world is profiling, else
@@ -243,6 +291,9 @@ rb_status rb_world_find_body(const rb_world *world, rb_body_id id, const char *f
 rb_status rb_world_find_shape(const rb_world *world, rb_shape_id id, const char *function, int *index);
 /* Also fails with RB_ERR_LOCKED while the world is stepping. */
 rb_status rb_world_check_unlocked(const rb_world *world, const char *function);
+/* For the few changes allowed inside the substep callback too (cable
+ * tension laws): they alter forces, not the set of objects. */
+rb_status rb_world_check_unlocked_or_in_substep_callback(const rb_world *world, const char *function);
 
 rb_status rb_world_find_joint(const rb_world *world, rb_joint_id id, const char *function, int *index);
 
@@ -269,7 +320,8 @@ void rb_cables_remove_body(rb_world *world, int body);
 /* Destroys every joint attached to the body. */
 void rb_joints_remove_body(rb_world *world, int body);
 
-/* Removes every contact that involves the shape. */
-void rb_contacts_remove_shape(rb_world *world, int shape);
+/* Removes every contact that involves the shape, ending those that touch
+ * (their end events join the next step's). */
+rb_status rb_contacts_remove_shape(rb_world *world, int shape);
 
 #endif

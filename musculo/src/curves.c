@@ -164,10 +164,34 @@ void mu_curves_destroy(mu_curves *curves)
     free(curves);
 }
 
+_Static_assert(sizeof(((mu_curve_hint *)0)->interval) / sizeof(size_t) == MU_CURVE_KIND_COUNT,
+               "a hint holds one interval per table");
+
+/* GSL's accelerator for a look-up: the hint's interval for this table
+ * (the search then starts there), or none. A hint made for a longer
+ * table falls back to the first interval. */
+static gsl_interp_accel *start_lookup(const mu_curves *curves, mu_curve_kind kind, const mu_curve_hint *hint,
+                                      gsl_interp_accel *accel)
+{
+    if (hint == NULL) {
+        return NULL;
+    }
+    size_t interval = hint->interval[kind];
+    *accel = (gsl_interp_accel){.cache = interval + 1 < curves->tables[kind].count ? interval : 0};
+    return accel;
+}
+
+static void end_lookup(mu_curve_kind kind, mu_curve_hint *hint, const gsl_interp_accel *accel)
+{
+    if (hint != NULL) {
+        hint->interval[kind] = accel->cache;
+    }
+}
+
 /* The interpolant at x, its end values outside the table, and never below
  * 0: a muscle only pulls, and a hand-edited table may dip below (the
  * report's annex prints -0.001 for the first passive knots). */
-static double tabulated_value(const mu_curves *curves, mu_curve_kind kind, double x)
+static double tabulated_value(const mu_curves *curves, mu_curve_kind kind, mu_curve_hint *hint, double x)
 {
     const mu_curve_table *table = &curves->tables[kind];
     const size_t last = table->count - 1;
@@ -177,7 +201,10 @@ static double tabulated_value(const mu_curves *curves, mu_curve_kind kind, doubl
     } else if (x >= table->x[last]) {
         y = table->y[last];
     } else {
-        y = gsl_interp_eval(curves->interpolants[kind], table->x, table->y, x, NULL);
+        gsl_interp_accel accel;
+        y = gsl_interp_eval(curves->interpolants[kind], table->x, table->y, x,
+                            start_lookup(curves, kind, hint, &accel));
+        end_lookup(kind, hint, &accel);
     }
     return y < 0.0 ? 0.0 : y;
 }
@@ -187,13 +214,16 @@ static double tabulated_value(const mu_curves *curves, mu_curve_kind kind, doubl
  * slope as a damping coefficient, and a negative one would feed energy in
  * (the f_V table's last knots fall by 0.0014, digitisation noise). At a
  * knot of the linear table this is one side's slope. */
-static double tabulated_slope(const mu_curves *curves, mu_curve_kind kind, double x)
+static double tabulated_slope(const mu_curves *curves, mu_curve_kind kind, mu_curve_hint *hint, double x)
 {
     const mu_curve_table *table = &curves->tables[kind];
     if (!(x > table->x[0] && x < table->x[table->count - 1])) {
         return 0.0;
     }
-    const double slope = gsl_interp_eval_deriv(curves->interpolants[kind], table->x, table->y, x, NULL);
+    gsl_interp_accel accel;
+    const double slope = gsl_interp_eval_deriv(curves->interpolants[kind], table->x, table->y, x,
+                                               start_lookup(curves, kind, hint, &accel));
+    end_lookup(kind, hint, &accel);
     return slope < 0.0 ? 0.0 : slope;
 }
 
@@ -244,26 +274,26 @@ static double analytic_velocity_slope(const mu_curves *curves, double v)
     return curves->isometric_slope * exp(-curves->isometric_slope * v / rise);
 }
 
-double mu_curve_active_length(const mu_curves *curves, double normalized_length)
+double mu_curve_active_length_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_length)
 {
     if (curves == NULL || isnan(normalized_length)) {
         return NAN;
     }
     if (curves->tabulated) {
-        return tabulated_value(curves, MU_CURVE_ACTIVE_LENGTH, normalized_length);
+        return tabulated_value(curves, MU_CURVE_ACTIVE_LENGTH, hint, normalized_length);
     }
     /* Seed 003 (Challis 1994 after Hatze 1981): a Gaussian of width SK. */
     const double z = (normalized_length - 1.0) / curves->analytic.width;
     return exp(-z * z);
 }
 
-double mu_curve_passive_length(const mu_curves *curves, double normalized_length)
+double mu_curve_passive_length_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_length)
 {
     if (curves == NULL || isnan(normalized_length)) {
         return NAN;
     }
     if (curves->tabulated) {
-        return tabulated_value(curves, MU_CURVE_PASSIVE_LENGTH, normalized_length);
+        return tabulated_value(curves, MU_CURVE_PASSIVE_LENGTH, hint, normalized_length);
     }
     /* Seed 003: c·(exp(d·(l̃ - 1)) - 1), counted only where positive, that
      * is for l̃ > 1; expm1 keeps its digits just above l̃ = 1. */
@@ -273,24 +303,44 @@ double mu_curve_passive_length(const mu_curves *curves, double normalized_length
     return curves->analytic.passive_scale * expm1(curves->analytic.passive_rate * (normalized_length - 1.0));
 }
 
-double mu_curve_velocity(const mu_curves *curves, double normalized_velocity)
+double mu_curve_velocity_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity)
 {
     if (curves == NULL || isnan(normalized_velocity)) {
         return NAN;
     }
     if (curves->tabulated) {
-        return tabulated_value(curves, MU_CURVE_VELOCITY, normalized_velocity);
+        return tabulated_value(curves, MU_CURVE_VELOCITY, hint, normalized_velocity);
     }
     return analytic_velocity(curves, normalized_velocity);
 }
 
-double mu_curve_velocity_slope(const mu_curves *curves, double normalized_velocity)
+double mu_curve_velocity_slope_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity)
 {
     if (curves == NULL || isnan(normalized_velocity)) {
         return NAN;
     }
     if (curves->tabulated) {
-        return tabulated_slope(curves, MU_CURVE_VELOCITY, normalized_velocity);
+        return tabulated_slope(curves, MU_CURVE_VELOCITY, hint, normalized_velocity);
     }
     return analytic_velocity_slope(curves, normalized_velocity);
+}
+
+double mu_curve_active_length(const mu_curves *curves, double normalized_length)
+{
+    return mu_curve_active_length_hinted(curves, NULL, normalized_length);
+}
+
+double mu_curve_passive_length(const mu_curves *curves, double normalized_length)
+{
+    return mu_curve_passive_length_hinted(curves, NULL, normalized_length);
+}
+
+double mu_curve_velocity(const mu_curves *curves, double normalized_velocity)
+{
+    return mu_curve_velocity_hinted(curves, NULL, normalized_velocity);
+}
+
+double mu_curve_velocity_slope(const mu_curves *curves, double normalized_velocity)
+{
+    return mu_curve_velocity_slope_hinted(curves, NULL, normalized_velocity);
 }

@@ -20,6 +20,7 @@ struct mu_muscle {
     rb_cable_id cable;
     double rest_length, max_force, max_velocity, tendon_length, tension_gain;
     const mu_curves *curves;
+    mu_curve_hint hint; /* where this muscle's last curve look-ups fell */
     double activation;
     double target_tension;        /* < 0: activation control */
     double base_tension, damping; /* the law handed to the cable this substep */
@@ -153,16 +154,25 @@ double mu_muscle_max_force(const mu_muscle *muscle) { return muscle->max_force; 
 double mu_muscle_tendon_length(const mu_muscle *muscle) { return muscle->tendon_length; }
 rb_cable_id mu_muscle_cable(const mu_muscle *muscle) { return muscle->cable; }
 
-rb_status mu_muscle_prepare(mu_muscle *muscle, rb_world *world, double h)
+/* The belly's length (path minus tendon) and lengthening speed now. */
+static rb_status read_belly(const mu_muscle *muscle, const rb_world *world, double *length, double *velocity)
 {
-    (void)h;
     double path = 0.0;
-    double velocity = 0.0;
-    rb_status status = rb_cable_state(world, muscle->cable, &path, &velocity);
-    if (status != RB_OK) {
-        return status;
-    }
-    double length = path - muscle->tendon_length;
+    rb_status status = rb_cable_state(world, muscle->cable, &path, velocity);
+    *length = path - muscle->tendon_length;
+    return status;
+}
+
+static double passive_force(mu_muscle *muscle, double length)
+{
+    return muscle->max_force *
+           mu_curve_passive_length_hinted(muscle->curves, &muscle->hint, length / muscle->rest_length);
+}
+
+/* Sets the cable's tension law for the next substep from the belly's
+ * state now. */
+static rb_status set_tension_law(mu_muscle *muscle, rb_world *world, double length, double velocity, double passive)
+{
     if (muscle->target_tension >= 0.0) {
         /* The seed's proportional controller on the active force, once per
          * substep (report annex C.7). */
@@ -172,37 +182,29 @@ rb_status mu_muscle_prepare(mu_muscle *muscle, rb_world *world, double h)
     }
     double l = length / muscle->rest_length;
     double v = velocity / muscle->max_velocity;
-    double fl = mu_curve_active_length(muscle->curves, l);
-    double active = muscle->max_force * muscle->activation * fl * mu_curve_velocity(muscle->curves, v);
-    double passive = muscle->max_force * mu_curve_passive_length(muscle->curves, l);
-    muscle->damping =
-        muscle->max_force * muscle->activation * fl * mu_curve_velocity_slope(muscle->curves, v) / muscle->max_velocity;
+    double fl = mu_curve_active_length_hinted(muscle->curves, &muscle->hint, l);
+    double active =
+        muscle->max_force * muscle->activation * fl * mu_curve_velocity_hinted(muscle->curves, &muscle->hint, v);
+    muscle->damping = muscle->max_force * muscle->activation * fl *
+                      mu_curve_velocity_slope_hinted(muscle->curves, &muscle->hint, v) / muscle->max_velocity;
     muscle->base_tension = active + passive - muscle->damping * velocity;
     return rb_cable_set_tension_law(world, muscle->cable, muscle->base_tension, muscle->damping);
 }
 
-rb_status mu_muscle_measure(mu_muscle *muscle, const rb_world *world)
+/* Fills the readout from the belly's state after a substep. The total is
+ * the tension the solver applied: the law at the velocity it solved for,
+ * which the iterations reach only approximately when the muscle shares
+ * its bodies with joints and other muscles. (Evaluating the law at the
+ * end velocity instead would amplify a residual of a few mm/s by the
+ * 10⁴-10⁵ N·s/m of the force-velocity slope.) */
+static void fill_readout(mu_muscle *muscle, const rb_world *world, double length, double velocity, double passive)
 {
-    double path = 0.0;
-    double velocity = 0.0;
-    rb_status status = rb_cable_state(world, muscle->cable, &path, &velocity);
-    if (status != RB_OK) {
-        return status;
-    }
-    double length = path - muscle->tendon_length;
-    double l = length / muscle->rest_length;
-    double passive = muscle->max_force * mu_curve_passive_length(muscle->curves, l);
-    /* The tension the solver applied: the law at the velocity it solved
-     * for, which the iterations reach only approximately when the muscle
-     * shares its bodies with joints and other muscles. (Evaluating the
-     * law at the end velocity instead would amplify a residual of a few
-     * mm/s by the 10⁴-10⁵ N·s/m of the force-velocity slope.) */
     double total = rb_cable_tension(world, muscle->cable);
     muscle->readout = (mu_muscle_readout){
         .activation = muscle->activation,
         .target_tension = muscle->target_tension,
         .length = length,
-        .normalized_length = l,
+        .normalized_length = length / muscle->rest_length,
         .velocity = velocity,
         .normalized_velocity = velocity / muscle->max_velocity,
         .contraction = muscle->rest_length - length,
@@ -211,7 +213,40 @@ rb_status mu_muscle_measure(mu_muscle *muscle, const rb_world *world)
         .passive_force = passive,
         .total_force = total,
     };
-    return RB_OK;
+}
+
+rb_status mu_muscle_prepare(mu_muscle *muscle, rb_world *world, double h)
+{
+    (void)h;
+    double length = 0.0;
+    double velocity = 0.0;
+    rb_status status = read_belly(muscle, world, &length, &velocity);
+    return status != RB_OK ? status : set_tension_law(muscle, world, length, velocity, passive_force(muscle, length));
+}
+
+rb_status mu_muscle_measure(mu_muscle *muscle, const rb_world *world)
+{
+    double length = 0.0;
+    double velocity = 0.0;
+    rb_status status = read_belly(muscle, world, &length, &velocity);
+    if (status == RB_OK) {
+        fill_readout(muscle, world, length, velocity, passive_force(muscle, length));
+    }
+    return status;
+}
+
+rb_status mu_muscle_advance(mu_muscle *muscle, rb_world *world, double h)
+{
+    (void)h;
+    double length = 0.0;
+    double velocity = 0.0;
+    rb_status status = read_belly(muscle, world, &length, &velocity);
+    if (status != RB_OK) {
+        return status;
+    }
+    double passive = passive_force(muscle, length);
+    fill_readout(muscle, world, length, velocity, passive);
+    return set_tension_law(muscle, world, length, velocity, passive);
 }
 
 mu_muscle_readout mu_muscle_read(const mu_muscle *muscle) { return muscle->readout; }

@@ -16,6 +16,7 @@ typedef struct rb_debug_draw {
     void (*draw_polygon)(const rb_vec2 *vertices, int count, uint32_t color, void *context);
     /* A circle; `axis` is a unit vector showing the body's rotation. */
     void (*draw_circle)(rb_vec2 center, double radius, rb_vec2 axis, uint32_t color, void *context);
+    /* A line: segment shapes (in their shape colour), normals, joints. */
     void (*draw_segment)(rb_vec2 p1, rb_vec2 p2, uint32_t color, void *context);
     /* A point of `size` pixels. */
     void (*draw_point)(rb_vec2 p, double size, uint32_t color, void *context);

@@ -1,8 +1,9 @@
-/* Shape geometry and its mass properties.
+/* Shape geometry, its mass properties, bounding boxes and ray casts.
  *
  * Geometry is given in the body's local frame (metres). Boxes are
  * polygons. A polygon is convex, counter-clockwise, with 3 to
  * RB_MAX_POLYGON_VERTICES vertices and outward unit edge normals.
+ * Segments are lines of no thickness and no mass, for ground outlines.
  */
 #ifndef RB_GEOMETRY_H
 #define RB_GEOMETRY_H
@@ -20,6 +21,8 @@
 typedef enum rb_shape_type {
     RB_SHAPE_CIRCLE,
     RB_SHAPE_POLYGON,
+    RB_SHAPE_SEGMENT,       /* two-sided line segment */
+    RB_SHAPE_CHAIN_SEGMENT, /* one-sided segment of a chain, smoothed by its neighbours */
 } rb_shape_type;
 
 typedef struct rb_circle {
@@ -33,6 +36,30 @@ typedef struct rb_polygon {
     rb_vec2 centroid;                          /* m, area centroid */
     int count;                                 /* 3 .. RB_MAX_POLYGON_VERTICES */
 } rb_polygon;
+
+/* A line segment from point1 to point2 (m, at least
+ * RB_POLYGON_WELD_DISTANCE apart). It has no thickness and no area: its
+ * mass is zero, so it belongs on a static or kinematic body, or on a
+ * dynamic body with a mass override. It collides with circles and
+ * polygons on both sides, not with other segments. */
+typedef struct rb_segment {
+    rb_vec2 point1, point2;
+} rb_segment;
+
+/* One segment of a chain (rb_shape_create_chain), with its neighbours'
+ * far points as ghost vertices. It is one-sided: it collides only with
+ * shapes on its left, seen from point1 towards point2 (a ground outline
+ * given from left to right faces up; a loop given clockwise faces out,
+ * counter-clockwise in). The ghosts smooth the joints: a shape sliding
+ * along the chain meets each joint as the neighbour's surface, never as
+ * a corner, so it does not catch on flat or concave joints. */
+typedef struct rb_chain_segment {
+    rb_segment segment;
+    rb_vec2 ghost1;  /* m, the previous chain point, when has_ghost1 */
+    rb_vec2 ghost2;  /* m, the next chain point, when has_ghost2 */
+    bool has_ghost1; /* false at the start of an open chain: point1 is a free end */
+    bool has_ghost2; /* false at the end of an open chain: point2 is a free end */
+} rb_chain_segment;
 
 /* Mass properties of a shape or a body. */
 typedef struct rb_mass_data {
@@ -76,5 +103,31 @@ rb_status rb_area_density_from_volume(double volume_density, double depth, doubl
 /* Bounding boxes of a shape placed by a transform. */
 rb_aabb rb_circle_aabb(const rb_circle *circle, rb_transform xf);
 rb_aabb rb_polygon_aabb(const rb_polygon *polygon, rb_transform xf);
+rb_aabb rb_segment_aabb(const rb_segment *segment, rb_transform xf);
+
+/* Ray casts against one shape placed by xf: the ray runs from `origin`
+ * to origin + translation (m, world). A hit reports where the ray enters
+ * the shape: fraction in [0, 1] of the translation, the world point and
+ * the shape's outward unit normal there. A ray that starts inside a
+ * circle or polygon does not hit it (it never enters), a ray parallel to
+ * a segment never hits it, and a zero translation hits nothing. A
+ * segment is hit from either side, its normal facing the ray; a chain
+ * segment only from its front (left) side. */
+typedef struct rb_ray_cast_output {
+    bool hit;
+    double fraction; /* 0 .. 1, of the translation */
+    rb_vec2 point;   /* m, world */
+    rb_vec2 normal;  /* unit, world, pointing out of the shape towards the ray's origin side */
+} rb_ray_cast_output;
+
+rb_ray_cast_output rb_ray_cast_circle(const rb_circle *circle, rb_transform xf, rb_vec2 origin, rb_vec2 translation);
+rb_ray_cast_output rb_ray_cast_polygon(const rb_polygon *polygon, rb_transform xf, rb_vec2 origin, rb_vec2 translation);
+rb_ray_cast_output rb_ray_cast_segment(const rb_segment *segment, rb_transform xf, rb_vec2 origin, rb_vec2 translation);
+rb_ray_cast_output rb_ray_cast_chain_segment(const rb_chain_segment *segment, rb_transform xf, rb_vec2 origin,
+                                             rb_vec2 translation);
+
+/* Whether a world point lies inside (or on) the shape placed by xf. */
+bool rb_circle_contains(const rb_circle *circle, rb_transform xf, rb_vec2 point);
+bool rb_polygon_contains(const rb_polygon *polygon, rb_transform xf, rb_vec2 point);
 
 #endif

@@ -7,10 +7,12 @@
 #include "rb/cable.h"
 #include "rb/collision.h"
 #include "rb/debug_draw.h"
+#include "rb/events.h"
 #include "rb/geometry.h"
 #include "rb/id.h"
 #include "rb/joint.h"
 #include "rb/math.h"
+#include "rb/query.h"
 #include "rb/shape.h"
 #include "rb/world.h"
 

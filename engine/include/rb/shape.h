@@ -40,6 +40,24 @@ rb_status rb_shape_create_circle(rb_world *world, rb_body_id body, const rb_shap
                                  rb_shape_id *out);
 rb_status rb_shape_create_polygon(rb_world *world, rb_body_id body, const rb_shape_def *def, const rb_polygon *polygon,
                                   rb_shape_id *out);
+/* A two-sided segment (see rb_segment). Segments have no mass: on a
+ * dynamic body without a mass override this fails with RB_ERR_NO_MASS;
+ * the density is kept but adds nothing. */
+rb_status rb_shape_create_segment(rb_world *world, rb_body_id body, const rb_shape_def *def, const rb_segment *segment,
+                                  rb_shape_id *out);
+
+/* A chain: one chain-segment shape (rb_chain_segment, one-sided, facing
+ * left of the point order) per pair of consecutive points, each knowing
+ * its neighbours as ghost vertices, so shapes slide and roll across the
+ * joints. `count` points (at least 2, or 3 for a loop; consecutive
+ * points at least RB_POLYGON_WELD_DISTANCE apart) make count - 1
+ * segments, or `count` when `loop` closes the chain from the last point
+ * back to the first. Their ids go to `out` in order when it is not NULL
+ * (capacity at least the segment count). Same mass rule as segments.
+ * On failure no segment is left on the body. */
+rb_status rb_shape_create_chain(rb_world *world, rb_body_id body, const rb_shape_def *def, const rb_vec2 *points,
+                                int count, bool loop, rb_shape_id *out, int capacity);
+
 rb_status rb_shape_destroy(rb_world *world, rb_shape_id shape);
 bool rb_shape_is_valid(const rb_world *world, rb_shape_id shape);
 
@@ -47,7 +65,11 @@ rb_shape_type rb_shape_type_of(const rb_world *world, rb_shape_id shape);
 rb_body_id rb_shape_body(const rb_world *world, rb_shape_id shape);
 rb_circle rb_shape_circle(const rb_world *world, rb_shape_id shape);
 rb_polygon rb_shape_polygon(const rb_world *world, rb_shape_id shape);
-/* The shape's bounding box at the end of the last step (or creation). */
+/* A segment's or chain segment's points (zero for other shapes). */
+rb_segment rb_shape_segment(const rb_world *world, rb_shape_id shape);
+/* A chain segment with its ghosts (zero for other shapes). */
+rb_chain_segment rb_shape_chain_segment(const rb_world *world, rb_shape_id shape);
+/* The smallest axis-aligned box around the shape at its body's current pose. */
 rb_aabb rb_shape_aabb(const rb_world *world, rb_shape_id shape);
 
 rb_status rb_shape_set_friction(rb_world *world, rb_shape_id shape, double friction);

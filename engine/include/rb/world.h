@@ -44,14 +44,17 @@ typedef struct rb_world_def {
      * The clock reads cost about 0.3 µs a step: a tenth of a small
      * model's step, nothing for a large scene. */
     bool enable_profile;
+    /* Let resting islands fall asleep (default true; see rb_body_def.awake). */
+    bool enable_sleep;
 } rb_world_def;
 
 /* Time spent in each phase of the last step, in milliseconds. */
 typedef struct rb_profile {
     double step;
-    double pairs;   /* broad phase: find overlapping bounding boxes */
-    double collide; /* narrow phase: manifolds, impulse carry-over */
-    double prepare; /* constraint set-up */
+    double pairs;            /* broad phase: find overlapping bounding boxes */
+    double collide;          /* narrow phase: manifolds, impulse carry-over */
+    double prepare;          /* constraint set-up */
+    double substep_callback; /* the user's, see rb_world_set_substep_callback */
     double integrate_velocities;
     double warm_start;
     double solve_velocities;
@@ -59,6 +62,7 @@ typedef struct rb_profile {
     double correct_positions;
     double restitution;
     double store_impulses;
+    double islands;  /* islands: wake the ones touched, put the resting ones to sleep */
     double sensors;  /* sensor overlaps at the final poses */
     double finalize; /* transforms, bounding boxes, clearing forces */
 } rb_profile;
@@ -66,6 +70,8 @@ typedef struct rb_profile {
 /* Counters of the last step. */
 typedef struct rb_statistics {
     int body_count;
+    int awake_body_count; /* dynamic bodies awake after the step */
+    int island_count;     /* groups of dynamic bodies linked by touching contacts, joints and cables */
     int shape_count;
     int pair_count;    /* shape pairs whose bounding boxes overlap */
     int contact_count; /* pairs with at least one manifold point */
@@ -81,6 +87,11 @@ typedef struct rb_statistics {
     /* rad, >= 0, after the step: the largest rigid weld angle error or
      * revolute limit violation. */
     double max_joint_angle_error;
+    /* J, after the step: the dynamic bodies' kinetic energy ½m·v² + ½I·ω²
+     * plus their potential energy -m·(gravity_scale·g)·x in the world's
+     * gravity (zero at the origin). Constant for a conservative system up
+     * to the integrator's error; what solvers add or remove shows here. */
+    double energy;
 } rb_statistics;
 
 rb_solver_settings rb_default_solver_settings(void);
@@ -101,10 +112,29 @@ rb_vec2 rb_world_gravity(const rb_world *world);
 rb_status rb_world_set_solver_settings(rb_world *world, const rb_solver_settings *settings);
 rb_solver_settings rb_world_solver_settings(const rb_world *world);
 
+/* A function the step calls at the start of every substep, before
+ * gravity and forces act, with the substep's index (0 .. substeps - 1)
+ * and length h (s). The bodies are at the substep's starting poses and
+ * velocities, and rb_cable_tension() gives the previous substep's
+ * tension. It may read anything and set cable tension laws
+ * (rb_cable_set_tension_law); every other change is refused with
+ * RB_ERR_LOCKED, since the step is under way.
+ *
+ * This is how a force that depends on the state (a muscle's) is updated
+ * every substep while the broad and narrow phases run once per step. */
+typedef void rb_substep_fn(rb_world *world, int substep, double h, void *context);
+
+/* Replaces the callback; NULL removes it. Not allowed during a step. */
+rb_status rb_world_set_substep_callback(rb_world *world, rb_substep_fn *callback, void *context);
+
 /* All zero while profiling is off. */
 rb_profile rb_world_profile(const rb_world *world);
 rb_status rb_world_enable_profile(rb_world *world, bool enable);
 rb_statistics rb_world_statistics(const rb_world *world);
+
+/* Disabling sleep wakes every body. */
+rb_status rb_world_enable_sleep(rb_world *world, bool enable);
+bool rb_world_is_sleep_enabled(const rb_world *world);
 
 /* Bytes this world holds now. */
 size_t rb_world_bytes_in_use(const rb_world *world);

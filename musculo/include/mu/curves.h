@@ -12,6 +12,8 @@
 #ifndef MU_CURVES_H
 #define MU_CURVES_H
 
+#include <stddef.h>
+
 #include "rb/base.h"
 
 typedef struct mu_curves mu_curves;
@@ -57,5 +59,18 @@ double mu_curve_velocity(const mu_curves *curves, double normalized_velocity);
 /* d f_V / d ṽ at ṽ (>= 0): the muscle's damping, for the implicit solve.
  * A table's slope is 0 outside it and one side's slope at a linear knot. */
 double mu_curve_velocity_slope(const mu_curves *curves, double normalized_velocity);
+
+/* Where the last look-ups fell in each table (GSL's gsl_interp_accel):
+ * the next ones, a little away, skip the binary search. Zero-initialise
+ * one per muscle and keep it with the muscle; it is not shared between
+ * threads. A hinted look-up returns exactly what the plain one does. */
+typedef struct mu_curve_hint {
+    size_t interval[3]; /* per table: the knot that starts the last interval found */
+} mu_curve_hint;
+
+double mu_curve_active_length_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_length);
+double mu_curve_passive_length_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_length);
+double mu_curve_velocity_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity);
+double mu_curve_velocity_slope_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity);
 
 #endif

@@ -9,9 +9,11 @@
  * `weld_glues` keeps them as weld joints instead, for study. Names still
  * address the parts either way.
  *
- * One frame of 1/frame_rate s is split into the model's substeps (the
- * seed: 60 Hz, 10 substeps); each substep sets every muscle's tension law
- * from its state, steps the world by one substep, and reads the muscles.
+ * One frame of 1/frame_rate s is one engine step split into the model's
+ * substeps (the seed: 60 Hz, 10 substeps); at the start of each substep
+ * every muscle reads what the previous substep did and sets its tension
+ * law from its state (the engine's substep callback). Collision runs
+ * once per frame.
  */
 #ifndef MU_MODEL_H
 #define MU_MODEL_H
@@ -45,8 +47,10 @@ const mu_model_desc *mu_model_description(const mu_model *model);
 /* Advances one frame: the model's substeps, one after the other. */
 rb_status mu_model_step(mu_model *model);
 /* Advances one substep (frame duration / substeps), for controls finer
- * than a frame (a pulse of 2 ms at 600 Hz is one substep); a frame is
- * `substeps` of them. */
+ * than a frame (a pulse of 2 ms at 600 Hz is one substep): one engine
+ * step of one substep. The solve is a frame's substep; collision runs
+ * before each substep instead of once per frame, which a model whose
+ * parts never touch (the built-in ones: bones are sensors) does not feel. */
 rb_status mu_model_substep(mu_model *model);
 double mu_model_time(const mu_model *model);             /* s since creation */
 double mu_model_frame_duration(const mu_model *model);   /* s */

@@ -5,9 +5,12 @@
  * the muscle shortens; ṽ = v/Vmax. The tendon is rigid: its length is
  * fixed at creation, so the belly's velocity is the path's.
  *
- * Each substep: mu_muscle_prepare before rb_world_step sets the cable's
- * tension law from the muscle's state; mu_muscle_measure after it reads
- * the force the implicit solve produced and fills the readout.
+ * Each substep: mu_muscle_prepare, before the substep, sets the cable's
+ * tension law from the muscle's state; mu_muscle_measure, after it, reads
+ * the force the implicit solve produced and fills the readout. Called
+ * from the engine's substep callback, both happen at the start of each
+ * substep (mu_muscle_advance), and the last substep is measured after
+ * the step.
  */
 #ifndef MU_MUSCLE_H
 #define MU_MUSCLE_H
@@ -73,6 +76,10 @@ rb_cable_id mu_muscle_cable(const mu_muscle *muscle);
 
 rb_status mu_muscle_prepare(mu_muscle *muscle, rb_world *world, double h);
 rb_status mu_muscle_measure(mu_muscle *muscle, const rb_world *world);
+/* mu_muscle_measure then mu_muscle_prepare, reading the path once: for
+ * the start of every substep but the first, when the state the last
+ * substep left is the one the next starts from. */
+rb_status mu_muscle_advance(mu_muscle *muscle, rb_world *world, double h);
 mu_muscle_readout mu_muscle_read(const mu_muscle *muscle);
 
 #endif
