@@ -49,12 +49,15 @@ Test(cli, a_run_writes_one_row_per_frame_with_every_readout)
     cr_assert_not_null(f, "no CSV at %s", csv);
     static char line[1 << 16];
     cr_assert_not_null(fgets(line, sizeof line, f), "empty CSV");
-    /* time, 11 readouts for each of the 5 muscles, 2 hinge angles, and
+    /* time, 15 readouts for each of the 5 muscles, 2 hinge angles, and
      * x, y, angle for each of the 11 parts (1 nail, 10 bones). */
-    const int columns = 1 + 11 * 5 + 2 + 3 * 11;
+    const int columns = 1 + 15 * 5 + 2 + 3 * 11;
     cr_expect_eq(count_fields(line), columns, "%d columns in the header, expected %d", count_fields(line), columns);
     cr_expect(strstr(line, "time_s") == line, "the header starts with time_s: %.40s", line);
     cr_expect(strstr(line, "Biceps Short.total_force_N") != NULL, "a total force column per muscle");
+    cr_expect(strstr(line, "Biceps Short.total_force_N,Biceps Short.excitation,Biceps Short.fibre_length_m,"
+                           "Biceps Short.tendon_length_m,Biceps Short.pennation_angle_deg,") != NULL,
+              "the physiology columns after the forces, with their units");
     cr_expect(strstr(line, "Elbow.angle_deg") != NULL, "an angle column per hinge");
     int rows = 0;
     while (fgets(line, sizeof line, f) != NULL) {

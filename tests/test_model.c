@@ -237,6 +237,122 @@ Test(model, full_activation_switched_every_half_second_stays_stable)
     }
 }
 
+/* The fastest any part moves (m/s, from its centre frame to frame) while
+ * every muscle's activation is switched between 1 and 0 every 0.5 s for
+ * `seconds`; fails at a NaN pose or readout. */
+static double fastest_part_under_switching(mu_model *model, double seconds, const char *what)
+{
+    const int frames = (int)lround(seconds / mu_model_frame_duration(model));
+    const int half_second = (int)lround(0.5 / mu_model_frame_duration(model));
+    rb_vec2 previous[64];
+    const int parts = mu_model_part_count(model) < 64 ? mu_model_part_count(model) : 64;
+    for (int p = 0; p < parts; ++p) {
+        previous[p] = mu_model_part_centre(model, p);
+    }
+    double fastest = 0.0;
+    for (int f = 0; f < frames; ++f) {
+        if (f % half_second == 0) {
+            for (int m = 0; m < mu_model_muscle_count(model); ++m) {
+                cr_assert_eq(mu_model_set_activation_at(model, m, (f / half_second) % 2 == 0 ? 1.0 : 0.0), RB_OK);
+            }
+        }
+        cr_assert_eq(mu_model_step(model), RB_OK, "%s", rb_last_error());
+        for (int m = 0; m < mu_model_muscle_count(model); ++m) {
+            const mu_muscle_readout r = mu_model_muscle_readout(model, m);
+            cr_assert(isfinite(r.total_force) && isfinite(r.fibre_length) && isfinite(r.tendon_length),
+                      "%s: muscle %s at frame %d: force %g N, fibre %g m, tendon %g m", what,
+                      mu_model_muscle_name(model, m), f, r.total_force, r.fibre_length, r.tendon_length);
+        }
+        for (int p = 0; p < parts; ++p) {
+            const rb_vec2 c = mu_model_part_centre(model, p);
+            if (isnan(previous[p].x)) {
+                continue; /* a part not built in this variant */
+            }
+            cr_assert(rb_vec2_is_finite(c), "%s: part %s at frame %d", what, mu_model_part_name(model, p), f);
+            fastest = fmax(fastest, rb_distance(c, previous[p]) / mu_model_frame_duration(model));
+            previous[p] = c;
+        }
+    }
+    return fastest;
+}
+
+Test(model, compliant_tendons_with_activation_dynamics_stay_stable)
+{
+    /* The arm and the leg with every muscle given activation dynamics and
+     * a compliant tendon (each whose rigid tendon is longer than 1 mm:
+     * Triceps Medial has none), at the default 10 substeps per frame,
+     * their muscles switched fully on and off every 0.5 s for 10 s: no NaN
+     * anywhere, and no part faster than the bound the rigid models keep
+     * (20 m/s, so the kinetic energy stays bounded), nor more than twice
+     * as fast as with the seed's muscles plus 0.5 m/s. */
+    const char *names[] = {"arm", "leg"};
+    for (int n = 0; n < 2; ++n) {
+        mu_model_desc *desc = load(names[n]);
+        for (int w = 0; w < desc->weight.mass_count; ++w) {
+            mu_model *rigid = build(desc, 4, 0, w, false);
+            /* Variant 0 builds every muscle, in the description's order. */
+            bool has_tendon[16] = {false};
+            cr_assert_eq(mu_model_muscle_count(rigid), desc->muscle_count);
+            for (int m = 0; m < desc->muscle_count && m < 16; ++m) {
+                has_tendon[m] = mu_model_muscle_readout(rigid, m).tendon_length > 1e-3;
+            }
+            const double rigid_fastest = fastest_part_under_switching(rigid, 10.0, names[n]);
+            mu_model_destroy(rigid);
+            for (int m = 0; m < desc->muscle_count && m < 16; ++m) {
+                desc->muscles[m].activation_dynamics = true;
+                desc->muscles[m].compliant_tendon = has_tendon[m];
+            }
+            mu_model *compliant = build(desc, 4, 0, w, false);
+            const double fastest = fastest_part_under_switching(compliant, 10.0, names[n]);
+            cr_expect(fastest < 20.0 && fastest < 2.0 * rigid_fastest + 0.5,
+                      "%s weight %d: a part moved at %g m/s (%g with the seed's muscles)", names[n], w, fastest,
+                      rigid_fastest);
+            cr_log_info("%s weight %d: fastest part %g m/s compliant, %g m/s rigid", names[n], w, fastest,
+                        rigid_fastest);
+            mu_model_destroy(compliant);
+            for (int m = 0; m < desc->muscle_count; ++m) {
+                desc->muscles[m].activation_dynamics = false;
+                desc->muscles[m].compliant_tendon = false;
+            }
+        }
+        mu_model_desc_destroy(desc);
+    }
+}
+
+Test(model, physiology_options_reach_the_muscles)
+{
+    /* tests/data/models/physiology.json: Lifter has pennation (20°),
+     * activation dynamics and a compliant tendon; Seed has none. */
+    mu_model_desc *desc = NULL;
+    cr_assert_eq(mu_model_desc_load(SINEW_SOURCE_DIR "/tests/data/models/physiology.json", &desc), RB_OK, "%s",
+                 rb_last_error());
+    mu_model *model = build(desc, 4, 0, 0, false);
+    cr_expect_str_eq(mu_model_warnings(model), "");
+    mu_muscle_readout lifter = mu_model_muscle_readout(model, 0);
+    /* At creation: the fibre in equilibrium near 1.1 l_opt, so its angle
+     * near asin(sin 20°/1.1), the tendon near its slack length. */
+    expect_near(lifter.normalized_length, 1.1, 0.02, "start fibre length");
+    expect_near(lifter.pennation_angle, asin(sin(20.0 * RB_PI / 180.0) / lifter.normalized_length), 1e-12, "angle");
+    expect_near(lifter.tendon_length, 0.12 * sqrt(2.0), 0.12 * sqrt(2.0) * 0.04, "tendon near its slack length");
+    cr_assert_eq(mu_model_set_activation(model, "Lifter", 1.0), RB_OK);
+    cr_assert_eq(mu_model_set_activation(model, "Seed", 1.0), RB_OK);
+    cr_assert_eq(mu_model_step(model), RB_OK, "%s", rb_last_error());
+    lifter = mu_model_muscle_readout(model, 0);
+    const mu_muscle_readout seed = mu_model_muscle_readout(model, 1);
+    cr_expect_eq(lifter.excitation, 1.0);
+    /* After one frame (1/60 s) of activation dynamics from rest with
+     * τ_act = 15 ms: well on its way, not there. */
+    cr_expect(lifter.activation > 0.3 && lifter.activation < 0.95, "activation %g after a frame", lifter.activation);
+    cr_expect_eq(seed.activation, 1.0, "set at once");
+    cr_expect_eq(seed.pennation_angle, 0.0);
+    cr_expect_eq(seed.fibre_length, seed.length, "no pennation: the fibre is the belly");
+    run_seconds(model, 2.0);
+    lifter = mu_model_muscle_readout(model, 0);
+    cr_expect(isfinite(lifter.total_force) && lifter.total_force > 0.0, "force %g N", lifter.total_force);
+    mu_model_destroy(model);
+    mu_model_desc_destroy(desc);
+}
+
 Test(model, muscles_do_not_ring_at_the_substep_frequency)
 {
     /* The arm with 1 kg, one substep per "frame" of 1/600 s, so each

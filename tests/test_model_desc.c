@@ -371,6 +371,36 @@ Test(model_desc, defaults_fill_what_the_file_leaves_out)
     mu_model_desc_destroy(desc);
 }
 
+Test(model_desc, physiology_options_are_read_and_lengths_derived)
+{
+    /* Lifter: path from the nail to (0.3, -0.3) at the start, 0.3·√2 m;
+     * 40 % tendon: 0.12·√2 m; belly 0.18·√2 m at s = 1.1 and 20° of
+     * pennation: l_opt = 0.18·√2/√(1.21 - sin² 20°); Vmax 10 l_opt/s. */
+    mu_model_desc *desc = load(SINEW_SOURCE_DIR "/tests/data/models/physiology.json");
+    const mu_model_muscle *lifter = &desc->muscles[0];
+    const double s20 = sin(20.0 * RB_PI / 180.0);
+    const double rest = 0.18 * sqrt(2.0) / sqrt(1.21 - s20 * s20);
+    cr_expect_eq(lifter->tendon_fraction, 0.4);
+    expect_near(lifter->tendon_length, 0.12 * sqrt(2.0), 1e-15, "derived tendon length");
+    expect_near(lifter->rest_length, rest, 1e-15, "derived rest length");
+    expect_near(lifter->max_velocity, 10.0 * rest, 1e-14, "Vmax in derived rest lengths");
+    cr_expect_eq(lifter->pennation_angle, 20.0);
+    cr_expect(lifter->activation_dynamics);
+    cr_expect_eq(lifter->activation_time, 0.015);
+    cr_expect_eq(lifter->deactivation_time, 0.040, "the default");
+    cr_expect(lifter->compliant_tendon);
+    cr_expect_eq(lifter->tendon_strain_at_max_force, 0.04);
+    cr_expect_eq(lifter->fibre_damping, 0.05);
+    const mu_model_muscle *seed = &desc->muscles[1];
+    cr_expect_eq(seed->tendon_fraction, -1.0);
+    cr_expect_eq(seed->pennation_angle, 0.0);
+    cr_expect_not(seed->activation_dynamics);
+    cr_expect_not(seed->compliant_tendon);
+    cr_expect_eq(seed->tendon_strain_at_max_force, 0.049);
+    cr_expect_eq(seed->fibre_damping, 0.1);
+    mu_model_desc_destroy(desc);
+}
+
 /* The complete example of models/README.md is a model file that loads. */
 Test(model_desc, the_readme_example_loads)
 {
@@ -448,6 +478,13 @@ typedef struct bad_model {
 } bad_model;
 
 static const bad_model bad_models[] = {
+    {"torque_muscle_strongest_below_weakest.json",
+     "torque_muscle_strongest_below_weakest.json:10:65: torque_muscles[0].motor_pool.strongest: 1 is below weakest "
+     "(5), expected a strength >= weakest"},
+    {"torque_muscle_on_a_nail.json",
+     "torque_muscle_on_a_nail.json:10:32: torque_muscles[0].body: \"Nail\" is a nail, expected the name of a bone"},
+    {"torque_muscle_without_pool.json", "torque_muscle_without_pool.json:7:5: torque_muscles[0]: missing key "
+                                        "\"motor_pool\", expected the motor pool {neurons, weakest, strongest}"},
     {"vmax_twice.json", "vmax_twice.json:7:114: muscles[0].max_velocity_rest_lengths: given with max_velocity, "
                         "expected either max_velocity (m/s) or max_velocity_rest_lengths (rest lengths per second)"},
     {"syntax_error.json", "syntax_error.json:7:49: invalid JSON: '}' expected near '\"size\"'"},
@@ -463,7 +500,7 @@ static const bad_model bad_models[] = {
     {"mistyped_size.json",
      "mistyped_size.json:7:53: bones[0].size: found a string, expected the bone's x and y extents in m: [x, y]"},
     {"string_for_number.json", "string_for_number.json:20:22: muscles[0].rest_length: found a string, expected the "
-                               "belly's rest length in m (> 0)"},
+                               "fibres' rest (optimal) length in m (> 0)"},
     {"mistyped_static.json", "mistyped_static.json:7:76: bones[0].static: found a string, expected whether the bone "
                              "is static (true or false)"},
     {"real_substeps.json", "real_substeps.json:3:15: substeps: found a real number, expected the substeps per frame "
@@ -501,7 +538,8 @@ static const bad_model bad_models[] = {
     {"joint_as_body.json",
      "joint_as_body.json:14:33: glues[0].body_a: \"Hinge\" is a hinge, expected the name of a nail or bone"},
     {"duplicate_name.json", "duplicate_name.json:14:15: glues[0].name: \"Bone2\" is already the name of bones[1], "
-                            "expected a name that no other nail, bone, hinge, glue, weight, muscle or group has"},
+                            "expected a name that no other nail, bone, hinge, glue, weight, muscle, group or "
+                            "torque muscle has"},
     {"duplicate_variant_name.json", "duplicate_variant_name.json:32:15: variants[1].name: \"Default\" is already the "
                                     "name of variants[0], expected a name that no other variant has"},
     {"variant_unknown_muscle.json", "variant_unknown_muscle.json:31:48: variants[0].muscles[1]: no muscle is named "
@@ -546,6 +584,21 @@ static const bad_model bad_models[] = {
                                  "expected the belly's width at rest in m (> 0)"},
     {"symmetry_out_of_range.json", "symmetry_out_of_range.json:20:59: muscles[0].symmetry: 1.5 is out of range, "
                                    "expected where the belly sits between the path's ends (in [0, 1])"},
+    {"tendon_fraction_and_rest_length.json",
+     "tendon_fraction_and_rest_length.json:20:66: muscles[0].tendon_fraction: given with rest_length, expected one of "
+     "the two"},
+    {"compliant_tendon_zero_strain.json",
+     "compliant_tendon_zero_strain.json:20:92: muscles[0].compliant_tendon.strain_at_max_force: 0 is out of range, "
+     "expected the tendon's strain at the maximal isometric force (in (0, 1])"},
+    {"activation_dynamics_unknown_key.json",
+     "activation_dynamics_unknown_key.json:20:72: muscles[0].activation_dynamics.tau: unknown key \"tau\", expected "
+     "one of activation_time, deactivation_time (or comment)"},
+    {"pennation_out_of_range.json", "pennation_out_of_range.json:20:66: muscles[0].pennation_angle: 90 is out of "
+                                    "range, expected the pennation angle at the optimal fibre length in degrees (in "
+                                    "[0, 80])"},
+    {"compliant_tendon_without_tendon.json",
+     "compliant_tendon_without_tendon.json:20:99: muscles[0].compliant_tendon: the tendon's slack length would be "
+     "-0.0027864 m (path 0.447214 m at the start pose), expected a compliant tendon longer than 0"},
     {"unknown_curve_set.json", "unknown_curve_set.json:20:57: muscles[0].curves: \"hill\" is no curve set, expected "
                                "the curve set, \"tabulated\" or \"analytic\""},
 };

@@ -38,6 +38,7 @@ static const char usage_text[] =
     "  --duration S            simulated time, > 0 .. 1e6 s (default 10)\n"
     "  --activation NAME=A     activation 0 .. 1 of a muscle or group from t = 0 (repeatable)\n"
     "  --tension NAME=N        tension target in N of a muscle or group from t = 0 (repeatable)\n"
+    "  --recruit NAME=N        neurons 0 .. pool size recruited by a torque muscle from t = 0 (repeatable)\n"
     "  --control FILE          scheduled controls: lines `TIME activation NAME VALUE`,\n"
     "                          `TIME tension NAME NEWTONS`, `TIME pulse NAME [VALUE]`;\n"
     "                          '#' comments; names with spaces in double quotes\n"
@@ -49,7 +50,8 @@ static const char usage_text[] =
     "frame: time_s, then per muscle NAME.activation, NAME.target_tension_N, NAME.length_m,\n"
     "NAME.normalized_length, NAME.velocity_m_s, NAME.normalized_velocity,\n"
     "NAME.contraction_m, NAME.normalized_contraction, NAME.active_force_N,\n"
-    "NAME.passive_force_N, NAME.total_force_N; per hinge NAME.angle_deg; per part\n"
+    "NAME.passive_force_N, NAME.total_force_N, NAME.excitation, NAME.fibre_length_m,\n"
+    "NAME.tendon_length_m, NAME.pennation_angle_deg; per hinge NAME.angle_deg; per part\n"
     "NAME.x_m, NAME.y_m, NAME.angle_deg (README.md, \"Running models\").\n";
 
 /* Most frames a run may have: beyond any useful run, and a bound on the
@@ -73,6 +75,8 @@ typedef struct run_options {
     double duration;
     command_line_control *controls; /* in the order given */
     int control_count;
+    const char **recruits; /* NAME=N of torque muscles, in the order given */
+    int recruit_count;
     const char *control_path; /* NULL: none */
     const char *out_dir;
     bool weld_glues;
@@ -107,6 +111,8 @@ static int parse_option_value(const char *option, const char *value, run_options
             .kind = option[2] == 'a' ? CONTROL_ACTIVATION : CONTROL_TENSION,
             .text = value,
         };
+    } else if (strcmp(option, "--recruit") == 0) {
+        opts->recruits[opts->recruit_count++] = value;
     } else if (strcmp(option, "--control") == 0) {
         ok = option_parse_path(option, value, &opts->control_path, error, sizeof error);
     } else {
@@ -127,7 +133,7 @@ typedef enum parse_result { PARSE_OK, PARSE_HELP, PARSE_ERROR } parse_result;
 static parse_result parse_arguments(int argc, char **argv, run_options *opts)
 {
     static const char *const with_value[] = {"--variant",    "--weight",  "--weight-index", "--level", "--duration",
-                                             "--activation", "--tension", "--control",      "--out"};
+                                             "--activation", "--tension", "--control",      "--out",   "--recruit"};
     for (int i = 0; i < argc; ++i) {
         const char *argument = argv[i];
         if (strcmp(argument, "--help") == 0 || strcmp(argument, "-h") == 0) {
@@ -273,6 +279,34 @@ static int add_command_line_controls(const run_options *opts, controls *schedule
         if (!option_parse_double(quantity, equals + 1, 0.0, false, max, &value, error, sizeof error) ||
             !controls_add(schedule, 0.0, control->kind, name, value, error, sizeof error)) {
             fprintf(stderr, "sinew: %s \"%s\": %s\n", option, control->text, error);
+            return EXIT_USAGE;
+        }
+    }
+    return 0;
+}
+
+/* Recruits the torque muscles' neurons named by --recruit NAME=N;
+ * returns 0 or an exit status. */
+static int apply_recruits(const run_options *opts, mu_model *model)
+{
+    for (int k = 0; k < opts->recruit_count; ++k) {
+        const char *text = opts->recruits[k];
+        const char *equals = strrchr(text, '=');
+        if (equals == NULL || equals == text) {
+            fprintf(stderr, "sinew: --recruit expects TORQUE_MUSCLE=NEURONS, got \"%s\"\n", text);
+            return EXIT_USAGE;
+        }
+        char name[1024];
+        snprintf(name, sizeof name, "%.*s", (int)(equals - text), text);
+        int neurons;
+        char error[OPTION_ERROR_SIZE];
+        if (!option_parse_int("the neurons recruited", equals + 1, 0, MU_MAX_MOTOR_NEURONS, &neurons, error,
+                              sizeof error)) {
+            fprintf(stderr, "sinew: --recruit \"%s\": %s\n", text, error);
+            return EXIT_USAGE;
+        }
+        if (mu_model_recruit(model, name, neurons) != RB_OK) {
+            fprintf(stderr, "sinew: --recruit \"%s\": %s\n", text, rb_last_error());
             return EXIT_USAGE;
         }
     }
@@ -511,6 +545,10 @@ static int prepare(run_state *run)
     if (mu_model_create(run->desc, &options, &run->model) != RB_OK) {
         return engine_failure("building the model");
     }
+    code = apply_recruits(opts, run->model);
+    if (code != 0) {
+        return code;
+    }
     size_t muscles = (size_t)mu_model_muscle_count(run->model) + 1;
     run->peak_force = calloc(muscles, sizeof *run->peak_force);
     run->peak_time = calloc(muscles, sizeof *run->peak_time);
@@ -536,7 +574,10 @@ int cmd_run(int argc, char **argv)
 {
     run_options opts = {.weight_index = -1, .level = 4, .duration = 10.0, .out_dir = "."};
     opts.controls = malloc(((size_t)argc + 1) * sizeof *opts.controls);
-    if (opts.controls == NULL) {
+    opts.recruits = malloc(((size_t)argc + 1) * sizeof *opts.recruits);
+    if (opts.controls == NULL || opts.recruits == NULL) {
+        free(opts.controls);
+        free(opts.recruits);
         fputs("sinew: out of memory\n", stderr);
         return EXIT_FAILURE;
     }
@@ -544,9 +585,11 @@ int cmd_run(int argc, char **argv)
     case PARSE_HELP:
         fputs(usage_text, stdout);
         free(opts.controls);
+        free(opts.recruits);
         return EXIT_SUCCESS;
     case PARSE_ERROR:
         free(opts.controls);
+        free(opts.recruits);
         return EXIT_USAGE;
     case PARSE_OK:
         break;
@@ -567,5 +610,6 @@ int cmd_run(int argc, char **argv)
     free(run.angle_min);
     free(run.angle_max);
     free(opts.controls);
+    free(opts.recruits);
     return code;
 }

@@ -6,7 +6,7 @@
 #include "commands.h"
 #include "model_source.h"
 
-const char *const model_builtin_names[MODEL_BUILTIN_COUNT] = {"sample", "arm", "leg"};
+const char *const model_builtin_names[MODEL_BUILTIN_COUNT] = {"sample", "arm", "leg", "worm"};
 
 static bool ends_with(const char *text, const char *suffix)
 {

@@ -10,8 +10,8 @@
 
 #include "mu/model_desc.h"
 
-enum { MODEL_BUILTIN_COUNT = 3 };
-extern const char *const model_builtin_names[MODEL_BUILTIN_COUNT]; /* "sample", "arm", "leg" */
+enum { MODEL_BUILTIN_COUNT = 4 };
+extern const char *const model_builtin_names[MODEL_BUILTIN_COUNT]; /* "sample", "arm", "leg", "worm" */
 
 /* Bytes of a model's stem (model_source_stem), its NUL included. */
 #define MODEL_STEM_SIZE 256

@@ -7,9 +7,11 @@
 #include "recorder.h"
 
 static const char *const muscle_columns[RECORDER_MUSCLE_COLUMNS] = {
-    "activation",     "target_tension_N",    "length_m",      "normalized_length",
-    "velocity_m_s",   "normalized_velocity", "contraction_m", "normalized_contraction",
-    "active_force_N", "passive_force_N",     "total_force_N",
+    "activation",        "target_tension_N",       "length_m",
+    "normalized_length", "velocity_m_s",           "normalized_velocity",
+    "contraction_m",     "normalized_contraction", "active_force_N",
+    "passive_force_N",   "total_force_N",          "excitation",
+    "fibre_length_m",    "tendon_length_m",        "pennation_angle_deg",
 };
 static const char *const part_columns[RECORDER_PART_COLUMNS] = {"x_m", "y_m", "angle_deg"};
 
@@ -112,6 +114,8 @@ bool recorder_write_row(recorder *csv, const mu_model *model, double time, char 
         fprintf(stream, ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g", r.activation,
                 r.target_tension, r.length, r.normalized_length, r.velocity, r.normalized_velocity, r.contraction,
                 r.normalized_contraction, r.active_force, r.passive_force, r.total_force);
+        fprintf(stream, ",%.10g,%.10g,%.10g,%.10g", r.excitation, r.fibre_length, r.tendon_length,
+                r.pennation_angle * 180.0 / RB_PI);
     }
     for (int h = 0; h < csv->hinge_count; ++h) {
         fprintf(stream, ",%.10g", mu_model_hinge_angle(model, csv->hinges[h]));

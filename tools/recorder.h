@@ -21,7 +21,7 @@
 #include "mu/model.h"
 
 /* Quantities recorded per muscle, per hinge and per part. */
-enum { RECORDER_MUSCLE_COLUMNS = 11, RECORDER_HINGE_COLUMNS = 1, RECORDER_PART_COLUMNS = 3 };
+enum { RECORDER_MUSCLE_COLUMNS = 15, RECORDER_HINGE_COLUMNS = 1, RECORDER_PART_COLUMNS = 3 };
 
 typedef struct recorder {
     atomic_file file;

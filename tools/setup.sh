@@ -16,7 +16,7 @@ packages=(
     libgsl-dev       # GNU Scientific Library
     libcriterion-dev # unit tests (tests/)
     libjansson-dev   # model files (musculo/)
-    libcairo2-dev    # charts: PNG and SVG figures (tools/chart/)
+    libcairo2-dev    # motor-pool profile images (musculo/), charts: PNG and SVG figures (tools/chart/)
     clang-format     # formatting check in tools/check.sh
     valgrind         # memory and cache profiling
 )

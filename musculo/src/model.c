@@ -6,6 +6,8 @@
 #include <string.h>
 
 #include "mu/model.h"
+#include "mu/motor_pool.h"
+#include "mu/torque_actuator.h"
 
 /* Framework constants (framework.md §3). */
 #define BONE_DAMPING 8.0  /* 1/s, linear and angular */
@@ -37,6 +39,11 @@ struct mu_model {
     mu_muscle **muscles; /* by description index; NULL when not built */
     int *built_muscles;  /* description indices of the built muscles */
     int built_muscle_count;
+    /* The built torque muscles, each a motor pool driving an actuator. */
+    int *built_torque_muscles; /* description indices */
+    mu_motor_pool **pools;
+    mu_torque_actuator **actuators;
+    int built_torque_muscle_count;
     rb_joint_id *hinges; /* by description index; null id when not built */
     int joint_count;
     long substeps_taken;      /* since creation; the time is counted, not summed, so it does not drift */
@@ -353,19 +360,71 @@ static rb_status build_muscles(mu_model *model)
         def.start_normalized_length = muscle->start_normalized_length;
         def.tendon_length = muscle->tendon_length;
         def.curves = model->curves[muscle->curves];
+        def.pennation_angle = muscle->pennation_angle / DEGREES;
+        def.activation_dynamics = muscle->activation_dynamics;
+        def.activation_time = muscle->activation_time;
+        def.deactivation_time = muscle->deactivation_time;
+        def.compliant_tendon = muscle->compliant_tendon;
+        def.tendon_strain_at_max_force = muscle->tendon_strain_at_max_force;
+        def.fibre_damping = muscle->fibre_damping;
         rb_status status = mu_muscle_create(model->world, &def, &model->muscles[m]);
         if (status != RB_OK) {
             return status;
         }
         model->built_muscles[model->built_muscle_count++] = m;
         mu_muscle_readout r = mu_muscle_read(model->muscles[m]);
-        if (muscle->tendon_length < 0.0 && fabs(r.normalized_length - muscle->start_normalized_length) > 1e-9) {
+        /* (A compliant tendon's fibre starts in equilibrium, not at the
+         * start length, and its slack length was checked at load.) */
+        if (muscle->tendon_length < 0.0 && !muscle->compliant_tendon &&
+            fabs(r.normalized_length - muscle->start_normalized_length) > 1e-9) {
             warn(model,
                  "muscle '%s': its path is shorter than rest length × start normalized length (%.4f m), so its "
                  "tendon has length 0 and its belly starts at %.3f of its rest length, not %.3f",
                  muscle->name, muscle->rest_length * muscle->start_normalized_length, r.normalized_length,
                  muscle->start_normalized_length);
         }
+    }
+    return RB_OK;
+}
+
+/* Whether the torque muscle's bones exist in the built variant. */
+static bool torque_muscle_in_variant(const mu_model_variant *variant, const mu_model_torque_muscle *muscle)
+{
+    return mu_model_variant_has_bone(variant, muscle->body.index) &&
+           (!muscle->has_reaction_body || muscle->reaction_body.kind == MU_MODEL_NAIL ||
+            mu_model_variant_has_bone(variant, muscle->reaction_body.index));
+}
+
+static rb_status build_torque_muscles(mu_model *model)
+{
+    const mu_model_desc *desc = model->desc;
+    const mu_model_variant *variant = &desc->variants[model->options.variant];
+    for (int t = 0; t < desc->torque_muscle_count; ++t) {
+        const mu_model_torque_muscle *muscle = &desc->torque_muscles[t];
+        if (!torque_muscle_in_variant(variant, muscle)) {
+            continue;
+        }
+        const int built = model->built_torque_muscle_count;
+        mu_torque_actuator_def def = mu_default_torque_actuator_def();
+        def.body = model->bodies[model->parts[part_of(desc, muscle->body)].body];
+        if (muscle->has_reaction_body) {
+            def.reaction_body = model->bodies[model->parts[part_of(desc, muscle->reaction_body)].body];
+        }
+        def.peak_torque = muscle->peak_torque;
+        rb_status status =
+            mu_motor_pool_create_exponential(muscle->neurons, muscle->weakest, muscle->strongest, &model->pools[built]);
+        if (status == RB_OK) {
+            status = mu_torque_actuator_create(model->world, &def, &model->actuators[built]);
+        }
+        if (status != RB_OK) {
+            mu_motor_pool_destroy(model->pools[built]);
+            model->pools[built] = NULL;
+            return status;
+        }
+        model->built_torque_muscles[built] = t;
+        model->built_torque_muscle_count++;
+        mu_motor_pool_recruit(model->pools[built], muscle->recruited);
+        mu_motor_pool_drive_torque(model->pools[built], model->actuators[built]);
     }
     return RB_OK;
 }
@@ -380,7 +439,11 @@ static rb_status allocate(mu_model *model)
     model->muscles = calloc((size_t)desc->muscle_count + 1, sizeof *model->muscles);
     model->built_muscles = calloc((size_t)desc->muscle_count + 1, sizeof *model->built_muscles);
     model->hinges = calloc((size_t)desc->hinge_count + 1, sizeof *model->hinges);
-    if (model->parts == NULL || model->muscles == NULL || model->built_muscles == NULL || model->hinges == NULL) {
+    model->built_torque_muscles = calloc((size_t)desc->torque_muscle_count + 1, sizeof *model->built_torque_muscles);
+    model->pools = calloc((size_t)desc->torque_muscle_count + 1, sizeof *model->pools);
+    model->actuators = calloc((size_t)desc->torque_muscle_count + 1, sizeof *model->actuators);
+    if (model->parts == NULL || model->muscles == NULL || model->built_muscles == NULL || model->hinges == NULL ||
+        model->built_torque_muscles == NULL || model->pools == NULL || model->actuators == NULL) {
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "mu_model_create: out of memory");
     }
     return RB_OK;
@@ -476,6 +539,9 @@ rb_status mu_model_create(const mu_model_desc *desc, const mu_model_options *opt
     if (status == RB_OK && options->level >= 3) {
         status = build_muscles(model);
     }
+    if (status == RB_OK && options->level >= 3) {
+        status = build_torque_muscles(model);
+    }
     if (status == RB_OK && options->level >= 4) {
         status = build_weight(model, merge);
     }
@@ -495,6 +561,13 @@ void mu_model_destroy(mu_model *model)
     for (int m = 0; m < model->desc->muscle_count && model->muscles != NULL; ++m) {
         mu_muscle_destroy(model->muscles[m], model->world);
     }
+    for (int t = 0; t < model->built_torque_muscle_count; ++t) {
+        mu_motor_pool_destroy(model->pools[t]);
+        mu_torque_actuator_destroy(model->actuators[t]);
+    }
+    free(model->built_torque_muscles);
+    free(model->pools);
+    free(model->actuators);
     rb_world_destroy(model->world);
     mu_curves_destroy(model->curves[0]);
     mu_curves_destroy(model->curves[1]);
@@ -526,6 +599,13 @@ double mu_model_substep_duration(const mu_model *model)
 static rb_status advance(mu_model *model, int substeps)
 {
     model->substep_status = RB_OK;
+    /* Torques hold over every substep of the step (rb_body_apply_torque). */
+    for (int t = 0; t < model->built_torque_muscle_count; ++t) {
+        rb_status applied = mu_torque_actuator_apply(model->actuators[t], model->world);
+        if (applied != RB_OK) {
+            return applied;
+        }
+    }
     rb_status status = rb_world_step(model->world, substeps * mu_model_substep_duration(model));
     if (status == RB_OK) {
         status = model->substep_status;
@@ -697,3 +777,65 @@ double mu_model_part_angle(const mu_model *model, int index)
 
 int mu_model_body_count(const mu_model *model) { return model->body_count; }
 int mu_model_joint_count(const mu_model *model) { return model->joint_count; }
+
+/* ---- torque muscles ------------------------------------------------------------------ */
+
+int mu_model_torque_muscle_count(const mu_model *model) { return model->built_torque_muscle_count; }
+
+static int find_torque_muscle(const mu_model *model, const char *name, const char *function)
+{
+    for (int t = 0; name != NULL && t < model->built_torque_muscle_count; ++t) {
+        if (strcmp(model->desc->torque_muscles[model->built_torque_muscles[t]].name, name) == 0) {
+            return t;
+        }
+    }
+    rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: no torque muscle named \"%s\" is built in this model", function,
+                    name != NULL ? name : "(null)");
+    return -1;
+}
+
+static bool torque_index_ok(const mu_model *model, int index, const char *function)
+{
+    if (model == NULL || index < 0 || index >= model->built_torque_muscle_count) {
+        rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: index %d, expected 0 .. %d", function, index,
+                        model != NULL ? model->built_torque_muscle_count - 1 : -1);
+        return false;
+    }
+    return true;
+}
+
+const char *mu_model_torque_muscle_name(const mu_model *model, int index)
+{
+    if (!torque_index_ok(model, index, "mu_model_torque_muscle_name")) {
+        return NULL;
+    }
+    return model->desc->torque_muscles[model->built_torque_muscles[index]].name;
+}
+
+rb_status mu_model_recruit_at(mu_model *model, int index, int neurons)
+{
+    if (!torque_index_ok(model, index, "mu_model_recruit_at")) {
+        return RB_ERR_INVALID_ARGUMENT;
+    }
+    mu_motor_pool_recruit(model->pools[index], neurons);
+    return mu_motor_pool_drive_torque(model->pools[index], model->actuators[index]);
+}
+
+rb_status mu_model_recruit(mu_model *model, const char *name, int neurons)
+{
+    if (model == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_recruit: model is NULL");
+    }
+    const int index = find_torque_muscle(model, name, "mu_model_recruit");
+    return index < 0 ? RB_ERR_INVALID_ARGUMENT : mu_model_recruit_at(model, index, neurons);
+}
+
+const mu_motor_pool *mu_model_motor_pool(const mu_model *model, int index)
+{
+    return torque_index_ok(model, index, "mu_model_motor_pool") ? model->pools[index] : NULL;
+}
+
+const mu_torque_actuator *mu_model_torque_actuator(const mu_model *model, int index)
+{
+    return torque_index_ok(model, index, "mu_model_torque_actuator") ? model->actuators[index] : NULL;
+}

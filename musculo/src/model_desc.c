@@ -138,6 +138,10 @@ void mu_model_desc_destroy(mu_model_desc *desc)
         free(desc->groups[i].muscles);
     }
     free(desc->groups);
+    for (int i = 0; i < desc->torque_muscle_count; ++i) {
+        free(desc->torque_muscles[i].name);
+    }
+    free(desc->torque_muscles);
     for (int i = 0; i < desc->variant_count; ++i) {
         free(desc->variants[i].name);
         free(desc->variants[i].muscles);
@@ -164,6 +168,8 @@ static int object_count(const mu_model_desc *desc, mu_model_kind kind)
         return desc->muscle_count;
     case MU_MODEL_GROUP:
         return desc->group_count;
+    case MU_MODEL_TORQUE_MUSCLE:
+        return desc->torque_muscle_count;
     }
     return 0;
 }
@@ -188,6 +194,8 @@ const char *mu_model_desc_name_of(const mu_model_desc *desc, mu_model_ref ref)
         return desc->muscles[ref.index].name;
     case MU_MODEL_GROUP:
         return desc->groups[ref.index].name;
+    case MU_MODEL_TORQUE_MUSCLE:
+        return desc->torque_muscles[ref.index].name;
     }
     return NULL;
 }
@@ -198,7 +206,7 @@ bool mu_model_desc_find(const mu_model_desc *desc, const char *name, mu_model_re
         return false;
     }
     static const mu_model_kind kinds[] = {MU_MODEL_NAIL,   MU_MODEL_BONE,   MU_MODEL_HINGE, MU_MODEL_GLUE,
-                                          MU_MODEL_WEIGHT, MU_MODEL_MUSCLE, MU_MODEL_GROUP};
+                                          MU_MODEL_WEIGHT, MU_MODEL_MUSCLE, MU_MODEL_GROUP, MU_MODEL_TORQUE_MUSCLE};
     for (size_t k = 0; k < sizeof kinds / sizeof kinds[0]; ++k) {
         for (int i = 0; i < object_count(desc, kinds[k]); ++i) {
             mu_model_ref ref = {kinds[k], i};

@@ -2,11 +2,15 @@
  * bones first, so that the joints, the weight and the muscles after them
  * can name them; muscles before the groups and variants that list them.
  * The first problem found stops the read. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "model_schema.h"
+#include "mu/geometry_lengths.h"
+#include "mu/motor_pool.h"
+#include "mu/muscle.h"
 
 /* The seed's defaults (framework.md §2–§4). */
 #define DEFAULT_GRAVITY_Y (-9.8)       /* m/s² */
@@ -17,6 +21,10 @@
 #define DEFAULT_MAX_VELOCITY 0.25      /* m/s */
 #define DEFAULT_START_NORMALIZED_LENGTH 1.0
 #define DEFAULT_SYMMETRY 0.5
+/* Pennation at optimal length: physiological angles lie below about 30°
+ * (Lieber and Fridén 2000); the model's cap is 84.26° (pennation.h). */
+#define MAX_PENNATION_DEGREES 80.0
+#define DEGREES (180.0 / RB_PI)
 /* The seed's named minimal and maximal normalized lengths (framework.md
  * §4): the range its muscles work in. */
 #define MIN_START_NORMALIZED_LENGTH 0.5
@@ -26,8 +34,10 @@
 #define MAX_LIMIT_DEGREES 360.0
 #define MAX_SUBSTEPS 1000
 
-static const char *const kind_singular[] = {"nail", "bone", "hinge", "glue", "weight", "muscle", "group"};
-static const char *const kind_list[] = {"nails", "bones", "hinges", "glues", "weight", "muscles", "groups"};
+static const char *const kind_singular[] = {"nail",   "bone",   "hinge", "glue",
+                                            "weight", "muscle", "group", "torque muscle"};
+static const char *const kind_list[] = {"nails",  "bones",   "hinges", "glues",
+                                        "weight", "muscles", "groups", "torque_muscles"};
 
 static rb_status out_of_memory(void)
 {
@@ -75,7 +85,7 @@ static rb_status read_object_name(mu_json_reader *reader, const json_t *object, 
         mu_json_push_key(reader, "name");
         return mu_json_fail(reader, MU_JSON_AT_VALUE,
                             "\"%s\" is already the name of %s, expected a name that no other nail, bone, hinge, "
-                            "glue, weight, muscle or group has",
+                            "glue, weight, muscle, group or torque muscle has",
                             name, where);
     }
     return copy_string(name, out);
@@ -244,24 +254,23 @@ static rb_status parse_muscle_force(mu_json_reader *reader, const json_t *object
 
 /* Vmax: max_velocity in m/s (the seed's), or max_velocity_rest_lengths in
  * rest lengths per second (as physiology states it, e.g. 10 /s), stored
- * in m/s. */
-static rb_status parse_muscle_velocity(mu_json_reader *reader, const json_t *object, mu_model_muscle *muscle)
+ * in m/s by parse_muscle once the rest length is known (it may be derived
+ * from the path). */
+static rb_status parse_muscle_velocity(mu_json_reader *reader, const json_t *object, mu_model_muscle *muscle,
+                                       double *rest_lengths_per_second)
 {
     muscle->max_velocity = DEFAULT_MAX_VELOCITY;
     MU_JSON_TRY(mu_json_read_number(reader, object, "max_velocity", MU_JSON_OPTIONAL, mu_json_positive,
                                     "the maximal shortening speed in m/s", &muscle->max_velocity));
-    double rest_lengths_per_second = 0.0;
+    *rest_lengths_per_second = 0.0;
     MU_JSON_TRY(mu_json_read_number(reader, object, "max_velocity_rest_lengths", MU_JSON_OPTIONAL, mu_json_positive,
                                     "the maximal shortening speed in rest lengths per second",
-                                    &rest_lengths_per_second));
-    if (rest_lengths_per_second > 0.0) {
-        if (json_object_get(object, "max_velocity") != NULL) {
-            mu_json_push_key(reader, "max_velocity_rest_lengths");
-            return mu_json_fail(reader, MU_JSON_AT_VALUE,
-                                "given with max_velocity, expected either max_velocity (m/s) or "
-                                "max_velocity_rest_lengths (rest lengths per second)");
-        }
-        muscle->max_velocity = rest_lengths_per_second * muscle->rest_length;
+                                    rest_lengths_per_second));
+    if (*rest_lengths_per_second > 0.0 && json_object_get(object, "max_velocity") != NULL) {
+        mu_json_push_key(reader, "max_velocity_rest_lengths");
+        return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                            "given with max_velocity, expected either max_velocity (m/s) or "
+                            "max_velocity_rest_lengths (rest lengths per second)");
     }
     return RB_OK;
 }
@@ -282,6 +291,133 @@ static rb_status parse_muscle_start(mu_json_reader *reader, const json_t *object
         return mu_json_fail(reader, MU_JSON_AT_VALUE,
                             "given with start_normalized_length, expected one of the two (the tendon's length, or "
                             "the belly's start length that derives it)");
+    }
+    if (muscle->tendon_length >= 0.0 && muscle->tendon_fraction >= 0.0) {
+        mu_json_push_key(reader, "tendon_length");
+        return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                            "given with tendon_fraction, expected one of the two (the tendon's length, or its "
+                            "share of the path that derives it)");
+    }
+    return RB_OK;
+}
+
+/* The rest length, or the tendon fraction that derives it from the path
+ * (after parse_muscle_path). */
+static rb_status parse_muscle_size(mu_json_reader *reader, const json_t *object, mu_model_muscle *muscle)
+{
+    const mu_json_bounds fraction = {0.0, 1.0, false, true};
+    muscle->tendon_fraction = -1.0;
+    MU_JSON_TRY(mu_json_read_number(reader, object, "tendon_fraction", MU_JSON_OPTIONAL, fraction,
+                                    "the tendon's share of the path's length at the start", &muscle->tendon_fraction));
+    const bool derived = muscle->tendon_fraction >= 0.0;
+    if (derived && json_object_get(object, "rest_length") != NULL) {
+        mu_json_push_key(reader, "tendon_fraction");
+        return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                            "given with rest_length, expected one of the two (the rest length, or the tendon's "
+                            "share of the path that derives it)");
+    }
+    return mu_json_read_number(reader, object, "rest_length", derived ? MU_JSON_OPTIONAL : MU_JSON_REQUIRED,
+                               mu_json_positive, "the fibres' rest (optimal) length in m", &muscle->rest_length);
+}
+
+/* The options beyond the seed's muscle: pennation, activation dynamics
+ * and a compliant tendon, each an object of its parameters. */
+static rb_status parse_muscle_physiology(mu_json_reader *reader, const json_t *object, mu_model_muscle *muscle)
+{
+    const mu_json_bounds angle = {0.0, MAX_PENNATION_DEGREES, false, false};
+    MU_JSON_TRY(mu_json_read_number(reader, object, "pennation_angle", MU_JSON_OPTIONAL, angle,
+                                    "the pennation angle at the optimal fibre length in degrees",
+                                    &muscle->pennation_angle));
+    const mu_muscle_def defaults = mu_default_muscle_def();
+    muscle->activation_time = defaults.activation_time;
+    muscle->deactivation_time = defaults.deactivation_time;
+    const json_t *dynamics = json_object_get(object, "activation_dynamics");
+    if (dynamics != NULL) {
+        static const char *const keys[] = {"activation_time", "deactivation_time", NULL};
+        mu_json_push_key(reader, "activation_dynamics");
+        MU_JSON_TRY(mu_json_check_object(reader, dynamics, keys));
+        MU_JSON_TRY(mu_json_read_number(reader, dynamics, "activation_time", MU_JSON_OPTIONAL, mu_json_positive,
+                                        "the activation time constant in s", &muscle->activation_time));
+        MU_JSON_TRY(mu_json_read_number(reader, dynamics, "deactivation_time", MU_JSON_OPTIONAL, mu_json_positive,
+                                        "the deactivation time constant in s", &muscle->deactivation_time));
+        mu_json_pop(reader);
+        muscle->activation_dynamics = true;
+    }
+    muscle->tendon_strain_at_max_force = defaults.tendon_strain_at_max_force;
+    muscle->fibre_damping = defaults.fibre_damping;
+    const json_t *tendon = json_object_get(object, "compliant_tendon");
+    if (tendon != NULL) {
+        static const char *const keys[] = {"strain_at_max_force", "fibre_damping", NULL};
+        const mu_json_bounds strain = {0.0, 1.0, true, false};
+        mu_json_push_key(reader, "compliant_tendon");
+        MU_JSON_TRY(mu_json_check_object(reader, tendon, keys));
+        MU_JSON_TRY(mu_json_read_number(reader, tendon, "strain_at_max_force", MU_JSON_OPTIONAL, strain,
+                                        "the tendon's strain at the maximal isometric force",
+                                        &muscle->tendon_strain_at_max_force));
+        MU_JSON_TRY(mu_json_read_number(reader, tendon, "fibre_damping", MU_JSON_OPTIONAL, mu_json_positive,
+                                        "the fibre's damping per unit normalized velocity over Fmax",
+                                        &muscle->fibre_damping));
+        mu_json_pop(reader);
+        muscle->compliant_tendon = true;
+    }
+    return RB_OK;
+}
+
+/* A path point's place at the model's start pose (before placement, which
+ * moves every point alike). */
+static rb_vec2 start_point(const mu_model_desc *desc, const mu_model_path_point *point)
+{
+    if (point->body.kind == MU_MODEL_NAIL) {
+        return rb_add(desc->nails[point->body.index].position, point->point);
+    }
+    const mu_model_bone *bone = &desc->bones[point->body.index];
+    return rb_add(bone->centre, rb_rotate(rb_rot_from_angle(bone->angle / DEGREES), point->point));
+}
+
+static double start_path_length(const mu_model_desc *desc, const mu_model_muscle *muscle)
+{
+    double length = 0.0;
+    for (int i = 0; i + 1 < muscle->point_count; ++i) {
+        length += rb_distance(start_point(desc, &muscle->path[i]), start_point(desc, &muscle->path[i + 1]));
+    }
+    return length;
+}
+
+/* With tendon_fraction, the lengths it derives from the path; with a
+ * compliant tendon, a check that its slack length will be > 0. */
+static rb_status derive_muscle_lengths(mu_json_reader *reader, const mu_model_desc *desc, mu_model_muscle *muscle)
+{
+    const double path = start_path_length(desc, muscle);
+    const double angle = muscle->pennation_angle / DEGREES;
+    if (muscle->tendon_fraction >= 0.0) {
+        mu_derived_lengths lengths;
+        if (mu_lengths_from_geometry(path, muscle->tendon_fraction, muscle->start_normalized_length, angle, &lengths) !=
+            RB_OK) {
+            mu_json_push_key(reader, "tendon_fraction");
+            return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                                "cannot derive the lengths from the path of %g m at the start pose, expected a path "
+                                "longer than 0 and a start fibre longer than the pennation allows",
+                                path);
+        }
+        muscle->rest_length = lengths.rest_length;
+        muscle->tendon_length = lengths.tendon_length;
+    }
+    if (muscle->compliant_tendon) {
+        double slack = muscle->tendon_length;
+        if (slack < 0.0) {
+            /* As the muscle derives it (mu_muscle_def): path minus the
+             * belly's extent √(l² - w²) of the start fibre l. */
+            const double fibre = muscle->rest_length * muscle->start_normalized_length;
+            const double width = muscle->rest_length * sin(angle);
+            slack = path - sqrt(fmax(fibre * fibre - width * width, 0.0));
+        }
+        if (!(slack > 0.0)) {
+            mu_json_push_key(reader, "compliant_tendon");
+            return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                                "the tendon's slack length would be %g m (path %g m at the start pose), expected a "
+                                "compliant tendon longer than 0: give tendon_length or tendon_fraction",
+                                slack, path);
+        }
     }
     return RB_OK;
 }
@@ -307,6 +443,7 @@ static rb_status parse_muscle(mu_json_reader *reader, const json_t *object, mu_m
 {
     static const char *const keys[] = {"name",
                                        "rest_length",
+                                       "tendon_fraction",
                                        "rest_width",
                                        "specific_tension",
                                        "max_force",
@@ -314,6 +451,9 @@ static rb_status parse_muscle(mu_json_reader *reader, const json_t *object, mu_m
                                        "max_velocity_rest_lengths",
                                        "start_normalized_length",
                                        "tendon_length",
+                                       "pennation_angle",
+                                       "activation_dynamics",
+                                       "compliant_tendon",
                                        "symmetry",
                                        "curves",
                                        "path",
@@ -321,11 +461,12 @@ static rb_status parse_muscle(mu_json_reader *reader, const json_t *object, mu_m
     MU_JSON_TRY(mu_json_check_object(reader, object, keys));
     mu_model_muscle *muscle = &desc->muscles[desc->muscle_count++];
     MU_JSON_TRY(read_object_name(reader, object, desc, &muscle->name));
-    MU_JSON_TRY(mu_json_read_number(reader, object, "rest_length", MU_JSON_REQUIRED, mu_json_positive,
-                                    "the belly's rest length in m", &muscle->rest_length));
+    MU_JSON_TRY(parse_muscle_size(reader, object, muscle));
     MU_JSON_TRY(parse_muscle_force(reader, object, muscle));
-    MU_JSON_TRY(parse_muscle_velocity(reader, object, muscle));
+    double rest_lengths_per_second = 0.0;
+    MU_JSON_TRY(parse_muscle_velocity(reader, object, muscle, &rest_lengths_per_second));
     MU_JSON_TRY(parse_muscle_start(reader, object, muscle));
+    MU_JSON_TRY(parse_muscle_physiology(reader, object, muscle));
     const mu_json_bounds unit = {0.0, 1.0, false, false};
     muscle->symmetry = DEFAULT_SYMMETRY;
     MU_JSON_TRY(mu_json_read_number(reader, object, "symmetry", MU_JSON_OPTIONAL, unit,
@@ -341,7 +482,66 @@ static rb_status parse_muscle(mu_json_reader *reader, const json_t *object, mu_m
         mu_json_push_key(reader, "curves");
         return mu_json_fail(reader, MU_JSON_AT_VALUE, "\"%s\" is no curve set, expected %s", curves, curves_what);
     }
-    return parse_muscle_path(reader, object, desc, muscle);
+    MU_JSON_TRY(parse_muscle_path(reader, object, desc, muscle));
+    MU_JSON_TRY(derive_muscle_lengths(reader, desc, muscle));
+    if (rest_lengths_per_second > 0.0) {
+        muscle->max_velocity = rest_lengths_per_second * muscle->rest_length;
+    }
+    return RB_OK;
+}
+
+/* The torque muscle's exponential motor pool (motor_pool.h). */
+static rb_status parse_motor_pool(mu_json_reader *reader, const json_t *object, mu_model_torque_muscle *muscle)
+{
+    static const char *const keys[] = {"neurons", "weakest", "strongest", NULL};
+    const json_t *pool = json_object_get(object, "motor_pool");
+    if (pool == NULL) {
+        return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                            "missing key \"motor_pool\", expected the motor pool {neurons, weakest, strongest}");
+    }
+    mu_json_push_key(reader, "motor_pool");
+    MU_JSON_TRY(mu_json_check_object(reader, pool, keys));
+    MU_JSON_TRY(mu_json_read_int(reader, pool, "neurons", MU_JSON_REQUIRED, 1, MU_MAX_MOTOR_NEURONS,
+                                 "the number of motor neurons", &muscle->neurons));
+    MU_JSON_TRY(mu_json_read_number(reader, pool, "weakest", MU_JSON_REQUIRED, mu_json_positive,
+                                    "the first (weakest) neuron's strength", &muscle->weakest));
+    MU_JSON_TRY(mu_json_read_number(reader, pool, "strongest", MU_JSON_REQUIRED, mu_json_positive,
+                                    "the last (strongest) neuron's strength", &muscle->strongest));
+    if (muscle->strongest < muscle->weakest) {
+        mu_json_push_key(reader, "strongest");
+        return mu_json_fail(reader, MU_JSON_AT_VALUE, "%g is below weakest (%g), expected a strength >= weakest",
+                            muscle->strongest, muscle->weakest);
+    }
+    mu_json_pop(reader);
+    return RB_OK;
+}
+
+static rb_status parse_torque_muscle(mu_json_reader *reader, const json_t *object, mu_model_desc *desc)
+{
+    static const char *const keys[] = {"name", "body", "reaction_body", "peak_torque", "motor_pool", "recruited", NULL};
+    MU_JSON_TRY(mu_json_check_object(reader, object, keys));
+    mu_model_torque_muscle *muscle = &desc->torque_muscles[desc->torque_muscle_count++];
+    MU_JSON_TRY(read_object_name(reader, object, desc, &muscle->name));
+    MU_JSON_TRY(read_body(reader, object, "body", desc, &muscle->body));
+    if (muscle->body.kind != MU_MODEL_BONE) {
+        mu_json_push_key(reader, "body");
+        return mu_json_fail(reader, MU_JSON_AT_VALUE, "\"%s\" is a nail, expected the name of a bone",
+                            mu_model_desc_name_of(desc, muscle->body));
+    }
+    muscle->has_reaction_body = json_object_get(object, "reaction_body") != NULL;
+    if (muscle->has_reaction_body) {
+        MU_JSON_TRY(read_body(reader, object, "reaction_body", desc, &muscle->reaction_body));
+        if (muscle->reaction_body.kind == muscle->body.kind && muscle->reaction_body.index == muscle->body.index) {
+            mu_json_push_key(reader, "reaction_body");
+            return mu_json_fail(reader, MU_JSON_AT_VALUE, "\"%s\" is body too, expected a different body",
+                                mu_model_desc_name_of(desc, muscle->body));
+        }
+    }
+    MU_JSON_TRY(mu_json_read_number(reader, object, "peak_torque", MU_JSON_REQUIRED, mu_json_any,
+                                    "the torque at full recruitment in N·m", &muscle->peak_torque));
+    MU_JSON_TRY(parse_motor_pool(reader, object, muscle));
+    return mu_json_read_int(reader, object, "recruited", MU_JSON_OPTIONAL, 0, muscle->neurons,
+                            "the neurons recruited at the start", &muscle->recruited);
 }
 
 static rb_status parse_group(mu_json_reader *reader, const json_t *object, mu_model_desc *desc)
@@ -538,8 +738,9 @@ static rb_status parse_settings(mu_json_reader *reader, const json_t *root, mu_m
 
 rb_status mu_model_parse(mu_json_reader *reader, const json_t *root, mu_model_desc *desc)
 {
-    static const char *const keys[] = {"name",   "gravity", "frame_rate", "substeps", "placement", "nails",    "bones",
-                                       "hinges", "glues",   "weight",     "muscles",  "groups",    "variants", NULL};
+    static const char *const keys[] = {"name",    "gravity", "frame_rate", "substeps",       "placement",
+                                       "nails",   "bones",   "hinges",     "glues",          "weight",
+                                       "muscles", "groups",  "variants",   "torque_muscles", NULL};
     MU_JSON_TRY(mu_json_check_object(reader, root, keys));
     MU_JSON_TRY(parse_settings(reader, root, desc));
     const json_t *list;
@@ -581,6 +782,12 @@ rb_status mu_model_parse(mu_json_reader *reader, const json_t *root, mu_model_de
     desc->groups = calloc(json_array_size(list), sizeof *desc->groups);
     MU_JSON_TRY(check_allocation(desc->groups, json_array_size(list)));
     MU_JSON_TRY(for_each(reader, "groups", list, desc, parse_group));
+
+    MU_JSON_TRY(read_list(reader, root, "torque_muscles", 0,
+                          "torque muscles {name, body, reaction_body, peak_torque, motor_pool, recruited}", &list));
+    desc->torque_muscles = calloc(json_array_size(list), sizeof *desc->torque_muscles);
+    MU_JSON_TRY(check_allocation(desc->torque_muscles, json_array_size(list)));
+    MU_JSON_TRY(for_each(reader, "torque_muscles", list, desc, parse_torque_muscle));
 
     MU_JSON_TRY(read_list(reader, root, "variants", 1, "variants {name, muscles, bones}", &list));
     if (list == NULL) {

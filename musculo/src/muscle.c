@@ -1,27 +1,57 @@
 /* The Hill muscle: contractile and parallel elastic elements in parallel,
- * a rigid tendon in series, on an engine cable.
+ * a tendon in series, on an engine cable.
  *
- *   F = Fmax·(a·f_L(l̃)·f_V(ṽ) + f_P(l̃))     (Hill 1938; Zajac 1989)
+ *   F = Fmax·(a·f_L(l̃)·f_V(ṽ) + f_P(l̃))·cos α     (Hill 1938; Zajac 1989)
  *
- * The force-velocity term makes F depend on the lengthening speed v with
+ * Rigid tendon (the seed's): the fibre follows the path. The
+ * force-velocity term makes F depend on the lengthening speed v with
  * slope c = Fmax·a·f_L·f_V'(ṽ)/Vmax, a damper stiff enough (about 86 kN·s/m
  * for the biceps) that an explicit force diverges at 600 Hz
  * (framework.md §4). So the muscle does not apply F itself: it linearizes
  * F about the present velocity, F(v') ≈ F(v) + c·(v' - v), and hands the
  * cable the law T = T0 + c·v' with T0 = F(v) - c·v, which the solver
- * takes implicitly with the bodies' motion. */
+ * takes implicitly with the bodies' motion. With pennation the fibre
+ * moves at v_f = L'·cos α (pennation.h), so c gains cos² α.
+ *
+ * Compliant tendon: the fibre length is a state (fibre_tendon.h). Each
+ * substep solves the fibre's backward-Euler step against the path length
+ * predicted from its present speed, L + h·L', and hands the cable the
+ * linearization of that balanced tension in the path's speed: its slope
+ * is the series combination of the tendon's k_T·h (the spring's
+ * backward-Euler stiffness over the substep, as Box2D v3's soft springs
+ * take it) and the fibre's damping, so the stiff tendon too is taken
+ * implicitly with the bodies. After the step the fibre takes its
+ * backward-Euler step against the path length the bodies reached.
+ */
 #include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
+#include "fibre_tendon.h"
 #include "mu/muscle.h"
+
+/* A compliant muscle's fibre is never shorter than this fraction of its
+ * optimal length (far below the 0.4-0.5 where f_L reaches 0), so the
+ * balance never meets a vanishing fibre. */
+#define MIN_FIBRE_FRACTION 0.01
 
 struct mu_muscle {
     rb_cable_id cable;
     double rest_length, max_force, max_velocity, tendon_length, tension_gain;
     const mu_curves *curves;
     mu_curve_hint hint; /* where this muscle's last curve look-ups fell */
+    double width;       /* w = l_opt·sin α_opt, m */
     double activation;
+    double excitation;
+    bool activation_dynamics;
+    mu_activation_params activation_params;
+    bool compliant;
+    mu_fibre_tendon unit;         /* the compliant tendon's fibre-tendon pair */
+    double fibre_length;          /* m: the compliant fibre's state */
+    double fibre_velocity;        /* m/s: its velocity over the last substep */
+    mu_fibre_tendon_step step;    /* the balance solved in prepare */
+    double substep;               /* s: h of the pending step, 0 when none */
     double target_tension;        /* < 0: activation control */
     double base_tension, damping; /* the law handed to the cable this substep */
     mu_muscle_readout readout;
@@ -35,6 +65,10 @@ mu_muscle_def mu_default_muscle_def(void)
         .tendon_length = -1.0,
         .start_normalized_length = 1.0,
         .tension_gain = 0.08,
+        .activation_time = 0.010,
+        .deactivation_time = 0.040,
+        .tendon_strain_at_max_force = MU_DEFAULT_TENDON_STRAIN_AT_MAX_FORCE,
+        .fibre_damping = 0.1,
     };
 }
 
@@ -72,6 +106,108 @@ static rb_status check_def(const mu_muscle_def *def)
     if (!(def->tension_gain > 0.0 && isfinite(def->tension_gain))) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: tension_gain is %g, expected > 0", f, def->tension_gain);
     }
+    if (!(def->pennation_angle >= 0.0 && def->pennation_angle < MU_MAX_PENNATION_ANGLE)) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: pennation_angle is %g rad, expected 0 to below %g", f,
+                               def->pennation_angle, MU_MAX_PENNATION_ANGLE);
+    }
+    if (def->activation_dynamics && !(def->activation_time > 0.0 && isfinite(def->activation_time) &&
+                                      def->deactivation_time > 0.0 && isfinite(def->deactivation_time))) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                               "%s: activation_time %g s and deactivation_time %g s, expected both finite and > 0", f,
+                               def->activation_time, def->deactivation_time);
+    }
+    if (def->compliant_tendon && !(def->tendon_strain_at_max_force > 0.0 && def->tendon_strain_at_max_force <= 1.0 &&
+                                   def->fibre_damping > 0.0 && isfinite(def->fibre_damping))) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                               "%s: tendon_strain_at_max_force %g and fibre_damping %g, expected (0, 1] and finite > 0",
+                               f, def->tendon_strain_at_max_force, def->fibre_damping);
+    }
+    return RB_OK;
+}
+
+/* The belly's extent along the path, √(l² - w²), of a fibre of length l
+ * (raised to the shortest fibre); l itself without pennation. */
+static double belly_extent(double fibre_length, double width)
+{
+    if (width == 0.0) {
+        return fibre_length;
+    }
+    const double l = fmax(fibre_length, mu_pennation_min_fibre_length(width));
+    return sqrt(l * l - width * width);
+}
+
+/* cos α of a fibre of length l, 1 without pennation. */
+static double pennation_cosine(double fibre_length, double width)
+{
+    return width == 0.0 ? 1.0
+                        : belly_extent(fibre_length, width) / fmax(fibre_length, mu_pennation_min_fibre_length(width));
+}
+
+/* The rigid tendon's fibre: the belly itself without pennation (the
+ * seed's, any sign), else √(x² + w²). */
+static double rigid_fibre_length(const mu_muscle *muscle, double path)
+{
+    const double belly = path - muscle->tendon_length;
+    return muscle->width > 0.0 ? mu_pennation_fibre_length(belly, muscle->width) : belly;
+}
+
+static void fill_readout(mu_muscle *muscle, double path, double fibre_length, double velocity, double active,
+                         double passive, double total)
+{
+    const double contraction = muscle->rest_length - fibre_length;
+    const double tendon = muscle->compliant ? path - belly_extent(fibre_length, muscle->width) : muscle->tendon_length;
+    muscle->readout = (mu_muscle_readout){
+        .activation = muscle->activation,
+        .target_tension = muscle->target_tension,
+        .length = path - tendon,
+        .normalized_length = fibre_length / muscle->rest_length,
+        .velocity = velocity,
+        .normalized_velocity = velocity / muscle->max_velocity,
+        .contraction = contraction,
+        .normalized_contraction = contraction / muscle->rest_length,
+        .active_force = active,
+        .passive_force = passive,
+        .total_force = total,
+        .excitation = muscle->excitation,
+        .fibre_length = fibre_length,
+        .tendon_length = tendon,
+        .pennation_angle = muscle->width > 0.0 ? mu_pennation_angle(fibre_length, muscle->width) : 0.0,
+    };
+}
+
+/* A compliant muscle's readout at its fibre state, carrying `total`. */
+static void fill_compliant_readout(mu_muscle *muscle, double path, double total)
+{
+    const mu_fibre_forces forces =
+        mu_fibre_forces_at(&muscle->unit, muscle->fibre_length, muscle->fibre_velocity, muscle->activation);
+    fill_readout(muscle, path, muscle->fibre_length, muscle->fibre_velocity, forces.active, forces.passive, total);
+}
+
+/* The compliant tendon's fibre-tendon pair, once the muscle's lengths are
+ * known. */
+static rb_status set_up_compliant(mu_muscle *muscle, const mu_muscle_def *def, double path)
+{
+    if (!(muscle->tendon_length > 0.0)) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                               "mu_muscle_create: a compliant tendon needs a slack length > 0, got %g m (path %g m)",
+                               muscle->tendon_length, path);
+    }
+    muscle->compliant = true;
+    muscle->unit = (mu_fibre_tendon){
+        .curves = muscle->curves,
+        .max_force = muscle->max_force,
+        .optimal_length = muscle->rest_length,
+        .max_velocity = muscle->max_velocity,
+        .width = muscle->width,
+        .min_fibre_length =
+            fmax(mu_pennation_min_fibre_length(muscle->width), MIN_FIBRE_FRACTION * muscle->rest_length),
+        .slack_length = muscle->tendon_length,
+        .strain_at_max_force = def->tendon_strain_at_max_force,
+        .damping = def->fibre_damping,
+    };
+    muscle->fibre_length = mu_fibre_tendon_static_length(&muscle->unit, path, muscle->activation);
+    muscle->fibre_velocity = 0.0;
+    fill_compliant_readout(muscle, path, mu_fibre_tendon_tension(&muscle->unit, path, muscle->fibre_length));
     return RB_OK;
 }
 
@@ -109,12 +245,28 @@ rb_status mu_muscle_create(rb_world *world, const mu_muscle_def *def, mu_muscle 
     muscle->tension_gain = def->tension_gain;
     muscle->curves = def->curves;
     muscle->target_tension = -1.0;
+    muscle->width = def->pennation_angle > 0.0 ? mu_pennation_width(def->rest_length, def->pennation_angle) : 0.0;
+    muscle->activation_dynamics = def->activation_dynamics;
+    muscle->activation_params = (mu_activation_params){
+        .excitation = 0.0,
+        .activation_time = def->activation_time,
+        .deactivation_time = def->deactivation_time,
+    };
     double path = rb_cable_length(world, cable);
-    muscle->tendon_length = def->tendon_length >= 0.0
-                                ? def->tendon_length
-                                : fmax(path - def->rest_length * def->start_normalized_length, 0.0);
+    muscle->tendon_length =
+        def->tendon_length >= 0.0
+            ? def->tendon_length
+            : fmax(path - belly_extent(def->rest_length * def->start_normalized_length, muscle->width), 0.0);
+    status = def->compliant_tendon ? set_up_compliant(muscle, def, path) : mu_muscle_measure(muscle, world);
+    if (status != RB_OK) {
+        /* Destroying the cable clears the error: keep its message. */
+        char message[512];
+        snprintf(message, sizeof message, "%s", rb_last_error());
+        mu_muscle_destroy(muscle, world);
+        return rb_report_error(status, "%s", message);
+    }
     *out = muscle;
-    return mu_muscle_measure(muscle, world);
+    return RB_OK;
 }
 
 void mu_muscle_destroy(mu_muscle *muscle, rb_world *world)
@@ -135,7 +287,13 @@ rb_status mu_muscle_set_activation(mu_muscle *muscle, double activation)
                                "mu_muscle_set_activation: expected a muscle and a finite activation, got %g",
                                activation);
     }
-    muscle->activation = fmin(fmax(activation, 0.0), 1.0);
+    const double clamped = fmin(fmax(activation, 0.0), 1.0);
+    if (muscle->activation_dynamics) {
+        muscle->excitation = clamped;
+    } else {
+        muscle->activation = clamped;
+        muscle->excitation = clamped;
+    }
     muscle->target_tension = -1.0;
     return RB_OK;
 }
@@ -154,99 +312,179 @@ double mu_muscle_max_force(const mu_muscle *muscle) { return muscle->max_force; 
 double mu_muscle_tendon_length(const mu_muscle *muscle) { return muscle->tendon_length; }
 rb_cable_id mu_muscle_cable(const mu_muscle *muscle) { return muscle->cable; }
 
-/* The belly's length (path minus tendon) and lengthening speed now. */
-static rb_status read_belly(const mu_muscle *muscle, const rb_world *world, double *length, double *velocity)
+/* The seed's proportional controller on the active force, once per
+ * substep (report annex C.7), on the excitation when there is one. */
+static void control_tension(mu_muscle *muscle)
 {
-    double path = 0.0;
-    rb_status status = rb_cable_state(world, muscle->cable, &path, velocity);
-    *length = path - muscle->tendon_length;
-    return status;
+    const double error = muscle->target_tension - muscle->readout.active_force;
+    const double change = muscle->tension_gain * error / muscle->max_force;
+    if (muscle->activation_dynamics) {
+        muscle->excitation = fmin(fmax(muscle->excitation + change, 0.0), 1.0);
+    } else {
+        muscle->activation = fmin(fmax(muscle->activation + change, 0.0), 1.0);
+        muscle->excitation = muscle->activation;
+    }
 }
 
-static double passive_force(mu_muscle *muscle, double length)
+/* The rigid tendon's law: the force at the present velocity and its
+ * slope in the path's speed (see the top of this file). */
+static void prepare_rigid(mu_muscle *muscle, double path, double speed)
 {
-    return muscle->max_force *
-           mu_curve_passive_length_hinted(muscle->curves, &muscle->hint, length / muscle->rest_length);
+    const double fibre_length = rigid_fibre_length(muscle, path);
+    const double cosine = pennation_cosine(fibre_length, muscle->width);
+    const double l = fibre_length / muscle->rest_length;
+    const double v = speed * cosine / muscle->max_velocity;
+    const double fl = mu_curve_active_length_hinted(muscle->curves, &muscle->hint, l);
+    const double active = muscle->max_force * muscle->activation * fl *
+                          mu_curve_velocity_hinted(muscle->curves, &muscle->hint, v) * cosine;
+    const double passive =
+        muscle->max_force * mu_curve_passive_length_hinted(muscle->curves, &muscle->hint, l) * cosine;
+    muscle->damping = muscle->max_force * muscle->activation * fl *
+                      mu_curve_velocity_slope_hinted(muscle->curves, &muscle->hint, v) / muscle->max_velocity * cosine *
+                      cosine;
+    muscle->base_tension = active + passive - muscle->damping * speed;
 }
 
-/* Sets the cable's tension law for the next substep from the belly's
- * state now. */
-static rb_status set_tension_law(mu_muscle *muscle, rb_world *world, double length, double velocity, double passive)
+/* mu_muscle_prepare at the path's length and lengthening speed now. */
+static rb_status prepare_at(mu_muscle *muscle, rb_world *world, double h, double path, double speed)
 {
     if (muscle->target_tension >= 0.0) {
-        /* The seed's proportional controller on the active force, once per
-         * substep (report annex C.7). */
-        double error = muscle->target_tension - muscle->readout.active_force;
-        muscle->activation =
-            fmin(fmax(muscle->activation + muscle->tension_gain * error / muscle->max_force, 0.0), 1.0);
+        control_tension(muscle);
     }
-    double l = length / muscle->rest_length;
-    double v = velocity / muscle->max_velocity;
-    double fl = mu_curve_active_length_hinted(muscle->curves, &muscle->hint, l);
-    double active =
-        muscle->max_force * muscle->activation * fl * mu_curve_velocity_hinted(muscle->curves, &muscle->hint, v);
-    muscle->damping = muscle->max_force * muscle->activation * fl *
-                      mu_curve_velocity_slope_hinted(muscle->curves, &muscle->hint, v) / muscle->max_velocity;
-    muscle->base_tension = active + passive - muscle->damping * velocity;
+    if (muscle->activation_dynamics) {
+        muscle->activation_params.excitation = muscle->excitation;
+        muscle->activation = mu_activation_step(muscle->activation, h, &muscle->activation_params);
+    }
+    if (muscle->compliant) {
+        muscle->step = mu_fibre_tendon_solve(&muscle->unit, muscle->fibre_length, muscle->activation, path + h * speed,
+                                             h, muscle->fibre_velocity);
+        muscle->substep = h;
+        muscle->damping = muscle->step.path_damping;
+        muscle->base_tension = muscle->step.tension - muscle->damping * speed;
+    } else {
+        prepare_rigid(muscle, path, speed);
+    }
     return rb_cable_set_tension_law(world, muscle->cable, muscle->base_tension, muscle->damping);
 }
 
-/* Fills the readout from the belly's state after a substep. The total is
- * the tension the solver applied: the law at the velocity it solved for,
- * which the iterations reach only approximately when the muscle shares
- * its bodies with joints and other muscles. (Evaluating the law at the
- * end velocity instead would amplify a residual of a few mm/s by the
- * 10⁴-10⁵ N·s/m of the force-velocity slope.) */
-static void fill_readout(mu_muscle *muscle, const rb_world *world, double length, double velocity, double passive)
+/* The compliant fibre after the step: the backward-Euler step again, now
+ * against the path length the bodies reached, from the velocity that
+ * balances the tension the solver applied (to first order about the
+ * balance solved in prepare). Solving again rather than taking that
+ * first-order velocity keeps the fibre and the tendon consistent with the
+ * path: a stiff tendon's toe turns a small error in the fibre's length
+ * into a large force. */
+static void advance_fibre(mu_muscle *muscle, double path, double tension)
 {
-    double total = rb_cable_tension(world, muscle->cable);
-    muscle->readout = (mu_muscle_readout){
-        .activation = muscle->activation,
-        .target_tension = muscle->target_tension,
-        .length = length,
-        .normalized_length = length / muscle->rest_length,
-        .velocity = velocity,
-        .normalized_velocity = velocity / muscle->max_velocity,
-        .contraction = muscle->rest_length - length,
-        .normalized_contraction = (muscle->rest_length - length) / muscle->rest_length,
-        .active_force = fmax(total - passive, 0.0),
-        .passive_force = passive,
-        .total_force = total,
-    };
+    const double h = muscle->substep;
+    const double guess = muscle->step.velocity + (tension - muscle->step.tension) * muscle->step.velocity_per_tension;
+    const mu_fibre_tendon_step step =
+        mu_fibre_tendon_solve(&muscle->unit, muscle->fibre_length, muscle->activation, path, h, guess);
+    const double moved = fmax(muscle->fibre_length + h * step.velocity, muscle->unit.min_fibre_length);
+    muscle->fibre_velocity = (moved - muscle->fibre_length) / h;
+    muscle->fibre_length = moved;
+    muscle->substep = 0.0;
+}
+
+/* mu_muscle_measure at the path's length and lengthening speed now. */
+static void measure_at(mu_muscle *muscle, const rb_world *world, double path, double speed)
+{
+    /* The tension the solver applied: the law at the velocity it solved
+     * for, which the iterations reach only approximately when the muscle
+     * shares its bodies with joints and other muscles. (Evaluating the
+     * law at the end velocity instead would amplify a residual of a few
+     * mm/s by the 10⁴-10⁵ N·s/m of the force-velocity slope.) */
+    const double total = rb_cable_tension(world, muscle->cable);
+    if (muscle->compliant) {
+        if (muscle->substep > 0.0) {
+            advance_fibre(muscle, path, total);
+        }
+        fill_compliant_readout(muscle, path, total);
+        return;
+    }
+    const double fibre_length = rigid_fibre_length(muscle, path);
+    const double cosine = pennation_cosine(fibre_length, muscle->width);
+    const double passive =
+        muscle->max_force *
+        mu_curve_passive_length_hinted(muscle->curves, &muscle->hint, fibre_length / muscle->rest_length) * cosine;
+    fill_readout(muscle, path, fibre_length, speed * cosine, fmax(total - passive, 0.0), passive, total);
+}
+
+static rb_status check_prepare(const mu_muscle *muscle, double h, const char *function)
+{
+    if (muscle == NULL || !(h > 0.0 && isfinite(h))) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: expected a muscle and a substep h > 0, got %g s", function,
+                               h);
+    }
+    return RB_OK;
 }
 
 rb_status mu_muscle_prepare(mu_muscle *muscle, rb_world *world, double h)
 {
-    (void)h;
-    double length = 0.0;
-    double velocity = 0.0;
-    rb_status status = read_belly(muscle, world, &length, &velocity);
-    return status != RB_OK ? status : set_tension_law(muscle, world, length, velocity, passive_force(muscle, length));
+    rb_status status = check_prepare(muscle, h, "mu_muscle_prepare");
+    double path = 0.0;
+    double speed = 0.0;
+    if (status == RB_OK) {
+        status = rb_cable_state(world, muscle->cable, &path, &speed);
+    }
+    return status != RB_OK ? status : prepare_at(muscle, world, h, path, speed);
 }
 
 rb_status mu_muscle_measure(mu_muscle *muscle, const rb_world *world)
 {
-    double length = 0.0;
-    double velocity = 0.0;
-    rb_status status = read_belly(muscle, world, &length, &velocity);
+    if (muscle == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_muscle_measure: muscle is NULL");
+    }
+    double path = 0.0;
+    double speed = 0.0;
+    rb_status status = rb_cable_state(world, muscle->cable, &path, &speed);
     if (status == RB_OK) {
-        fill_readout(muscle, world, length, velocity, passive_force(muscle, length));
+        measure_at(muscle, world, path, speed);
     }
     return status;
 }
 
 rb_status mu_muscle_advance(mu_muscle *muscle, rb_world *world, double h)
 {
-    (void)h;
-    double length = 0.0;
-    double velocity = 0.0;
-    rb_status status = read_belly(muscle, world, &length, &velocity);
+    rb_status status = check_prepare(muscle, h, "mu_muscle_advance");
+    double path = 0.0;
+    double speed = 0.0;
+    if (status == RB_OK) {
+        status = rb_cable_state(world, muscle->cable, &path, &speed);
+    }
     if (status != RB_OK) {
         return status;
     }
-    double passive = passive_force(muscle, length);
-    fill_readout(muscle, world, length, velocity, passive);
-    return set_tension_law(muscle, world, length, velocity, passive);
+    measure_at(muscle, world, path, speed);
+    return prepare_at(muscle, world, h, path, speed);
+}
+
+rb_status mu_muscle_solve_equilibrium(mu_muscle *muscle, const rb_world *world)
+{
+    if (muscle == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_muscle_solve_equilibrium: muscle is NULL");
+    }
+    double path = 0.0;
+    double speed = 0.0;
+    rb_status status = rb_cable_state(world, muscle->cable, &path, &speed);
+    if (status != RB_OK) {
+        return status;
+    }
+    if (muscle->compliant) {
+        muscle->fibre_length = mu_fibre_tendon_static_length(&muscle->unit, path, muscle->activation);
+        muscle->fibre_velocity = 0.0;
+        muscle->substep = 0.0;
+        fill_compliant_readout(muscle, path, mu_fibre_tendon_tension(&muscle->unit, path, muscle->fibre_length));
+        return RB_OK;
+    }
+    const double fibre_length = rigid_fibre_length(muscle, path);
+    const double cosine = pennation_cosine(fibre_length, muscle->width);
+    const double l = fibre_length / muscle->rest_length;
+    const double active = muscle->max_force * muscle->activation * mu_curve_active_length(muscle->curves, l) *
+                          mu_curve_velocity(muscle->curves, 0.0) * cosine;
+    const double passive = muscle->max_force * mu_curve_passive_length(muscle->curves, l) * cosine;
+    fill_readout(muscle, path, fibre_length, 0.0, active, passive, active + passive);
+    return RB_OK;
 }
 
 mu_muscle_readout mu_muscle_read(const mu_muscle *muscle) { return muscle->readout; }

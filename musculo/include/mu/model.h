@@ -21,7 +21,9 @@
 #include <stdbool.h>
 
 #include "mu/model_desc.h"
+#include "mu/motor_pool.h"
 #include "mu/muscle.h"
+#include "mu/torque_actuator.h"
 #include "rb/rb.h"
 
 typedef struct mu_model mu_model;
@@ -90,6 +92,18 @@ int mu_model_part_count(const mu_model *model);
 const char *mu_model_part_name(const mu_model *model, int index);
 rb_vec2 mu_model_part_centre(const mu_model *model, int index);
 double mu_model_part_angle(const mu_model *model, int index);
+
+/* The built torque muscles (seed 001), in the description's order: each
+ * a motor pool whose exertion drives a torque actuator, applied before
+ * every step. Recruiting sets the number of neurons (clamped to the
+ * pool), by name or by index (0 .. mu_model_torque_muscle_count - 1). */
+int mu_model_torque_muscle_count(const mu_model *model);
+const char *mu_model_torque_muscle_name(const mu_model *model, int index); /* NULL for a bad index */
+rb_status mu_model_recruit(mu_model *model, const char *name, int neurons);
+rb_status mu_model_recruit_at(mu_model *model, int index, int neurons);
+/* The pool (recruited count, exertion) and actuator (torque); NULL for a bad index. */
+const mu_motor_pool *mu_model_motor_pool(const mu_model *model, int index);
+const mu_torque_actuator *mu_model_torque_actuator(const mu_model *model, int index);
 
 /* Counts of the engine objects made: bodies, joints. */
 int mu_model_body_count(const mu_model *model);

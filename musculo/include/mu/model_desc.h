@@ -36,6 +36,7 @@ typedef enum mu_model_kind {
     MU_MODEL_WEIGHT,
     MU_MODEL_MUSCLE,
     MU_MODEL_GROUP,
+    MU_MODEL_TORQUE_MUSCLE,
 } mu_model_kind;
 
 /* One object of the description: desc->nails[index], desc->bones[index],
@@ -103,7 +104,7 @@ typedef struct mu_model_path_point {
 /* A Hill muscle (framework.md §4); the fields map onto mu_muscle_def. */
 typedef struct mu_model_muscle {
     char *name;
-    double rest_length; /* m, > 0 */
+    double rest_length; /* m, > 0: the fibres' optimal length */
     /* Maximal isometric force: max_force when > 0, else the circular
      * cross-section π·rest_width²/4 times specific_tension. */
     double max_force;               /* N, > 0, or 0 when not given */
@@ -116,7 +117,39 @@ typedef struct mu_model_muscle {
     mu_model_curve_set curves;      /* default MU_MODEL_CURVES_TABULATED */
     int point_count;                /* 2 .. RB_MAX_CABLE_POINTS */
     mu_model_path_point path[RB_MAX_CABLE_POINTS];
+    /* Geometry-derived lengths (geometry_lengths.h): the tendon's share of
+     * the path's length at the model's start pose, in [0, 1), or -1 when
+     * not given. When given, rest_length and tendon_length above hold the
+     * lengths derived from it at load. */
+    double tendon_fraction;
+    double pennation_angle; /* degrees in [0, 80] at the optimal fibre length; default 0 */
+    /* Activation dynamics (activation.h): off by default. */
+    bool activation_dynamics;
+    double activation_time;   /* s, > 0; default 0.010 */
+    double deactivation_time; /* s, > 0; default 0.040 */
+    /* A compliant tendon (tendon.h): off by default (rigid). Its slack
+     * length, tendon_length or the one derived at build, is > 0: checked
+     * at load against the path's length at the start pose. */
+    bool compliant_tendon;
+    double tendon_strain_at_max_force; /* in (0, 1]; default 0.049 */
+    double fibre_damping;              /* > 0; default 0.1 */
 } mu_model_muscle;
+
+/* A torque muscle (seed 001, framework.md §8; torque_actuator.h and
+ * motor_pool.h): exertion · peak_torque on `body` about the axis out of
+ * the plane, its reaction on `reaction_body` (or the world), the exertion
+ * set by recruiting neurons of an exponential motor pool. Built at level 3
+ * and above when its bones are in the variant. */
+typedef struct mu_model_torque_muscle {
+    char *name;
+    mu_model_ref body;          /* a bone */
+    bool has_reaction_body;     /* default false: the reaction goes to the world */
+    mu_model_ref reaction_body; /* a nail or bone other than body */
+    double peak_torque;         /* N·m, finite: the torque at full recruitment, counter-clockwise when > 0 */
+    int neurons;                /* 1 .. MU_MAX_MOTOR_NEURONS */
+    double weakest, strongest;  /* strengths of the first and last neuron, 0 < weakest <= strongest */
+    int recruited;              /* neurons recruited at the start, 0 .. neurons; default 0 */
+} mu_model_torque_muscle;
 
 /* Muscles driven together. Each muscle is also a group of its own, which
  * the model provides; these are the groups the file adds. */
@@ -156,6 +189,8 @@ typedef struct mu_model_desc {
     mu_model_muscle *muscles;
     int group_count;
     mu_model_group *groups;
+    int torque_muscle_count;
+    mu_model_torque_muscle *torque_muscles;
     int variant_count; /* >= 1: without "variants" in the file, one variant "Default" with everything */
     mu_model_variant *variants;
 } mu_model_desc;

@@ -2,22 +2,39 @@
  * body points through an engine cable.
  *
  * Sign convention: velocities are lengthening velocities, negative while
- * the muscle shortens; ṽ = v/Vmax. The tendon is rigid: its length is
- * fixed at creation, so the belly's velocity is the path's.
+ * the muscle shortens; ṽ = v/Vmax.
+ *
+ * The seed's muscle is the default: activation set directly, a rigid
+ * tendon (its length fixed at creation, so the belly's velocity is the
+ * path's) and fibres along the line of action. Three options, each per
+ * muscle, go beyond it:
+ * - activation dynamics (activation.h): the controls set the excitation,
+ *   and the activation follows it with a first-order delay;
+ * - pennation (pennation.h): fibres at an angle that rises as they
+ *   shorten, their force projected on the tendon;
+ * - a compliant tendon (tendon.h): a series spring, the fibre length a
+ *   state balancing fibre and tendon forces (the damped equilibrium of
+ *   Millard et al. 2013, solved each substep by backward Euler).
+ * rest_length is the fibres' optimal length throughout.
  *
  * Each substep: mu_muscle_prepare, before the substep, sets the cable's
  * tension law from the muscle's state; mu_muscle_measure, after it, reads
- * the force the implicit solve produced and fills the readout. Called
- * from the engine's substep callback, both happen at the start of each
- * substep (mu_muscle_advance), and the last substep is measured after
- * the step.
+ * the force the implicit solve produced, advances the fibre and fills the
+ * readout. h is the substep's duration, and the law holds for one engine
+ * substep of h, which a compliant tendon needs: its law holds the
+ * tendon's stiffness over h. Called from the engine's substep callback
+ * (the models), both happen at the start of each substep
+ * (mu_muscle_advance), and the last substep is measured after the step.
  */
 #ifndef MU_MUSCLE_H
 #define MU_MUSCLE_H
 
 #include <stdbool.h>
 
+#include "mu/activation.h"
 #include "mu/curves.h"
+#include "mu/pennation.h"
+#include "mu/tendon.h"
 #include "rb/rb.h"
 
 typedef struct mu_muscle mu_muscle;
@@ -39,23 +56,45 @@ typedef struct mu_muscle_def {
     double start_normalized_length; /* > 0, default 1 */
     double tension_gain;            /* per substep, > 0: the tension controller's gain (the seed: 0.08) */
     const mu_curves *curves;        /* not owned; must outlive the muscle */
+    /* Pennation angle at the optimal fibre length: rad, in
+     * [0, MU_MAX_PENNATION_ANGLE); default 0 (fibres along the path). With
+     * a rigid tendon the tendon_length above is then path length minus the
+     * belly's extent √(l² - w²) at the start fibre length l. */
+    double pennation_angle;
+    /* Activation dynamics: off by default (the activation is what the
+     * controls set). On, the controls set the excitation. */
+    bool activation_dynamics;
+    double activation_time;   /* τ_act, s, > 0; default 0.010 */
+    double deactivation_time; /* τ_deact, s, > 0; default 0.040 */
+    /* A compliant tendon: off by default (rigid). On, tendon_length (or the
+     * length derived from start_normalized_length) is the tendon's slack
+     * length, which must be > 0, and the fibre starts in static
+     * equilibrium at activation 0. */
+    bool compliant_tendon;
+    double tendon_strain_at_max_force; /* ε0, in (0, 1]; default 0.049 */
+    double fibre_damping;              /* β, > 0: damping per unit ṽ over Fmax; default 0.1 (Millard 2013) */
 } mu_muscle_def;
 
 mu_muscle_def mu_default_muscle_def(void);
 
-/* Everything the muscle reports after a substep. */
+/* Everything the muscle reports after a substep. Without pennation the
+ * fibre is the belly; with a rigid tendon the tendon's length is fixed. */
 typedef struct mu_muscle_readout {
     double activation;             /* 0 .. 1 */
     double target_tension;         /* N; negative when under activation control */
-    double length;                 /* m, belly length (path minus tendon) */
-    double normalized_length;      /* length / rest_length */
-    double velocity;               /* m/s, lengthening */
-    double normalized_velocity;    /* velocity / max_velocity */
-    double contraction;            /* m, rest_length - length */
+    double length;                 /* m, belly length along the path (path minus tendon) */
+    double normalized_length;      /* fibre_length / rest_length: the argument of f_L and f_P */
+    double velocity;               /* m/s, the fibre's lengthening velocity */
+    double normalized_velocity;    /* velocity / max_velocity: the argument of f_V */
+    double contraction;            /* m, rest_length - fibre_length */
     double normalized_contraction; /* contraction / rest_length */
-    double active_force;           /* N, >= 0 */
-    double passive_force;          /* N, >= 0 */
+    double active_force;           /* N, >= 0: the contractile element's force, projected on the tendon */
+    double passive_force;          /* N, >= 0: the parallel elastic element's force, projected on the tendon */
     double total_force;            /* N, the tension the path carried */
+    double excitation;             /* 0 .. 1: the neural drive; the activation itself without activation dynamics */
+    double fibre_length;           /* m */
+    double tendon_length;          /* m */
+    double pennation_angle;        /* rad, 0 .. MU_MAX_PENNATION_ANGLE */
 } mu_muscle_readout;
 
 rb_status mu_muscle_create(rb_world *world, const mu_muscle_def *def, mu_muscle **out);
@@ -63,15 +102,25 @@ rb_status mu_muscle_create(rb_world *world, const mu_muscle_def *def, mu_muscle 
  * it) and frees the muscle. Accepts NULL. */
 void mu_muscle_destroy(mu_muscle *muscle, rb_world *world);
 
-/* Sets the activation (clamped to [0, 1]) and switches tension control off. */
+/* Sets the activation (clamped to [0, 1]) and switches tension control
+ * off; with activation dynamics it sets the excitation, which the
+ * activation follows from the next substep. */
 rb_status mu_muscle_set_activation(mu_muscle *muscle, double activation);
-/* Switches tension control on: each substep the activation moves by
- * gain·(target - active force)/max force, clamped to [0, 1]; a target of 0
- * drives it to 0. */
+/* Switches tension control on: each substep the activation (with
+ * activation dynamics, the excitation) moves by gain·(target - active
+ * force)/max force, clamped to [0, 1]; a target of 0 drives it to 0. */
 rb_status mu_muscle_set_target_tension(mu_muscle *muscle, double target);
 
-double mu_muscle_max_force(const mu_muscle *muscle);     /* N */
-double mu_muscle_tendon_length(const mu_muscle *muscle); /* m */
+/* With a compliant tendon, puts the fibre at its static equilibrium (fibre
+ * force·cos α = tendon force, at rest) for the present path and
+ * activation, and refreshes the readout (its total force is then the
+ * tendon's). With a rigid tendon the fibre has no state of its own: only
+ * the readout is refreshed, at zero velocity. */
+rb_status mu_muscle_solve_equilibrium(mu_muscle *muscle, const rb_world *world);
+
+double mu_muscle_max_force(const mu_muscle *muscle); /* N */
+/* m: the rigid tendon's length, or the compliant tendon's slack length. */
+double mu_muscle_tendon_length(const mu_muscle *muscle);
 rb_cable_id mu_muscle_cable(const mu_muscle *muscle);
 
 rb_status mu_muscle_prepare(mu_muscle *muscle, rb_world *world, double h);
