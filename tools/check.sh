@@ -57,9 +57,10 @@ fi
 
 # ---- Build and test each preset ---------------------------------------------
 # Sanitizer settings of the asan run (the asan test preset sets the same).
-# LeakSanitizer suppressions, if any, may name only third-party internals.
+# LeakSanitizer suppressions (tools/lsan.supp) may name only third-party internals.
 asan_env=(
     ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+    LSAN_OPTIONS=suppressions=$PWD/tools/lsan.supp
     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 )
 

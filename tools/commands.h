@@ -10,9 +10,11 @@
  * command line. */
 enum { EXIT_USAGE = 2 };
 
-int cmd_scene(int argc, char **argv);  /* sinew scene NAME [options] */
-int cmd_models(int argc, char **argv); /* sinew models */
-int cmd_check(int argc, char **argv);  /* sinew check FILE */
-int cmd_run(int argc, char **argv);    /* sinew run MODEL [options] */
+int cmd_scene(int argc, char **argv);      /* sinew scene NAME [options] */
+int cmd_models(int argc, char **argv);     /* sinew models */
+int cmd_check(int argc, char **argv);      /* sinew check FILE */
+int cmd_run(int argc, char **argv);        /* sinew run MODEL [options] */
+int cmd_plot(int argc, char **argv);       /* sinew plot CSV [options] */
+int cmd_experiment(int argc, char **argv); /* sinew experiment NAME [options] */
 
 #endif

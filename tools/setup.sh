@@ -12,11 +12,11 @@ set -euo pipefail
 packages=(
     build-essential  # gcc, make, libc headers
     cmake            # >= 3.25 (CMakePresets.json version 6)
-    pkg-config       # finds criterion and gsl
+    pkg-config       # finds criterion, gsl and cairo
     libgsl-dev       # GNU Scientific Library
     libcriterion-dev # unit tests (tests/)
     libjansson-dev   # model files (musculo/)
-    libcairo2-dev    # motor-pool profile images (musculo/), figures
+    libcairo2-dev    # motor-pool profile images (musculo/), charts: PNG and SVG figures (tools/chart/)
     clang-format     # formatting check in tools/check.sh
     valgrind         # memory and cache profiling
 )

@@ -14,6 +14,8 @@ static const char usage_text[] = "usage: sinew COMMAND [arguments]\n"
                                  "  check FILE             validate a model file\n"
                                  "  run MODEL [options]    run a muscle model, write a CSV, print a summary\n"
                                  "  scene NAME [options]   run an engine scene, print a summary\n"
+                                 "  plot CSV [options]     draw columns of a CSV file as a PNG or SVG chart\n"
+                                 "  experiment NAME        run one of the seed's experiments: CSV, figure, figures\n"
                                  "\n"
                                  "`sinew COMMAND --help` describes a command's arguments.\n"
                                  "Exit status: 0 success, 1 failure (a model or control file, the engine,\n"
@@ -24,7 +26,8 @@ int main(int argc, char **argv)
     static const struct {
         const char *name;
         int (*run)(int argc, char **argv);
-    } commands[] = {{"models", cmd_models}, {"check", cmd_check}, {"run", cmd_run}, {"scene", cmd_scene}};
+    } commands[] = {{"models", cmd_models}, {"check", cmd_check}, {"run", cmd_run},
+                    {"scene", cmd_scene},   {"plot", cmd_plot},   {"experiment", cmd_experiment}};
     if (argc < 2) {
         fputs(usage_text, stderr);
         return EXIT_USAGE;
@@ -38,6 +41,8 @@ int main(int argc, char **argv)
             return commands[k].run(argc - 2, argv + 2);
         }
     }
-    fprintf(stderr, "sinew: unknown command \"%s\" (models, check, run or scene; see `sinew --help`)\n", argv[1]);
+    fprintf(stderr,
+            "sinew: unknown command \"%s\" (models, check, run, scene, plot or experiment; see `sinew --help`)\n",
+            argv[1]);
     return EXIT_USAGE;
 }

@@ -46,7 +46,7 @@ struct mu_model {
     int built_torque_muscle_count;
     rb_joint_id *hinges; /* by description index; null id when not built */
     int joint_count;
-    double time;
+    long substeps_taken;      /* since creation; the time is counted, not summed, so it does not drift */
     rb_status substep_status; /* the first error of the muscles' updates in this step */
     char warnings[WARNINGS_SIZE];
 };
@@ -583,14 +583,21 @@ void mu_model_destroy(mu_model *model)
 
 rb_world *mu_model_world(mu_model *model) { return model->world; }
 const mu_model_desc *mu_model_description(const mu_model *model) { return model->desc; }
-double mu_model_time(const mu_model *model) { return model->time; }
-double mu_model_frame_duration(const mu_model *model) { return 1.0 / model->desc->frame_rate; }
-
-rb_status mu_model_step(mu_model *model)
+double mu_model_time(const mu_model *model)
 {
-    if (model == NULL) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_step: model is NULL");
-    }
+    return (double)model->substeps_taken / (model->desc->frame_rate * model->desc->substeps);
+}
+double mu_model_frame_duration(const mu_model *model) { return 1.0 / model->desc->frame_rate; }
+double mu_model_substep_duration(const mu_model *model)
+{
+    return 1.0 / (model->desc->frame_rate * model->desc->substeps);
+}
+
+/* Steps the world by `substeps` of the model's substeps, as one engine
+ * step (the muscles update from the substep callback), then reads the
+ * muscles. */
+static rb_status advance(mu_model *model, int substeps)
+{
     model->substep_status = RB_OK;
     /* Torques hold over every substep of the step (rb_body_apply_torque). */
     for (int t = 0; t < model->built_torque_muscle_count; ++t) {
@@ -599,7 +606,7 @@ rb_status mu_model_step(mu_model *model)
             return applied;
         }
     }
-    rb_status status = rb_world_step(model->world, mu_model_frame_duration(model));
+    rb_status status = rb_world_step(model->world, substeps * mu_model_substep_duration(model));
     if (status == RB_OK) {
         status = model->substep_status;
     }
@@ -607,9 +614,36 @@ rb_status mu_model_step(mu_model *model)
         status = measure_muscles(model);
     }
     if (status == RB_OK) {
-        model->time += mu_model_frame_duration(model);
+        model->substeps_taken += substeps;
     }
     return status;
+}
+
+rb_status mu_model_substep(mu_model *model)
+{
+    if (model == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_substep: model is NULL");
+    }
+    /* One engine step of one substep: the same solve as a substep of a
+     * frame, with collision run before it rather than once per frame. */
+    rb_solver_settings frame = rb_world_solver_settings(model->world);
+    rb_solver_settings single = frame;
+    single.substeps = 1;
+    rb_status status = rb_world_set_solver_settings(model->world, &single);
+    if (status == RB_OK) {
+        status = advance(model, 1);
+        rb_status restored = rb_world_set_solver_settings(model->world, &frame);
+        status = status == RB_OK ? restored : status;
+    }
+    return status;
+}
+
+rb_status mu_model_step(mu_model *model)
+{
+    if (model == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_step: model is NULL");
+    }
+    return advance(model, model->desc->substeps);
 }
 
 /* Applies `set` to every built muscle of the muscle or group `name`. */

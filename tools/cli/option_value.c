@@ -86,3 +86,32 @@ const char *option_take_value(int argc, char **argv, int *i, const char *program
     *i += 1;
     return argv[*i];
 }
+
+bool option_split(int argc, char **argv, int *i, const char *const *known, size_t count, const char **option,
+                  const char **value, char *error, size_t error_size)
+{
+    const char *argument = argv[*i];
+    const char *equals = strchr(argument, '=');
+    size_t name_length = equals != NULL ? (size_t)(equals - argument) : strlen(argument);
+    *option = NULL;
+    for (size_t k = 0; k < count && *option == NULL; ++k) {
+        if (strlen(known[k]) == name_length && strncmp(argument, known[k], name_length) == 0) {
+            *option = known[k];
+        }
+    }
+    if (*option == NULL) {
+        snprintf(error, error_size, "unknown option \"%s\"", argument);
+        return false;
+    }
+    if (equals != NULL) {
+        *value = equals + 1;
+        return true;
+    }
+    if (*i + 1 >= argc || strncmp(argv[*i + 1], "--", 2) == 0) {
+        snprintf(error, error_size, "%s needs a value", *option);
+        return false;
+    }
+    *i += 1;
+    *value = argv[*i];
+    return true;
+}

@@ -44,4 +44,13 @@ bool option_parse_path(const char *option, const char *text, const char **out, c
 const char *option_take_value(int argc, char **argv, int *i, const char *program, const char *const *known,
                               size_t count, const char *usage);
 
+/* Reads the option at argv[*i], written `--name value` or `--name=value`,
+ * where --name must be one of the `count` names in `known`. On success
+ * sets *option to the matching entry of `known` and *value to its text,
+ * advances *i past a separate value, and returns true. Otherwise `error`
+ * says what is wrong (an unknown option, or no value after it; a value
+ * may not start with "--") and the function returns false. */
+bool option_split(int argc, char **argv, int *i, const char *const *known, size_t count, const char **option,
+                  const char **value, char *error, size_t error_size);
+
 #endif

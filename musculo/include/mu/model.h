@@ -46,10 +46,17 @@ void mu_model_destroy(mu_model *model);
 rb_world *mu_model_world(mu_model *model);
 const mu_model_desc *mu_model_description(const mu_model *model);
 
-/* Advances one frame. */
+/* Advances one frame: the model's substeps, one after the other. */
 rb_status mu_model_step(mu_model *model);
-double mu_model_time(const mu_model *model);           /* s since creation */
-double mu_model_frame_duration(const mu_model *model); /* s */
+/* Advances one substep (frame duration / substeps), for controls finer
+ * than a frame (a pulse of 2 ms at 600 Hz is one substep): one engine
+ * step of one substep. The solve is a frame's substep; collision runs
+ * before each substep instead of once per frame, which a model whose
+ * parts never touch (the built-in ones: bones are sensors) does not feel. */
+rb_status mu_model_substep(mu_model *model);
+double mu_model_time(const mu_model *model);             /* s since creation */
+double mu_model_frame_duration(const mu_model *model);   /* s */
+double mu_model_substep_duration(const mu_model *model); /* s */
 
 /* Controls, by muscle or group name (each muscle is also its own group):
  * every muscle of the group that exists in the built variant. */

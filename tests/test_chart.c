@@ -1,0 +1,400 @@
+/* The chart library (tools/chart) and the CSV tables it draws
+ * (tools/io/csv_table): nice ticks against the 1-2-5 rule and the range
+ * they must cover; PNG files of the asked size with the series' colour
+ * in them, read back through Cairo; SVG files; degenerate data drawn
+ * without failing; bad arguments refused with a message; a failed write
+ * leaves nothing; CSV reading with quotes, CRLF and errors by line;
+ * axis labels from column names.
+ */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp */
+
+#include <cairo.h>
+#include <criterion/criterion.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "chart/chart.h"
+#include "chart/chart_ticks.h"
+#include "chart/column_label.h"
+#include "io/csv_table.h"
+
+/* ------------------------------------------------------------------ ticks */
+
+/* Whether `step` is 1, 2 or 5 times a power of ten. */
+static bool is_nice(double step)
+{
+    double mantissa = step / pow(10.0, floor(log10(step)));
+    return fabs(mantissa - 1.0) < 1e-9 || fabs(mantissa - 2.0) < 1e-9 || fabs(mantissa - 5.0) < 1e-9 ||
+           fabs(mantissa - 10.0) < 1e-9;
+}
+
+static void expect_covering_nice_ticks(double min, double max, int intervals)
+{
+    chart_ticks ticks;
+    char error[256];
+    cr_assert(chart_nice_ticks(min, max, intervals, &ticks, error, sizeof error), "[%g, %g]: %s", min, max, error);
+    double first = chart_tick_value(&ticks, 0);
+    double last = chart_tick_value(&ticks, ticks.count - 1);
+    cr_expect(is_nice(ticks.step), "[%g, %g]: step %g is not 1, 2 or 5 x 10^k", min, max, ticks.step);
+    double slack = 1e-9 * ticks.step; /* a tick's rounding (chart_ticks.h) */
+    cr_expect(first <= min + slack && last >= max - slack, "[%g, %g]: ticks %g .. %g do not cover it", min, max, first,
+              last);
+    if (min < max) {
+        /* No tick to spare at either end. */
+        cr_expect(first + ticks.step > min && last - ticks.step < max, "[%g, %g]: ticks %g .. %g (step %g) too wide",
+                  min, max, first, last, ticks.step);
+        /* The nearest 1-2-5 step on a log scale is within a factor
+         * sqrt(10)/2 ≈ 1.6 of the asked one, ±1 interval for the ends. */
+        int count = ticks.count - 1;
+        cr_expect(count >= intervals / 1.6 - 1.0 && count <= intervals * 1.6 + 2.0, "[%g, %g]: %d intervals for %d",
+                  min, max, count, intervals);
+    }
+}
+
+Test(chart_ticks, are_nice_and_cover_the_range)
+{
+    const double ranges[][2] = {
+        {0.0, 1.0},       {0.0, 0.3},    {-1.0, 1.0},       {0.3, 0.7},    {-0.1395, 0.0255},
+        {2.75, 5.5},      {0.0, 4400.0}, {1e-7, 3e-7},      {-5e6, 2.5e7}, {123.4, 125.7},
+        {0.2942, 0.2962}, {-2.0, -1.0},  {1e-3, 1.0001e-3},
+    };
+    for (size_t k = 0; k < sizeof ranges / sizeof ranges[0]; ++k) {
+        for (int intervals = 2; intervals <= 10; intervals += 4) {
+            expect_covering_nice_ticks(ranges[k][0], ranges[k][1], intervals);
+        }
+    }
+    /* Pseudo-random ranges over 18 decades of width (from 1e-9 of the
+     * centre's magnitude up: narrower ones count as equal ends). */
+    unsigned long state = 12345;
+    for (int k = 0; k < 2000; ++k) {
+        state = state * 6364136223846793005UL + 1442695040888963407UL;
+        double centre = ((double)(state >> 11) / 9007199254740992.0 - 0.5) * 2e3;
+        state = state * 6364136223846793005UL + 1442695040888963407UL;
+        double width = pow(10.0, ((double)(state >> 11) / 9007199254740992.0) * 18.0 - 6.0);
+        expect_covering_nice_ticks(centre, centre + width, 2 + k % 9);
+    }
+}
+
+Test(chart_ticks, equal_ends_get_a_range_around_the_value)
+{
+    chart_ticks ticks;
+    cr_assert(chart_nice_ticks(3.0, 3.0, 5, &ticks, NULL, 0));
+    cr_expect(chart_tick_value(&ticks, 0) <= 2.85 && chart_tick_value(&ticks, ticks.count - 1) >= 3.15);
+    cr_assert(chart_nice_ticks(0.0, 0.0, 5, &ticks, NULL, 0));
+    cr_expect(chart_tick_value(&ticks, 0) <= -1.0 && chart_tick_value(&ticks, ticks.count - 1) >= 1.0);
+}
+
+Test(chart_ticks, refuse_non_finite_or_reversed_ranges)
+{
+    chart_ticks ticks;
+    char error[256] = "";
+    cr_expect_not(chart_nice_ticks(NAN, 1.0, 5, &ticks, error, sizeof error));
+    cr_expect(strstr(error, "chart_nice_ticks") != NULL, "message: %s", error);
+    cr_expect_not(chart_nice_ticks(0.0, INFINITY, 5, &ticks, NULL, 0));
+    cr_expect_not(chart_nice_ticks(2.0, 1.0, 5, &ticks, NULL, 0));
+    cr_expect_not(chart_nice_ticks(0.0, 1.0, 0, &ticks, NULL, 0));
+    cr_expect_not(chart_nice_ticks(-1e308, 1e308, 5, &ticks, NULL, 0));
+    cr_expect_not(chart_nice_ticks(0.0, 1.0, 5, NULL, NULL, 0));
+}
+
+Test(chart_ticks, labels_have_the_decimals_of_the_step)
+{
+    chart_ticks ticks;
+    char label[64];
+    cr_assert(chart_nice_ticks(0.0, 0.9, 9, &ticks, NULL, 0));
+    cr_assert_float_eq(ticks.step, 0.1, 1e-15);
+    chart_tick_label(&ticks, 3, label, sizeof label);
+    cr_expect_str_eq(label, "0.3"); /* 3 × 0.1 is 0.30000000000000004 */
+    cr_assert(chart_nice_ticks(-0.2, 0.2, 4, &ticks, NULL, 0));
+    for (int i = 0; i < ticks.count; ++i) {
+        chart_tick_label(&ticks, i, label, sizeof label);
+        cr_expect(strcmp(label, "-0") != 0 && strcmp(label, "-0.0") != 0, "tick %d reads %s", i, label);
+    }
+    cr_assert(chart_nice_ticks(0.0, 4000.0, 4, &ticks, NULL, 0));
+    chart_tick_label(&ticks, 1, label, sizeof label);
+    cr_expect_str_eq(label, "1000");
+    cr_assert(chart_nice_ticks(0.0, 3e7, 3, &ticks, NULL, 0));
+    chart_tick_label(&ticks, 1, label, sizeof label);
+    cr_expect_str_eq(label, "1e+07");
+}
+
+/* ------------------------------------------------------------------ files */
+
+static char dir[] = "/tmp/sinew-chart-XXXXXX";
+
+static void make_dir(void) { cr_assert_not_null(mkdtemp(dir)); }
+
+static void path_in_dir(char *path, size_t size, const char *name) { snprintf(path, size, "%s/%s", dir, name); }
+
+/* Pixels of a PNG whose colour is within 0.1 of rgb in each channel. */
+static long pixels_of_colour(cairo_surface_t *image, const double rgb[3])
+{
+    cairo_surface_flush(image);
+    const unsigned char *data = cairo_image_surface_get_data(image);
+    int stride = cairo_image_surface_get_stride(image);
+    long found = 0;
+    for (int y = 0; y < cairo_image_surface_get_height(image); ++y) {
+        const uint32_t *row = (const uint32_t *)(const void *)(data + (size_t)y * (size_t)stride);
+        for (int x = 0; x < cairo_image_surface_get_width(image); ++x) {
+            double r = ((row[x] >> 16) & 0xFF) / 255.0, g = ((row[x] >> 8) & 0xFF) / 255.0, b = (row[x] & 0xFF) / 255.0;
+            found += fabs(r - rgb[0]) < 0.1 && fabs(g - rgb[1]) < 0.1 && fabs(b - rgb[2]) < 0.1;
+        }
+    }
+    return found;
+}
+
+Test(chart_file, a_png_has_the_asked_size_and_draws_each_series_in_its_colour)
+{
+    make_dir();
+    enum { N = 200 };
+    double x[N], y[N], z[N];
+    for (int i = 0; i < N; ++i) {
+        x[i] = 0.01 * i;
+        y[i] = sin(6.0 * x[i]);
+        z[i] = 0.5 * cos(3.0 * x[i]);
+    }
+    chart_series series[2] = {{.label = "sin", .x = x, .y = y, .count = N},
+                              {.label = "cos", .x = x, .y = z, .count = N}};
+    chart plot = {.title = "test", .x_label = "time (s)", .y_label = "value (m)", .series = series, .series_count = 2};
+    chart_figure figure = {.charts = &plot, .chart_count = 1, .columns = 1, .width = 640, .height = 400};
+    char path[512], error[CHART_ERROR_SIZE];
+    path_in_dir(path, sizeof path, "plot.png");
+    cr_assert(chart_write_png(&figure, path, error, sizeof error), "%s", error);
+
+    cairo_surface_t *image = cairo_image_surface_create_from_png(path);
+    cr_assert_eq(cairo_surface_status(image), CAIRO_STATUS_SUCCESS, "not a PNG: %s", path);
+    cr_expect_eq(cairo_image_surface_get_width(image), 640);
+    cr_expect_eq(cairo_image_surface_get_height(image), 400);
+    const double white[3] = {1.0, 1.0, 1.0};
+    long pixels = 640L * 400L;
+    long background = pixels_of_colour(image, white);
+    cr_expect(background < pixels && background > pixels / 2, "%ld of %ld pixels white: blank or not a chart",
+              background, pixels);
+    for (int s = 0; s < 2; ++s) {
+        double rgb[3];
+        chart_series_colour(s, rgb);
+        /* A 1.5 px line across ~500 px of plot shows in hundreds of pixels. */
+        long drawn = pixels_of_colour(image, rgb);
+        cr_expect(drawn > 300, "series %d: %ld pixels of its colour", s, drawn);
+    }
+    cairo_surface_destroy(image);
+    remove(path);
+    rmdir(dir);
+}
+
+Test(chart_file, an_svg_is_written_with_its_size)
+{
+    make_dir();
+    double x[3] = {0.0, 1.0, 2.0}, y[3] = {1.0, 3.0, 2.0};
+    chart_series series = {.label = "s", .x = x, .y = y, .count = 3};
+    chart plot = {.series = &series, .series_count = 1};
+    chart_figure figure = {.charts = &plot, .chart_count = 1, .columns = 1, .width = 500, .height = 300};
+    char path[512], error[CHART_ERROR_SIZE];
+    path_in_dir(path, sizeof path, "plot.SVG");
+    cr_assert(chart_write_file(&figure, path, error, sizeof error), "%s", error);
+    FILE *f = fopen(path, "r");
+    cr_assert_not_null(f);
+    static char text[1 << 16];
+    size_t n = fread(text, 1, sizeof text - 1, f);
+    text[n] = '\0';
+    fclose(f);
+    cr_expect(strstr(text, "<svg") != NULL, "no <svg element");
+    cr_expect(strstr(text, "width=\"500") != NULL && strstr(text, "height=\"300") != NULL, "size not 500 x 300");
+    cr_expect(strstr(text, "</svg>") != NULL, "the SVG is not finished");
+    remove(path);
+    rmdir(dir);
+}
+
+Test(chart_file, a_failed_write_leaves_no_file)
+{
+    make_dir();
+    chart plot = {.series_count = 0};
+    chart_figure figure = {.charts = &plot, .chart_count = 1, .columns = 1, .width = 100, .height = 100};
+    char path[512], error[CHART_ERROR_SIZE] = "";
+    snprintf(path, sizeof path, "%s/missing/plot.png", dir);
+    cr_expect_not(chart_write_png(&figure, path, error, sizeof error));
+    cr_expect(strstr(error, "missing/plot.png") != NULL, "message: %s", error);
+    path_in_dir(path, sizeof path, "plot.jpg");
+    cr_expect_not(chart_write_file(&figure, path, error, sizeof error));
+    cr_expect(strstr(error, ".png or .svg") != NULL, "message: %s", error);
+    cr_expect_neq(access(path, F_OK), 0);
+    /* A chart that cannot be drawn: nothing written. */
+    plot.series_count = -1;
+    path_in_dir(path, sizeof path, "plot.png");
+    cr_expect_not(chart_write_png(&figure, path, error, sizeof error));
+    cr_expect_neq(access(path, F_OK), 0, "a failed write left %s", path);
+    rmdir(dir);
+}
+
+/* --------------------------------------------------------- degenerate data */
+
+static bool draw_to_image(const chart *plot, char *error, size_t error_size)
+{
+    cairo_surface_t *surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 300, 200);
+    cairo_t *cr = cairo_create(surface);
+    bool ok = chart_draw(plot, cr, 0.0, 0.0, 300.0, 200.0, error, error_size);
+    cairo_destroy(cr);
+    cairo_surface_destroy(surface);
+    return ok;
+}
+
+Test(chart_draw, degenerate_data_is_drawn)
+{
+    double one_x[1] = {2.0}, one_y[1] = {5.0};
+    double flat_x[4] = {0.0, 1.0, 2.0, 3.0}, flat_y[4] = {7.0, 7.0, 7.0, 7.0};
+    double holes_x[6] = {0.0, 1.0, NAN, 3.0, INFINITY, 5.0}, holes_y[6] = {1.0, NAN, 2.0, 3.0, 4.0, -INFINITY};
+    double nan_y[3] = {NAN, NAN, NAN};
+    double same_x[3] = {1.0, 1.0, 1.0}, huge_y[3] = {1e300, -1e300, 0.0};
+    const chart_series cases[][2] = {
+        {{.label = "empty", .count = 0}, {.label = NULL, .count = 0}},
+        {{.label = "one point", .x = one_x, .y = one_y, .count = 1}, {.count = 0}},
+        {{.label = "constant", .x = flat_x, .y = flat_y, .count = 4}, {.count = 0}},
+        {{.label = "holes", .x = holes_x, .y = holes_y, .count = 6, .marker_radius = 2.0}, {.count = 0}},
+        {{.label = "all NaN", .x = flat_x, .y = nan_y, .count = 3}, {.label = "", .x = one_x, .y = one_y, .count = 1}},
+        {{.label = "vertical", .x = same_x, .y = flat_y, .count = 3}, {.count = 0}},
+        {{.label = "too wide", .x = flat_x, .y = huge_y, .count = 3}, {.count = 0}},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        chart plot = {
+            .title = cases[k][0].label, .x_label = "x", .y_label = "y", .series = cases[k], .series_count = 2};
+        char error[CHART_ERROR_SIZE] = "";
+        cr_expect(draw_to_image(&plot, error, sizeof error), "case %zu (%s): %s", k, cases[k][0].label, error);
+    }
+    chart nothing = {.series_count = 0};
+    cr_expect(draw_to_image(&nothing, NULL, 0));
+    /* A fixed range with the data outside it. */
+    chart fixed = {.series = cases[2], .series_count = 1, .y_range = {.fixed = true, .min = -1.0, .max = 1.0}};
+    cr_expect(draw_to_image(&fixed, NULL, 0));
+}
+
+Test(chart_draw, bad_arguments_are_refused_with_a_message)
+{
+    char error[CHART_ERROR_SIZE] = "";
+    cr_expect_not(draw_to_image(NULL, error, sizeof error));
+    cr_expect(strstr(error, "chart_draw") != NULL && strstr(error, "chart") != NULL, "message: %s", error);
+    chart plot = {.series_count = CHART_MAX_SERIES + 1};
+    cr_expect_not(draw_to_image(&plot, error, sizeof error));
+    cr_expect(strstr(error, "series_count") != NULL, "message: %s", error);
+    chart_series no_data = {.label = "x", .count = 3};
+    plot = (chart){.series = &no_data, .series_count = 1};
+    cr_expect_not(draw_to_image(&plot, error, sizeof error));
+    cr_expect(strstr(error, "series[0]") != NULL, "message: %s", error);
+    plot = (chart){.series_count = 0, .x_range = {.fixed = true, .min = 1.0, .max = 1.0}};
+    cr_expect_not(draw_to_image(&plot, error, sizeof error));
+    cr_expect(strstr(error, "x_range") != NULL, "message: %s", error);
+
+    cairo_surface_t *surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 10, 10);
+    cairo_t *cr = cairo_create(surface);
+    chart empty = {.series_count = 0};
+    cr_expect_not(chart_draw(&empty, cr, 0.0, 0.0, 0.0, 10.0, error, sizeof error));
+    cr_expect(strstr(error, "rectangle") != NULL, "message: %s", error);
+    cr_expect_not(chart_draw(&empty, cr, 0.0, NAN, 10.0, 10.0, NULL, 0));
+    cr_expect_not(chart_draw(&empty, NULL, 0.0, 0.0, 10.0, 10.0, NULL, 0));
+    cairo_destroy(cr);
+    cairo_surface_destroy(surface);
+    chart_figure figure = {.charts = &empty, .chart_count = 1, .columns = 0, .width = 10, .height = 10};
+    surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 10, 10);
+    cr = cairo_create(surface);
+    cr_expect_not(chart_figure_draw(&figure, cr, error, sizeof error));
+    cr_expect(strstr(error, "columns") != NULL, "message: %s", error);
+    cairo_destroy(cr);
+    cairo_surface_destroy(surface);
+}
+
+/* ------------------------------------------------------------- CSV tables */
+
+static void write_text(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    cr_assert_not_null(f);
+    fputs(text, f);
+    fclose(f);
+}
+
+Test(csv_table, reads_quoted_names_crlf_blank_lines_and_text_columns)
+{
+    make_dir();
+    char path[512], error[1024];
+    path_in_dir(path, sizeof path, "t.csv");
+    write_text(path, "time_s,\"a, \"\"quoted\"\" name [N]\",label,gap\r\n"
+                     "0,1.5,x,\r\n"
+                     "\r\n"
+                     "0.5, -2e3 ,y,nan\r\n");
+    csv_table table;
+    cr_assert(csv_table_read(path, &table, error, sizeof error), "%s", error);
+    cr_expect_eq(table.column_count, 4);
+    cr_expect_eq(table.row_count, 2);
+    cr_expect_eq(csv_table_find(&table, "a, \"quoted\" name [N]"), 1);
+    cr_expect_float_eq(table.columns[1].values[1], -2000.0, 1e-12);
+    cr_expect(table.columns[0].numeric && table.columns[1].numeric && table.columns[3].numeric);
+    cr_expect(isnan(table.columns[3].values[0]) && isnan(table.columns[3].values[1]));
+    cr_expect_not(table.columns[2].numeric);
+    cr_expect_eq(table.columns[2].bad_line, 2);
+    cr_expect_str_eq(table.columns[2].bad_cell, "x");
+    csv_table_free(&table);
+
+    /* Written back and read again: the same numbers. */
+    cr_assert(csv_table_read(path, &table, error, sizeof error), "%s", error);
+    char copy[512];
+    path_in_dir(copy, sizeof copy, "copy.csv");
+    cr_assert(csv_table_write(&table, copy, error, sizeof error), "%s", error);
+    csv_table again;
+    cr_assert(csv_table_read(copy, &again, error, sizeof error), "%s", error);
+    cr_expect_eq(csv_table_find(&again, "a, \"quoted\" name [N]"), 1);
+    cr_expect_float_eq(again.columns[1].values[0], 1.5, 1e-12);
+    csv_table_free(&table);
+    csv_table_free(&again);
+    remove(copy);
+    remove(path);
+    rmdir(dir);
+}
+
+Test(csv_table, errors_name_the_file_and_the_line)
+{
+    make_dir();
+    char path[512], error[1024] = "";
+    path_in_dir(path, sizeof path, "bad.csv");
+    const struct {
+        const char *text;
+        const char *expected;
+    } cases[] = {
+        {"", "empty file"},
+        {"a,b\n1,2\n3\n", "bad.csv:3: 1 fields, the header has 2"},
+        {"a,b\n1,2,3\n", "bad.csv:2: more fields than the header"},
+        {"a,\"b\n1,2\n", "bad.csv:1: header: a quoted field is not closed"},
+        {"a,,c\n", "column 2 has no name"},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        write_text(path, cases[k].text);
+        csv_table table;
+        cr_expect_not(csv_table_read(path, &table, error, sizeof error), "case %zu was read", k);
+        cr_expect(strstr(error, cases[k].expected) != NULL, "case %zu: %s", k, error);
+        cr_expect_eq(table.column_count, 0);
+    }
+    remove(path);
+    csv_table table;
+    cr_expect_not(csv_table_read(path, &table, error, sizeof error));
+    cr_expect(strstr(error, "No such file") != NULL, "%s", error);
+    rmdir(dir);
+}
+
+Test(column_label, units_from_sinew_column_names)
+{
+    const char *cases[][2] = {
+        {"time_s", "time (s)"},
+        {"Biceps Long.velocity_m_s", "Biceps Long.velocity (m/s)"},
+        {"Biceps Long.total_force_N", "Biceps Long.total force (N)"},
+        {"Elbow.angle_deg", "Elbow.angle (deg)"},
+        {"force [N]", "force (N)"},
+        {"normalized_length", "normalized_length"},
+    };
+    char label[128];
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        column_label(cases[k][0], label, sizeof label);
+        cr_expect_str_eq(label, cases[k][1]);
+    }
+}

@@ -1,0 +1,115 @@
+/* `sinew plot` as a user runs it: a CSV with units in its header becomes
+ * a PNG of the documented size, or an SVG; bad arguments (a missing file,
+ * an unknown or non-numeric column, an unwritable or unknown output) give
+ * one line on stderr, a non-zero status and no figure.
+ */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp */
+
+#include <cairo.h>
+#include <criterion/criterion.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+static char dir[] = "/tmp/sinew-plot-XXXXXX";
+
+static int run_sinew(const char *args, char *log, size_t log_size)
+{
+    char command[2048], log_path[600];
+    snprintf(log_path, sizeof log_path, "%s/log.txt", dir);
+    snprintf(command, sizeof command, "cd '%s' && '%s' %s > log.txt 2>&1", dir, SINEW_TOOL, args);
+    const int status = system(command);
+    cr_assert(status != -1 && WIFEXITED(status), "could not run: %s", command);
+    FILE *f = fopen(log_path, "r");
+    cr_assert_not_null(f);
+    size_t n = fread(log, 1, log_size - 1, f);
+    log[n] = '\0';
+    fclose(f);
+    remove(log_path);
+    return WEXITSTATUS(status);
+}
+
+static void write_file(const char *name, const char *text)
+{
+    char path[600];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    FILE *f = fopen(path, "w");
+    cr_assert_not_null(f);
+    fputs(text, f);
+    fclose(f);
+}
+
+static const char data[] = "time_s,Muscle.total_force_N,Muscle.length_m,note\n"
+                           "0,0,0.30,a\n"
+                           "0.5,120,0.28,b\n"
+                           "1.0,250,0.25,c\n";
+
+Test(cli_plot, draws_a_csv_as_png_and_svg)
+{
+    cr_assert_not_null(mkdtemp(dir));
+    write_file("data.csv", data);
+    char log[4096];
+    cr_assert_eq(run_sinew("plot data.csv", log, sizeof log), 0, "%s", log);
+    char path[600];
+    snprintf(path, sizeof path, "%s/data.png", dir);
+    cairo_surface_t *image = cairo_image_surface_create_from_png(path);
+    cr_assert_eq(cairo_surface_status(image), CAIRO_STATUS_SUCCESS, "no PNG at %s: %s", path, log);
+    cr_expect_eq(cairo_image_surface_get_width(image), 960);
+    cr_expect_eq(cairo_image_surface_get_height(image), 600);
+    cairo_surface_destroy(image);
+    remove(path);
+    cr_expect(strstr(log, "2 series") != NULL, "the text column is left out by default: %s", log);
+
+    cr_assert_eq(
+        run_sinew("plot data.csv --x Muscle.length_m --y Muscle.total_force_N --out f.svg --title T", log, sizeof log),
+        0, "%s", log);
+    snprintf(path, sizeof path, "%s/f.svg", dir);
+    cr_expect_eq(access(path, F_OK), 0, "no %s", path);
+    remove(path);
+    snprintf(path, sizeof path, "%s/data.csv", dir);
+    remove(path);
+    rmdir(dir);
+}
+
+Test(cli_plot, bad_arguments_fail_with_one_line_and_no_figure)
+{
+    cr_assert_not_null(mkdtemp(dir));
+    write_file("data.csv", data);
+    write_file("ragged.csv", "a,b\n1,2\n3\n");
+    const char *cases[] = {
+        "plot",
+        "plot nosuch.csv",
+        "plot data.csv --y nosuch",
+        "plot data.csv --x nosuch",
+        "plot data.csv --y note",
+        "plot data.csv --out /nonexistent/dir/f.png",
+        "plot data.csv --out f.jpg",
+        "plot data.csv --frobnicate 1",
+        "plot data.csv --y",
+        "plot data.csv other.csv",
+        "plot ragged.csv",
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        char log[4096];
+        cr_expect_neq(run_sinew(cases[k], log, sizeof log), 0, "'sinew %s' exited 0", cases[k]);
+        int lines = 0;
+        for (const char *c = log; *c != '\0'; ++c) {
+            lines += *c == '\n';
+        }
+        cr_expect_eq(lines, 1, "'sinew %s' printed %d lines: %s", cases[k], lines, log);
+    }
+    const char *left[] = {"data.png", "f.jpg", "ragged.png", "nosuch.png"};
+    for (size_t k = 0; k < sizeof left / sizeof left[0]; ++k) {
+        char path[600];
+        snprintf(path, sizeof path, "%s/%s", dir, left[k]);
+        cr_expect_neq(access(path, F_OK), 0, "a failed plot left %s", path);
+    }
+    char path[600];
+    snprintf(path, sizeof path, "%s/data.csv", dir);
+    remove(path);
+    snprintf(path, sizeof path, "%s/ragged.csv", dir);
+    remove(path);
+    rmdir(dir);
+}

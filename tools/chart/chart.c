@@ -1,0 +1,461 @@
+/* Drawing a chart onto a cairo_t: layout (title, tick labels, axis labels
+ * and legend around the plot area), grid, axes, series, legend. */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "chart/chart.h"
+#include "chart/chart_ticks.h"
+
+/* Okabe & Ito's palette without its yellow, which is hard to see on white. */
+static const double palette[][3] = {
+    {0.000, 0.447, 0.698}, /* blue */
+    {0.835, 0.369, 0.000}, /* vermillion */
+    {0.000, 0.620, 0.451}, /* bluish green */
+    {0.800, 0.475, 0.655}, /* reddish purple */
+    {0.902, 0.624, 0.000}, /* orange */
+    {0.337, 0.706, 0.914}, /* sky blue */
+    {0.000, 0.000, 0.000}, /* black */
+};
+enum { PALETTE_SIZE = sizeof palette / sizeof palette[0] };
+
+#define PI 3.14159265358979323846
+
+/* Longest legend entry drawn, in characters; longer labels end in "...". */
+#define LEGEND_MAX_CHARS 48
+
+void chart_series_colour(int index, double rgb[3])
+{
+    int k = index < 0 ? 0 : index % PALETTE_SIZE;
+    rgb[0] = palette[k][0];
+    rgb[1] = palette[k][1];
+    rgb[2] = palette[k][2];
+}
+
+static bool fail(char *error, size_t error_size, const char *format, ...)
+{
+    if (error != NULL && error_size > 0) {
+        va_list args;
+        va_start(args, format);
+        vsnprintf(error, error_size, format, args);
+        va_end(args);
+    }
+    return false;
+}
+
+/* ------------------------------------------------------------ checks */
+
+static bool check_range(const chart_range *range, const char *name, char *error, size_t error_size)
+{
+    if (range->fixed && !(isfinite(range->min) && isfinite(range->max) && range->min < range->max)) {
+        return fail(error, error_size, "chart_draw: chart->%s is fixed to [%g, %g]; expected finite min < max", name,
+                    range->min, range->max);
+    }
+    return true;
+}
+
+static bool check_chart(const chart *chart, const char *function, char *error, size_t error_size)
+{
+    if (chart == NULL) {
+        return fail(error, error_size, "%s: chart is NULL", function);
+    }
+    if (chart->series_count < 0 || chart->series_count > CHART_MAX_SERIES) {
+        return fail(error, error_size, "%s: chart->series_count %d, expected 0 .. %d", function, chart->series_count,
+                    CHART_MAX_SERIES);
+    }
+    if (chart->series_count > 0 && chart->series == NULL) {
+        return fail(error, error_size, "%s: chart->series is NULL with %d series", function, chart->series_count);
+    }
+    for (int s = 0; s < chart->series_count; ++s) {
+        const chart_series *series = &chart->series[s];
+        if (series->count > 0 && (series->x == NULL || series->y == NULL)) {
+            return fail(error, error_size, "%s: chart->series[%d] has %zu points and a NULL x or y", function, s,
+                        series->count);
+        }
+        if (!(series->marker_radius >= 0.0 && series->marker_radius <= 100.0)) {
+            return fail(error, error_size, "%s: chart->series[%d].marker_radius %g, expected 0 .. 100", function, s,
+                        series->marker_radius);
+        }
+    }
+    return check_range(&chart->x_range, "x_range", error, error_size) &&
+           check_range(&chart->y_range, "y_range", error, error_size);
+}
+
+/* ------------------------------------------------------------ layout */
+
+typedef struct axis {
+    chart_ticks ticks;
+    double min, max; /* the values at the two ends of the plot area */
+} axis;
+
+/* The axis covering the finite values of the series (x when `use_x`),
+ * or the caller's fixed range. */
+static void fit_axis(const chart *chart, bool use_x, const chart_range *range, int intervals, axis *out)
+{
+    double low = INFINITY, high = -INFINITY;
+    if (range->fixed) {
+        low = range->min;
+        high = range->max;
+    } else {
+        for (int s = 0; s < chart->series_count; ++s) {
+            const chart_series *series = &chart->series[s];
+            for (size_t i = 0; i < series->count; ++i) {
+                double v = use_x ? series->x[i] : series->y[i];
+                double other = use_x ? series->y[i] : series->x[i];
+                if (isfinite(v) && isfinite(other)) {
+                    low = fmin(low, v);
+                    high = fmax(high, v);
+                }
+            }
+        }
+        if (!(low <= high)) {
+            low = 0.0; /* nothing to draw */
+            high = 1.0;
+        }
+    }
+    /* Both ends are finite and ordered here, so this cannot fail but for
+     * a range wider than 1e300, which then gets the empty chart's axis. */
+    if (!chart_nice_ticks(low, high, intervals, &out->ticks, NULL, 0)) {
+        low = 0.0;
+        high = 1.0;
+        chart_nice_ticks(low, high, intervals, &out->ticks, NULL, 0);
+    }
+    if (range->fixed) {
+        out->min = low;
+        out->max = high;
+    } else {
+        out->min = chart_tick_value(&out->ticks, 0);
+        out->max = chart_tick_value(&out->ticks, out->ticks.count - 1);
+    }
+}
+
+static bool tick_inside(const axis *a, int i)
+{
+    double v = chart_tick_value(&a->ticks, i);
+    double slack = 1e-9 * (a->max - a->min);
+    return v >= a->min - slack && v <= a->max + slack;
+}
+
+static double text_width(cairo_t *cr, const char *text)
+{
+    cairo_text_extents_t extents;
+    cairo_text_extents(cr, text, &extents);
+    return extents.x_advance;
+}
+
+/* A legend label cut to LEGEND_MAX_CHARS characters (bytes of UTF-8 are
+ * never split: the cut moves back to a character's first byte). */
+static void legend_text(const char *label, char *text, size_t text_size)
+{
+    size_t length = strlen(label);
+    if (length <= LEGEND_MAX_CHARS) {
+        snprintf(text, text_size, "%s", label);
+        return;
+    }
+    size_t cut = LEGEND_MAX_CHARS - 3;
+    while (cut > 0 && ((unsigned char)label[cut] & 0xC0) == 0x80) {
+        --cut;
+    }
+    snprintf(text, text_size, "%.*s...", (int)cut, label);
+}
+
+static bool has_legend_entry(const chart_series *series) { return series->label != NULL && series->label[0] != '\0'; }
+
+/* --------------------------------------------------------------- drawing */
+
+typedef struct plot_area {
+    double left, top, width, height;
+    axis x, y;
+} plot_area;
+
+static double map_x(const plot_area *p, double v)
+{
+    return p->left + (v - p->x.min) / (p->x.max - p->x.min) * p->width;
+}
+
+static double map_y(const plot_area *p, double v)
+{
+    return p->top + p->height - (v - p->y.min) / (p->y.max - p->y.min) * p->height;
+}
+
+static void draw_grid_and_ticks(cairo_t *cr, const plot_area *p, double font_size)
+{
+    char label[64];
+    cairo_set_line_width(cr, 1.0);
+    for (int i = 0; i < p->x.ticks.count; ++i) {
+        if (!tick_inside(&p->x, i)) {
+            continue;
+        }
+        double px = map_x(p, chart_tick_value(&p->x.ticks, i));
+        cairo_set_source_rgb(cr, 0.9, 0.9, 0.9);
+        cairo_move_to(cr, px, p->top);
+        cairo_line_to(cr, px, p->top + p->height);
+        cairo_stroke(cr);
+        cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+        cairo_move_to(cr, px, p->top + p->height);
+        cairo_line_to(cr, px, p->top + p->height + 0.4 * font_size);
+        cairo_stroke(cr);
+        chart_tick_label(&p->x.ticks, i, label, sizeof label);
+        cairo_move_to(cr, px - 0.5 * text_width(cr, label), p->top + p->height + 1.5 * font_size);
+        cairo_show_text(cr, label);
+    }
+    for (int i = 0; i < p->y.ticks.count; ++i) {
+        if (!tick_inside(&p->y, i)) {
+            continue;
+        }
+        double py = map_y(p, chart_tick_value(&p->y.ticks, i));
+        cairo_set_source_rgb(cr, 0.9, 0.9, 0.9);
+        cairo_move_to(cr, p->left, py);
+        cairo_line_to(cr, p->left + p->width, py);
+        cairo_stroke(cr);
+        cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+        cairo_move_to(cr, p->left - 0.4 * font_size, py);
+        cairo_line_to(cr, p->left, py);
+        cairo_stroke(cr);
+        chart_tick_label(&p->y.ticks, i, label, sizeof label);
+        cairo_move_to(cr, p->left - 0.6 * font_size - text_width(cr, label), py + 0.35 * font_size);
+        cairo_show_text(cr, label);
+    }
+    cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+    cairo_rectangle(cr, p->left, p->top, p->width, p->height);
+    cairo_stroke(cr);
+}
+
+/* Dashes for the colours' second and later rounds through the palette. */
+static void set_series_style(cairo_t *cr, int index, double line_width)
+{
+    double rgb[3];
+    chart_series_colour(index, rgb);
+    cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
+    cairo_set_line_width(cr, line_width);
+    int round = index / PALETTE_SIZE;
+    if (round == 0) {
+        cairo_set_dash(cr, NULL, 0, 0.0);
+    } else {
+        double dashes[2] = {3.0 * round * line_width, 2.0 * line_width};
+        cairo_set_dash(cr, dashes, 2, 0.0);
+    }
+}
+
+static void dot(cairo_t *cr, double x, double y, double radius)
+{
+    cairo_new_sub_path(cr);
+    cairo_arc(cr, x, y, radius, 0.0, 2.0 * PI);
+    cairo_fill(cr);
+}
+
+/* A polyline through the series' finite points, broken at the others; a
+ * point alone between two breaks gets a dot so that it shows. */
+static void draw_series(cairo_t *cr, const plot_area *p, const chart_series *series, int index, double line_width)
+{
+    set_series_style(cr, index, line_width);
+    size_t run = 0; /* finite points in the present piece of line */
+    double last_x = 0.0, last_y = 0.0;
+    for (size_t i = 0; i <= series->count; ++i) {
+        bool finite = i < series->count && isfinite(series->x[i]) && isfinite(series->y[i]);
+        if (!finite) {
+            if (run == 1) {
+                cairo_new_path(cr);
+                dot(cr, last_x, last_y, 1.5 * line_width);
+            } else if (run > 1) {
+                cairo_stroke(cr);
+            }
+            run = 0;
+            continue;
+        }
+        last_x = map_x(p, series->x[i]);
+        last_y = map_y(p, series->y[i]);
+        if (run == 0) {
+            cairo_move_to(cr, last_x, last_y);
+        } else {
+            cairo_line_to(cr, last_x, last_y);
+        }
+        ++run;
+    }
+    cairo_new_path(cr);
+    if (series->marker_radius > 0.0) {
+        for (size_t i = 0; i < series->count; ++i) {
+            if (isfinite(series->x[i]) && isfinite(series->y[i])) {
+                dot(cr, map_x(p, series->x[i]), map_y(p, series->y[i]), series->marker_radius);
+            }
+        }
+    }
+}
+
+static void draw_legend(cairo_t *cr, const chart *chart, double left, double top, double bottom, double font_size)
+{
+    double row = 1.4 * font_size;
+    double sample = 1.8 * font_size;
+    double y = top + 0.5 * row;
+    char text[LEGEND_MAX_CHARS + 8];
+    int shown = 0, entries = 0;
+    for (int s = 0; s < chart->series_count; ++s) {
+        entries += has_legend_entry(&chart->series[s]);
+    }
+    for (int s = 0; s < chart->series_count; ++s) {
+        if (!has_legend_entry(&chart->series[s])) {
+            continue;
+        }
+        if (y + 1.5 * row > bottom && shown + 1 < entries) {
+            cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+            snprintf(text, sizeof text, "(%d more)", entries - shown);
+            cairo_move_to(cr, left, y + 0.35 * font_size);
+            cairo_show_text(cr, text);
+            return;
+        }
+        set_series_style(cr, s, 2.0);
+        cairo_move_to(cr, left, y);
+        cairo_line_to(cr, left + sample, y);
+        cairo_stroke(cr);
+        cairo_set_dash(cr, NULL, 0, 0.0);
+        cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+        legend_text(chart->series[s].label, text, sizeof text);
+        cairo_move_to(cr, left + sample + 0.5 * font_size, y + 0.35 * font_size);
+        cairo_show_text(cr, text);
+        y += row;
+        ++shown;
+    }
+}
+
+/* The widest tick label of an axis. */
+static double widest_label(cairo_t *cr, const axis *a)
+{
+    char label[64];
+    double widest = 0.0;
+    for (int i = 0; i < a->ticks.count; ++i) {
+        chart_tick_label(&a->ticks, i, label, sizeof label);
+        widest = fmax(widest, text_width(cr, label));
+    }
+    return widest;
+}
+
+static double legend_width(cairo_t *cr, const chart *chart, double font_size)
+{
+    char text[LEGEND_MAX_CHARS + 8];
+    double widest = 0.0;
+    for (int s = 0; s < chart->series_count; ++s) {
+        if (has_legend_entry(&chart->series[s])) {
+            legend_text(chart->series[s].label, text, sizeof text);
+            widest = fmax(widest, text_width(cr, text));
+        }
+    }
+    return widest > 0.0 ? widest + 2.3 * font_size : 0.0;
+}
+
+bool chart_draw(const chart *chart, cairo_t *cr, double x, double y, double width, double height, char *error,
+                size_t error_size)
+{
+    if (!check_chart(chart, "chart_draw", error, error_size)) {
+        return false;
+    }
+    if (cr == NULL) {
+        return fail(error, error_size, "chart_draw: cr is NULL");
+    }
+    if (!(isfinite(x) && isfinite(y) && isfinite(width) && isfinite(height) && width > 0.0 && height > 0.0)) {
+        return fail(error, error_size, "chart_draw: the rectangle (%g, %g, %g, %g) needs finite values, width > 0", x,
+                    y, width, height);
+    }
+    if (cairo_status(cr) != CAIRO_STATUS_SUCCESS) {
+        return fail(error, error_size, "chart_draw: cr is in error: %s", cairo_status_to_string(cairo_status(cr)));
+    }
+    cairo_save(cr);
+    cairo_rectangle(cr, x, y, width, height);
+    cairo_clip(cr);
+    cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
+    cairo_paint(cr);
+
+    const double font_size = fmin(fmax(fmin(width, height) / 36.0, 7.0), 15.0);
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, font_size);
+    const double pad = 0.8 * font_size;
+
+    plot_area p;
+    /* Tick density: one label per ~7 font sizes across, ~3 up. */
+    fit_axis(chart, true, &chart->x_range, (int)fmax(2.0, fmin(10.0, width / (7.0 * font_size))), &p.x);
+    fit_axis(chart, false, &chart->y_range, (int)fmax(2.0, fmin(10.0, height / (3.5 * font_size))), &p.y);
+    bool has_title = chart->title != NULL && chart->title[0] != '\0';
+    bool has_x_label = chart->x_label != NULL && chart->x_label[0] != '\0';
+    bool has_y_label = chart->y_label != NULL && chart->y_label[0] != '\0';
+    double legend = fmin(legend_width(cr, chart, font_size), 0.4 * width);
+    p.left = x + pad + (has_y_label ? 1.5 * font_size : 0.0) + widest_label(cr, &p.y) + 0.6 * font_size;
+    p.top = y + pad + (has_title ? 1.6 * font_size : 0.5 * font_size);
+    double right = x + width - pad - (legend > 0.0 ? legend + pad : 0.5 * font_size);
+    double bottom = y + height - pad - 1.6 * font_size - (has_x_label ? 1.5 * font_size : 0.0);
+    p.width = fmax(right - p.left, 1.0);
+    p.height = fmax(bottom - p.top, 1.0);
+
+    draw_grid_and_ticks(cr, &p, font_size);
+    if (has_title) {
+        cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+        cairo_set_font_size(cr, 1.15 * font_size);
+        cairo_move_to(cr, fmax(x + pad, p.left + 0.5 * p.width - 0.5 * text_width(cr, chart->title)),
+                      y + pad + 1.1 * font_size);
+        cairo_show_text(cr, chart->title);
+        cairo_set_font_size(cr, font_size);
+    }
+    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+    if (has_x_label) {
+        cairo_move_to(cr, p.left + 0.5 * p.width - 0.5 * text_width(cr, chart->x_label), y + height - pad);
+        cairo_show_text(cr, chart->x_label);
+    }
+    if (has_y_label) {
+        cairo_save(cr);
+        cairo_move_to(cr, x + pad + font_size, p.top + 0.5 * p.height + 0.5 * text_width(cr, chart->y_label));
+        cairo_rotate(cr, -0.5 * PI);
+        cairo_show_text(cr, chart->y_label);
+        cairo_restore(cr);
+    }
+
+    cairo_save(cr);
+    cairo_rectangle(cr, p.left, p.top, p.width, p.height);
+    cairo_clip(cr);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    double line_width = fmax(1.0, font_size / 7.0);
+    for (int s = 0; s < chart->series_count; ++s) {
+        draw_series(cr, &p, &chart->series[s], s, line_width);
+    }
+    cairo_restore(cr);
+    if (legend > 0.0) {
+        draw_legend(cr, chart, right + pad, p.top, p.top + p.height, font_size);
+    }
+    cairo_restore(cr);
+    if (cairo_status(cr) != CAIRO_STATUS_SUCCESS) {
+        return fail(error, error_size, "chart_draw: cairo failed: %s", cairo_status_to_string(cairo_status(cr)));
+    }
+    return true;
+}
+
+bool chart_figure_draw(const chart_figure *figure, cairo_t *cr, char *error, size_t error_size)
+{
+    if (figure == NULL || cr == NULL) {
+        return fail(error, error_size, "chart_figure_draw: figure and cr must not be NULL");
+    }
+    if (figure->chart_count < 1 || figure->charts == NULL) {
+        return fail(error, error_size, "chart_figure_draw: figure->chart_count %d, expected >= 1 charts",
+                    figure->chart_count);
+    }
+    if (figure->columns < 1) {
+        return fail(error, error_size, "chart_figure_draw: figure->columns %d, expected >= 1", figure->columns);
+    }
+    if (figure->width < 1 || figure->width > CHART_MAX_FIGURE_SIZE || figure->height < 1 ||
+        figure->height > CHART_MAX_FIGURE_SIZE) {
+        return fail(error, error_size, "chart_figure_draw: figure size %d x %d, expected 1 .. %d each", figure->width,
+                    figure->height, CHART_MAX_FIGURE_SIZE);
+    }
+    int columns = figure->columns < figure->chart_count ? figure->columns : figure->chart_count;
+    int rows = (figure->chart_count + columns - 1) / columns;
+    double cell_width = (double)figure->width / columns;
+    double cell_height = (double)figure->height / rows;
+    cairo_save(cr);
+    cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
+    cairo_paint(cr);
+    cairo_restore(cr);
+    for (int k = 0; k < figure->chart_count; ++k) {
+        if (!chart_draw(&figure->charts[k], cr, (k % columns) * cell_width, (k / columns) * cell_height, cell_width,
+                        cell_height, error, error_size)) {
+            return false;
+        }
+    }
+    return true;
+}

@@ -1,0 +1,57 @@
+/* `sinew experiment NAME`: the seed's experiments (experiments.md), each
+ * a scripted run or computation that writes a CSV, a figure (PNG and SVG,
+ * chart/chart.h) and a few lines of figures on stdout.
+ *
+ * An experiment is one entry of experiment_list (experiment_list.c): a
+ * name, the stem of its files and a function. Adding one (P1, R1) is one
+ * more function and one more entry.
+ */
+#ifndef SINEW_EXPERIMENT_H
+#define SINEW_EXPERIMENT_H
+
+#include <stddef.h>
+
+#include "chart/chart.h"
+#include "io/csv_table.h"
+
+typedef struct experiment_options {
+    const char *out_dir; /* an existing directory */
+    /* Width of an activation pulse, s: 0 for one frame of the model (the
+     * seed's space bar), else rounded to whole substeps, at least one. */
+    double pulse_width;
+} experiment_options;
+
+/* Longest pulse width accepted, s. */
+#define EXPERIMENT_MAX_PULSE_WIDTH 1.0
+
+typedef struct experiment {
+    const char *name;    /* on the command line: "e1" */
+    const char *stem;    /* of the files written: "e1_twitch" */
+    const char *summary; /* one line for the list */
+    /* Runs the experiment, writes its files and prints its figures;
+     * returns the exit status, after one line on stderr on failure. */
+    int (*run)(const struct experiment *self, const experiment_options *options);
+} experiment;
+
+extern const experiment experiment_list[];
+extern const int experiment_count;
+
+/* The experiments, each in its own file. */
+int experiment_e1_twitch(const experiment *self, const experiment_options *options);
+int experiment_e2_relaxation(const experiment *self, const experiment_options *options);
+int experiment_e3_isometric(const experiment *self, const experiment_options *options);
+int experiment_e3_isotonic(const experiment *self, const experiment_options *options);
+int experiment_e4_summation(const experiment *self, const experiment_options *options);
+int experiment_c1_hill_curves(const experiment *self, const experiment_options *options);
+
+/* Writes the table as DIR/STEM.csv and the figure as DIR/STEM.png and
+ * DIR/STEM.svg, and prints their paths; returns 0 or EXIT_FAILURE after
+ * one line on stderr. */
+int experiment_write(const experiment *self, const experiment_options *options, const csv_table *table,
+                     const chart_figure *figure);
+
+/* A series of the table: column `y` against column `x` (indices), from
+ * row `first` on. */
+chart_series experiment_series(const csv_table *table, int x, int y, long first, const char *label);
+
+#endif
