@@ -193,3 +193,38 @@ Test(sleep, a_body_put_to_sleep_in_the_air_stays_there)
     cr_expect_lt(rb_body_position(world, body).y, 10.0, "awake again, it falls");
     destroy_world_and_expect_no_leak(world);
 }
+
+/* A cable law set every substep: the tension equal to the bob's weight. */
+static void hold_weight(rb_world *world, int substep, double h, void *context)
+{
+    (void)substep;
+    (void)h;
+    const rb_cable_id *cable = context;
+    rb_cable_set_tension_law(world, *cable, 9.8, 0.0);
+}
+
+Test(sleep, a_body_held_by_a_cable_law_never_sleeps)
+{
+    /* A 1 kg bob hangs at rest from a cable whose tension, set every
+     * substep, balances its weight: it rests, but a muscle drives it. Put
+     * to sleep, it would lose its velocity between substeps and jolt when
+     * the next law woke it; a cable law keeps its bodies awake, as a
+     * motor does. */
+    rb_world *world = make_world(rb_v2(0.0, -9.8));
+    rb_body_id ground = make_body(world, RB_BODY_STATIC, rb_v2(0.0, 0.0), 0.0);
+    rb_body_id bob = make_body(world, RB_BODY_DYNAMIC, rb_v2(0.0, -1.0), 0.0);
+    const rb_mass_data mass = {1.0, {0.0, 0.0}, 0.0};
+    cr_assert_eq(rb_body_set_mass_data(world, bob, &mass), RB_OK);
+    rb_cable_def def = rb_default_cable_def();
+    def.point_count = 2;
+    def.bodies[0] = ground;
+    def.bodies[1] = bob;
+    rb_cable_id cable;
+    cr_assert_eq(rb_cable_create(world, &def, &cable), RB_OK, "%s", rb_last_error());
+    cr_assert_eq(rb_world_set_substep_callback(world, hold_weight, &cable), RB_OK);
+    for (int n = 1; n <= 120; ++n) {
+        step_world(world, TEST_DT, 1);
+        cr_assert(rb_body_is_awake(world, bob), "the bob fell asleep at step %d", n);
+    }
+    destroy_world_and_expect_no_leak(world);
+}

@@ -40,12 +40,6 @@ int experiment_model_open(experiment_model *run, const char *name, const char *v
     if (mu_model_create(run->desc, &options, &run->model) != RB_OK) {
         return engine_failure("building the model");
     }
-    /* The experiments measure slow motions (a muscle creeping at a few
-     * mm/s under a constant load) and change the controls between any
-     * two substeps: bodies stay awake, as the seed's always were. */
-    if (rb_world_enable_sleep(mu_model_world(run->model), false) != RB_OK) {
-        return engine_failure("keeping the model awake");
-    }
     run->substeps = run->desc->substeps;
     run->h = mu_model_substep_duration(run->model);
     return 0;

@@ -16,6 +16,7 @@
 #include "allocator.h"
 #include "cable_solver.h"
 #include "error.h"
+#include "sleep.h"
 
 rb_cable_def rb_default_cable_def(void) { return (rb_cable_def){.point_count = 0}; }
 
@@ -137,8 +138,11 @@ rb_status rb_cable_set_tension_law(rb_world *world, rb_cable_id id, double base_
     rb_cable *cable = &world->cables[index];
     cable->base_tension = base_tension;
     cable->damping = damping;
+    /* A law is set by something that drives the bodies (a muscle, every
+     * substep), as a motor does: it wakes them and restarts their time at
+     * rest, so they never sleep between two laws. */
     for (int i = 0; i < cable->point_count; ++i) {
-        world->bodies[cable->bodies[i]].awake = true;
+        rb_body_wake(world, cable->bodies[i]);
     }
     return RB_OK;
 }

@@ -42,7 +42,9 @@ rb_status rb_cable_destroy(rb_world *world, rb_cable_id cable);
 bool rb_cable_is_valid(const rb_world *world, rb_cable_id cable);
 
 /* The tension law for the following steps: base_tension (N, finite) and
- * damping (N·s/m, >= 0, finite). Both 0 (the default): a slack cable. */
+ * damping (N·s/m, >= 0, finite). Both 0 (the default): a slack cable.
+ * Wakes the cable's bodies and restarts their time at rest: a cable
+ * driven by a law set every substep keeps them awake. */
 rb_status rb_cable_set_tension_law(rb_world *world, rb_cable_id cable, double base_tension, double damping);
 
 /* Length (m) and lengthening speed (m/s, < 0 while shortening) now, in
