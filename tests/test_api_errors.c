@@ -558,6 +558,8 @@ Test(api_errors, destroyed_body_ids_are_stale)
     /* Setters and destroy fail. */
     expect_failure(rb_body_set_linear_velocity(f.world, body, rb_v2(1.0, 0.0)), RB_ERR_STALE_ID,
                    "rb_body_set_linear_velocity", "body");
+    expect_failure(rb_body_enable_sleep(f.world, body, false), RB_ERR_STALE_ID, "rb_body_enable_sleep", "body");
+    cr_expect_not(rb_body_is_sleep_enabled(f.world, body), "sleep flag of a destroyed body");
     expect_failure(rb_body_apply_force_to_center(f.world, body, rb_v2(1.0, 0.0)), RB_ERR_STALE_ID,
                    "rb_body_apply_force_to_center", "body");
     expect_failure(rb_body_destroy(f.world, body), RB_ERR_STALE_ID, "rb_body_destroy", "body");
@@ -690,6 +692,12 @@ Test(api_errors, null_world)
     rb_shape_id shape;
     expect_failure(rb_shape_create_circle(NULL, f.probe, &def, &circle, &shape), RB_ERR_INVALID_ARGUMENT,
                    "rb_shape_create_circle", "world");
+    expect_failure(rb_world_set_substep_callback(NULL, NULL, NULL), RB_ERR_INVALID_ARGUMENT,
+                   "rb_world_set_substep_callback", "world");
+    expect_failure(rb_world_enable_sleep(NULL, false), RB_ERR_INVALID_ARGUMENT, "rb_world_enable_sleep", "world");
+    cr_expect_not(rb_world_is_sleep_enabled(NULL));
+    expect_failure(rb_body_enable_sleep(NULL, f.probe, false), RB_ERR_INVALID_ARGUMENT, "rb_body_enable_sleep",
+                   "world");
     rb_world_destroy(NULL); /* world.h: accepts NULL */
     expect_usable(&f, 1);
     destroy_world_and_expect_no_leak(f.world);

@@ -5,6 +5,7 @@
  */
 #include <criterion/criterion.h>
 #include <math.h>
+#include <string.h>
 
 #include "mu/curves.h"
 #include "mu/muscle.h"
@@ -218,4 +219,55 @@ Test(muscle, a_stiff_force_velocity_slope_does_not_ring)
     mu_muscle_destroy(muscle, world);
     mu_curves_destroy(curves);
     destroy_world_and_expect_no_leak(world);
+}
+
+/* A world with a muscle lifting a 1 kg mass from a static anchor. */
+typedef struct hanging {
+    rb_world *world;
+    rb_body_id mass;
+    mu_muscle *muscle;
+} hanging;
+
+static hanging make_hanging(const mu_curves *curves)
+{
+    hanging s = {.world = make_world(rb_v2(0.0, -9.8))};
+    set_substeps(s.world, 1);
+    rb_body_id anchor = make_body(s.world, RB_BODY_STATIC, rb_v2(0.0, 0.0), 0.0);
+    s.mass = make_body(s.world, RB_BODY_DYNAMIC, rb_v2(0.0, -0.25), 0.0);
+    add_circle(s.world, s.mass, rb_v2(0.0, 0.0), 0.02, 1.0 / (RB_PI * 0.02 * 0.02));
+    s.muscle = make_muscle(s.world, anchor, s.mass, curves);
+    cr_assert_eq(mu_muscle_set_activation(s.muscle, 0.5), RB_OK);
+    return s;
+}
+
+Test(muscle, advance_is_measure_then_prepare)
+{
+    /* mu_muscle_advance reads the path once for both halves: the run must
+     * be bit-identical to measuring and preparing separately. */
+    mu_curves *curves = tables();
+    hanging separate = make_hanging(curves);
+    hanging merged = make_hanging(curves);
+    const double h = 1.0 / 600.0;
+    cr_assert_eq(mu_muscle_prepare(separate.muscle, separate.world, h), RB_OK);
+    cr_assert_eq(mu_muscle_prepare(merged.muscle, merged.world, h), RB_OK);
+    for (int n = 0; n < 600; ++n) {
+        step_world(separate.world, h, 1);
+        step_world(merged.world, h, 1);
+        cr_assert_eq(mu_muscle_measure(separate.muscle, separate.world), RB_OK);
+        cr_assert_eq(mu_muscle_prepare(separate.muscle, separate.world, h), RB_OK);
+        cr_assert_eq(mu_muscle_advance(merged.muscle, merged.world, h), RB_OK, "%s", rb_last_error());
+    }
+    cr_expect_eq(rb_world_state_hash(merged.world), rb_world_state_hash(separate.world));
+    cr_expect_eq(mu_muscle_read(merged.muscle).total_force, mu_muscle_read(separate.muscle).total_force);
+
+    cr_expect_eq(mu_muscle_advance(NULL, merged.world, h), RB_ERR_INVALID_ARGUMENT);
+    cr_expect_eq(mu_muscle_advance(merged.muscle, merged.world, NAN), RB_ERR_INVALID_ARGUMENT);
+    cr_expect_eq(mu_muscle_advance(merged.muscle, merged.world, -h), RB_ERR_INVALID_ARGUMENT);
+    cr_expect(strstr(rb_last_error(), "mu_muscle_advance") != NULL, "the message names the function: %s",
+              rb_last_error());
+    mu_muscle_destroy(separate.muscle, separate.world);
+    mu_muscle_destroy(merged.muscle, merged.world);
+    rb_world_destroy(separate.world);
+    destroy_world_and_expect_no_leak(merged.world);
+    mu_curves_destroy(curves);
 }

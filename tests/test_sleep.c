@@ -228,3 +228,21 @@ Test(sleep, a_body_held_by_a_cable_law_never_sleeps)
     }
     destroy_world_and_expect_no_leak(world);
 }
+
+Test(sleep, switching_on_a_motor_wakes_the_joint_bodies)
+{
+    /* A pendulum at rest sleeps; a motor switched on must turn it at once,
+     * without waiting for something else to wake it. */
+    rb_world *world = make_world(rb_v2(0.0, -9.8));
+    rb_body_id pivot = make_body(world, RB_BODY_STATIC, rb_v2(0.0, 0.0), 0.0);
+    rb_body_id rod = make_body(world, RB_BODY_DYNAMIC, rb_v2(0.0, -0.5), 0.0);
+    add_box(world, rod, 0.05, 0.5, 1.0);
+    rb_joint_id pin = make_pin(world, pivot, rod, rb_v2(0.0, 0.0));
+    step_world(world, TEST_DT, 60);
+    cr_assert(!rb_body_is_awake(world, rod), "the pendulum sleeps");
+    cr_assert_eq(rb_revolute_joint_set_motor(world, pin, true, 1.0, 100.0), RB_OK, "%s", rb_last_error());
+    cr_expect(rb_body_is_awake(world, rod), "the motor woke the rod");
+    step_world(world, TEST_DT, 30);
+    expect_near(rb_revolute_joint_speed(world, pin), 1.0, 1e-4, "the rod turns at the motor's speed");
+    destroy_world_and_expect_no_leak(world);
+}

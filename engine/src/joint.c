@@ -7,6 +7,7 @@
 #include "error.h"
 #include "joint_internal.h"
 #include "joint_solver.h"
+#include "sleep.h"
 
 /* ---- creation and destruction ---------------------------------------------- */
 
@@ -77,12 +78,12 @@ rb_status rb_joint_create(rb_world *world, const rb_joint *prototype, rb_joint_i
         rb_body *a = &world->bodies[joint->body_a];
         joint->next_on_a = a->first_joint;
         a->first_joint = index;
-        a->awake = true;
+        rb_body_wake(world, joint->body_a);
     }
     rb_body *b = &world->bodies[joint->body_b];
     joint->next_on_b = b->first_joint;
     b->first_joint = index;
-    b->awake = true;
+    rb_body_wake(world, joint->body_b);
     world->joint_count++;
     *out = rb_make_joint_id(world, index);
     return RB_OK;
@@ -109,10 +110,10 @@ static void free_joint(rb_world *world, int index)
     rb_joint *joint = &world->joints[index];
     if (joint->body_a >= 0) {
         unlink_from_body(world, index, joint->body_a);
-        world->bodies[joint->body_a].awake = true;
+        rb_body_wake(world, joint->body_a);
     }
     unlink_from_body(world, index, joint->body_b);
-    world->bodies[joint->body_b].awake = true;
+    rb_body_wake(world, joint->body_b);
     joint->in_use = false;
     joint->next_free = world->joint_free;
     world->joint_free = index;
@@ -256,6 +257,50 @@ rb_status rb_joint_find_typed(const rb_world *world, rb_joint_id id, rb_joint_ty
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: joint %d is of another type", function, *index);
     }
     return RB_OK;
+}
+
+rb_joint *rb_joint_find_for_change(rb_world *world, rb_joint_id id, rb_joint_type type, const char *function,
+                                   rb_status *status)
+{
+    int index;
+    rb_clear_error();
+    *status = rb_joint_find_typed(world, id, type, function, &index);
+    if (*status == RB_OK) {
+        *status = rb_world_check_unlocked(world, function);
+    }
+    if (*status != RB_OK) {
+        return NULL;
+    }
+    rb_joint *joint = &world->joints[index];
+    if (joint->body_a >= 0) {
+        rb_body_wake(world, joint->body_a);
+    }
+    rb_body_wake(world, joint->body_b);
+    return joint;
+}
+
+rb_status rb_joint_check_limits(const char *function, const char *lower_name, const char *upper_name, const char *unit,
+                                bool enable_lower, double lower, bool enable_upper, double upper)
+{
+    RB_TRY(rb_check_finite(function, lower_name, lower));
+    RB_TRY(rb_check_finite(function, upper_name, upper));
+    if (enable_lower && enable_upper && lower > upper) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s %g %s is above %s %g %s", function, lower_name, lower,
+                               unit, upper_name, upper, unit);
+    }
+    return RB_OK;
+}
+
+rb_status rb_joint_check_motor(const char *function, const char *max_name, double speed, double max)
+{
+    RB_TRY(rb_check_finite(function, "motor_speed", speed));
+    return rb_check_range(function, max_name, max, 0.0, DBL_MAX);
+}
+
+rb_status rb_joint_check_spring(const char *function, double hertz, double damping_ratio)
+{
+    RB_TRY(rb_check_range(function, "spring_hertz", hertz, 0.0, DBL_MAX));
+    return rb_check_range(function, "spring_damping_ratio", damping_ratio, 0.0, DBL_MAX);
 }
 
 rb_status rb_joint_set_user_data(rb_world *world, rb_joint_id id, void *user_data)

@@ -39,4 +39,17 @@ rb_status rb_joint_create(rb_world *world, const rb_joint *prototype, rb_joint_i
 rb_status rb_joint_find_typed(const rb_world *world, rb_joint_id id, rb_joint_type type, const char *function,
                               int *index);
 
+/* Looks a joint of `type` up for a call that changes it (never during a
+ * step) and wakes its bodies, since the change acts at once. NULL, with
+ * *status and the error set, when it cannot. */
+rb_joint *rb_joint_find_for_change(rb_world *world, rb_joint_id id, rb_joint_type type, const char *function,
+                                   rb_status *status);
+
+/* The checks shared by the joints with limits, a motor and a spring. The
+ * names are the definition's fields, `unit` the limits' ("rad", "m"). */
+rb_status rb_joint_check_limits(const char *function, const char *lower_name, const char *upper_name, const char *unit,
+                                bool enable_lower, double lower, bool enable_upper, double upper);
+rb_status rb_joint_check_motor(const char *function, const char *max_name, double speed, double max);
+rb_status rb_joint_check_spring(const char *function, double hertz, double damping_ratio);
+
 #endif

@@ -53,14 +53,11 @@ rb_status rb_mouse_joint_create(rb_world *world, const rb_mouse_joint_def *def, 
 rb_status rb_mouse_joint_set_target(rb_world *world, rb_joint_id id, rb_vec2 target)
 {
     const char *f = "rb_mouse_joint_set_target";
-    rb_clear_error();
-    int index;
-    RB_TRY(rb_joint_find_typed(world, id, RB_JOINT_MOUSE, f, &index));
-    RB_TRY(rb_world_check_unlocked(world, f));
+    rb_status status;
+    rb_joint *joint = rb_joint_find_for_change(world, id, RB_JOINT_MOUSE, f, &status);
+    RB_TRY(status);
     RB_TRY(rb_check_vec2(f, "target", target));
-    rb_joint *joint = &world->joints[index];
     joint->as.mouse.target = target;
-    world->bodies[joint->body_b].awake = true;
     return RB_OK;
 }
 

@@ -30,7 +30,6 @@
  * clamped to ±max_force·h), the farther limit alone, then the block; the
  * parts that may give way first, the rigid rows last, as the revolute
  * joint. A limit not yet reached is speculative (approach at |C|/h). */
-#include <float.h>
 
 #include "error.h"
 #include "joint_internal.h"
@@ -72,29 +71,6 @@ rb_status rb_prismatic_joint_def_at(rb_prismatic_joint_def *def, const rb_world 
     return RB_OK;
 }
 
-static rb_status check_limits(const char *f, bool enable_lower, double lower, bool enable_upper, double upper)
-{
-    RB_TRY(rb_check_finite(f, "lower_translation", lower));
-    RB_TRY(rb_check_finite(f, "upper_translation", upper));
-    if (enable_lower && enable_upper && lower > upper) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: lower_translation %g m is above upper_translation %g m", f,
-                               lower, upper);
-    }
-    return RB_OK;
-}
-
-static rb_status check_motor(const char *f, double speed, double max_force)
-{
-    RB_TRY(rb_check_finite(f, "motor_speed", speed));
-    return rb_check_range(f, "max_motor_force", max_force, 0.0, DBL_MAX);
-}
-
-static rb_status check_spring(const char *f, double hertz, double damping_ratio)
-{
-    RB_TRY(rb_check_range(f, "spring_hertz", hertz, 0.0, DBL_MAX));
-    return rb_check_range(f, "spring_damping_ratio", damping_ratio, 0.0, DBL_MAX);
-}
-
 rb_status rb_prismatic_joint_create(rb_world *world, const rb_prismatic_joint_def *def, rb_joint_id *out)
 {
     const char *f = "rb_prismatic_joint_create";
@@ -105,10 +81,10 @@ rb_status rb_prismatic_joint_create(rb_world *world, const rb_prismatic_joint_de
     rb_vec2 axis;
     RB_TRY(normalise_axis(f, "local_axis_a", def->local_axis_a, &axis));
     RB_TRY(rb_check_finite(f, "reference_angle", def->reference_angle));
-    RB_TRY(check_limits(f, def->enable_lower_limit, def->lower_translation, def->enable_upper_limit,
-                        def->upper_translation));
-    RB_TRY(check_motor(f, def->motor_speed, def->max_motor_force));
-    RB_TRY(check_spring(f, def->spring_hertz, def->spring_damping_ratio));
+    RB_TRY(rb_joint_check_limits(f, "lower_translation", "upper_translation", "m", def->enable_lower_limit,
+                                 def->lower_translation, def->enable_upper_limit, def->upper_translation));
+    RB_TRY(rb_joint_check_motor(f, "max_motor_force", def->motor_speed, def->max_motor_force));
+    RB_TRY(rb_joint_check_spring(f, def->spring_hertz, def->spring_damping_ratio));
     rb_joint joint = {
         .type = RB_JOINT_PRISMATIC,
         .body_a = a,
@@ -207,19 +183,8 @@ double rb_prismatic_joint_motor_force(const rb_world *world, rb_joint_id id)
 
 static rb_prismatic_data *find_for_change(rb_world *world, rb_joint_id id, const char *f, rb_status *status)
 {
-    int index;
-    rb_clear_error();
-    *status = rb_joint_find_typed(world, id, RB_JOINT_PRISMATIC, f, &index);
-    if (*status == RB_OK) {
-        *status = rb_world_check_unlocked(world, f);
-    }
-    if (*status != RB_OK) {
-        return NULL;
-    }
-    rb_joint *joint = &world->joints[index];
-    world->bodies[joint->body_a].awake = true;
-    world->bodies[joint->body_b].awake = true;
-    return &joint->as.prismatic;
+    rb_joint *joint = rb_joint_find_for_change(world, id, RB_JOINT_PRISMATIC, f, status);
+    return joint != NULL ? &joint->as.prismatic : NULL;
 }
 
 rb_status rb_prismatic_joint_set_motor(rb_world *world, rb_joint_id id, bool enable, double speed, double max_force)
@@ -228,7 +193,7 @@ rb_status rb_prismatic_joint_set_motor(rb_world *world, rb_joint_id id, bool ena
     rb_status status;
     rb_prismatic_data *p = find_for_change(world, id, f, &status);
     RB_TRY(status);
-    RB_TRY(check_motor(f, speed, max_force));
+    RB_TRY(rb_joint_check_motor(f, "max_motor_force", speed, max_force));
     p->enable_motor = enable;
     p->motor_speed = speed;
     p->max_motor_force = max_force;
@@ -242,7 +207,8 @@ rb_status rb_prismatic_joint_set_limits(rb_world *world, rb_joint_id id, bool en
     rb_status status;
     rb_prismatic_data *p = find_for_change(world, id, f, &status);
     RB_TRY(status);
-    RB_TRY(check_limits(f, enable_lower, lower, enable_upper, upper));
+    RB_TRY(rb_joint_check_limits(f, "lower_translation", "upper_translation", "m", enable_lower, lower, enable_upper,
+                                 upper));
     p->enable_lower = enable_lower;
     p->enable_upper = enable_upper;
     p->lower = lower;
@@ -257,7 +223,7 @@ rb_status rb_prismatic_joint_set_spring(rb_world *world, rb_joint_id id, bool en
     rb_status status;
     rb_prismatic_data *p = find_for_change(world, id, f, &status);
     RB_TRY(status);
-    RB_TRY(check_spring(f, hertz, damping_ratio));
+    RB_TRY(rb_joint_check_spring(f, hertz, damping_ratio));
     p->enable_spring = enable;
     p->spring_hertz = hertz;
     p->spring_damping_ratio = damping_ratio;

@@ -9,7 +9,6 @@
  * limit that is not yet reached is speculative: the joint may approach
  * it at |C|/h, enough to arrive at the limit in this substep and no
  * further, so a fast swing stops at the limit instead of passing it. */
-#include <float.h>
 
 #include "error.h"
 #include "joint_internal.h"
@@ -33,29 +32,6 @@ rb_status rb_revolute_joint_def_at(rb_revolute_joint_def *def, const rb_world *w
     return RB_OK;
 }
 
-static rb_status check_limits(const char *f, bool enable_lower, double lower, bool enable_upper, double upper)
-{
-    RB_TRY(rb_check_finite(f, "lower_angle", lower));
-    RB_TRY(rb_check_finite(f, "upper_angle", upper));
-    if (enable_lower && enable_upper && lower > upper) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: lower_angle %g rad is above upper_angle %g rad", f, lower,
-                               upper);
-    }
-    return RB_OK;
-}
-
-static rb_status check_motor(const char *f, double speed, double max_torque)
-{
-    RB_TRY(rb_check_finite(f, "motor_speed", speed));
-    return rb_check_range(f, "max_motor_torque", max_torque, 0.0, DBL_MAX);
-}
-
-static rb_status check_spring(const char *f, double hertz, double damping_ratio)
-{
-    RB_TRY(rb_check_range(f, "spring_hertz", hertz, 0.0, DBL_MAX));
-    return rb_check_range(f, "spring_damping_ratio", damping_ratio, 0.0, DBL_MAX);
-}
-
 rb_status rb_revolute_joint_create(rb_world *world, const rb_revolute_joint_def *def, rb_joint_id *out)
 {
     const char *f = "rb_revolute_joint_create";
@@ -64,9 +40,10 @@ rb_status rb_revolute_joint_create(rb_world *world, const rb_revolute_joint_def 
     int b;
     RB_TRY(rb_joint_check_common(world, def, RB_JOINT_COMMON(def), out, f, &a, &b));
     RB_TRY(rb_check_finite(f, "reference_angle", def->reference_angle));
-    RB_TRY(check_limits(f, def->enable_lower_limit, def->lower_angle, def->enable_upper_limit, def->upper_angle));
-    RB_TRY(check_motor(f, def->motor_speed, def->max_motor_torque));
-    RB_TRY(check_spring(f, def->spring_hertz, def->spring_damping_ratio));
+    RB_TRY(rb_joint_check_limits(f, "lower_angle", "upper_angle", "rad", def->enable_lower_limit, def->lower_angle,
+                                 def->enable_upper_limit, def->upper_angle));
+    RB_TRY(rb_joint_check_motor(f, "max_motor_torque", def->motor_speed, def->max_motor_torque));
+    RB_TRY(rb_joint_check_spring(f, def->spring_hertz, def->spring_damping_ratio));
     rb_joint joint = {
         .type = RB_JOINT_REVOLUTE,
         .body_a = a,
@@ -130,19 +107,8 @@ double rb_revolute_joint_motor_torque(const rb_world *world, rb_joint_id id)
 
 static rb_revolute_data *find_for_change(rb_world *world, rb_joint_id id, const char *f, rb_status *status)
 {
-    int index;
-    rb_clear_error();
-    *status = rb_joint_find_typed(world, id, RB_JOINT_REVOLUTE, f, &index);
-    if (*status == RB_OK) {
-        *status = rb_world_check_unlocked(world, f);
-    }
-    if (*status != RB_OK) {
-        return NULL;
-    }
-    rb_joint *joint = &world->joints[index];
-    world->bodies[joint->body_a].awake = true;
-    world->bodies[joint->body_b].awake = true;
-    return &joint->as.revolute;
+    rb_joint *joint = rb_joint_find_for_change(world, id, RB_JOINT_REVOLUTE, f, status);
+    return joint != NULL ? &joint->as.revolute : NULL;
 }
 
 rb_status rb_revolute_joint_set_motor(rb_world *world, rb_joint_id id, bool enable, double speed, double max_torque)
@@ -151,7 +117,7 @@ rb_status rb_revolute_joint_set_motor(rb_world *world, rb_joint_id id, bool enab
     rb_status status;
     rb_revolute_data *r = find_for_change(world, id, f, &status);
     RB_TRY(status);
-    RB_TRY(check_motor(f, speed, max_torque));
+    RB_TRY(rb_joint_check_motor(f, "max_motor_torque", speed, max_torque));
     r->enable_motor = enable;
     r->motor_speed = speed;
     r->max_motor_torque = max_torque;
@@ -165,7 +131,7 @@ rb_status rb_revolute_joint_set_limits(rb_world *world, rb_joint_id id, bool ena
     rb_status status;
     rb_revolute_data *r = find_for_change(world, id, f, &status);
     RB_TRY(status);
-    RB_TRY(check_limits(f, enable_lower, lower, enable_upper, upper));
+    RB_TRY(rb_joint_check_limits(f, "lower_angle", "upper_angle", "rad", enable_lower, lower, enable_upper, upper));
     r->enable_lower = enable_lower;
     r->enable_upper = enable_upper;
     r->lower = lower;
@@ -179,7 +145,7 @@ rb_status rb_revolute_joint_set_spring(rb_world *world, rb_joint_id id, bool ena
     rb_status status;
     rb_revolute_data *r = find_for_change(world, id, f, &status);
     RB_TRY(status);
-    RB_TRY(check_spring(f, hertz, damping_ratio));
+    RB_TRY(rb_joint_check_spring(f, hertz, damping_ratio));
     r->enable_spring = enable;
     r->spring_hertz = hertz;
     r->spring_damping_ratio = damping_ratio;
