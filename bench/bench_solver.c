@@ -128,7 +128,7 @@ static const char *const bench_scene_names[BENCH_SCENE_COUNT] = {"chain_hang", "
 
 typedef struct bench_options {
     bool scenes[BENCH_SCENE_COUNT];
-    bool methods[2];         /* indexed by rb_position_correction (Baumgarte, NGS) */
+    bool methods[RB_SOLVER_TYPE_COUNT];
     bool single;             /* one setting instead of the sweep */
     int velocity_iterations; /* single: 1 .. 1000, or 0 for the engine default */
     int position_iterations; /* single: 0 .. 1000, or -1 for the engine default */
@@ -138,10 +138,7 @@ typedef struct bench_options {
     const char *csv_path;
 } bench_options;
 
-static const char *method_name(rb_position_correction method)
-{
-    return method == RB_CORRECTION_NGS ? "ngs" : "baumgarte";
-}
+static const char *method_name(rb_solver_type method) { return rb_solver_type_name(method); }
 
 typedef enum parse_result { PARSE_OK, PARSE_HELP, PARSE_ERROR } parse_result;
 
@@ -163,15 +160,15 @@ static bool parse_names(const char *scene, const char *method, bench_options *op
     }
     if (method == NULL) {
         /* The sweep compares both methods; one setting is the engine's. */
-        opts->methods[RB_CORRECTION_NGS] = !opts->single;
-        opts->methods[RB_CORRECTION_BAUMGARTE] = !opts->single;
-        opts->methods[rb_default_solver_settings().position_correction] = true;
+        opts->methods[RB_SOLVER_NGS] = !opts->single;
+        opts->methods[RB_SOLVER_BAUMGARTE] = !opts->single;
+        opts->methods[rb_default_solver_settings().type] = true;
         return true;
     }
     bool both = strcmp(method, "both") == 0;
-    opts->methods[RB_CORRECTION_NGS] = both || strcmp(method, "ngs") == 0;
-    opts->methods[RB_CORRECTION_BAUMGARTE] = both || strcmp(method, "baumgarte") == 0;
-    if (!opts->methods[RB_CORRECTION_NGS] && !opts->methods[RB_CORRECTION_BAUMGARTE]) {
+    opts->methods[RB_SOLVER_NGS] = both || strcmp(method, "ngs") == 0;
+    opts->methods[RB_SOLVER_BAUMGARTE] = both || strcmp(method, "baumgarte") == 0;
+    if (!opts->methods[RB_SOLVER_NGS] && !opts->methods[RB_SOLVER_BAUMGARTE]) {
         fprintf(stderr, "bench_solver: --method expects ngs, baumgarte or both, got \"%s\"\n", method);
         return false;
     }
@@ -243,7 +240,7 @@ static parse_result parse_options(int argc, char **argv, bench_options *opts)
 /* ------------------------------------------------------------ settings */
 
 typedef struct bench_setting {
-    rb_position_correction method;
+    rb_solver_type method;
     int velocity_iterations, position_iterations, substeps;
 } bench_setting;
 
@@ -269,16 +266,16 @@ static int build_settings(const bench_options *opts, bench_setting *list)
     static const int substep_axis[] = {1, 2, 4, 8};
     const rb_solver_settings defaults = rb_default_solver_settings();
     /* NGS, Box2D 2.4's method and the engine's default, first. */
-    static const rb_position_correction method_order[] = {RB_CORRECTION_NGS, RB_CORRECTION_BAUMGARTE};
+    static const rb_solver_type method_order[] = {RB_SOLVER_NGS, RB_SOLVER_BAUMGARTE};
     int count = 0;
     for (size_t m = 0; m < sizeof method_order / sizeof method_order[0]; ++m) {
-        const rb_position_correction method = method_order[m];
+        const rb_solver_type method = method_order[m];
         if (!opts->methods[method]) {
             continue;
         }
         /* Baumgarte corrects inside the velocity iterations: position
          * iterations would do nothing, so its rows say 0. */
-        const bool ngs = method == RB_CORRECTION_NGS;
+        const bool ngs = method == RB_SOLVER_NGS;
         if (opts->single) {
             const int position = opts->position_iterations >= 0 ? opts->position_iterations
                                  : ngs                          ? defaults.position_iterations
@@ -394,7 +391,7 @@ static bool bench_world_create(bench_scene scene, const bench_setting *setting, 
     rb_world_def def = rb_default_world_def();
     def.gravity = rb_v2(0.0, BENCH_GRAVITY);
     def.enable_sleep = false; /* as the peers run: every body simulated every step */
-    def.solver.position_correction = setting->method;
+    def.solver.type = setting->method;
     def.solver.velocity_iterations = setting->velocity_iterations;
     def.solver.position_iterations = setting->position_iterations;
     def.solver.substeps = setting->substeps;

@@ -168,9 +168,8 @@ static bool settings_equal(rb_solver_settings a, rb_solver_settings b)
 {
     return a.velocity_iterations == b.velocity_iterations && a.position_iterations == b.position_iterations &&
            a.substeps == b.substeps && a.warm_starting == b.warm_starting && a.block_solver == b.block_solver &&
-           a.position_correction == b.position_correction && a.baumgarte == b.baumgarte &&
-           a.linear_slop == b.linear_slop && a.max_linear_correction == b.max_linear_correction &&
-           a.restitution_threshold == b.restitution_threshold;
+           a.type == b.type && a.baumgarte == b.baumgarte && a.linear_slop == b.linear_slop &&
+           a.max_linear_correction == b.max_linear_correction && a.restitution_threshold == b.restitution_threshold;
 }
 
 static void expect_settings_rejected(const fixture *f, rb_solver_settings settings, const char *field)
@@ -199,8 +198,8 @@ Test(api_errors, solver_settings_out_of_range)
     s.substeps = 0;
     expect_settings_rejected(&f, s, "substeps");
     s = good;
-    s.position_correction = (rb_position_correction)7;
-    expect_settings_rejected(&f, s, "position_correction");
+    s.type = (rb_solver_type)7;
+    expect_settings_rejected(&f, s, "type");
     const double bad_baumgarte[] = {NAN, -0.1, 1.5};
     for (int i = 0; i < 3; ++i) {
         s = good;

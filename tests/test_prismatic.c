@@ -51,10 +51,10 @@ static double off_axis(const slide *s)
 
 static double along_axis(const slide *s) { return rb_dot(s->axis, rb_body_world_point(s->world, s->box, box_anchor)); }
 
-static void set_correction(rb_world *world, rb_position_correction correction)
+static void set_correction(rb_world *world, rb_solver_type correction)
 {
     rb_solver_settings settings = rb_world_solver_settings(world);
-    settings.position_correction = correction;
+    settings.type = correction;
     cr_assert_eq(rb_world_set_solver_settings(world, &settings), RB_OK, "%s", rb_last_error());
 }
 
@@ -72,7 +72,7 @@ static void set_correction(rb_world *world, rb_position_correction correction)
  * 1e-12), with either position correction. */
 Test(prismatic, inclined_slide_accelerates_at_g_along_the_axis)
 {
-    const rb_position_correction corrections[2] = {RB_CORRECTION_NGS, RB_CORRECTION_BAUMGARTE};
+    const rb_solver_type corrections[2] = {RB_SOLVER_NGS, RB_SOLVER_BAUMGARTE};
     for (int c = 0; c < 2; ++c) {
         const rb_vec2 axis = rb_v2(cos(radians(-30.0)), sin(radians(-30.0)));
         slide s = make_slide(rb_v2(0.0, -G), axis, rb_default_prismatic_joint_def());
@@ -366,7 +366,7 @@ static rb_vec2 momentum(const rb_world *world, const rb_body_id *bodies, int cou
 Test(prismatic, two_free_bodies_conserve_momentum_and_angular_momentum)
 {
     rb_world *world = make_world(rb_v2(0.0, 0.0));
-    set_correction(world, RB_CORRECTION_BAUMGARTE);
+    set_correction(world, RB_SOLVER_BAUMGARTE);
     rb_body_id a = make_body(world, RB_BODY_DYNAMIC, rb_v2(0.0, 0.0), 0.3);
     add_box(world, a, 0.5, 0.1, 2.0);
     rb_body_id b = make_body(world, RB_BODY_DYNAMIC, rb_v2(0.4, 0.2), 0.3);
@@ -417,12 +417,12 @@ Test(prismatic, two_free_bodies_conserve_momentum_and_angular_momentum)
  * slop, the angle within half a degree. */
 Test(prismatic, statistics_report_and_correction_removes_the_errors)
 {
-    const rb_position_correction corrections[2] = {RB_CORRECTION_NGS, RB_CORRECTION_BAUMGARTE};
+    const rb_solver_type corrections[2] = {RB_SOLVER_NGS, RB_SOLVER_BAUMGARTE};
     for (int c = 0; c < 2; ++c) {
         rb_world *world = make_world(rb_v2(0.0, 0.0));
         rb_solver_settings settings = rb_world_solver_settings(world);
         settings.position_iterations = 0;
-        settings.position_correction = RB_CORRECTION_NGS;
+        settings.type = RB_SOLVER_NGS;
         cr_assert_eq(rb_world_set_solver_settings(world, &settings), RB_OK, "%s", rb_last_error());
         rb_body_id ground = make_body(world, RB_BODY_STATIC, rb_v2(0.0, 0.0), 0.0);
         rb_body_id box = make_body(world, RB_BODY_DYNAMIC, rb_v2(-0.5, 0.3), 0.2);
@@ -439,7 +439,7 @@ Test(prismatic, statistics_report_and_correction_removes_the_errors)
         expect_near(rb_world_statistics(world).max_joint_angle_error, 0.2, 1e-12, "angle error before correction");
 
         settings = rb_default_solver_settings();
-        settings.position_correction = corrections[c];
+        settings.type = corrections[c];
         cr_assert_eq(rb_world_set_solver_settings(world, &settings), RB_OK, "%s", rb_last_error());
         step_world(world, TEST_DT, 60);
         const rb_statistics stats = rb_world_statistics(world);

@@ -187,7 +187,7 @@ Test(pulley, a_body_stops_at_its_pulley)
  * then pulled in within 2 s, to the slop. */
 Test(pulley, statistics_report_and_correction_shortens_the_rope)
 {
-    const rb_position_correction corrections[2] = {RB_CORRECTION_NGS, RB_CORRECTION_BAUMGARTE};
+    const rb_solver_type corrections[2] = {RB_SOLVER_NGS, RB_SOLVER_BAUMGARTE};
     for (int c = 0; c < 2; ++c) {
         rb_world *world = make_world(rb_v2(0.0, 0.0));
         rb_solver_settings settings = rb_world_solver_settings(world);
@@ -208,7 +208,7 @@ Test(pulley, statistics_report_and_correction_shortens_the_rope)
         expect_near(rb_world_statistics(world).max_joint_angle_error, 0.0, 0.0, "a rope has no angle error");
 
         settings = rb_default_solver_settings();
-        settings.position_correction = corrections[c];
+        settings.type = corrections[c];
         cr_assert_eq(rb_world_set_solver_settings(world, &settings), RB_OK, "%s", rb_last_error());
         step_world(world, TEST_DT, 120);
         cr_expect(rb_world_statistics(world).max_joint_gap <= settings.linear_slop,

@@ -4,6 +4,7 @@
  */
 #include <criterion/criterion.h>
 #include <math.h>
+#include <string.h>
 
 #include "rb/rb.h"
 #include "scenes/scenes.h"
@@ -92,26 +93,26 @@ Test(solver_settings, sequential_solver_does_one_gauss_seidel_pass)
     destroy_world_and_expect_no_leak(world);
 }
 
-static void ngs_settings(rb_solver_settings *s) { s->position_correction = RB_CORRECTION_NGS; }
+static void ngs_settings(rb_solver_settings *s) { s->type = RB_SOLVER_NGS; }
 static void ngs_without_iterations(rb_solver_settings *s)
 {
-    s->position_correction = RB_CORRECTION_NGS;
+    s->type = RB_SOLVER_NGS;
     s->position_iterations = 0;
 }
-static void baumgarte_settings(rb_solver_settings *s) { s->position_correction = RB_CORRECTION_BAUMGARTE; }
+static void baumgarte_settings(rb_solver_settings *s) { s->type = RB_SOLVER_BAUMGARTE; }
 static void baumgarte_without_bias(rb_solver_settings *s)
 {
-    s->position_correction = RB_CORRECTION_BAUMGARTE;
+    s->type = RB_SOLVER_BAUMGARTE;
     s->baumgarte = 0.0;
 }
 static void baumgarte_with_substeps(rb_solver_settings *s)
 {
-    s->position_correction = RB_CORRECTION_BAUMGARTE;
+    s->type = RB_SOLVER_BAUMGARTE;
     s->substeps = 4;
 }
 static void ngs_with_substeps(rb_solver_settings *s)
 {
-    s->position_correction = RB_CORRECTION_NGS;
+    s->type = RB_SOLVER_NGS;
     s->substeps = 4;
 }
 
@@ -210,7 +211,7 @@ static void three_substeps(rb_solver_settings *s)
 static void three_substeps_baumgarte(rb_solver_settings *s)
 {
     three_substeps(s);
-    s->position_correction = RB_CORRECTION_BAUMGARTE;
+    s->type = RB_SOLVER_BAUMGARTE;
 }
 
 Test(solver_settings, statistics_count_bodies_contacts_and_iterations)
@@ -273,4 +274,20 @@ Test(solver_settings, profile_phases_are_timed_within_the_step)
     cr_expect(p.step > 0.0, "the step took %g ms", p.step);
     cr_expect(sum <= p.step, "the phases add up to %g ms, more than the step's %g ms", sum, p.step);
     destroy_world_and_expect_no_leak(world);
+}
+
+Test(solver_settings, solver_types_have_names_that_parse_back)
+{
+    for (int i = 0; i < RB_SOLVER_TYPE_COUNT; ++i) {
+        rb_solver_type parsed = RB_SOLVER_TYPE_COUNT;
+        cr_assert_eq(rb_solver_type_from_name(rb_solver_type_name((rb_solver_type)i), &parsed), RB_OK);
+        cr_assert_eq(parsed, (rb_solver_type)i);
+    }
+    cr_assert_str_eq(rb_solver_type_name(RB_SOLVER_TYPE_COUNT), "unknown");
+    rb_solver_type parsed = RB_SOLVER_NGS;
+    cr_assert_eq(rb_solver_type_from_name("jacobi", &parsed), RB_ERR_INVALID_ARGUMENT);
+    cr_assert(strstr(rb_last_error(), "\"jacobi\"") != NULL, "%s", rb_last_error());
+    cr_assert(strstr(rb_last_error(), "ngs") != NULL, "%s", rb_last_error());
+    cr_assert_eq(parsed, RB_SOLVER_NGS, "a failed parse leaves the output alone");
+    cr_assert_eq(rb_solver_type_from_name(NULL, &parsed), RB_ERR_INVALID_ARGUMENT);
 }

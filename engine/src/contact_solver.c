@@ -211,7 +211,7 @@ static void current_anchors(const rb_contact_constraint *c, const rb_constraint_
 void rb_contact_solver_prepare_substep(rb_world *world, double h, bool first_substep)
 {
     const rb_solver_settings *settings = &world->settings;
-    bool baumgarte = settings->position_correction == RB_CORRECTION_BAUMGARTE;
+    bool baumgarte = settings->type == RB_SOLVER_BAUMGARTE;
     double inv_h = 1.0 / h;
     for (int i = 0; i < world->constraint_count; ++i) {
         rb_contact_constraint *c = &world->constraints[i];

@@ -328,7 +328,7 @@ rb_softness rb_make_softness(double hertz, double zeta, double effective_mass, d
 
 double rb_joint_baumgarte_rate(const rb_world *world, double h)
 {
-    if (world->settings.position_correction != RB_CORRECTION_BAUMGARTE) {
+    if (world->settings.type != RB_SOLVER_BAUMGARTE) {
         return 0.0;
     }
     return world->settings.baumgarte / (h * world->settings.substeps);

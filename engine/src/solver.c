@@ -110,7 +110,7 @@ rb_status rb_solver_step(rb_world *world, double dt)
     const rb_solver_settings *settings = &world->settings;
     int substeps = settings->substeps;
     double h = dt / substeps;
-    bool ngs = settings->position_correction == RB_CORRECTION_NGS;
+    bool ngs = settings->type == RB_SOLVER_NGS;
     int velocity_iterations = 0;
     int position_iterations = 0;
 

@@ -28,12 +28,39 @@ rb_solver_settings rb_default_solver_settings(void)
         .substeps = 6,
         .warm_starting = true,
         .block_solver = true,
-        .position_correction = RB_CORRECTION_NGS,
+        .type = RB_SOLVER_NGS,
         .baumgarte = 0.2,
         .linear_slop = 0.005,
         .max_linear_correction = 0.2,
         .restitution_threshold = 1.0,
     };
+}
+
+static const char *const solver_type_names[RB_SOLVER_TYPE_COUNT] = {"baumgarte", "ngs"};
+
+const char *rb_solver_type_name(rb_solver_type type)
+{
+    return type >= 0 && type < RB_SOLVER_TYPE_COUNT ? solver_type_names[type] : "unknown";
+}
+
+rb_status rb_solver_type_from_name(const char *name, rb_solver_type *type)
+{
+    rb_clear_error();
+    RB_TRY(rb_check_pointer("rb_solver_type_from_name", "name", name));
+    RB_TRY(rb_check_pointer("rb_solver_type_from_name", "type", type));
+    for (int i = 0; i < RB_SOLVER_TYPE_COUNT; ++i) {
+        if (strcmp(name, solver_type_names[i]) == 0) {
+            *type = (rb_solver_type)i;
+            return RB_OK;
+        }
+    }
+    char choices[128] = "";
+    for (int i = 0; i < RB_SOLVER_TYPE_COUNT; ++i) {
+        strcat(choices, i == 0 ? "" : ", ");
+        strcat(choices, solver_type_names[i]);
+    }
+    return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                           "rb_solver_type_from_name: no solver is called \"%s\"; expected one of %s", name, choices);
 }
 
 rb_world_def rb_default_world_def(void)
@@ -48,9 +75,9 @@ static rb_status check_settings(const rb_solver_settings *s, const char *functio
     RB_TRY(rb_check_range(function, "velocity_iterations", s->velocity_iterations, 1, 1000));
     RB_TRY(rb_check_range(function, "position_iterations", s->position_iterations, 0, 1000));
     RB_TRY(rb_check_range(function, "substeps", s->substeps, 1, 1000));
-    if (s->position_correction != RB_CORRECTION_BAUMGARTE && s->position_correction != RB_CORRECTION_NGS) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: position_correction is %d, expected %s or %s", function,
-                               (int)s->position_correction, "RB_CORRECTION_BAUMGARTE", "RB_CORRECTION_NGS");
+    if (!(s->type >= 0 && s->type < RB_SOLVER_TYPE_COUNT)) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: type is %d, expected an rb_solver_type below %d", function,
+                               (int)s->type, (int)RB_SOLVER_TYPE_COUNT);
     }
     RB_TRY(rb_check_range(function, "baumgarte", s->baumgarte, 0.0, 1.0));
     RB_TRY(rb_check_range(function, "linear_slop", s->linear_slop, 0.0, 0.1));

@@ -12,29 +12,41 @@
 
 typedef struct rb_world rb_world;
 
-/* How the solver removes overlap and joint drift. */
-typedef enum rb_position_correction {
-    /* A velocity bias beta·(penetration - slop)/h inside the velocity
-     * iterations (Baumgarte 1972). Cheap; adds some energy. */
-    RB_CORRECTION_BAUMGARTE,
-    /* Non-linear Gauss-Seidel: after the positions are integrated, the
-     * solver moves the bodies directly, one constraint at a time, for
-     * `position_iterations` passes (Catto, Box2D 2.x). No energy added. */
-    RB_CORRECTION_NGS,
-} rb_position_correction;
+/* The world's solver: which algorithm turns contacts and joints into
+ * impulses, and how it removes overlap and joint drift. All share the
+ * same contact and joint data and can be switched between steps; each is
+ * a file of its own in engine/src (solver_*.c). */
+typedef enum rb_solver_type {
+    /* Sequential impulses with a Baumgarte velocity bias
+     * beta·(penetration - slop)/h inside the velocity iterations
+     * (Baumgarte 1972; Box2D 2.0). Cheap; adds some energy. */
+    RB_SOLVER_BAUMGARTE,
+    /* Sequential impulses, then non-linear Gauss-Seidel: after the
+     * positions are integrated, the solver moves the bodies directly, one
+     * constraint at a time, for `position_iterations` passes (Catto,
+     * Box2D 2.4). No energy added. */
+    RB_SOLVER_NGS,
+    RB_SOLVER_TYPE_COUNT
+} rb_solver_type;
+
+/* "baumgarte", "ngs"; "unknown" for a value out of range. */
+const char *rb_solver_type_name(rb_solver_type type);
+/* The type whose name is `name`; RB_ERR_INVALID_ARGUMENT naming the
+ * choices when there is none. */
+rb_status rb_solver_type_from_name(const char *name, rb_solver_type *type);
 
 /* Solver settings, held by the world; see rb_world_set_solver_settings. */
 typedef struct rb_solver_settings {
-    int velocity_iterations;                    /* 1 .. 1000, per substep, default 2 */
-    int position_iterations;                    /* 0 .. 1000, per substep, default 1 (NGS only) */
-    int substeps;                               /* 1 .. 1000, default 6: the step dt is split into this many substeps */
-    bool warm_starting;                         /* default true: start from last step's impulses */
-    bool block_solver;                          /* default true: solve two-point manifolds as one 2x2 LCP */
-    rb_position_correction position_correction; /* default RB_CORRECTION_NGS */
-    double baumgarte;                           /* 0 .. 1, fraction of the error removed per (sub)step, default 0.2 */
-    double linear_slop;                         /* m, 0 .. 0.1: penetration allowed without correction, default 0.005 */
-    double max_linear_correction;               /* m, > 0: largest position correction per iteration, default 0.2 */
-    double restitution_threshold;               /* m/s, >= 0: slower impacts do not bounce, default 1 */
+    int velocity_iterations;      /* 1 .. 1000, per substep, default 2 */
+    int position_iterations;      /* 0 .. 1000, per substep, default 1 (NGS only) */
+    int substeps;                 /* 1 .. 1000, default 6: the step dt is split into this many substeps */
+    bool warm_starting;           /* default true: start from last step's impulses */
+    bool block_solver;            /* default true: solve two-point manifolds as one 2x2 LCP */
+    rb_solver_type type;          /* default RB_SOLVER_NGS */
+    double baumgarte;             /* 0 .. 1, fraction of the error removed per (sub)step, default 0.2 */
+    double linear_slop;           /* m, 0 .. 0.1: penetration allowed without correction, default 0.005 */
+    double max_linear_correction; /* m, > 0: largest position correction per iteration, default 0.2 */
+    double restitution_threshold; /* m/s, >= 0: slower impacts do not bounce, default 1 */
 } rb_solver_settings;
 
 typedef struct rb_world_def {
