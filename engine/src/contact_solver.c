@@ -208,10 +208,9 @@ static void current_anchors(const rb_contact_constraint *c, const rb_constraint_
  * - with Baumgarte, overlap beyond the slop is pushed out at a fraction
  *   beta of it per substep: vn >= beta·(-s - slop)/h, capped;
  * - with NGS, the velocity solve only stops approach: vn >= 0. */
-void rb_contact_solver_prepare_substep(rb_world *world, double h, bool first_substep)
+void rb_contact_solver_prepare_substep(rb_world *world, double h, bool first_substep, bool baumgarte_bias)
 {
     const rb_solver_settings *settings = &world->settings;
-    bool baumgarte = settings->type == RB_SOLVER_BAUMGARTE;
     double inv_h = 1.0 / h;
     for (int i = 0; i < world->constraint_count; ++i) {
         rb_contact_constraint *c = &world->constraints[i];
@@ -235,7 +234,7 @@ void rb_contact_solver_prepare_substep(rb_world *world, double h, bool first_sub
             }
             if (s > 0.0) {
                 p->min_normal_velocity = -s * inv_h;
-            } else if (baumgarte) {
+            } else if (baumgarte_bias) {
                 double push =
                     fmin(settings->baumgarte * fmax(-s - settings->linear_slop, 0.0), settings->max_linear_correction);
                 p->min_normal_velocity = push * inv_h;
@@ -363,6 +362,63 @@ void rb_contact_solver_solve_velocities(rb_world *world)
                 solve_normal_point(c, &c->points[j], a, b);
             }
         }
+    }
+}
+
+/* The point's separation at the poses now, along the step's normal:
+ * each surface point carried by its body, less the circles' radii. */
+static double separation_now(const rb_contact_constraint *c, const rb_constraint_point *p, const rb_body_state *a,
+                             const rb_body_state *b)
+{
+    rb_vec2 qa = rb_add(a->center, rb_rotate(a->rotation, p->local_surface_a));
+    rb_vec2 qb = rb_add(b->center, rb_rotate(b->rotation, p->local_surface_b));
+    return rb_dot(c->normal, rb_sub(qb, qa)) - c->radius_a - c->radius_b;
+}
+
+/* Soft contact (Catto, "Solver2D", 2024): a point whose gap s is open
+ * may close it within the substep, vn >= -s/h, rigidly; an overlapping
+ * one is a stiff damped spring pushing at the rate bias_rate·(s + slop),
+ * no faster than max_push_speed, its impulse
+ *   λ = -mass_scale·m·(vn + bias) - impulse_scale·λ_accumulated,
+ * against a fixed body at twice the frequency (it carries the whole
+ * load). Without bias (relax), the overlap only stops approaching. */
+static void solve_soft_normal(rb_contact_constraint *c, const rb_contact_softness *softness, rb_body_state *a,
+                              rb_body_state *b)
+{
+    bool fixed = (c->inv_mass_a == 0.0 && c->inv_inertia_a == 0.0) || (c->inv_mass_b == 0.0 && c->inv_inertia_b == 0.0);
+    const rb_rigid_response *spring = fixed ? &softness->against_fixed : &softness->between_moving;
+    for (int j = 0; j < c->point_count; ++j) {
+        rb_constraint_point *p = &c->points[j];
+        double s = separation_now(c, p, a, b);
+        double bias = 0.0;
+        double mass_scale = 1.0;
+        double impulse_scale = 0.0;
+        if (s > 0.0) {
+            bias = s * softness->inv_h;
+        } else if (softness->use_bias) {
+            bias = fmax(spring->bias_rate * fmin(s + softness->linear_slop, 0.0), -softness->max_push_speed);
+            mass_scale = spring->mass_scale;
+            impulse_scale = spring->impulse_scale;
+        }
+        double vn = rb_dot(c->normal, relative_velocity(a, b, p->anchor_a, p->anchor_b));
+        double impulse = -p->normal_mass * mass_scale * (vn + bias) - impulse_scale * p->normal_impulse;
+        double accumulated = fmax(p->normal_impulse + impulse, 0.0);
+        double delta = accumulated - p->normal_impulse;
+        p->normal_impulse = accumulated;
+        p->max_normal_impulse = fmax(p->max_normal_impulse, accumulated);
+        apply_impulse(c, a, b, p->anchor_a, p->anchor_b, rb_scale(delta, c->normal));
+    }
+}
+
+void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *softness)
+{
+    for (int i = 0; i < world->constraint_count; ++i) {
+        rb_contact_constraint *c = &world->constraints[i];
+        rb_body_state *a = &world->states[c->body_a];
+        rb_body_state *b = &world->states[c->body_b];
+        /* The normal first, so friction's bound sees this pass's push. */
+        solve_soft_normal(c, softness, a, b);
+        solve_friction(c, a, b);
     }
 }
 

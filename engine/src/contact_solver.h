@@ -45,12 +45,30 @@ struct rb_contact_constraint {
 int rb_contact_solver_prepare(rb_world *world);
 /* At the start of a substep of length h: the anchors, normal and
  * effective masses at the poses now, the separations, and from them each
- * point's lower bound on its normal velocity. On the first substep it
- * also records each point's normal velocity, with this step's gravity
- * and forces already in it, as the impact speed for restitution. */
-void rb_contact_solver_prepare_substep(rb_world *world, double h, bool first_substep);
+ * point's lower bound on its normal velocity for the sequential solvers:
+ * with baumgarte_bias, overlap beyond the slop is pushed out. On the
+ * first substep it also records each point's relative velocity as the
+ * impact speed for restitution. */
+void rb_contact_solver_prepare_substep(rb_world *world, double h, bool first_substep, bool baumgarte_bias);
 void rb_contact_solver_warm_start(rb_world *world);
+/* One pass of sequential impulses at the substep's bounds (Baumgarte, NGS). */
 void rb_contact_solver_solve_velocities(rb_world *world);
+
+/* How the soft step's contacts answer overlap in one pass
+ * (solver_soft_step.c). */
+typedef struct rb_contact_softness {
+    rb_rigid_response between_moving; /* both bodies can move */
+    rb_rigid_response against_fixed;  /* one body cannot move (static, kinematic or asleep) */
+    double max_push_speed;            /* m/s, > 0 */
+    double linear_slop;               /* m, overlap left alone */
+    double inv_h;                     /* 1/s, of the substep */
+    bool use_bias;                    /* false in the relax pass: stop approach, push nothing */
+} rb_contact_softness;
+/* One pass of soft contacts. The anchors, normal and masses stay as
+ * rb_contact_solver_prepare_substep set them at the start of the step;
+ * each point's separation is measured anew from the poses now, so a pass
+ * after the positions moved sees the gap they left. */
+void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *softness);
 /* One non-linear Gauss-Seidel pass over the contacts; returns whether no
  * point was deeper than the tolerance before it. */
 bool rb_contact_solver_correct_positions(rb_world *world);

@@ -326,12 +326,13 @@ rb_softness rb_make_softness(double hertz, double zeta, double effective_mass, d
     return (rb_softness){gamma, h * k * gamma};
 }
 
-double rb_joint_baumgarte_rate(const rb_world *world, double h)
+rb_rigid_response rb_make_rigid_softness(double hertz, double zeta, double h)
 {
-    if (world->settings.type != RB_SOLVER_BAUMGARTE) {
-        return 0.0;
-    }
-    return world->settings.baumgarte / (h * world->settings.substeps);
+    double omega = 2.0 * RB_PI * hertz;
+    double a1 = 2.0 * zeta + h * omega;
+    double a2 = h * omega * a1;
+    return (rb_rigid_response){
+        .bias_rate = omega / a1, .mass_scale = a2 / (1.0 + a2), .impulse_scale = 1.0 / (1.0 + a2)};
 }
 
 rb_body_state *rb_joint_state_a(rb_world *world, const rb_joint *joint)

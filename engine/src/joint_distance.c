@@ -145,14 +145,13 @@ void rb_distance_solve(rb_world *world, rb_joint *joint, double h)
     }
     rb_body_state *a = rb_joint_state_a(world, joint);
     rb_body_state *b = rb_joint_state_b(world, joint);
-    double baumgarte_rate = rb_joint_baumgarte_rate(world, h);
 
     if (is_rigid(d) || d->spring_hertz > 0.0) {
         double c = d->current_length - d->length;
         double cdot = rb_dot(d->axis, rb_joint_relative_velocity(joint, a, b));
         double impulse;
         if (is_rigid(d)) {
-            impulse = -d->axial_mass * (cdot + baumgarte_rate * c);
+            impulse = rb_rigid_row_impulse(world, d->axial_mass, cdot, c, d->impulse);
         } else {
             rb_softness soft = rb_make_softness(d->spring_hertz, d->spring_damping_ratio, d->axial_mass, h);
             impulse = -(cdot + soft.bias_rate * c + soft.gamma * d->impulse) / (1.0 / d->axial_mass + soft.gamma);
@@ -167,10 +166,8 @@ void rb_distance_solve(rb_world *world, rb_joint *joint, double h)
         double *accumulated[2] = {&d->lower_impulse, &d->upper_impulse};
         for (int side = 0; side < 2; ++side) {
             double sign = side == 0 ? 1.0 : -1.0;
-            double c = margins[side];
-            double bias = c > 0.0 ? c / h : baumgarte_rate * c;
             double cdot = sign * rb_dot(d->axis, rb_joint_relative_velocity(joint, a, b));
-            double total = fmax(*accumulated[side] - d->axial_mass * (cdot + bias), 0.0);
+            double total = rb_one_sided_row_total(world, d->axial_mass, cdot, margins[side], h, *accumulated[side]);
             double impulse = total - *accumulated[side];
             *accumulated[side] = total;
             rb_joint_apply_linear(joint, a, b, rb_scale(sign * impulse, d->axis));

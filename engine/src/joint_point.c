@@ -68,19 +68,18 @@ void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double 
     f->point_drift = drift;
 }
 
-void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumulated, double h,
-                               const rb_angular_row *row)
+void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumulated, const rb_angular_row *row)
 {
     rb_body_state *a = rb_joint_state_a(world, joint);
     rb_body_state *b = rb_joint_state_b(world, joint);
     const rb_joint_frame *f = &joint->frame;
     const rb_block_matrix k = f->point_mass;
     rb_vec2 drift = f->point_drift;
+    const rb_rigid_response *response = &world->joint_response;
     rb_vec2 cdot = rb_sub(rb_joint_relative_velocity(joint, a, b), drift);
-    double baumgarte_rate = rb_joint_baumgarte_rate(world, h);
-    if (baumgarte_rate > 0.0) {
+    if (response->bias_rate > 0.0) {
         rb_vec2 gap = rb_sub(rb_add(b->center, f->rb), rb_add(a->center, f->ra));
-        cdot = rb_mul_add(cdot, baumgarte_rate, gap);
+        cdot = rb_mul_add(cdot, response->bias_rate, gap);
     }
 
     rb_vec2 impulse;
@@ -93,14 +92,15 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
         double wdot = row->sign * (b->angular_velocity - a->angular_velocity) + row->bias;
         double angular;
         if (rb_block_solve3(&ks, rb_neg(cdot), -wdot, &impulse, &angular)) {
+            impulse = rb_soften(response, impulse, *accumulated);
+            angular = response->mass_scale * angular - response->impulse_scale * *row->accumulated;
             if (row->one_sided && *row->accumulated + angular < 0.0) {
                 /* The limit would pull: release it and hold the pin alone,
                  * net of the release's effect on the point. */
                 angular = -*row->accumulated;
                 rb_vec2 rhs = rb_neg(rb_add(cdot, rb_scale(angular, rb_v2(ks.k13, ks.k23))));
-                if (!rb_block_solve2(&k, rhs, &impulse)) {
-                    impulse = rb_v2(0.0, 0.0);
-                }
+                impulse =
+                    rb_block_solve2(&k, rhs, &impulse) ? rb_soften(response, impulse, *accumulated) : rb_v2(0.0, 0.0);
             }
             *row->accumulated += angular;
             *accumulated = rb_add(*accumulated, impulse);
@@ -109,6 +109,7 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
         }
     }
     if (rb_block_solve2(&k, rb_neg(cdot), &impulse)) {
+        impulse = rb_soften(response, impulse, *accumulated);
         *accumulated = rb_add(*accumulated, impulse);
         rb_joint_apply_linear(joint, a, b, impulse);
     }

@@ -384,14 +384,6 @@ static double along_rate(const slide_rows *r, const rb_body_state *a, const rb_b
            r->axial_a * a->angular_velocity;
 }
 
-/* Velocity bias of a one-sided limit whose margin is c (>= 0 while met):
- * speculative while open, Baumgarte push when violated and the world
- * uses Baumgarte, none otherwise (NGS removes the violation). */
-static double limit_bias(const rb_world *world, double c, double h)
-{
-    return c > 0.0 ? c / h : rb_joint_baumgarte_rate(world, h) * c;
-}
-
 /* A limit alone, on the axial mass: it only releases what it held. */
 static void solve_limit_alone(rb_world *world, rb_joint *joint, const slide_rows *r, rb_body_state *a, rb_body_state *b,
                               bool lower, double h)
@@ -401,7 +393,7 @@ static void solve_limit_alone(rb_world *world, rb_joint *joint, const slide_rows
     double margin = lower ? r->translation - p->lower : p->upper - r->translation;
     double *accumulated = lower ? &p->lower_impulse : &p->upper_impulse;
     double cdot = sign * along_rate(r, a, b);
-    double total = fmax(*accumulated - r->axial_mass * (cdot + limit_bias(world, margin, h)), 0.0);
+    double total = rb_one_sided_row_total(world, r->axial_mass, cdot, margin, h, *accumulated);
     apply(joint, r, a, b, 0.0, 0.0, sign * (total - *accumulated));
     *accumulated = total;
 }
@@ -414,7 +406,8 @@ static void solve_block(rb_world *world, rb_joint *joint, const slide_rows *r, r
 {
     rb_prismatic_data *p = &joint->as.prismatic;
     rb_vec2 cdot = rb_v2(across_rate(r, a, b), r->turns ? b->angular_velocity - a->angular_velocity : 0.0);
-    double rate = rb_joint_baumgarte_rate(world, h);
+    const rb_rigid_response *response = &world->joint_response;
+    double rate = response->bias_rate;
     if (rate > 0.0) {
         double angle = r->turns ? rb_joint_relative_angle(world, joint, p->reference_angle) : 0.0;
         cdot = rb_add(cdot, rb_scale(rate, rb_v2(r->offset, angle)));
@@ -428,17 +421,18 @@ static void solve_block(rb_world *world, rb_joint *joint, const slide_rows *r, r
         rb_block_matrix ks = r->k;
         ks.k13 *= sign;
         ks.k23 *= sign;
-        double wdot = sign * along_rate(r, a, b) + limit_bias(world, margin, h);
+        double wdot = sign * along_rate(r, a, b) + rb_one_sided_bias(world, margin, h);
         double along;
         if (rb_block_solve3(&ks, rb_neg(cdot), -wdot, &impulse, &along)) {
+            impulse = rb_soften(response, impulse, p->impulse);
+            along = response->mass_scale * along - response->impulse_scale * *accumulated;
             if (*accumulated + along < 0.0) {
                 /* The limit would pull: release it and hold the two rigid
                  * rows alone, net of the release's effect on them. */
                 along = -*accumulated;
                 rb_vec2 rhs = rb_neg(rb_add(cdot, rb_scale(along, rb_v2(ks.k13, ks.k23))));
-                if (!rb_block_solve2(&r->k, rhs, &impulse)) {
-                    impulse = rb_v2(0.0, 0.0);
-                }
+                impulse =
+                    rb_block_solve2(&r->k, rhs, &impulse) ? rb_soften(response, impulse, p->impulse) : rb_v2(0.0, 0.0);
             }
             *accumulated += along;
             p->impulse = rb_add(p->impulse, impulse);
@@ -447,6 +441,7 @@ static void solve_block(rb_world *world, rb_joint *joint, const slide_rows *r, r
         }
     }
     if (rb_block_solve2(&r->k, rb_neg(cdot), &impulse)) {
+        impulse = rb_soften(response, impulse, p->impulse);
         p->impulse = rb_add(p->impulse, impulse);
         apply(joint, r, a, b, impulse.x, impulse.y, 0.0);
     }

@@ -214,19 +214,12 @@ static double side_rate(const rb_body_state *state, rb_vec2 r, rb_vec2 direction
     return rb_dot(direction, rb_add(state->linear_velocity, rb_cross_sv(state->angular_velocity, r)));
 }
 
-/* Velocity bias of a one-sided row whose margin is c (>= 0 while met):
- * speculative while open (the rope may tighten at c/h, no faster),
- * Baumgarte push when violated and the world uses Baumgarte. */
-static double one_sided_bias(const rb_world *world, double c, double h)
+/* The impulse of a one-sided row of rate cdot, margin c and effective
+ * mass `mass`, its accumulated impulse kept >= 0 (joint_solver.h);
+ * returns the increment. */
+static double clamp_increment(const rb_world *world, double *accumulated, double mass, double cdot, double c, double h)
 {
-    return c > 0.0 ? c / h : rb_joint_baumgarte_rate(world, h) * c;
-}
-
-/* The impulse of a one-sided row of rate cdot, bias and effective mass
- * `mass`, its accumulated impulse kept >= 0; returns the increment. */
-static double clamp_increment(double *accumulated, double mass, double cdot, double bias)
-{
-    double total = fmax(*accumulated - mass * (cdot + bias), 0.0);
+    double total = rb_one_sided_row_total(world, mass, cdot, c, h, *accumulated);
     double increment = total - *accumulated;
     *accumulated = total;
     return increment;
@@ -248,17 +241,17 @@ void rb_pulley_solve(rb_world *world, rb_joint *joint, double h)
     if (r.mass_a > 0.0) {
         double c = r.a.length - p->min_length;
         double cdot = side_rate(a, f->ra, r.a.direction);
-        push_a(world, joint, &r, clamp_increment(&p->stop_a_impulse, r.mass_a, cdot, one_sided_bias(world, c, h)));
+        push_a(world, joint, &r, clamp_increment(world, &p->stop_a_impulse, r.mass_a, cdot, c, h));
     }
     if (r.mass_b > 0.0) {
         double c = r.b.length - p->min_length;
         double cdot = side_rate(b, f->rb, r.b.direction);
-        push_b(world, joint, &r, clamp_increment(&p->stop_b_impulse, r.mass_b, cdot, one_sided_bias(world, c, h)));
+        push_b(world, joint, &r, clamp_increment(world, &p->stop_b_impulse, r.mass_b, cdot, c, h));
     }
     if (r.mass > 0.0) {
         double c = rope_margin(p, r.a.length, r.b.length);
         double cdot = -side_rate(a, f->ra, r.a.direction) - p->ratio * side_rate(b, f->rb, r.b.direction);
-        double impulse = clamp_increment(&p->impulse, r.mass, cdot, one_sided_bias(world, c, h));
+        double impulse = clamp_increment(world, &p->impulse, r.mass, cdot, c, h);
         push_a(world, joint, &r, -impulse);
         push_b(world, joint, &r, -p->ratio * impulse);
     }

@@ -183,14 +183,6 @@ void rb_revolute_warm_start(rb_world *world, rb_joint *joint)
     rb_joint_apply_angular(joint, a, b, r->motor_impulse + r->spring_impulse + r->lower_impulse - r->upper_impulse);
 }
 
-/* Velocity bias of a one-sided limit whose margin is c (>= 0 while met):
- * speculative while open, Baumgarte push when violated and the world uses
- * Baumgarte, none otherwise (NGS removes the violation). */
-static double limit_bias(const rb_world *world, double c, double h)
-{
-    return c > 0.0 ? c / h : rb_joint_baumgarte_rate(world, h) * c;
-}
-
 /* A limit's row on the relative angular velocity: sign +1 for the lower
  * limit (the angle may not fall below it), -1 for the upper one. */
 static rb_angular_row limit_row(const rb_world *world, rb_revolute_data *r, bool lower, double angle, double h)
@@ -198,7 +190,7 @@ static rb_angular_row limit_row(const rb_world *world, rb_revolute_data *r, bool
     double margin = lower ? angle - r->lower : r->upper - angle;
     return (rb_angular_row){
         .sign = lower ? 1.0 : -1.0,
-        .bias = limit_bias(world, margin, h),
+        .bias = rb_one_sided_bias(world, margin, h),
         .accumulated = lower ? &r->lower_impulse : &r->upper_impulse,
         .one_sided = true,
     };
@@ -212,24 +204,22 @@ static void solve_limits(rb_world *world, rb_joint *joint, rb_body_state *a, rb_
     bool lower_nearer = r->enable_lower && (!r->enable_upper || angle - r->lower <= r->upper - angle);
     bool upper_nearer = r->enable_upper && !lower_nearer;
     if (r->enable_lower && !lower_nearer) {
-        rb_angular_row row = limit_row(world, r, true, angle, h);
         double cdot = b->angular_velocity - a->angular_velocity;
-        double total = fmax(*row.accumulated - r->axial_mass * (cdot + row.bias), 0.0);
-        rb_joint_apply_angular(joint, a, b, total - *row.accumulated);
-        *row.accumulated = total;
+        double total = rb_one_sided_row_total(world, r->axial_mass, cdot, angle - r->lower, h, r->lower_impulse);
+        rb_joint_apply_angular(joint, a, b, total - r->lower_impulse);
+        r->lower_impulse = total;
     }
     if (r->enable_upper && !upper_nearer) {
-        rb_angular_row row = limit_row(world, r, false, angle, h);
         double cdot = a->angular_velocity - b->angular_velocity;
-        double total = fmax(*row.accumulated - r->axial_mass * (cdot + row.bias), 0.0);
-        rb_joint_apply_angular(joint, a, b, -(total - *row.accumulated));
-        *row.accumulated = total;
+        double total = rb_one_sided_row_total(world, r->axial_mass, cdot, r->upper - angle, h, r->upper_impulse);
+        rb_joint_apply_angular(joint, a, b, -(total - r->upper_impulse));
+        r->upper_impulse = total;
     }
     if (lower_nearer || upper_nearer) {
         rb_angular_row row = limit_row(world, r, lower_nearer, angle, h);
-        rb_point_constraint_solve(world, joint, &r->point_impulse, h, &row);
+        rb_point_constraint_solve(world, joint, &r->point_impulse, &row);
     } else {
-        rb_point_constraint_solve(world, joint, &r->point_impulse, h, NULL);
+        rb_point_constraint_solve(world, joint, &r->point_impulse, NULL);
     }
 }
 
@@ -259,7 +249,7 @@ void rb_revolute_solve(rb_world *world, rb_joint *joint, double h)
         solve_limits(world, joint, a, b, angle, h);
         return;
     }
-    rb_point_constraint_solve(world, joint, &r->point_impulse, h, NULL);
+    rb_point_constraint_solve(world, joint, &r->point_impulse, NULL);
 }
 
 /* How far the joint angle lies beyond an enabled limit (rad, >= 0). */

@@ -3,8 +3,9 @@
  *
  * Conventions: an impulse P acts on body B at its anchor and -P on body A
  * at its anchor; angular impulses likewise (+L on B, -L on A). Rigid
- * parts are corrected by the world's method: a Baumgarte velocity bias,
- * or NGS position passes after the positions are integrated. Joints
+ * parts are corrected as the world's solver sets world->joint_response:
+ * a Baumgarte velocity bias, a soft step's spring, or nothing in the
+ * velocity pass when NGS position passes follow the integration. Joints
  * correct their whole error in an NGS pass (capped), unlike contacts:
  * an equality constraint does not chatter the way a stack of contacts
  * does (Catto, Box2D 2.x). */
@@ -52,13 +53,48 @@ typedef struct rb_softness {
 } rb_softness;
 rb_softness rb_make_softness(double hertz, double zeta, double effective_mass, double h);
 
-/* The Baumgarte bias rate (1/s) of a rigid joint part: the velocity bias
- * is rate·C. Zero when the world corrects positions by NGS. It removes the
- * fraction beta of the error per step of dt = h·substeps, not per
- * substep: per substep the fractions compound (beta = 0.2 over 6
- * substeps is 74 % per step), and warm starting carries the bias impulses
- * on, until a hanging chain diverges. */
-double rb_joint_baumgarte_rate(const rb_world *world, double h);
+/* The soft step's spring on a rigid row (Catto, "Solver2D", 2024): the
+ * coefficients of rb_make_softness written for any effective mass m.
+ * With k = m·ω² and c = 2·m·ζ·ω, gamma = 1/(m·a2) and bias_rate = ω/a1,
+ * where a1 = 2ζ + h·ω and a2 = h·ω·a1; the impulse
+ * -(Cdot + bias_rate·C + gamma·λ)/(1/m + gamma) then reads
+ * -mass_scale·m·(Cdot + bias_rate·C) - impulse_scale·λ with
+ * mass_scale = a2/(1 + a2) and impulse_scale = 1/(1 + a2). */
+rb_rigid_response rb_make_rigid_softness(double hertz, double zeta, double h);
+
+/* The impulse of a two-sided rigid row of effective mass `mass`, rate
+ * cdot and position error c under the pass's response. */
+static inline double rb_rigid_row_impulse(const rb_world *world, double mass, double cdot, double c, double accumulated)
+{
+    const rb_rigid_response *r = &world->joint_response;
+    return -r->mass_scale * mass * (cdot + r->bias_rate * c) - r->impulse_scale * accumulated;
+}
+
+/* A block's rigid solution x = -K⁻¹·(Cdot + bias) as the pass's
+ * response delivers it: mass_scale·x - impulse_scale·λ_accumulated. */
+static inline rb_vec2 rb_soften(const rb_rigid_response *response, rb_vec2 rigid, rb_vec2 accumulated)
+{
+    return rb_sub(rb_scale(response->mass_scale, rigid), rb_scale(response->impulse_scale, accumulated));
+}
+
+/* The velocity bias of a one-sided row whose margin c is >= 0 while met:
+ * while open it may close at c/h, no faster (speculative); once violated,
+ * the pass's response pushes it back (nothing under NGS, which moves the
+ * bodies instead). */
+static inline double rb_one_sided_bias(const rb_world *world, double c, double h)
+{
+    return c > 0.0 ? c / h : world->joint_response.bias_rate * c;
+}
+
+/* The new accumulated impulse (>= 0) of a one-sided row: an open row is
+ * rigid with its speculative bias; a violated one answers as the pass's
+ * response. */
+static inline double rb_one_sided_row_total(const rb_world *world, double mass, double cdot, double c, double h,
+                                            double accumulated)
+{
+    double impulse = c > 0.0 ? -mass * (cdot + c / h) : rb_rigid_row_impulse(world, mass, cdot, c, accumulated);
+    return fmax(accumulated + impulse, 0.0);
+}
 
 rb_body_state *rb_joint_state_a(rb_world *world, const rb_joint *joint); /* NULL for a mouse joint */
 rb_body_state *rb_joint_state_b(rb_world *world, const rb_joint *joint);
@@ -121,10 +157,9 @@ typedef struct rb_angular_row {
 /* Sets the frame's point_mass and point_drift for the substep; after
  * the frame is prepared, before any solve. */
 void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h);
-/* Velocity solve of the pin (and the row, if not NULL), with the
- * Baumgarte bias when the world uses it. */
-void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumulated, double h,
-                               const rb_angular_row *row);
+/* Velocity solve of the pin (and the row, if not NULL) under the pass's
+ * response; the row's bias is its own. */
+void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumulated, const rb_angular_row *row);
 /* One NGS pass that moves the bodies to close the gap and, when
  * angle_error is not NULL, to remove that much relative angle (rad,
  * angle(B) - angle(A) - target) at the same time; returns the gap before. */

@@ -84,8 +84,7 @@ static void solve_angle(rb_world *world, rb_joint *joint, rb_body_state *a, rb_b
         rb_softness soft = rb_make_softness(w->angular_hertz, w->angular_damping_ratio, w->axial_mass, h);
         impulse = -(cdot + soft.bias_rate * c + soft.gamma * w->angular_impulse) / (1.0 / w->axial_mass + soft.gamma);
     } else {
-        double bias = rb_joint_baumgarte_rate(world, h) * c;
-        impulse = -w->axial_mass * (cdot + bias);
+        impulse = rb_rigid_row_impulse(world, w->axial_mass, cdot, c, w->angular_impulse);
     }
     w->angular_impulse += impulse;
     rb_joint_apply_angular(joint, a, b, impulse);
@@ -120,18 +119,18 @@ void rb_weld_solve(rb_world *world, rb_joint *joint, double h)
         double c = rb_joint_relative_angle(world, joint, w->reference_angle);
         rb_angular_row row = {
             .sign = 1.0,
-            .bias = rb_joint_baumgarte_rate(world, h) * c,
+            .bias = world->joint_response.bias_rate * c,
             .accumulated = &w->angular_impulse,
             .one_sided = false,
         };
-        rb_point_constraint_solve(world, joint, &w->point_impulse, h, &row);
+        rb_point_constraint_solve(world, joint, &w->point_impulse, &row);
         return;
     }
     solve_angle(world, joint, a, b, h);
     if (w->linear_hertz > 0.0) {
         solve_soft_point(joint, a, b, h);
     } else {
-        rb_point_constraint_solve(world, joint, &w->point_impulse, h, NULL);
+        rb_point_constraint_solve(world, joint, &w->point_impulse, NULL);
     }
 }
 

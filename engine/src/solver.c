@@ -1,18 +1,9 @@
-/* The solver's step, as a script of named phases:
+/* The frame of every solver's step, and the body phases they share.
  *
  *   prepare contact constraints (surface points, impulses carried over)
- *   for each substep of length h = dt / substeps:
- *       substep callback       the user's, e.g. muscles setting their cables' tension laws
- *       integrate velocities   v += h·(g·gravity_scale + F/m), ω += h·τ/I
- *       prepare substep        cables, contacts and joints: anchors, normals and masses
- *                              at the poses now
- *       warm start             apply the accumulated impulses again
- *       solve velocities       velocity_iterations passes of sequential impulses:
- *                              cables, joints, then contacts
- *       damp, then integrate positions   v /= 1 + h·c, then x += h·v, θ += h·ω   (semi-implicit Euler)
- *       correct positions      NGS passes over contacts and joints, when the world uses NGS
- *   apply restitution
- *   store impulses for the next step
+ *   the world's solver: its substeps (solver_baumgarte.c, solver_ngs.c,
+ *                       solver_soft_step.c), then restitution
+ *   store impulses for the next step, measure the deepest overlap left
  *
  * Semi-implicit (symplectic) Euler updates the velocity first and moves
  * the position with the new velocity; unlike explicit Euler it does not
@@ -27,7 +18,7 @@
 
 static bool is_simulated(const rb_body *body) { return body->in_use && body->awake; }
 
-static void integrate_velocities(rb_world *world, double h)
+void rb_solver_integrate_velocities(rb_world *world, double h)
 {
     rb_vec2 gravity = world->gravity;
     for (int i = 0; i < world->body_slots; ++i) {
@@ -49,20 +40,7 @@ static void integrate_velocities(rb_world *world, double h)
  * drag exerts nothing on a body at rest, so a supported body must still
  * carry its full weight (damped before the solve, a body with c = 8/s at
  * 600 Hz would load its supports with m·g/(1 + h·c), 1.3 % short). */
-static void apply_damping(rb_world *world, double h)
-{
-    for (int i = 0; i < world->body_slots; ++i) {
-        const rb_body *body = &world->bodies[i];
-        if (!is_simulated(body) || body->type != RB_BODY_DYNAMIC) {
-            continue;
-        }
-        rb_body_state *state = &world->states[i];
-        state->linear_velocity = rb_scale(1.0 / (1.0 + h * body->linear_damping), state->linear_velocity);
-        state->angular_velocity /= 1.0 + h * body->angular_damping;
-    }
-}
-
-static void integrate_positions(rb_world *world, double h)
+void rb_solver_damp_and_integrate_positions(rb_world *world, double h)
 {
     for (int i = 0; i < world->body_slots; ++i) {
         const rb_body *body = &world->bodies[i];
@@ -70,6 +48,10 @@ static void integrate_positions(rb_world *world, double h)
             continue;
         }
         rb_body_state *state = &world->states[i];
+        if (body->type == RB_BODY_DYNAMIC) {
+            state->linear_velocity = rb_scale(1.0 / (1.0 + h * body->linear_damping), state->linear_velocity);
+            state->angular_velocity /= 1.0 + h * body->angular_damping;
+        }
         state->center = rb_mul_add(state->center, h, state->linear_velocity);
         if (state->angular_velocity != 0.0) {
             state->angle += h * state->angular_velocity;
@@ -78,7 +60,7 @@ static void integrate_positions(rb_world *world, double h)
     }
 }
 
-static void call_substep_callback(rb_world *world, int substep, double h)
+void rb_solver_call_substep_callback(rb_world *world, int substep, double h)
 {
     if (world->substep_callback != NULL) {
         world->in_substep_callback = true;
@@ -87,93 +69,74 @@ static void call_substep_callback(rb_world *world, int substep, double h)
     }
 }
 
-/* Non-linear Gauss-Seidel position passes over contacts, then joints,
- * until both are within tolerance or the iterations run out; returns the
- * passes done. */
-static int correct_positions(rb_world *world)
+void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool contact_bias)
 {
-    int passes = 0;
-    while (passes < world->settings.position_iterations) {
-        ++passes;
-        bool contacts_within = rb_contact_solver_correct_positions(world);
-        bool joints_within = rb_joints_correct_positions(world, passes % 2 == 0);
-        if (contacts_within && joints_within) {
-            break;
-        }
+    rb_profile *profile = &world->profile;
+    double t = rb_world_clock(world);
+    rb_solver_call_substep_callback(world, substep, h);
+    profile->substep_callback += rb_world_clock(world) - t;
+    world->last_substep = h; /* after the callback, which reads the previous substep's forces */
+
+    t = rb_world_clock(world);
+    rb_solver_integrate_velocities(world, h);
+    profile->integrate_velocities += rb_world_clock(world) - t;
+
+    t = rb_world_clock(world);
+    rb_cables_prepare(world);
+    rb_joints_prepare(world, h);
+    rb_contact_solver_prepare_substep(world, h, substep == 0, contact_bias);
+    rb_cables_warm_start(world);
+    rb_joints_warm_start(world);
+    rb_contact_solver_warm_start(world);
+    profile->warm_start += rb_world_clock(world) - t;
+
+    t = rb_world_clock(world);
+    for (int iteration = 0; iteration < world->settings.velocity_iterations; ++iteration) {
+        rb_cables_solve(world, h);
+        rb_joints_solve_velocities(world, h, iteration % 2 == 1);
+        rb_contact_solver_solve_velocities(world);
     }
-    return passes;
+    profile->solve_velocities += rb_world_clock(world) - t;
+
+    t = rb_world_clock(world);
+    rb_solver_damp_and_integrate_positions(world, h);
+    profile->integrate_positions += rb_world_clock(world) - t;
 }
 
 rb_status rb_solver_step(rb_world *world, double dt)
 {
     rb_profile *profile = &world->profile;
-    const rb_solver_settings *settings = &world->settings;
-    int substeps = settings->substeps;
-    double h = dt / substeps;
-    bool ngs = settings->type == RB_SOLVER_NGS;
-    int velocity_iterations = 0;
-    int position_iterations = 0;
-
     double t = rb_world_clock(world);
     if (rb_contact_solver_prepare(world) < 0) {
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for contact constraints");
     }
     profile->prepare = rb_world_clock(world) - t;
 
-    if (!settings->warm_starting) {
+    if (!world->settings.warm_starting) {
         rb_joints_reset_impulses(world);
         rb_cables_reset_impulses(world);
     }
 
-    for (int substep = 0; substep < substeps; ++substep) {
-        t = rb_world_clock(world);
-        call_substep_callback(world, substep, h);
-        profile->substep_callback += rb_world_clock(world) - t;
-        world->last_substep = h; /* after the callback, which reads the previous substep's forces */
-
-        t = rb_world_clock(world);
-        integrate_velocities(world, h);
-        profile->integrate_velocities += rb_world_clock(world) - t;
-
-        t = rb_world_clock(world);
-        rb_cables_prepare(world);
-        rb_joints_prepare(world, h);
-        rb_contact_solver_prepare_substep(world, h, substep == 0);
-        rb_cables_warm_start(world);
-        rb_joints_warm_start(world);
-        rb_contact_solver_warm_start(world);
-        profile->warm_start += rb_world_clock(world) - t;
-
-        t = rb_world_clock(world);
-        for (int iteration = 0; iteration < settings->velocity_iterations; ++iteration) {
-            rb_cables_solve(world, h);
-            rb_joints_solve_velocities(world, h, iteration % 2 == 1);
-            rb_contact_solver_solve_velocities(world);
-        }
-        velocity_iterations += settings->velocity_iterations;
-        profile->solve_velocities += rb_world_clock(world) - t;
-
-        t = rb_world_clock(world);
-        apply_damping(world, h);
-        integrate_positions(world, h);
-        profile->integrate_positions += rb_world_clock(world) - t;
-
-        if (ngs) {
-            t = rb_world_clock(world);
-            position_iterations += correct_positions(world);
-            profile->correct_positions += rb_world_clock(world) - t;
-        }
+    rb_solver_counts counts = {0};
+    switch (world->settings.type) {
+    case RB_SOLVER_BAUMGARTE:
+        counts = rb_solve_baumgarte(world, dt);
+        break;
+    case RB_SOLVER_NGS:
+        counts = rb_solve_ngs(world, dt);
+        break;
+    case RB_SOLVER_SOFT_STEP:
+    case RB_SOLVER_TYPE_COUNT:
+        counts = rb_solve_soft_step(world, dt);
+        break;
     }
-
-    t = rb_world_clock(world);
-    rb_contact_solver_apply_restitution(world);
-    profile->restitution = rb_world_clock(world) - t;
 
     t = rb_world_clock(world);
     world->statistics.max_penetration = rb_contact_solver_store_impulses(world);
     profile->store_impulses = rb_world_clock(world) - t;
 
-    world->statistics.velocity_iterations = velocity_iterations;
-    world->statistics.position_iterations = position_iterations;
+    world->statistics.velocity_iterations = counts.velocity_iterations;
+    world->statistics.position_iterations = counts.position_iterations;
+    world->statistics.relax_iterations = counts.relax_iterations;
     return RB_OK;
 }

@@ -23,20 +23,26 @@ static atomic_uint next_world_serial = 1;
 rb_solver_settings rb_default_solver_settings(void)
 {
     return (rb_solver_settings){
+        .type = RB_SOLVER_NGS,
         .velocity_iterations = 2,
         .position_iterations = 1,
+        .relax_iterations = 1,
         .substeps = 6,
         .warm_starting = true,
         .block_solver = true,
-        .type = RB_SOLVER_NGS,
         .baumgarte = 0.2,
         .linear_slop = 0.005,
         .max_linear_correction = 0.2,
         .restitution_threshold = 1.0,
+        .contact_hertz = 30.0,
+        .contact_damping_ratio = 10.0,
+        .joint_hertz = 60.0,
+        .joint_damping_ratio = 2.0,
+        .max_push_speed = 3.0,
     };
 }
 
-static const char *const solver_type_names[RB_SOLVER_TYPE_COUNT] = {"baumgarte", "ngs"};
+static const char *const solver_type_names[RB_SOLVER_TYPE_COUNT] = {"baumgarte", "ngs", "soft_step"};
 
 const char *rb_solver_type_name(rb_solver_type type)
 {
@@ -74,6 +80,7 @@ static rb_status check_settings(const rb_solver_settings *s, const char *functio
     RB_TRY(rb_check_pointer(function, "settings", s));
     RB_TRY(rb_check_range(function, "velocity_iterations", s->velocity_iterations, 1, 1000));
     RB_TRY(rb_check_range(function, "position_iterations", s->position_iterations, 0, 1000));
+    RB_TRY(rb_check_range(function, "relax_iterations", s->relax_iterations, 0, 1000));
     RB_TRY(rb_check_range(function, "substeps", s->substeps, 1, 1000));
     if (!(s->type >= 0 && s->type < RB_SOLVER_TYPE_COUNT)) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: type is %d, expected an rb_solver_type below %d", function,
@@ -83,6 +90,11 @@ static rb_status check_settings(const rb_solver_settings *s, const char *functio
     RB_TRY(rb_check_range(function, "linear_slop", s->linear_slop, 0.0, 0.1));
     RB_TRY(rb_check_range(function, "max_linear_correction", s->max_linear_correction, DBL_MIN, DBL_MAX));
     RB_TRY(rb_check_range(function, "restitution_threshold", s->restitution_threshold, 0.0, DBL_MAX));
+    RB_TRY(rb_check_range(function, "contact_hertz", s->contact_hertz, DBL_MIN, DBL_MAX));
+    RB_TRY(rb_check_range(function, "contact_damping_ratio", s->contact_damping_ratio, 0.0, DBL_MAX));
+    RB_TRY(rb_check_range(function, "joint_hertz", s->joint_hertz, DBL_MIN, DBL_MAX));
+    RB_TRY(rb_check_range(function, "joint_damping_ratio", s->joint_damping_ratio, 0.0, DBL_MAX));
+    RB_TRY(rb_check_range(function, "max_push_speed", s->max_push_speed, DBL_MIN, DBL_MAX));
     return RB_OK;
 }
 

@@ -123,6 +123,19 @@ typedef struct rb_block_matrix {
     double k11, k12, k22, k13, k23, k33;
 } rb_block_matrix;
 
+/* How a joint's rigid row answers its position error C in the current
+ * pass, as the solver sets it (solver_*.c): the row's impulse is
+ *   λ = -mass_scale·m·(Cdot + bias_rate·C) - impulse_scale·λ_accumulated
+ * with m the row's effective mass. Rigid rows without position feedback
+ * (NGS, and the soft step's relax pass) have {0, 1, 0}; a Baumgarte bias
+ * {β/dt, 1, 0}; a soft step's spring the coefficients of
+ * rb_make_rigid_softness (joint_solver.h). */
+typedef struct rb_rigid_response {
+    double bias_rate;     /* 1/s */
+    double mass_scale;    /* 0 .. 1 */
+    double impulse_scale; /* 0 .. 1 */
+} rb_rigid_response;
+
 /* The parts of a joint's solver state shared by every type, refreshed at
  * the start of each substep. */
 
@@ -298,7 +311,8 @@ struct rb_world {
     int cable_free;
     int cable_count;
 
-    double last_substep; /* s, the substep length of the last step: impulses / it = forces */
+    double last_substep;              /* s, the substep length of the last step: impulses / it = forces */
+    rb_rigid_response joint_response; /* the current pass's, set by the solver */
 
     rb_profile profile;
     rb_statistics statistics;

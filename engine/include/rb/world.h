@@ -26,10 +26,17 @@ typedef enum rb_solver_type {
      * constraint at a time, for `position_iterations` passes (Catto,
      * Box2D 2.4). No energy added. */
     RB_SOLVER_NGS,
+    /* Soft step (Catto, "Solver2D", 2024; Box2D v3): rigid rows become
+     * stiff, heavily damped springs (contact_hertz, joint_hertz) solved
+     * once per substep with their bias, then the positions move, then a
+     * relax pass solves them again without bias so that the push-out
+     * leaves no velocity behind. Stable for large mass ratios; the error
+     * it leaves decays at the spring's rate. */
+    RB_SOLVER_SOFT_STEP,
     RB_SOLVER_TYPE_COUNT
 } rb_solver_type;
 
-/* "baumgarte", "ngs"; "unknown" for a value out of range. */
+/* "baumgarte", "ngs", "soft_step"; "unknown" for a value out of range. */
 const char *rb_solver_type_name(rb_solver_type type);
 /* The type whose name is `name`; RB_ERR_INVALID_ARGUMENT naming the
  * choices when there is none. */
@@ -37,16 +44,28 @@ rb_status rb_solver_type_from_name(const char *name, rb_solver_type *type);
 
 /* Solver settings, held by the world; see rb_world_set_solver_settings. */
 typedef struct rb_solver_settings {
-    int velocity_iterations;      /* 1 .. 1000, per substep, default 2 */
+    rb_solver_type type;          /* default RB_SOLVER_SOFT_STEP */
+    int velocity_iterations;      /* 1 .. 1000, per substep, default 1 */
     int position_iterations;      /* 0 .. 1000, per substep, default 1 (NGS only) */
-    int substeps;                 /* 1 .. 1000, default 6: the step dt is split into this many substeps */
+    int relax_iterations;         /* 0 .. 1000, per substep, default 1 (soft step only) */
+    int substeps;                 /* 1 .. 1000, default 4: the step dt is split into this many substeps */
     bool warm_starting;           /* default true: start from last step's impulses */
-    bool block_solver;            /* default true: solve two-point manifolds as one 2x2 LCP */
-    rb_solver_type type;          /* default RB_SOLVER_NGS */
+    bool block_solver;            /* default true: solve two-point manifolds as one 2x2 LCP (Baumgarte, NGS) */
     double baumgarte;             /* 0 .. 1, fraction of the error removed per (sub)step, default 0.2 */
     double linear_slop;           /* m, 0 .. 0.1: penetration allowed without correction, default 0.005 */
     double max_linear_correction; /* m, > 0: largest position correction per iteration, default 0.2 */
     double restitution_threshold; /* m/s, >= 0: slower impacts do not bounce, default 1 */
+    /* Soft step only. A contact is a spring of contact_hertz against a
+     * body that moves and twice that against one that cannot; it pushes
+     * overlapping bodies apart no faster than max_push_speed. Joints'
+     * rigid rows are springs of joint_hertz. Each frequency is capped at
+     * a quarter of the substep rate, where the implicit spring stays
+     * accurate (Catto, Solver2D). */
+    double contact_hertz;         /* Hz, > 0, default 30 */
+    double contact_damping_ratio; /* >= 0, default 10 (critically damped is 1) */
+    double joint_hertz;           /* Hz, > 0, default 60 */
+    double joint_damping_ratio;   /* >= 0, default 2 */
+    double max_push_speed;        /* m/s, > 0, default 3 */
 } rb_solver_settings;
 
 typedef struct rb_world_def {
@@ -71,7 +90,8 @@ typedef struct rb_profile {
     double warm_start;
     double solve_velocities;
     double integrate_positions;
-    double correct_positions;
+    double correct_positions; /* NGS position passes */
+    double relax;             /* soft step's relax passes */
     double restitution;
     double store_impulses;
     double islands;  /* islands: wake the ones touched, put the resting ones to sleep */
@@ -89,7 +109,8 @@ typedef struct rb_statistics {
     int contact_count; /* pairs with at least one manifold point */
     int manifold_point_count;
     int velocity_iterations; /* done in the last step, summed over substeps */
-    int position_iterations; /* done in the last step, summed over substeps */
+    int position_iterations; /* NGS passes done in the last step, summed over substeps */
+    int relax_iterations;    /* soft step relax passes done in the last step, summed over substeps */
     double max_penetration;  /* m, >= 0: deepest overlap left after the step */
     int joint_count;
     /* m, >= 0, after the step: the largest distance between the two

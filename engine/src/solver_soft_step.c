@@ -1,0 +1,120 @@
+/* Soft step (Catto, "Solver2D", 2024, and Box2D v3): every rigid row is
+ * solved as a stiff, heavily damped spring, integrated implicitly, so
+ * that its push-out is a bounded, damped motion instead of an impulse
+ * that depends on how far the iterations converged; substeps give the
+ * spring the small time step it needs, and a relax pass after the
+ * positions move removes the velocity the push left behind.
+ *
+ *   prepare the step       contact anchors, normal and masses, fixed for
+ *                          the step; each point's separation is measured
+ *                          anew from the poses whenever it is solved
+ *   for each substep of length h = dt / substeps:
+ *       substep callback       the user's
+ *       integrate velocities
+ *       prepare joints         and cables, at the poses now
+ *       warm start             the accumulated impulses again
+ *       solve                  velocity_iterations passes with the springs'
+ *                              bias: cables, joints, contacts
+ *       damp, integrate positions
+ *       relax                  relax_iterations passes without bias
+ *   apply restitution
+ *
+ * The springs are stiff (contact_hertz, joint_hertz) but not beyond a
+ * quarter of the substep rate: an implicit spring much stiffer than its
+ * step can resolve only damps. Contacts against a body that cannot move
+ * carry the whole load alone and get twice the frequency.
+ */
+#include "cable_solver.h"
+#include "contact_solver.h"
+#include "joint_solver.h"
+#include "solver.h"
+
+/* The springs follow the substep rate up to this fraction of it. */
+#define MAX_HERTZ_PER_SUBSTEP_RATE 0.25
+
+static rb_rigid_response spring_for(double hertz, double damping_ratio, double h)
+{
+    return rb_make_rigid_softness(fmin(hertz, MAX_HERTZ_PER_SUBSTEP_RATE / h), damping_ratio, h);
+}
+
+/* One pass over cables, joints and contacts, the joints swept in the
+ * direction `backwards` says. */
+static void solve_pass(rb_world *world, double h, const rb_contact_softness *contacts, bool backwards)
+{
+    rb_cables_solve(world, h);
+    rb_joints_solve_velocities(world, h, backwards);
+    rb_contact_solver_solve_soft(world, contacts);
+}
+
+rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
+{
+    const rb_solver_settings *settings = &world->settings;
+    rb_profile *profile = &world->profile;
+    int substeps = settings->substeps;
+    double h = dt / substeps;
+    rb_contact_softness springs = {
+        .between_moving = spring_for(settings->contact_hertz, settings->contact_damping_ratio, h),
+        .against_fixed = spring_for(2.0 * settings->contact_hertz, settings->contact_damping_ratio, h),
+        .max_push_speed = settings->max_push_speed,
+        .linear_slop = settings->linear_slop,
+        .inv_h = 1.0 / h,
+        .use_bias = true,
+    };
+    rb_contact_softness relax = springs;
+    relax.use_bias = false;
+    rb_rigid_response joint_spring = spring_for(settings->joint_hertz, settings->joint_damping_ratio, h);
+    rb_rigid_response joint_rigid = {.mass_scale = 1.0};
+
+    double t = rb_world_clock(world);
+    rb_contact_solver_prepare_substep(world, h, true, false);
+    profile->prepare += rb_world_clock(world) - t;
+
+    /* Successive passes sweep the joints in alternate directions. */
+    bool backwards = false;
+    for (int substep = 0; substep < substeps; ++substep) {
+        t = rb_world_clock(world);
+        rb_solver_call_substep_callback(world, substep, h);
+        profile->substep_callback += rb_world_clock(world) - t;
+        world->last_substep = h; /* after the callback, which reads the previous substep's forces */
+
+        t = rb_world_clock(world);
+        rb_solver_integrate_velocities(world, h);
+        profile->integrate_velocities += rb_world_clock(world) - t;
+
+        t = rb_world_clock(world);
+        rb_cables_prepare(world);
+        rb_joints_prepare(world, h);
+        rb_cables_warm_start(world);
+        rb_joints_warm_start(world);
+        rb_contact_solver_warm_start(world);
+        profile->warm_start += rb_world_clock(world) - t;
+
+        t = rb_world_clock(world);
+        world->joint_response = joint_spring;
+        for (int iteration = 0; iteration < settings->velocity_iterations; ++iteration) {
+            solve_pass(world, h, &springs, backwards);
+            backwards = !backwards;
+        }
+        profile->solve_velocities += rb_world_clock(world) - t;
+
+        t = rb_world_clock(world);
+        rb_solver_damp_and_integrate_positions(world, h);
+        profile->integrate_positions += rb_world_clock(world) - t;
+
+        t = rb_world_clock(world);
+        world->joint_response = joint_rigid;
+        for (int iteration = 0; iteration < settings->relax_iterations; ++iteration) {
+            solve_pass(world, h, &relax, backwards);
+            backwards = !backwards;
+        }
+        profile->relax += rb_world_clock(world) - t;
+    }
+
+    t = rb_world_clock(world);
+    rb_contact_solver_apply_restitution(world);
+    profile->restitution = rb_world_clock(world) - t;
+    return (rb_solver_counts){
+        .velocity_iterations = substeps * settings->velocity_iterations,
+        .relax_iterations = substeps * settings->relax_iterations,
+    };
+}
