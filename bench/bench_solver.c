@@ -22,7 +22,8 @@
  * iterations, 1 substep) rather than across the full cross product, for
  * each correction method:
  *   velocity iterations 1, 2, 4, 8, 16, 32 (position 3, 1 substep);
- *   position iterations 1, 2, 4, 8 (velocity 8, 1 substep; NGS only);
+ *   position iterations 1, 2, 4, 8 (velocity 8, 1 substep; NGS passes,
+ *       or the soft step's relax passes);
  *   substeps 2, 4, 8 at 8 velocity iterations each (position 3): more
  *       work per step;
  *   the diagonal substeps × velocity iterations = 8: 2 × 4, 4 × 2, 8 × 1
@@ -51,6 +52,7 @@
  */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 
+#include <assert.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -73,8 +75,8 @@ static const char usage_text[] =
     "the pendulum's energy drift.\n"
     "\n"
     "  --scene NAME    chain_hang, chain_swing, pendulum, joint_grid or all (default all)\n"
-    "  --method NAME   position correction: ngs, baumgarte or both (default: both for the\n"
-    "                  sweep, the engine's for --single)\n"
+    "  --method NAME   solver: soft_step, ngs, baumgarte or all (default: all for the sweep,\n"
+    "                  the engine's for --single)\n"
     "  --runs N        repetitions of each setting, 1 .. 1000 (default 3)\n"
     "  --csv FILE      results (default bench_solver.csv)\n"
     "  --quick         smoke test: 1 run, joint grid 10 warm-up + 10 timed steps\n"
@@ -112,7 +114,8 @@ static const char usage_text[] =
 #define SWEEP_SUBSTEPS 1
 /* Velocity iterations per step held constant along the diagonal. */
 #define SWEEP_DIAGONAL_BUDGET 8
-#define SWEEP_MAX_SETTINGS 32
+/* Room for every solver's axes: at most 6 + 4 + 4 + 3 + 1 settings each. */
+#define SWEEP_MAX_SETTINGS (18 * RB_SOLVER_TYPE_COUNT)
 
 /* ------------------------------------------------------------- options */
 
@@ -159,18 +162,21 @@ static bool parse_names(const char *scene, const char *method, bench_options *op
         return false;
     }
     if (method == NULL) {
-        /* The sweep compares both methods; one setting is the engine's. */
-        opts->methods[RB_SOLVER_NGS] = !opts->single;
-        opts->methods[RB_SOLVER_BAUMGARTE] = !opts->single;
+        /* The sweep compares every solver; one setting is the engine's. */
+        for (int t = 0; t < RB_SOLVER_TYPE_COUNT; ++t) {
+            opts->methods[t] = !opts->single;
+        }
         opts->methods[rb_default_solver_settings().type] = true;
         return true;
     }
-    bool both = strcmp(method, "both") == 0;
-    opts->methods[RB_SOLVER_NGS] = both || strcmp(method, "ngs") == 0;
-    opts->methods[RB_SOLVER_BAUMGARTE] = both || strcmp(method, "baumgarte") == 0;
-    if (!opts->methods[RB_SOLVER_NGS] && !opts->methods[RB_SOLVER_BAUMGARTE]) {
-        fprintf(stderr, "bench_solver: --method expects ngs, baumgarte or both, got \"%s\"\n", method);
+    bool every = strcmp(method, "all") == 0;
+    rb_solver_type type = RB_SOLVER_TYPE_COUNT;
+    if (!every && rb_solver_type_from_name(method, &type) != RB_OK) {
+        fprintf(stderr, "bench_solver: --method: %s (or all)\n", rb_last_error());
         return false;
+    }
+    for (int t = 0; t < RB_SOLVER_TYPE_COUNT; ++t) {
+        opts->methods[t] = every || t == (int)type;
     }
     return true;
 }
@@ -254,6 +260,7 @@ static void add_setting(bench_setting *list, int *count, bench_setting setting)
             return;
         }
     }
+    assert(*count < SWEEP_MAX_SETTINGS);
     list[(*count)++] = setting;
 }
 
@@ -265,8 +272,8 @@ static int build_settings(const bench_options *opts, bench_setting *list)
     static const int position_axis[] = {1, 2, 4, 8};
     static const int substep_axis[] = {1, 2, 4, 8};
     const rb_solver_settings defaults = rb_default_solver_settings();
-    /* NGS, Box2D 2.4's method and the engine's default, first. */
-    static const rb_solver_type method_order[] = {RB_SOLVER_NGS, RB_SOLVER_BAUMGARTE};
+    /* The engine's default first, then NGS, Box2D 2.4's method. */
+    static const rb_solver_type method_order[] = {RB_SOLVER_SOFT_STEP, RB_SOLVER_NGS, RB_SOLVER_BAUMGARTE};
     int count = 0;
     for (size_t m = 0; m < sizeof method_order / sizeof method_order[0]; ++m) {
         const rb_solver_type method = method_order[m];
@@ -274,12 +281,14 @@ static int build_settings(const bench_options *opts, bench_setting *list)
             continue;
         }
         /* Baumgarte corrects inside the velocity iterations: position
-         * iterations would do nothing, so its rows say 0. */
-        const bool ngs = method == RB_SOLVER_NGS;
+         * iterations would do nothing, so its rows say 0. A soft step's
+         * second kind of pass is its relax pass, in the same column. */
+        const bool ngs = method != RB_SOLVER_BAUMGARTE;
         if (opts->single) {
-            const int position = opts->position_iterations >= 0 ? opts->position_iterations
-                                 : ngs                          ? defaults.position_iterations
-                                                                : 0;
+            const int position = opts->position_iterations >= 0  ? opts->position_iterations
+                                 : method == RB_SOLVER_SOFT_STEP ? defaults.relax_iterations
+                                 : ngs                           ? defaults.position_iterations
+                                                                 : 0;
             add_setting(list, &count,
                         (bench_setting){
                             .method = method,
@@ -313,7 +322,10 @@ static int build_settings(const bench_options *opts, bench_setting *list)
             add_setting(list, &count, s);
         }
         add_setting(list, &count,
-                    (bench_setting){method, defaults.velocity_iterations, ngs ? defaults.position_iterations : 0,
+                    (bench_setting){method, defaults.velocity_iterations,
+                                    method == RB_SOLVER_SOFT_STEP ? defaults.relax_iterations
+                                    : ngs                         ? defaults.position_iterations
+                                                                  : 0,
                                     defaults.substeps});
     }
     return count;
@@ -392,6 +404,7 @@ static bool bench_world_create(bench_scene scene, const bench_setting *setting, 
     def.gravity = rb_v2(0.0, BENCH_GRAVITY);
     def.enable_sleep = false; /* as the peers run: every body simulated every step */
     def.solver.type = setting->method;
+    def.solver.relax_iterations = setting->position_iterations;
     def.solver.velocity_iterations = setting->velocity_iterations;
     def.solver.position_iterations = setting->position_iterations;
     def.solver.substeps = setting->substeps;

@@ -248,14 +248,53 @@ void rb_contact_solver_prepare_substep(rb_world *world, double h, bool first_sub
     }
 }
 
-/* Applies impulse P at anchors rA, rB: -P to A, +P to B. */
-static void apply_impulse(const rb_contact_constraint *c, rb_body_state *a, rb_body_state *b, rb_vec2 ra, rb_vec2 rb,
-                          rb_vec2 impulse)
+/* The velocities of a constraint's two bodies, read once before its
+ * points are solved and written back once after: the compiler can keep
+ * them in registers, where pointers into the state array (which might
+ * alias each other) would be reloaded after every store. */
+typedef struct body_velocities {
+    rb_vec2 linear_a;
+    double angular_a;
+    rb_vec2 linear_b;
+    double angular_b;
+} body_velocities;
+
+static inline body_velocities load_velocities(const rb_body_state *a, const rb_body_state *b)
 {
-    a->linear_velocity = rb_mul_sub(a->linear_velocity, c->inv_mass_a, impulse);
-    a->angular_velocity -= c->inv_inertia_a * rb_cross(ra, impulse);
-    b->linear_velocity = rb_mul_add(b->linear_velocity, c->inv_mass_b, impulse);
-    b->angular_velocity += c->inv_inertia_b * rb_cross(rb, impulse);
+    return (body_velocities){a->linear_velocity, a->angular_velocity, b->linear_velocity, b->angular_velocity};
+}
+
+static inline void store_velocities(const body_velocities *v, rb_body_state *a, rb_body_state *b)
+{
+    a->linear_velocity = v->linear_a;
+    a->angular_velocity = v->angular_a;
+    b->linear_velocity = v->linear_b;
+    b->angular_velocity = v->angular_b;
+}
+
+/* Relative velocity of the contact point on B with respect to A. */
+static inline rb_vec2 point_velocity(const body_velocities *v, const rb_constraint_point *p)
+{
+    rb_vec2 vb = rb_add(v->linear_b, rb_cross_sv(v->angular_b, p->anchor_b));
+    rb_vec2 va = rb_add(v->linear_a, rb_cross_sv(v->angular_a, p->anchor_a));
+    return rb_sub(vb, va);
+}
+
+/* Applies impulse P at anchors rA, rB: -P to A, +P to B. */
+static inline void apply_impulse_at(const rb_contact_constraint *c, rb_vec2 ra, rb_vec2 rb, body_velocities *v,
+                                    rb_vec2 impulse)
+{
+    v->linear_a = rb_mul_sub(v->linear_a, c->inv_mass_a, impulse);
+    v->angular_a -= c->inv_inertia_a * rb_cross(ra, impulse);
+    v->linear_b = rb_mul_add(v->linear_b, c->inv_mass_b, impulse);
+    v->angular_b += c->inv_inertia_b * rb_cross(rb, impulse);
+}
+
+/* Applies impulse P at the point's anchors of this substep. */
+static inline void apply_impulse(const rb_contact_constraint *c, const rb_constraint_point *p, body_velocities *v,
+                                 rb_vec2 impulse)
+{
+    apply_impulse_at(c, p->anchor_a, p->anchor_b, v, impulse);
 }
 
 void rb_contact_solver_warm_start(rb_world *world)
@@ -264,37 +303,39 @@ void rb_contact_solver_warm_start(rb_world *world)
         const rb_contact_constraint *c = &world->constraints[i];
         rb_body_state *a = &world->states[c->body_a];
         rb_body_state *b = &world->states[c->body_b];
+        body_velocities v = load_velocities(a, b);
         rb_vec2 tangent = tangent_of(c->normal);
         for (int j = 0; j < c->point_count; ++j) {
             const rb_constraint_point *p = &c->points[j];
             rb_vec2 impulse = rb_add(rb_scale(p->normal_impulse, c->normal), rb_scale(p->tangent_impulse, tangent));
-            apply_impulse(c, a, b, p->anchor_a, p->anchor_b, impulse);
+            apply_impulse(c, p, &v, impulse);
         }
+        store_velocities(&v, a, b);
     }
 }
 
-static void solve_friction(rb_contact_constraint *c, rb_body_state *a, rb_body_state *b)
+static inline void solve_friction(rb_contact_constraint *c, body_velocities *v)
 {
     rb_vec2 tangent = tangent_of(c->normal);
     for (int j = 0; j < c->point_count; ++j) {
         rb_constraint_point *p = &c->points[j];
-        double vt = rb_dot(tangent, relative_velocity(a, b, p->anchor_a, p->anchor_b));
+        double vt = rb_dot(tangent, point_velocity(v, p));
         double limit = c->friction * p->normal_impulse;
-        double accumulated = fmin(fmax(p->tangent_impulse - p->tangent_mass * vt, -limit), limit);
+        double accumulated = rb_clamp(p->tangent_impulse - p->tangent_mass * vt, -limit, limit);
         double delta = accumulated - p->tangent_impulse;
         p->tangent_impulse = accumulated;
-        apply_impulse(c, a, b, p->anchor_a, p->anchor_b, rb_scale(delta, tangent));
+        apply_impulse(c, p, v, rb_scale(delta, tangent));
     }
 }
 
-static void solve_normal_point(rb_contact_constraint *c, rb_constraint_point *p, rb_body_state *a, rb_body_state *b)
+static inline void solve_normal_point(rb_contact_constraint *c, rb_constraint_point *p, body_velocities *v)
 {
-    double vn = rb_dot(c->normal, relative_velocity(a, b, p->anchor_a, p->anchor_b));
-    double accumulated = fmax(p->normal_impulse - p->normal_mass * (vn - p->min_normal_velocity), 0.0);
+    double vn = rb_dot(c->normal, point_velocity(v, p));
+    double accumulated = rb_max(p->normal_impulse - p->normal_mass * (vn - p->min_normal_velocity), 0.0);
     double delta = accumulated - p->normal_impulse;
     p->normal_impulse = accumulated;
-    p->max_normal_impulse = fmax(p->max_normal_impulse, accumulated);
-    apply_impulse(c, a, b, p->anchor_a, p->anchor_b, rb_scale(delta, c->normal));
+    p->max_normal_impulse = rb_max(p->max_normal_impulse, accumulated);
+    apply_impulse(c, p, v, rb_scale(delta, c->normal));
 }
 
 /* Both normal impulses at once: find x >= 0 with w = K·x + b >= 0 and
@@ -304,14 +345,14 @@ static void solve_normal_point(rb_contact_constraint *c, rb_constraint_point *p,
  * Complementarity", 1988, ch. 1): both points pushing, only the first,
  * only the second, neither. If round-off defeats all four, the impulses
  * stay as they were. */
-static void solve_normal_block(rb_contact_constraint *c, rb_body_state *a, rb_body_state *b)
+static inline void solve_normal_block(rb_contact_constraint *c, body_velocities *v)
 {
     rb_constraint_point *p1 = &c->points[0];
     rb_constraint_point *p2 = &c->points[1];
     double x1_old = p1->normal_impulse;
     double x2_old = p2->normal_impulse;
-    double w1 = rb_dot(c->normal, relative_velocity(a, b, p1->anchor_a, p1->anchor_b)) - p1->min_normal_velocity;
-    double w2 = rb_dot(c->normal, relative_velocity(a, b, p2->anchor_a, p2->anchor_b)) - p2->min_normal_velocity;
+    double w1 = rb_dot(c->normal, point_velocity(v, p1)) - p1->min_normal_velocity;
+    double w2 = rb_dot(c->normal, point_velocity(v, p2)) - p2->min_normal_velocity;
     double b1 = w1 - (c->k11 * x1_old + c->k12 * x2_old);
     double b2 = w2 - (c->k12 * x1_old + c->k22 * x2_old);
 
@@ -340,10 +381,10 @@ static void solve_normal_block(rb_contact_constraint *c, rb_body_state *a, rb_bo
     }
     p1->normal_impulse = x1;
     p2->normal_impulse = x2;
-    p1->max_normal_impulse = fmax(p1->max_normal_impulse, x1);
-    p2->max_normal_impulse = fmax(p2->max_normal_impulse, x2);
-    apply_impulse(c, a, b, p1->anchor_a, p1->anchor_b, rb_scale(x1 - x1_old, c->normal));
-    apply_impulse(c, a, b, p2->anchor_a, p2->anchor_b, rb_scale(x2 - x2_old, c->normal));
+    p1->max_normal_impulse = rb_max(p1->max_normal_impulse, x1);
+    p2->max_normal_impulse = rb_max(p2->max_normal_impulse, x2);
+    apply_impulse(c, p1, v, rb_scale(x1 - x1_old, c->normal));
+    apply_impulse(c, p2, v, rb_scale(x2 - x2_old, c->normal));
 }
 
 void rb_contact_solver_solve_velocities(rb_world *world)
@@ -352,23 +393,25 @@ void rb_contact_solver_solve_velocities(rb_world *world)
         rb_contact_constraint *c = &world->constraints[i];
         rb_body_state *a = &world->states[c->body_a];
         rb_body_state *b = &world->states[c->body_b];
+        body_velocities v = load_velocities(a, b);
         /* Friction first: its bound uses the normal impulse, and the
          * normal constraint, solved last, matters more for stacking. */
-        solve_friction(c, a, b);
+        solve_friction(c, &v);
         if (c->use_block) {
-            solve_normal_block(c, a, b);
+            solve_normal_block(c, &v);
         } else {
             for (int j = 0; j < c->point_count; ++j) {
-                solve_normal_point(c, &c->points[j], a, b);
+                solve_normal_point(c, &c->points[j], &v);
             }
         }
+        store_velocities(&v, a, b);
     }
 }
 
 /* The point's separation at the poses now, along the step's normal:
  * each surface point carried by its body, less the circles' radii. */
-static double separation_now(const rb_contact_constraint *c, const rb_constraint_point *p, const rb_body_state *a,
-                             const rb_body_state *b)
+static inline double separation_now(const rb_contact_constraint *c, const rb_constraint_point *p,
+                                    const rb_body_state *a, const rb_body_state *b)
 {
     rb_vec2 qa = rb_add(a->center, rb_rotate(a->rotation, p->local_surface_a));
     rb_vec2 qb = rb_add(b->center, rb_rotate(b->rotation, p->local_surface_b));
@@ -377,48 +420,57 @@ static double separation_now(const rb_contact_constraint *c, const rb_constraint
 
 /* Soft contact (Catto, "Solver2D", 2024): a point whose gap s is open
  * may close it within the substep, vn >= -s/h, rigidly; an overlapping
- * one is a stiff damped spring pushing at the rate bias_rate·(s + slop),
+ * one is a stiff damped spring pushing at the rate bias_rate·s,
  * no faster than max_push_speed, its impulse
  *   λ = -mass_scale·m·(vn + bias) - impulse_scale·λ_accumulated,
  * against a fixed body at twice the frequency (it carries the whole
- * load). Without bias (relax), the overlap only stops approaching. */
-static void solve_soft_normal(rb_contact_constraint *c, const rb_contact_softness *softness, rb_body_state *a,
-                              rb_body_state *b)
+ * load). Without bias (relax), the overlap only stops approaching. The
+ * poses do not change within a pass, so the separations are measured
+ * before the velocities are loaded. */
+static inline void solve_soft_normal(rb_contact_constraint *c, const rb_contact_softness *softness,
+                                     const double separation[RB_MAX_MANIFOLD_POINTS], body_velocities *v)
 {
     bool fixed = (c->inv_mass_a == 0.0 && c->inv_inertia_a == 0.0) || (c->inv_mass_b == 0.0 && c->inv_inertia_b == 0.0);
     const rb_rigid_response *spring = fixed ? &softness->against_fixed : &softness->between_moving;
     for (int j = 0; j < c->point_count; ++j) {
         rb_constraint_point *p = &c->points[j];
-        double s = separation_now(c, p, a, b);
+        double s = separation[j];
         double bias = 0.0;
         double mass_scale = 1.0;
         double impulse_scale = 0.0;
         if (s > 0.0) {
             bias = s * softness->inv_h;
         } else if (softness->use_bias) {
-            bias = fmax(spring->bias_rate * fmin(s + softness->linear_slop, 0.0), -softness->max_push_speed);
+            bias = rb_max(spring->bias_rate * s, -softness->max_push_speed);
             mass_scale = spring->mass_scale;
             impulse_scale = spring->impulse_scale;
         }
-        double vn = rb_dot(c->normal, relative_velocity(a, b, p->anchor_a, p->anchor_b));
+        double vn = rb_dot(c->normal, point_velocity(v, p));
         double impulse = -p->normal_mass * mass_scale * (vn + bias) - impulse_scale * p->normal_impulse;
-        double accumulated = fmax(p->normal_impulse + impulse, 0.0);
+        double accumulated = rb_max(p->normal_impulse + impulse, 0.0);
         double delta = accumulated - p->normal_impulse;
         p->normal_impulse = accumulated;
-        p->max_normal_impulse = fmax(p->max_normal_impulse, accumulated);
-        apply_impulse(c, a, b, p->anchor_a, p->anchor_b, rb_scale(delta, c->normal));
+        p->max_normal_impulse = rb_max(p->max_normal_impulse, accumulated);
+        apply_impulse(c, p, v, rb_scale(delta, c->normal));
     }
 }
 
-void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *softness)
+void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *softness, bool backwards)
 {
-    for (int i = 0; i < world->constraint_count; ++i) {
-        rb_contact_constraint *c = &world->constraints[i];
+    int n = world->constraint_count;
+    for (int k = 0; k < n; ++k) {
+        rb_contact_constraint *c = &world->constraints[backwards ? n - 1 - k : k];
         rb_body_state *a = &world->states[c->body_a];
         rb_body_state *b = &world->states[c->body_b];
+        double separation[RB_MAX_MANIFOLD_POINTS];
+        for (int j = 0; j < c->point_count; ++j) {
+            separation[j] = separation_now(c, &c->points[j], a, b);
+        }
+        body_velocities v = load_velocities(a, b);
         /* The normal first, so friction's bound sees this pass's push. */
-        solve_soft_normal(c, softness, a, b);
-        solve_friction(c, a, b);
+        solve_soft_normal(c, softness, separation, &v);
+        solve_friction(c, &v);
+        store_velocities(&v, a, b);
     }
 }
 
@@ -501,8 +553,10 @@ void rb_contact_solver_apply_restitution(rb_world *world)
             double accumulated = fmax(p->normal_impulse - mass * (vn - target), 0.0);
             double delta = accumulated - p->normal_impulse;
             p->normal_impulse = accumulated;
-            p->max_normal_impulse = fmax(p->max_normal_impulse, accumulated);
-            apply_impulse(c, a, b, ra, rb, rb_scale(delta, normal));
+            p->max_normal_impulse = rb_max(p->max_normal_impulse, accumulated);
+            body_velocities v = load_velocities(a, b);
+            apply_impulse_at(c, ra, rb, &v, rb_scale(delta, normal));
+            store_velocities(&v, a, b);
         }
     }
 }

@@ -68,7 +68,7 @@ typedef struct rb_contact_softness {
  * rb_contact_solver_prepare_substep set them at the start of the step;
  * each point's separation is measured anew from the poses now, so a pass
  * after the positions moved sees the gap they left. */
-void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *softness);
+void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *softness, bool backwards);
 /* One non-linear Gauss-Seidel pass over the contacts; returns whether no
  * point was deeper than the tolerance before it. */
 bool rb_contact_solver_correct_positions(rb_world *world);

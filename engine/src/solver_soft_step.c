@@ -43,7 +43,7 @@ static void solve_pass(rb_world *world, double h, const rb_contact_softness *con
 {
     rb_cables_solve(world, h);
     rb_joints_solve_velocities(world, h, backwards);
-    rb_contact_solver_solve_soft(world, contacts);
+    rb_contact_solver_solve_soft(world, contacts, backwards);
 }
 
 rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)

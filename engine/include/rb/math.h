@@ -59,6 +59,13 @@ static inline rb_vec2 rb_lerp(rb_vec2 a, rb_vec2 b, double t)
 {
     return (rb_vec2){a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
 }
+/* The larger and the smaller of two numbers, for finite arguments (the
+ * solvers' inner loops): one instruction each, where fmax and fmin are
+ * library calls that also order NaNs. */
+static inline double rb_max(double a, double b) { return a > b ? a : b; }
+static inline double rb_min(double a, double b) { return a < b ? a : b; }
+/* x limited to [lower, upper], lower <= upper. */
+static inline double rb_clamp(double x, double lower, double upper) { return rb_min(rb_max(x, lower), upper); }
 static inline rb_vec2 rb_vmin(rb_vec2 a, rb_vec2 b) { return (rb_vec2){fmin(a.x, b.x), fmin(a.y, b.y)}; }
 static inline rb_vec2 rb_vmax(rb_vec2 a, rb_vec2 b) { return (rb_vec2){fmax(a.x, b.x), fmax(a.y, b.y)}; }
 
