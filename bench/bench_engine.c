@@ -1,22 +1,36 @@
-/* bench_engine: time sinew's engine on the peer benchmark scenes.
+/* bench_engine: time sinew's engine on the peer benchmark scenes, and
+ * on a scaling sweep.
  *
  * Protocol of shared/peers/README.md, so the figures compare with
  * box2d24_bench and chipmunk_bench run on the same machine: dt = 1/60 s,
  * `warmup` untimed steps, then `steps` steps each timed alone with
- * clock_gettime(CLOCK_MONOTONIC); the pyramid under gravity (0, -10),
- * friction 0.6, restitution 0, no sleeping. The whole run is repeated
- * `runs` times, each in a fresh world; the report gives the median over
- * runs of each run's median step time, and likewise of each run's 10th
- * and 90th percentiles (percentile indices as the peers: n/2, n/10,
- * 9n/10 of the sorted times).
+ * clock_gettime(CLOCK_MONOTONIC); gravity (0, -10), friction 0.6,
+ * restitution 0, no sleeping. The whole run is repeated `runs` times,
+ * each in a fresh world; the report gives the median over runs of each
+ * run's median step time, and likewise of each run's 10th and 90th
+ * percentiles (percentile indices as the peers: n/2, n/10, 9n/10 of the
+ * sorted times), and of each run's median time in the collide phases
+ * (pairs and narrow phase) and in the solver (everything from preparing
+ * the constraints to storing the impulses), from rb_world_profile().
  *
- * Scenes: pyramid20 and pyramid100 (the peers' pyramid, base 20 and 100)
- * and balls (the seed's 50 balls, seed 1, gravity (0, -9.81), drag
- * applied before each step outside the timing).
+ * Scenes (models/scenes): pyramid20 and pyramid100 (the peers' pyramid,
+ * base 20 and 100), many_pyramids (10 pyramids of base 20 side by side,
+ * 2,100 boxes), joint_grid (the peers' 100 x 100 net), chain_hang and
+ * chain_swing (the peers' 40-link chain with a 100:1 end box), balls (the
+ * seed's 50 balls, seed 1, gravity (0, -9.81), drag applied before each
+ * step outside the timing), and the sweep: pyramids of 105, 300, 1,035,
+ * 3,003 and 10,011 boxes, whose log-log slope of time per step against
+ * bodies between 1,000 and 10,000 is printed (1 for linear cost).
  *
- * Prints one `engine=sinew scene=... median_ms=... p10_ms=... p90_ms=...`
- * line per scene and writes a CSV (header row; written to a temporary name
- * and renamed). Exit status: 0 success, 1 failure, 2 bad command line.
+ * Accuracy over every step of a run (warm-up included): the deepest
+ * overlap and the largest joint gap left after a step
+ * (rb_world_statistics). What holds: a pyramid stands when no box moved
+ * more than 0.25 m sideways; the joint grid when every body is finite and
+ * no gap exceeded 0.5 m; a chain when no gap exceeded 0.05 m.
+ *
+ * Prints one `engine=sinew scene=... median_ms=...` line per scene and
+ * solver, and writes a CSV (header row; written to a temporary name and
+ * renamed). Exit status: 0 success, 1 failure, 2 bad command line.
  */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 
@@ -35,48 +49,120 @@
 
 enum { EXIT_USAGE = 2 };
 
-static const char usage_text[] = "usage: bench_engine [options]\n"
-                                 "\n"
-                                 "Times rb_world_step on the peer benchmark scenes (shared/peers/README.md).\n"
-                                 "\n"
-                                 "  --scene NAME    pyramid20, pyramid100, balls or all (default all)\n"
-                                 "  --runs N        repetitions of the whole run, 1 .. 1000 (default 5)\n"
-                                 "  --steps N       timed steps per run, 1 .. 1000000 (default 300)\n"
-                                 "  --warmup N      untimed steps before them, 0 .. 1000000 (default 60)\n"
-                                 "  --vel N         velocity iterations, 1 .. 1000 (default: engine's)\n"
-                                 "  --pos N         position iterations, 0 .. 1000 (default: engine's)\n"
-                                 "  --substeps N    substeps per step, 1 .. 1000 (default: engine's)\n"
-                                 "  --csv FILE      results (default bench_engine.csv)\n"
-                                 "  --quick         smoke test: 1 run, 10 warm-up and 20 timed steps\n"
-                                 "                  (explicit --runs, --warmup, --steps still win)\n"
-                                 "  --help          print this text\n";
+static const char usage_text[] =
+    "usage: bench_engine [options]\n"
+    "\n"
+    "Times rb_world_step on the peer benchmark scenes (shared/peers/README.md) and a scaling sweep.\n"
+    "\n"
+    "  --scene NAME    pyramid20, pyramid100, many_pyramids, joint_grid, chain_hang, chain_swing,\n"
+    "                  balls, sweep (pyramids of 105 .. 10,011 boxes), peers (the peers' five\n"
+    "                  scenes), all but the sweep (default), or everything\n"
+    "  --solver NAME   soft_step, ngs, baumgarte or all (default: the engine's)\n"
+    "  --runs N        repetitions of the whole run, 1 .. 1000 (default 5)\n"
+    "  --steps N       timed steps per run, 1 .. 1000000 (default 300)\n"
+    "  --warmup N      untimed steps before them, 0 .. 1000000 (default 60)\n"
+    "  --vel N         velocity iterations, 1 .. 1000 (default: engine's)\n"
+    "  --pos N         position iterations (NGS) or relax passes (soft step), 0 .. 1000\n"
+    "                  (default: engine's)\n"
+    "  --substeps N    substeps per step, 1 .. 1000 (default: engine's)\n"
+    "  --csv FILE      results (default bench_engine.csv)\n"
+    "  --quick         smoke test: 1 run, 10 warm-up and 20 timed steps\n"
+    "                  (explicit --runs, --warmup, --steps still win)\n"
+    "  --help          print this text\n";
 
-#define BENCH_DT (1.0 / 60.0)         /* s, the peers' step */
-#define BENCH_PYRAMID_GRAVITY (-10.0) /* m/s², the peers' */
-#define BENCH_BALLS_GRAVITY (-9.81)   /* m/s², the seed's */
+#define BENCH_DT (1.0 / 60.0)       /* s, the peers' step */
+#define BENCH_PEER_GRAVITY (-10.0)  /* m/s², the peers' */
+#define BENCH_BALLS_GRAVITY (-9.81) /* m/s², the seed's */
 #define BENCH_BALLS_COUNT 50
 #define BENCH_BALLS_SEED 1
 #define BENCH_MOVED_THRESHOLD 0.25 /* m, the peers' collapse indicator */
+#define BENCH_GRID_MAX_GAP 0.5     /* m: a wider gap is a torn net */
+#define BENCH_CHAIN_MAX_GAP 0.05   /* m, issue 5's bar for the swinging chain */
+#define BENCH_CHAIN_LINKS 40
+#define BENCH_CHAIN_HEAVY_DENSITY 20.0 /* kg/m², 100 x a link */
+#define BENCH_GRID_SIZE 100
+#define BENCH_MANY_PYRAMIDS 10
+#define BENCH_MANY_PYRAMIDS_BASE 20
+/* The sweep's slope is fitted between these body counts. */
+#define BENCH_SLOPE_FROM 1000
+#define BENCH_SLOPE_TO 10100
 
 /* ------------------------------------------------------------- options */
 
-typedef enum bench_scene { BENCH_PYRAMID20, BENCH_PYRAMID100, BENCH_BALLS, BENCH_SCENE_COUNT } bench_scene;
+typedef enum bench_kind { KIND_PYRAMID, KIND_MANY_PYRAMIDS, KIND_JOINT_GRID, KIND_CHAIN, KIND_BALLS } bench_kind;
 
-static const char *const bench_scene_names[BENCH_SCENE_COUNT] = {"pyramid20", "pyramid100", "balls"};
-static const int bench_scene_bases[BENCH_SCENE_COUNT] = {20, 100, 0};
+typedef struct bench_scene {
+    const char *name;
+    bench_kind kind;
+    int size;   /* pyramid base, grid side, chain layout (scene_chain_layout) */
+    bool peer;  /* one of the peers' scenes */
+    bool sweep; /* one of the scaling sweep's pyramids */
+} bench_scene;
+
+static const bench_scene bench_scenes[] = {
+    {"pyramid20", KIND_PYRAMID, 20, true, false},
+    {"pyramid100", KIND_PYRAMID, 100, true, false},
+    {"many_pyramids", KIND_MANY_PYRAMIDS, BENCH_MANY_PYRAMIDS_BASE, false, false},
+    {"joint_grid", KIND_JOINT_GRID, BENCH_GRID_SIZE, true, false},
+    {"chain_hang", KIND_CHAIN, SCENE_CHAIN_HANG, true, false},
+    {"chain_swing", KIND_CHAIN, SCENE_CHAIN_SWING, true, false},
+    {"balls", KIND_BALLS, BENCH_BALLS_COUNT, false, false},
+    {"sweep105", KIND_PYRAMID, 14, false, true},
+    {"sweep300", KIND_PYRAMID, 24, false, true},
+    {"sweep1035", KIND_PYRAMID, 45, false, true},
+    {"sweep3003", KIND_PYRAMID, 77, false, true},
+    {"sweep10011", KIND_PYRAMID, 141, false, true},
+};
+enum { BENCH_SCENE_COUNT = sizeof bench_scenes / sizeof bench_scenes[0] };
 
 typedef struct bench_options {
-    bool scenes[BENCH_SCENE_COUNT]; /* which to run */
-    int runs;                       /* 1 .. 1000 */
-    int steps;                      /* timed steps per run, 1 .. 1e6 */
-    int warmup;                     /* 0 .. 1e6 */
-    int velocity_iterations;        /* 1 .. 1000, or 0 for the engine default */
-    int position_iterations;        /* 0 .. 1000, or -1 for the engine default */
-    int substeps;                   /* 1 .. 1000, or 0 for the engine default */
+    bool scenes[BENCH_SCENE_COUNT];     /* which to run */
+    bool solvers[RB_SOLVER_TYPE_COUNT]; /* with which solvers */
+    int runs;                           /* 1 .. 1000 */
+    int steps;                          /* timed steps per run, 1 .. 1e6 */
+    int warmup;                         /* 0 .. 1e6 */
+    int velocity_iterations;            /* 1 .. 1000, or 0 for the engine default */
+    int position_iterations;            /* 0 .. 1000, or -1 for the engine default */
+    int substeps;                       /* 1 .. 1000, or 0 for the engine default */
     const char *csv_path;
 } bench_options;
 
 typedef enum parse_result { PARSE_OK, PARSE_HELP, PARSE_ERROR } parse_result;
+
+static bool select_scenes(const char *name, bench_options *opts)
+{
+    bool any = false;
+    for (int k = 0; k < BENCH_SCENE_COUNT; ++k) {
+        const bench_scene *scene = &bench_scenes[k];
+        bool everything = strcmp(name, "everything") == 0;
+        bool all = strcmp(name, "all") == 0 && !scene->sweep;
+        bool peers = strcmp(name, "peers") == 0 && scene->peer;
+        bool sweep = strcmp(name, "sweep") == 0 && scene->sweep;
+        opts->scenes[k] = everything || all || peers || sweep || strcmp(name, scene->name) == 0;
+        any = any || opts->scenes[k];
+    }
+    if (!any) {
+        fprintf(stderr,
+                "bench_engine: --scene expects pyramid20, pyramid100, many_pyramids, joint_grid, chain_hang, "
+                "chain_swing, balls, sweep, peers, all or everything, got \"%s\"\n",
+                name);
+    }
+    return any;
+}
+
+static bool select_solvers(const char *name, bench_options *opts)
+{
+    rb_solver_type type = rb_default_solver_settings().type;
+    bool every = name != NULL && strcmp(name, "all") == 0;
+    if (name != NULL && !every && rb_solver_type_from_name(name, &type) != RB_OK) {
+        fprintf(stderr, "bench_engine: --solver: %s (or all)\n", rb_last_error());
+        return false;
+    }
+    for (int t = 0; t < RB_SOLVER_TYPE_COUNT; ++t) {
+        opts->solvers[t] = every || t == (int)type;
+    }
+    return true;
+}
 
 static parse_result parse_options(int argc, char **argv, bench_options *opts)
 {
@@ -84,6 +170,7 @@ static parse_result parse_options(int argc, char **argv, bench_options *opts)
         .runs = -1, .steps = -1, .warmup = -1, .position_iterations = -1, .csv_path = "bench_engine.csv"};
     bool quick = false;
     const char *scene = "all";
+    const char *solver = NULL;
     for (int i = 1; i < argc; ++i) {
         const char *option = argv[i];
         if (strcmp(option, "--help") == 0 || strcmp(option, "-h") == 0) {
@@ -93,8 +180,8 @@ static parse_result parse_options(int argc, char **argv, bench_options *opts)
             quick = true;
             continue;
         }
-        static const char *const with_value[] = {"--scene", "--runs", "--steps",    "--warmup",
-                                                 "--vel",   "--pos",  "--substeps", "--csv"};
+        static const char *const with_value[] = {"--scene", "--solver", "--runs",     "--steps", "--warmup",
+                                                 "--vel",   "--pos",    "--substeps", "--csv"};
         const char *value = option_take_value(argc, argv, &i, "bench_engine", with_value,
                                               sizeof with_value / sizeof with_value[0], usage_text);
         if (value == NULL) {
@@ -104,6 +191,8 @@ static parse_result parse_options(int argc, char **argv, bench_options *opts)
         bool ok = true;
         if (strcmp(option, "--scene") == 0) {
             scene = value;
+        } else if (strcmp(option, "--solver") == 0) {
+            solver = value;
         } else if (strcmp(option, "--runs") == 0) {
             ok = option_parse_int(option, value, 1, 1000, &opts->runs, error, sizeof error);
         } else if (strcmp(option, "--steps") == 0) {
@@ -124,14 +213,7 @@ static parse_result parse_options(int argc, char **argv, bench_options *opts)
             return PARSE_ERROR;
         }
     }
-    bool all = strcmp(scene, "all") == 0;
-    bool any = all;
-    for (int k = 0; k < BENCH_SCENE_COUNT; ++k) {
-        opts->scenes[k] = all || strcmp(scene, bench_scene_names[k]) == 0;
-        any = any || opts->scenes[k];
-    }
-    if (!any) {
-        fprintf(stderr, "bench_engine: --scene expects pyramid20, pyramid100, balls or all, got \"%s\"\n", scene);
+    if (!select_scenes(scene, opts) || !select_solvers(solver, opts)) {
         return PARSE_ERROR;
     }
     if (opts->runs < 0) {
@@ -171,19 +253,26 @@ static double median(double *values, int n)
 
 /* ---------------------------------------------------------------- runs */
 
-/* Figures of one scene over all its runs. */
+/* Figures of one scene and solver over all its runs. */
 typedef struct bench_result {
-    bench_scene scene;
+    int scene;                 /* index in bench_scenes */
     int bodies;                /* dynamic bodies */
     int contacts;              /* at the end of the last run */
+    int joints;                /* likewise */
     rb_solver_settings solver; /* as used */
     double median_ms, p10_ms, p90_ms;
-    double top_x0, top_x, top_y0, top_y; /* m, pyramid's top box, start and end of the last run */
-    int moved_boxes;                     /* pyramid: boxes moved > 0.25 m sideways in the last run */
-    double max_shift;                    /* m, largest sideways shift of a box */
-    int escaped;                         /* balls outside the box at the end of the last run */
-    double allocations_per_step;         /* heap allocations per timed step, worst run */
-    bool deterministic;                  /* every run ended in the same state */
+    double collide_ms, solve_ms; /* medians over runs of each run's median */
+    size_t bytes;                /* the world's heap at the end of the last run */
+    double max_penetration;      /* m, worst after any step of any run */
+    double max_joint_gap;        /* m, likewise */
+    double top_x, top_y;         /* m, pyramids' last top box at the end of the last run */
+    int moved_boxes;             /* pyramids: boxes moved > 0.25 m sideways in the last run */
+    double max_shift;            /* m, largest sideways shift of a box */
+    bool finite;                 /* every body's position finite at the end of every run */
+    int escaped;                 /* balls outside the box at the end of the last run */
+    bool holds;                  /* what the scene must keep, kept (see the top of the file) */
+    double allocations_per_step; /* heap allocations per timed step, worst run */
+    bool deterministic;          /* every run ended in the same state */
 } bench_result;
 
 /* The state of one scene in one run. */
@@ -191,8 +280,11 @@ typedef struct bench_world {
     rb_world *world;
     scene_pyramid pyramid;
     scene_balls balls;
-    double *start_x;   /* m, pyramid boxes' start x */
-    rb_vec2 top_start; /* m, pyramid top box's start position */
+    scene_joint_grid grid;
+    scene_chain chain;
+    rb_body_id first_body; /* the scene's dynamic bodies are a run of ids from it */
+    int body_count;
+    double *start_x; /* m, the dynamic bodies' start x */
 } bench_world;
 
 static double now_ms(void)
@@ -208,17 +300,54 @@ static bool engine_failed(const char *what)
     return false;
 }
 
-static bool bench_world_create(bench_scene scene, const bench_options *opts, bench_world *bw)
+static rb_status build_scene(const bench_scene *scene, bench_world *bw)
+{
+    rb_status status = RB_OK;
+    switch (scene->kind) {
+    case KIND_PYRAMID:
+        status = scene_pyramid_create(bw->world, scene->size, &bw->pyramid);
+        bw->first_body = bw->pyramid.first_box;
+        bw->body_count = bw->pyramid.box_count;
+        break;
+    case KIND_MANY_PYRAMIDS:
+        status = scene_many_pyramids_create(bw->world, BENCH_MANY_PYRAMIDS, scene->size, &bw->pyramid);
+        bw->first_body = bw->pyramid.first_box;
+        bw->body_count = bw->pyramid.box_count;
+        break;
+    case KIND_JOINT_GRID:
+        status = scene_joint_grid_create(bw->world, scene->size, &bw->grid);
+        bw->first_body = bw->grid.first_body;
+        bw->body_count = scene->size * scene->size;
+        break;
+    case KIND_CHAIN:
+        status = scene_chain_create(bw->world, BENCH_CHAIN_LINKS, BENCH_CHAIN_HEAVY_DENSITY,
+                                    (scene_chain_layout)scene->size, &bw->chain);
+        bw->first_body = scene_body_at(bw->chain.pin, 1);
+        bw->body_count = BENCH_CHAIN_LINKS + 1;
+        break;
+    case KIND_BALLS:
+        status = scene_balls_create(bw->world, scene->size, BENCH_BALLS_SEED, &bw->balls);
+        bw->first_body = bw->balls.balls[0];
+        bw->body_count = bw->balls.count;
+        break;
+    }
+    return status;
+}
+
+static bool bench_world_create(const bench_scene *scene, rb_solver_type solver, const bench_options *opts,
+                               bench_world *bw)
 {
     *bw = (bench_world){.world = NULL};
     rb_world_def def = rb_default_world_def();
-    def.gravity = rb_v2(0.0, scene == BENCH_BALLS ? BENCH_BALLS_GRAVITY : BENCH_PYRAMID_GRAVITY);
+    def.gravity = rb_v2(0.0, scene->kind == KIND_BALLS ? BENCH_BALLS_GRAVITY : BENCH_PEER_GRAVITY);
     def.enable_sleep = false; /* as the peers run: every body simulated every step */
+    def.solver.type = solver;
     if (opts->velocity_iterations > 0) {
         def.solver.velocity_iterations = opts->velocity_iterations;
     }
     if (opts->position_iterations >= 0) {
         def.solver.position_iterations = opts->position_iterations;
+        def.solver.relax_iterations = opts->position_iterations;
     }
     if (opts->substeps > 0) {
         def.solver.substeps = opts->substeps;
@@ -226,24 +355,17 @@ static bool bench_world_create(bench_scene scene, const bench_options *opts, ben
     if (rb_world_create(&def, &bw->world) != RB_OK) {
         return engine_failed("rb_world_create");
     }
-    if (scene == BENCH_BALLS) {
-        if (scene_balls_create(bw->world, BENCH_BALLS_COUNT, BENCH_BALLS_SEED, &bw->balls) != RB_OK) {
-            return engine_failed("scene_balls_create");
-        }
-        return true;
+    if (build_scene(scene, bw) != RB_OK) {
+        return engine_failed("building the scene");
     }
-    if (scene_pyramid_create(bw->world, bench_scene_bases[scene], &bw->pyramid) != RB_OK) {
-        return engine_failed("scene_pyramid_create");
-    }
-    bw->start_x = malloc((size_t)bw->pyramid.box_count * sizeof *bw->start_x);
+    bw->start_x = malloc((size_t)bw->body_count * sizeof *bw->start_x);
     if (bw->start_x == NULL) {
         fputs("bench_engine: out of memory\n", stderr);
         return false;
     }
-    for (int k = 0; k < bw->pyramid.box_count; ++k) {
-        bw->start_x[k] = rb_body_position(bw->world, scene_body_at(bw->pyramid.first_box, k)).x;
+    for (int k = 0; k < bw->body_count; ++k) {
+        bw->start_x[k] = rb_body_position(bw->world, scene_body_at(bw->first_body, k)).x;
     }
-    bw->top_start = rb_body_position(bw->world, bw->pyramid.top);
     return true;
 }
 
@@ -254,68 +376,107 @@ static void bench_world_destroy(bench_world *bw)
     *bw = (bench_world){.world = NULL};
 }
 
-static bool bench_step(bench_scene scene, bench_world *bw, double *elapsed_ms)
+/* One step, its wall time and its profile's collide and solve times. */
+static bool bench_step(const bench_scene *scene, bench_world *bw, double *elapsed_ms, double *collide_ms,
+                       double *solve_ms)
 {
-    if (scene == BENCH_BALLS && scene_balls_apply_drag(bw->world, &bw->balls) != RB_OK) {
+    if (scene->kind == KIND_BALLS && scene_balls_apply_drag(bw->world, &bw->balls) != RB_OK) {
         return engine_failed("scene_balls_apply_drag");
     }
     double start = now_ms();
     rb_status status = rb_world_step(bw->world, BENCH_DT);
     *elapsed_ms = now_ms() - start;
+    rb_profile profile = rb_world_profile(bw->world);
+    *collide_ms = profile.pairs + profile.collide;
+    *solve_ms = profile.prepare + profile.substep_callback + profile.integrate_velocities + profile.warm_start +
+                profile.solve_velocities + profile.integrate_positions + profile.correct_positions + profile.relax +
+                profile.restitution + profile.store_impulses;
     return status == RB_OK || engine_failed("rb_world_step");
 }
 
 /* The end-of-run figures, kept from the last run. */
-static void measure_scene(bench_scene scene, const bench_world *bw, bench_result *result)
+static void measure_scene(const bench_scene *scene, const bench_world *bw, bench_result *result)
 {
     rb_world *world = bw->world;
-    result->contacts = rb_world_statistics(world).contact_count;
+    rb_statistics statistics = rb_world_statistics(world);
+    result->contacts = statistics.contact_count;
+    result->joints = statistics.joint_count;
     result->solver = rb_world_solver_settings(world);
-    if (scene == BENCH_BALLS) {
-        result->bodies = bw->balls.count;
-        result->escaped = 0;
-        for (int k = 0; k < bw->balls.count; ++k) {
-            rb_vec2 p = rb_body_position(world, bw->balls.balls[k]);
-            result->escaped += !(p.x >= 0.0 && p.x <= SCENE_BALLS_WIDTH && p.y >= 0.0 && p.y <= SCENE_BALLS_HEIGHT);
-        }
-        return;
-    }
-    const scene_pyramid *pyramid = &bw->pyramid;
-    result->bodies = pyramid->box_count;
-    result->top_x0 = bw->top_start.x;
-    result->top_y0 = bw->top_start.y;
-    rb_vec2 top = rb_body_position(world, pyramid->top);
-    result->top_x = top.x;
-    result->top_y = top.y;
+    result->bodies = bw->body_count;
+    result->bytes = rb_world_bytes_in_use(world);
     result->moved_boxes = 0;
     result->max_shift = 0.0;
-    for (int k = 0; k < pyramid->box_count; ++k) {
-        double shift = fabs(rb_body_position(world, scene_body_at(pyramid->first_box, k)).x - bw->start_x[k]);
-        result->moved_boxes += shift > BENCH_MOVED_THRESHOLD;
+    result->escaped = 0;
+    for (int k = 0; k < bw->body_count; ++k) {
+        rb_vec2 p = rb_body_position(world, scene_body_at(bw->first_body, k));
+        double shift = fabs(p.x - bw->start_x[k]);
+        result->finite = result->finite && rb_vec2_is_finite(p);
+        result->moved_boxes += !(shift <= BENCH_MOVED_THRESHOLD);
         result->max_shift = fmax(result->max_shift, shift);
+        if (scene->kind == KIND_BALLS) {
+            result->escaped += !(p.x >= 0.0 && p.x <= SCENE_BALLS_WIDTH && p.y >= 0.0 && p.y <= SCENE_BALLS_HEIGHT);
+        }
+    }
+    if (scene->kind == KIND_PYRAMID || scene->kind == KIND_MANY_PYRAMIDS) {
+        rb_vec2 top = rb_body_position(world, bw->pyramid.top);
+        result->top_x = top.x;
+        result->top_y = top.y;
+    }
+    switch (scene->kind) {
+    case KIND_PYRAMID:
+    case KIND_MANY_PYRAMIDS:
+        result->holds = result->finite && result->moved_boxes == 0;
+        break;
+    case KIND_JOINT_GRID:
+        result->holds = result->finite && result->max_joint_gap <= BENCH_GRID_MAX_GAP;
+        break;
+    case KIND_CHAIN:
+        result->holds = result->finite && result->max_joint_gap <= BENCH_CHAIN_MAX_GAP;
+        break;
+    case KIND_BALLS:
+        result->holds = result->finite && result->escaped == 0;
+        break;
     }
 }
 
-/* Runs one scene `runs` times. `times` has room for `steps` values,
- * `run_stats` for 3·runs. */
-static bool bench_scene_run(bench_scene scene, const bench_options *opts, double *times, double *run_stats,
-                            bench_result *result)
+/* The scratch of one scene's runs: `steps` step times, collide and solve
+ * times, and each run's medians and percentiles. */
+typedef struct bench_scratch {
+    double *times, *collide, *solve;
+    double *run_median, *run_p10, *run_p90, *run_collide, *run_solve;
+} bench_scratch;
+
+/* Steps the world once, keeping the worst overlap and joint gap. */
+static bool measured_step(const bench_scene *scene, bench_world *bw, bench_result *result, double *elapsed_ms,
+                          double *collide_ms, double *solve_ms)
 {
-    *result = (bench_result){.scene = scene, .deterministic = true};
-    double *run_medians = run_stats;
-    double *run_p10 = run_stats + opts->runs;
-    double *run_p90 = run_stats + 2 * opts->runs;
+    if (!bench_step(scene, bw, elapsed_ms, collide_ms, solve_ms)) {
+        return false;
+    }
+    rb_statistics statistics = rb_world_statistics(bw->world);
+    result->max_penetration = fmax(result->max_penetration, statistics.max_penetration);
+    result->max_joint_gap = fmax(result->max_joint_gap, statistics.max_joint_gap);
+    return true;
+}
+
+/* Runs one scene with one solver `runs` times. */
+static bool bench_scene_run(int scene_index, rb_solver_type solver, const bench_options *opts,
+                            const bench_scratch *scratch, bench_result *result)
+{
+    const bench_scene *scene = &bench_scenes[scene_index];
+    *result = (bench_result){.scene = scene_index, .deterministic = true, .finite = true};
     uint64_t first_hash = 0;
     for (int run = 0; run < opts->runs; ++run) {
         bench_world bw;
-        bool ok = bench_world_create(scene, opts, &bw);
-        double ignored;
+        bool ok = bench_world_create(scene, solver, opts, &bw);
+        double ignored[3];
         for (int step = 0; ok && step < opts->warmup; ++step) {
-            ok = bench_step(scene, &bw, &ignored);
+            ok = measured_step(scene, &bw, result, &ignored[0], &ignored[1], &ignored[2]);
         }
         uint64_t allocations_before = rb_allocation_count();
         for (int step = 0; ok && step < opts->steps; ++step) {
-            ok = bench_step(scene, &bw, &times[step]);
+            ok = measured_step(scene, &bw, result, &scratch->times[step], &scratch->collide[step],
+                               &scratch->solve[step]);
         }
         uint64_t allocations = rb_allocation_count() - allocations_before;
         if (!ok) {
@@ -331,14 +492,18 @@ static bool bench_scene_run(bench_scene scene, const bench_options *opts, double
         measure_scene(scene, &bw, result);
         bench_world_destroy(&bw);
 
-        qsort(times, (size_t)opts->steps, sizeof *times, compare_doubles);
-        run_medians[run] = sorted_percentile(times, opts->steps, 1, 2);
-        run_p10[run] = sorted_percentile(times, opts->steps, 1, 10);
-        run_p90[run] = sorted_percentile(times, opts->steps, 9, 10);
+        qsort(scratch->times, (size_t)opts->steps, sizeof *scratch->times, compare_doubles);
+        scratch->run_median[run] = sorted_percentile(scratch->times, opts->steps, 1, 2);
+        scratch->run_p10[run] = sorted_percentile(scratch->times, opts->steps, 1, 10);
+        scratch->run_p90[run] = sorted_percentile(scratch->times, opts->steps, 9, 10);
+        scratch->run_collide[run] = median(scratch->collide, opts->steps);
+        scratch->run_solve[run] = median(scratch->solve, opts->steps);
     }
-    result->median_ms = median(run_medians, opts->runs);
-    result->p10_ms = median(run_p10, opts->runs);
-    result->p90_ms = median(run_p90, opts->runs);
+    result->median_ms = median(scratch->run_median, opts->runs);
+    result->p10_ms = median(scratch->run_p10, opts->runs);
+    result->p90_ms = median(scratch->run_p90, opts->runs);
+    result->collide_ms = median(scratch->run_collide, opts->runs);
+    result->solve_ms = median(scratch->run_solve, opts->runs);
     return true;
 }
 
@@ -346,47 +511,107 @@ static bool bench_scene_run(bench_scene scene, const bench_options *opts, double
 
 static void print_result(const bench_options *opts, const bench_result *r)
 {
-    if (r->scene == BENCH_BALLS) {
-        printf("engine=sinew scene=balls count=%d seed=%d", r->bodies, BENCH_BALLS_SEED);
-    } else {
-        printf("engine=sinew scene=pyramid base=%d", bench_scene_bases[r->scene]);
+    const bench_scene *scene = &bench_scenes[r->scene];
+    const rb_solver_settings *s = &r->solver;
+    printf("engine=sinew scene=%s solver=%s bodies=%d contacts=%d joints=%d vel_iters=%d pos_iters=%d "
+           "relax_iters=%d substeps=%d warmup=%d timed_steps=%d runs=%d median_ms=%.4f p10_ms=%.4f p90_ms=%.4f "
+           "collide_ms=%.4f solve_ms=%.4f max_penetration=%.4g max_joint_gap=%.4g",
+           scene->name, rb_solver_type_name(s->type), r->bodies, r->contacts, r->joints, s->velocity_iterations,
+           s->position_iterations, s->relax_iterations, s->substeps, opts->warmup, opts->steps, opts->runs,
+           r->median_ms, r->p10_ms, r->p90_ms, r->collide_ms, r->solve_ms, r->max_penetration, r->max_joint_gap);
+    if (scene->kind == KIND_PYRAMID || scene->kind == KIND_MANY_PYRAMIDS) {
+        printf(" top_x=%.4f top_y=%.4f lateral_gt_0.25=%d max_abs_dx=%.3f", r->top_x, r->top_y, r->moved_boxes,
+               r->max_shift);
     }
-    printf(" bodies=%d vel_iters=%d pos_iters=%d substeps=%d warmup=%d timed_steps=%d runs=%d"
-           " median_ms=%.4f p10_ms=%.4f p90_ms=%.4f",
-           r->bodies, r->solver.velocity_iterations, r->solver.position_iterations, r->solver.substeps, opts->warmup,
-           opts->steps, opts->runs, r->median_ms, r->p10_ms, r->p90_ms);
-    if (r->scene == BENCH_BALLS) {
+    if (scene->kind == KIND_BALLS) {
         printf(" escaped=%d", r->escaped);
-    } else {
-        printf(" top_y0=%.4f top_y=%.4f top_x0=%.4f top_x=%.4f lateral_gt_0.25=%d max_abs_dx=%.3f", r->top_y0, r->top_y,
-               r->top_x0, r->top_x, r->moved_boxes, r->max_shift);
     }
-    printf(" contacts=%d allocations_per_step=%.3g deterministic=%s\n", r->contacts, r->allocations_per_step,
-           r->deterministic ? "yes" : "no");
+    printf(" holds=%s bytes=%zu allocations_per_step=%.3g deterministic=%s\n", r->holds ? "yes" : "no", r->bytes,
+           r->allocations_per_step, r->deterministic ? "yes" : "no");
 }
 
-/* The CSV rows of the scenes run; fields that do not apply to a scene are
- * left empty. A failed write shows in the stream's error flag, which
- * atomic_file_commit checks. */
+/* The log-log slope of time per step against bodies, least squares over
+ * the sweep's results between BENCH_SLOPE_FROM and BENCH_SLOPE_TO bodies
+ * with the given solver; NAN with fewer than two. */
+static double sweep_slope(const bench_result *results, int count, rb_solver_type solver)
+{
+    double sx = 0.0;
+    double sy = 0.0;
+    double sxx = 0.0;
+    double sxy = 0.0;
+    int n = 0;
+    for (int k = 0; k < count; ++k) {
+        const bench_result *r = &results[k];
+        if (!bench_scenes[r->scene].sweep || r->solver.type != solver || r->bodies < BENCH_SLOPE_FROM ||
+            r->bodies > BENCH_SLOPE_TO) {
+            continue;
+        }
+        double x = log((double)r->bodies);
+        double y = log(r->median_ms);
+        sx += x;
+        sy += y;
+        sxx += x * x;
+        sxy += x * y;
+        n += 1;
+    }
+    if (n < 2) {
+        return NAN;
+    }
+    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+/* The CSV rows; fields that do not apply to a scene are left empty. A
+ * failed write shows in the stream's error flag, which atomic_file_commit
+ * checks. */
 static void write_csv(FILE *file, const bench_options *opts, const bench_result *results, int count)
 {
-    fputs("scene,base,bodies,contacts,velocity_iterations,position_iterations,substeps,runs,median_ms,p10_ms,"
-          "p90_ms,top_x,top_y,moved_boxes,allocations_per_step\n",
+    fputs("scene,solver,velocity_iterations,position_iterations,relax_iterations,substeps,bodies,contacts,joints,"
+          "runs,median_ms,p10_ms,p90_ms,collide_ms,solve_ms,bytes,allocations_per_step,max_penetration_m,"
+          "max_joint_gap_m,moved_boxes,holds,deterministic\n",
           file);
     for (int k = 0; k < count; ++k) {
         const bench_result *r = &results[k];
+        const bench_scene *scene = &bench_scenes[r->scene];
         const rb_solver_settings *s = &r->solver;
-        if (r->scene == BENCH_BALLS) {
-            fprintf(file, "balls,,%d,%d,%d,%d,%d,%d,%.6g,%.6g,%.6g,,,,%.6g\n", r->bodies, r->contacts,
-                    s->velocity_iterations, s->position_iterations, s->substeps, opts->runs, r->median_ms, r->p10_ms,
-                    r->p90_ms, r->allocations_per_step);
-        } else {
-            fprintf(file, "pyramid,%d,%d,%d,%d,%d,%d,%d,%.6g,%.6g,%.6g,%.6f,%.6f,%d,%.6g\n",
-                    bench_scene_bases[r->scene], r->bodies, r->contacts, s->velocity_iterations, s->position_iterations,
-                    s->substeps, opts->runs, r->median_ms, r->p10_ms, r->p90_ms, r->top_x, r->top_y, r->moved_boxes,
-                    r->allocations_per_step);
+        fprintf(file, "%s,%s,%d,%d,%d,%d,%d,%d,%d,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%zu,%.6g,%.6g,%.6g,", scene->name,
+                rb_solver_type_name(s->type), s->velocity_iterations, s->position_iterations, s->relax_iterations,
+                s->substeps, r->bodies, r->contacts, r->joints, opts->runs, r->median_ms, r->p10_ms, r->p90_ms,
+                r->collide_ms, r->solve_ms, r->bytes, r->allocations_per_step, r->max_penetration, r->max_joint_gap);
+        if (scene->kind == KIND_PYRAMID || scene->kind == KIND_MANY_PYRAMIDS) {
+            fprintf(file, "%d", r->moved_boxes);
         }
+        fprintf(file, ",%s,%s\n", r->holds ? "yes" : "no", r->deterministic ? "yes" : "no");
     }
+}
+
+static void free_scratch(bench_scratch *scratch)
+{
+    free(scratch->times);
+    free(scratch->collide);
+    free(scratch->solve);
+    free(scratch->run_median);
+    *scratch = (bench_scratch){.times = NULL};
+}
+
+static bool allocate_scratch(const bench_options *opts, bench_scratch *scratch)
+{
+    size_t steps = (size_t)opts->steps;
+    size_t runs = (size_t)opts->runs;
+    *scratch = (bench_scratch){
+        .times = malloc(steps * sizeof(double)),
+        .collide = malloc(steps * sizeof(double)),
+        .solve = malloc(steps * sizeof(double)),
+        .run_median = malloc(5 * runs * sizeof(double)),
+    };
+    if (scratch->times == NULL || scratch->collide == NULL || scratch->solve == NULL || scratch->run_median == NULL) {
+        free_scratch(scratch);
+        return false;
+    }
+    scratch->run_p10 = scratch->run_median + runs;
+    scratch->run_p90 = scratch->run_median + 2 * runs;
+    scratch->run_collide = scratch->run_median + 3 * runs;
+    scratch->run_solve = scratch->run_median + 4 * runs;
+    return true;
 }
 
 int main(int argc, char **argv)
@@ -410,38 +635,43 @@ int main(int argc, char **argv)
         fprintf(stderr, "bench_engine: --csv: %s\n", error);
         return EXIT_FAILURE;
     }
-    double *times = malloc((size_t)opts.steps * sizeof *times);
-    double *run_stats = malloc(3 * (size_t)opts.runs * sizeof *run_stats);
-    if (times == NULL || run_stats == NULL) {
+    bench_scratch scratch;
+    if (!allocate_scratch(&opts, &scratch)) {
         fputs("bench_engine: out of memory\n", stderr);
-        free(times);
-        free(run_stats);
         atomic_file_abandon(&csv);
         return EXIT_FAILURE;
     }
-    bench_result results[BENCH_SCENE_COUNT];
+    bench_result results[BENCH_SCENE_COUNT * RB_SOLVER_TYPE_COUNT];
     int count = 0;
     bool ok = true;
     for (int k = 0; ok && k < BENCH_SCENE_COUNT; ++k) {
-        if (!opts.scenes[k]) {
-            continue;
-        }
-        ok = bench_scene_run((bench_scene)k, &opts, times, run_stats, &results[count]);
-        if (ok) {
-            print_result(&opts, &results[count]);
-            fflush(stdout);
-            if (!results[count].deterministic) {
-                fprintf(stderr, "bench_engine: warning: %s ended in different states across runs\n",
-                        bench_scene_names[k]);
+        for (int t = 0; ok && t < RB_SOLVER_TYPE_COUNT; ++t) {
+            if (!opts.scenes[k] || !opts.solvers[t]) {
+                continue;
             }
-            count += 1;
+            ok = bench_scene_run(k, (rb_solver_type)t, &opts, &scratch, &results[count]);
+            if (ok) {
+                print_result(&opts, &results[count]);
+                fflush(stdout);
+                if (!results[count].deterministic) {
+                    fprintf(stderr, "bench_engine: warning: %s ended in different states across runs\n",
+                            bench_scenes[k].name);
+                }
+                count += 1;
+            }
         }
     }
-    free(times);
-    free(run_stats);
+    free_scratch(&scratch);
     if (!ok) {
         atomic_file_abandon(&csv);
         return EXIT_FAILURE;
+    }
+    for (int t = 0; t < RB_SOLVER_TYPE_COUNT; ++t) {
+        double slope = sweep_slope(results, count, (rb_solver_type)t);
+        if (opts.solvers[t] && !isnan(slope)) {
+            printf("sweep solver=%s log_log_slope_%d_to_%d_bodies=%.3f\n", rb_solver_type_name((rb_solver_type)t),
+                   BENCH_SLOPE_FROM, BENCH_SLOPE_TO - 100, slope);
+        }
     }
     write_csv(csv.stream, &opts, results, count);
     if (!atomic_file_commit(&csv, error, sizeof error)) {

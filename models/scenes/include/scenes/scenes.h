@@ -51,6 +51,17 @@ typedef struct scene_pyramid {
 } scene_pyramid;
 rb_status scene_pyramid_create(rb_world *world, int base, scene_pyramid *out);
 
+/* Many pyramids (the scale benchmark beside the big one): `count`
+ * (1 .. 100) pyramids of `base` (1 .. 100) boxes as above, pyramid k
+ * centred at x = k·(base + 1) m, all on one static ground box of
+ * half-height 1 m whose top is y = 0 and which reaches one box width past
+ * either end. `out->top` is the last pyramid's top box; the boxes of all
+ * pyramids form one run of ids from `first_box`, pyramid by pyramid.
+ * A fresh world, as above. */
+#define SCENE_MANY_PYRAMIDS_MAX 100
+#define SCENE_MANY_PYRAMIDS_MAX_BASE 100
+rb_status scene_many_pyramids_create(rb_world *world, int count, int base, scene_pyramid *out);
+
 /* The seed's balls box (shared/spec/models.md, "balls"): a closed box
  * 2.44 m × 1.22 m of static walls (one body, four boxes 1 m thick so that
  * no ball can cross one in a step) with its lower-left inner corner at the
