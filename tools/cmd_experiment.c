@@ -28,10 +28,11 @@ static void print_usage(FILE *stream)
             "\n"
             "options:\n"
             "  --out DIR          directory of the files (default .)\n"
-            "  --pulse-width S    width of E1's and E4's activation pulses, > 0 .. %g s, rounded to whole\n"
-            "                     substeps (default: one frame, as the seed's space bar)\n"
+            "  --pulse-width S    width of E1's, E4's and P1's pulses, > 0 .. %g s (P1: .. %g s), rounded to\n"
+            "                     whole substeps (default: one frame for E1 and E4, as the seed's space bar;\n"
+            "                     2 ms for P1)\n"
             "  --help             print this text\n",
-            EXPERIMENT_MAX_PULSE_WIDTH);
+            EXPERIMENT_MAX_PULSE_WIDTH, EXPERIMENT_P1_MAX_PULSE_WIDTH);
 }
 
 static int usage_error(const char *message)
@@ -99,6 +100,15 @@ int cmd_experiment(int argc, char **argv)
     const experiment *chosen = name != NULL ? find_experiment(name) : NULL;
     if (chosen == NULL) {
         return list_experiments(name);
+    }
+    if (options.pulse_width > chosen->max_pulse_width) {
+        if (chosen->max_pulse_width > 0.0) {
+            snprintf(error, sizeof error, "--pulse-width %g: %s takes pulses of at most %g s", options.pulse_width,
+                     chosen->name, chosen->max_pulse_width);
+        } else {
+            snprintf(error, sizeof error, "--pulse-width: %s gives no pulses", chosen->name);
+        }
+        return usage_error(error);
     }
     struct stat info;
     if (stat(options.out_dir, &info) != 0) {

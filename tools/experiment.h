@@ -3,8 +3,8 @@
  * chart/chart.h) and a few lines of figures on stdout.
  *
  * An experiment is one entry of experiment_list (experiment_list.c): a
- * name, the stem of its files and a function. Adding one (P1, R1) is one
- * more function and one more entry.
+ * name, the stem of its files and a function. Adding one is one more
+ * function and one more entry.
  */
 #ifndef SINEW_EXPERIMENT_H
 #define SINEW_EXPERIMENT_H
@@ -16,18 +16,23 @@
 
 typedef struct experiment_options {
     const char *out_dir; /* an existing directory */
-    /* Width of an activation pulse, s: 0 for one frame of the model (the
-     * seed's space bar), else rounded to whole substeps, at least one. */
+    /* Width of an activation pulse, s, rounded to whole substeps (at
+     * least one); 0 when not given, for each experiment's own: one frame
+     * of the model for E1 and E4 (the seed's space bar), 2 ms for P1. */
     double pulse_width;
 } experiment_options;
 
-/* Longest pulse width accepted, s. */
+/* Longest pulse width accepted, s; P1 takes pulses up to its own
+ * maximum, since a longer stimulus gives no twitch. */
 #define EXPERIMENT_MAX_PULSE_WIDTH 1.0
+#define EXPERIMENT_P1_MAX_PULSE_WIDTH 0.1
 
 typedef struct experiment {
     const char *name;    /* on the command line: "e1" */
     const char *stem;    /* of the files written: "e1_twitch" */
     const char *summary; /* one line for the list */
+    /* The longest --pulse-width it takes, s; 0 when it gives no pulses. */
+    double max_pulse_width;
     /* Runs the experiment, writes its files and prints its figures;
      * returns the exit status, after one line on stderr on failure. */
     int (*run)(const struct experiment *self, const experiment_options *options);
@@ -43,12 +48,20 @@ int experiment_e3_isometric(const experiment *self, const experiment_options *op
 int experiment_e3_isotonic(const experiment *self, const experiment_options *options);
 int experiment_e4_summation(const experiment *self, const experiment_options *options);
 int experiment_c1_hill_curves(const experiment *self, const experiment_options *options);
+int experiment_p1_twitch_tetanus(const experiment *self, const experiment_options *options);
+int experiment_r1_recruitment(const experiment *self, const experiment_options *options);
 
 /* Writes the table as DIR/STEM.csv and the figure as DIR/STEM.png and
  * DIR/STEM.svg, and prints their paths; returns 0 or EXIT_FAILURE after
  * one line on stderr. */
 int experiment_write(const experiment *self, const experiment_options *options, const csv_table *table,
                      const chart_figure *figure);
+
+/* Writes a further table of the experiment as DIR/STEM_PART.csv and
+ * prints its path; returns 0 or EXIT_FAILURE after one line on stderr.
+ * An experiment writes its further tables before experiment_write. */
+int experiment_write_table(const experiment *self, const experiment_options *options, const char *part,
+                           const csv_table *table);
 
 /* A series of the table: column `y` against column `x` (indices), from
  * row `first` on. */

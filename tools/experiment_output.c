@@ -8,14 +8,22 @@
 #include "experiment.h"
 #include "io/atomic_file.h"
 
-/* DIR/STEM.EXTENSION; false when it does not fit. */
-static bool output_path(const experiment *self, const experiment_options *options, const char *extension, char *path,
-                        size_t path_size)
+/* DIR/STEM.EXTENSION, or DIR/STEM_PART.EXTENSION for a part other than
+ * ""; false when it does not fit. */
+static bool part_path(const experiment *self, const experiment_options *options, const char *part,
+                      const char *extension, char *path, size_t path_size)
 {
     size_t length = strlen(options->out_dir);
     const char *separator = length > 0 && options->out_dir[length - 1] == '/' ? "" : "/";
-    int written = snprintf(path, path_size, "%s%s%s.%s", options->out_dir, separator, self->stem, extension);
+    int written = snprintf(path, path_size, "%s%s%s%s%s.%s", options->out_dir, separator, self->stem,
+                           part[0] != '\0' ? "_" : "", part, extension);
     return written > 0 && (size_t)written < path_size;
+}
+
+static bool output_path(const experiment *self, const experiment_options *options, const char *extension, char *path,
+                        size_t path_size)
+{
+    return part_path(self, options, "", extension, path, path_size);
 }
 
 int experiment_write(const experiment *self, const experiment_options *options, const csv_table *table,
@@ -35,6 +43,23 @@ int experiment_write(const experiment *self, const experiment_options *options, 
     }
     printf("csv          %s (%ld rows, %d columns)\n", csv, table->row_count, table->column_count);
     printf("figure       %s, %s\n", png, svg);
+    return 0;
+}
+
+int experiment_write_table(const experiment *self, const experiment_options *options, const char *part,
+                           const csv_table *table)
+{
+    char csv[ATOMIC_FILE_PATH_MAX];
+    if (!part_path(self, options, part, "csv", csv, sizeof csv)) {
+        fprintf(stderr, "sinew: --out %s: the paths of the files are too long\n", options->out_dir);
+        return EXIT_FAILURE;
+    }
+    char error[CHART_ERROR_SIZE];
+    if (!csv_table_write(table, csv, error, sizeof error)) {
+        fprintf(stderr, "sinew: %s\n", error);
+        return EXIT_FAILURE;
+    }
+    printf("csv          %s (%ld rows, %d columns)\n", csv, table->row_count, table->column_count);
     return 0;
 }
 
