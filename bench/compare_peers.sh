@@ -192,7 +192,8 @@ for ((r = 1; r <= runs; ++r)); do
                 line=$("$build_dir/bench/bench_engine" --scene "$scene" --runs 1 --csv "$work/bench_engine.csv" |
                     grep '^engine=')
                 record sinew "$scene" "$(field "$line" median_ms)" "$(field "$line" lateral_gt_0.25)" NA NA
-                sinew_pyramid_settings=$(grep -o 'vel_iters=[0-9]* pos_iters=[0-9]* substeps=[0-9]*' <<<"$line")
+                sinew_pyramid_settings="$(field "$line" solver), $(field "$line" vel_iters) vel / $(field "$line" pos_iters) pos"
+                sinew_pyramid_settings+=" / $(field "$line" relax_iters) relax / $(field "$line" substeps) substeps"
                 record_peer box2d "$scene" "$("$peers_dir/box2d24_bench" pyramid --base "$base" --vel 8 --pos 3)"
                 record_peer chipmunk "$scene" \
                     "$("$peers_dir/chipmunk_bench" pyramid --base "$base" --iters 10 | grep '^engine=')"
