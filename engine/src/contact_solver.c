@@ -192,15 +192,21 @@ static double current_separation(const rb_contact_constraint *c, const rb_constr
  * offsets from each centre of mass. An impulse along that normal applied
  * at this one world point to both bodies conserves their momentum and
  * angular momentum. */
+static void anchors_at_midpoint(const rb_body_state *sa, const rb_body_state *sb, rb_vec2 pa, rb_vec2 pb, rb_vec2 *ra,
+                                rb_vec2 *rb)
+{
+    rb_vec2 midpoint = rb_lerp(pa, pb, 0.5);
+    *ra = rb_sub(midpoint, sa->center);
+    *rb = rb_sub(midpoint, sb->center);
+}
+
 static void current_anchors(const rb_contact_constraint *c, const rb_constraint_point *p, const rb_body_state *sa,
                             const rb_body_state *sb, rb_vec2 *normal, rb_vec2 *ra, rb_vec2 *rb)
 {
     rb_vec2 pa;
     rb_vec2 pb;
     current_geometry(c, p, sa, sb, normal, &pa, &pb);
-    rb_vec2 midpoint = rb_lerp(pa, pb, 0.5);
-    *ra = rb_sub(midpoint, sa->center);
-    *rb = rb_sub(midpoint, sb->center);
+    anchors_at_midpoint(sa, sb, pa, pb, ra, rb);
 }
 
 /* Lower bound of the normal velocity for a substep of length h:
@@ -222,8 +228,11 @@ void rb_contact_solver_prepare_substep(rb_world *world, double h, bool first_sub
             /* The bodies have moved since prepare (in earlier substeps):
              * act at the contact point and along the normal as they are
              * now, so each impulse conserves momentum. */
-            double s = current_separation(c, p, sa, sb, &c->normal);
-            current_anchors(c, p, sa, sb, &c->normal, &p->anchor_a, &p->anchor_b);
+            rb_vec2 pa;
+            rb_vec2 pb;
+            current_geometry(c, p, sa, sb, &c->normal, &pa, &pb);
+            double s = rb_dot(c->normal, rb_sub(pb, pa));
+            anchors_at_midpoint(sa, sb, pa, pb, &p->anchor_a, &p->anchor_b);
             p->normal_mass =
                 effective_mass(inv_mass_sum, c->inv_inertia_a, c->inv_inertia_b, p->anchor_a, p->anchor_b, c->normal);
             p->tangent_mass = effective_mass(inv_mass_sum, c->inv_inertia_a, c->inv_inertia_b, p->anchor_a, p->anchor_b,
@@ -499,16 +508,19 @@ bool rb_contact_solver_correct_positions(rb_world *world)
         for (int j = 0; j < c->point_count; ++j) {
             const rb_constraint_point *p = &c->points[j];
             rb_vec2 normal;
-            double s = current_separation(c, p, a, b, &normal);
-            deepest = fmin(deepest, s);
-            double error =
-                fmin(fmax(settings->baumgarte * (s + settings->linear_slop), -settings->max_linear_correction), 0.0);
+            rb_vec2 pa;
+            rb_vec2 pb;
+            current_geometry(c, p, a, b, &normal, &pa, &pb);
+            double s = rb_dot(normal, rb_sub(pb, pa));
+            deepest = rb_min(deepest, s);
+            double error = rb_min(
+                rb_max(settings->baumgarte * (s + settings->linear_slop), -settings->max_linear_correction), 0.0);
             if (error == 0.0) {
                 continue;
             }
             rb_vec2 ra;
             rb_vec2 rb;
-            current_anchors(c, p, a, b, &normal, &ra, &rb);
+            anchors_at_midpoint(a, b, pa, pb, &ra, &rb);
             double mass =
                 effective_mass(c->inv_mass_a + c->inv_mass_b, c->inv_inertia_a, c->inv_inertia_b, ra, rb, normal);
             rb_vec2 impulse = rb_scale(-error * mass, normal);

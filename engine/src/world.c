@@ -137,6 +137,8 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->contacts, &world->contact_capacity, sizeof *world->contacts);
     rb_free_array((void **)&world->spare_contacts, &world->spare_capacity, sizeof *world->spare_contacts);
     rb_free_array((void **)&world->pairs, &world->pair_capacity, sizeof *world->pairs);
+    rb_free_array((void **)&world->sorted_pairs, &world->sorted_pair_capacity, sizeof *world->sorted_pairs);
+    rb_free_array((void **)&world->pair_bucket, &world->pair_bucket_capacity, sizeof *world->pair_bucket);
     rb_free_array((void **)&world->sweep, &world->sweep_capacity, sizeof *world->sweep);
     rb_free_array((void **)&world->island_parent, &world->island_capacity, sizeof *world->island_parent);
     rb_free_array((void **)&world->island_size, &world->island_size_capacity, sizeof *world->island_size);
@@ -230,7 +232,10 @@ size_t rb_world_bytes_in_use(const rb_world *world)
            (size_t)world->shape_capacity * sizeof *world->shapes +
            (size_t)world->contact_capacity * sizeof *world->contacts +
            (size_t)world->spare_capacity * sizeof *world->spare_contacts +
-           (size_t)world->pair_capacity * sizeof *world->pairs + (size_t)world->sweep_capacity * sizeof *world->sweep +
+           (size_t)world->pair_capacity * sizeof *world->pairs +
+           (size_t)world->sorted_pair_capacity * sizeof *world->sorted_pairs +
+           (size_t)world->pair_bucket_capacity * sizeof *world->pair_bucket +
+           (size_t)world->sweep_capacity * sizeof *world->sweep +
            (size_t)world->constraint_capacity * sizeof *world->constraints +
            (size_t)world->joint_capacity * sizeof *world->joints +
            (size_t)world->cable_capacity * sizeof *world->cables + rb_contact_events_bytes(world);

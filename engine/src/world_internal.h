@@ -284,6 +284,10 @@ struct rb_world {
     int spare_capacity;
     rb_pair *pairs;
     int pair_count, pair_capacity;
+    rb_pair *sorted_pairs; /* the broad phase's counting sort writes here, then swaps */
+    int sorted_pair_capacity;
+    int *pair_bucket; /* the counting sort's start of each body's run of pairs */
+    int pair_bucket_capacity;
     struct rb_sweep_entry *sweep; /* broad phase: the shapes sorted by lower x, kept from step to step */
     int sweep_capacity;
     int *island_parent; /* union-find over bodies, found anew each step (sleep.c) */
