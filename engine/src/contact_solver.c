@@ -488,8 +488,7 @@ static void displace(rb_body_state *s, double inv_mass, double inv_inertia, rb_v
 {
     s->center = rb_mul_add(s->center, inv_mass, impulse);
     if (inv_inertia > 0.0) {
-        s->angle += inv_inertia * rb_cross(r, impulse);
-        s->rotation = rb_rot_from_angle(s->angle);
+        rb_body_state_turn(s, inv_inertia * rb_cross(r, impulse));
     }
 }
 

@@ -220,10 +220,8 @@ bool rb_distance_correct(rb_world *world, rb_joint *joint)
         rb_vec2 impulse = rb_scale(-mass * c, axis);
         a->center = rb_mul_sub(a->center, f->inv_mass_a, impulse);
         b->center = rb_mul_add(b->center, f->inv_mass_b, impulse);
-        a->angle -= f->inv_inertia_a * rb_cross(ra, impulse);
-        a->rotation = rb_rot_from_angle(a->angle);
-        b->angle += f->inv_inertia_b * rb_cross(rb, impulse);
-        b->rotation = rb_rot_from_angle(b->angle);
+        rb_body_state_turn(a, -(f->inv_inertia_a * rb_cross(ra, impulse)));
+        rb_body_state_turn(b, f->inv_inertia_b * rb_cross(rb, impulse));
     }
     return error <= world->settings.linear_slop;
 }

@@ -134,12 +134,10 @@ double rb_point_constraint_correct(rb_world *world, rb_joint *joint, const doubl
     a->center = rb_mul_sub(a->center, f->inv_mass_a, impulse);
     b->center = rb_mul_add(b->center, f->inv_mass_b, impulse);
     if (f->inv_inertia_a > 0.0) {
-        a->angle -= f->inv_inertia_a * (rb_cross(ra, impulse) + angular);
-        a->rotation = rb_rot_from_angle(a->angle);
+        rb_body_state_turn(a, -(f->inv_inertia_a * (rb_cross(ra, impulse) + angular)));
     }
     if (f->inv_inertia_b > 0.0) {
-        b->angle += f->inv_inertia_b * (rb_cross(rb, impulse) + angular);
-        b->rotation = rb_rot_from_angle(b->angle);
+        rb_body_state_turn(b, f->inv_inertia_b * (rb_cross(rb, impulse) + angular));
     }
     return error;
 }

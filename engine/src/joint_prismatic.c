@@ -546,12 +546,10 @@ bool rb_prismatic_correct(rb_world *world, rb_joint *joint)
     a->center = rb_mul_sub(a->center, f->inv_mass_a, linear);
     b->center = rb_mul_add(b->center, f->inv_mass_b, linear);
     if (f->inv_inertia_a > 0.0) {
-        a->angle -= f->inv_inertia_a * (impulse.x * s_a + impulse.y + along * a_a);
-        a->rotation = rb_rot_from_angle(a->angle);
+        rb_body_state_turn(a, -(f->inv_inertia_a * (impulse.x * s_a + impulse.y + along * a_a)));
     }
     if (f->inv_inertia_b > 0.0) {
-        b->angle += f->inv_inertia_b * (impulse.x * s_b + impulse.y + along * a_b);
-        b->rotation = rb_rot_from_angle(b->angle);
+        rb_body_state_turn(b, f->inv_inertia_b * (impulse.x * s_b + impulse.y + along * a_b));
     }
     return within;
 }

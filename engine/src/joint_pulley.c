@@ -275,8 +275,7 @@ static void shift(rb_body_state *state, double inv_mass, double inv_inertia, rb_
     rb_vec2 linear = rb_scale(impulse, direction);
     state->center = rb_mul_add(state->center, inv_mass, linear);
     if (inv_inertia > 0.0) {
-        state->angle += inv_inertia * rb_cross(r, linear);
-        state->rotation = rb_rot_from_angle(state->angle);
+        rb_body_state_turn(state, inv_inertia * rb_cross(r, linear));
     }
 }
 

@@ -155,10 +155,8 @@ bool rb_weld_correct(rb_world *world, rb_joint *joint)
         rb_body_state *a = rb_joint_state_a(world, joint);
         rb_body_state *b = rb_joint_state_b(world, joint);
         double impulse = -w->axial_mass * correction;
-        a->angle -= joint->frame.inv_inertia_a * impulse;
-        a->rotation = rb_rot_from_angle(a->angle);
-        b->angle += joint->frame.inv_inertia_b * impulse;
-        b->rotation = rb_rot_from_angle(b->angle);
+        rb_body_state_turn(a, -(joint->frame.inv_inertia_a * impulse));
+        rb_body_state_turn(b, joint->frame.inv_inertia_b * impulse);
     }
     return gap <= world->settings.linear_slop && fabs(angle_error) <= RB_ANGULAR_SLOP;
 }

@@ -54,8 +54,7 @@ void rb_solver_damp_and_integrate_positions(rb_world *world, double h)
         }
         state->center = rb_mul_add(state->center, h, state->linear_velocity);
         if (state->angular_velocity != 0.0) {
-            state->angle += h * state->angular_velocity;
-            state->rotation = rb_rot_from_angle(state->angle);
+            rb_body_state_turn(state, h * state->angular_velocity);
         }
     }
 }

@@ -345,13 +345,18 @@ static double mechanical_energy(const rb_world *world)
     return energy;
 }
 
-/* Clears the forces applied for this step and refreshes the counters. */
+/* Clears the forces applied for this step, recomputes each moving body's
+ * rotation from its angle (the solvers composed small turns,
+ * rb_body_state_turn) and refreshes the counters. */
 static void finalize_step(rb_world *world)
 {
     for (int i = 0; i < world->body_slots; ++i) {
         rb_body *body = &world->bodies[i];
         body->force = rb_v2(0.0, 0.0);
         body->torque = 0.0;
+        if (body->in_use && body->awake && body->type != RB_BODY_STATIC) {
+            world->states[i].rotation = rb_rot_from_angle(world->states[i].angle);
+        }
     }
     rb_statistics *stats = &world->statistics;
     stats->body_count = world->body_count;
