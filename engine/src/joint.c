@@ -342,35 +342,6 @@ rb_body_state *rb_joint_state_a(rb_world *world, const rb_joint *joint)
 
 rb_body_state *rb_joint_state_b(rb_world *world, const rb_joint *joint) { return &world->states[joint->body_b]; }
 
-void rb_joint_apply_linear(const rb_joint *joint, rb_body_state *a, rb_body_state *b, rb_vec2 impulse)
-{
-    const rb_joint_frame *f = &joint->frame;
-    if (a != NULL) {
-        a->linear_velocity = rb_mul_sub(a->linear_velocity, f->inv_mass_a, impulse);
-        a->angular_velocity -= f->inv_inertia_a * rb_cross(f->ra, impulse);
-    }
-    b->linear_velocity = rb_mul_add(b->linear_velocity, f->inv_mass_b, impulse);
-    b->angular_velocity += f->inv_inertia_b * rb_cross(f->rb, impulse);
-}
-
-void rb_joint_apply_angular(const rb_joint *joint, rb_body_state *a, rb_body_state *b, double impulse)
-{
-    if (a != NULL) {
-        a->angular_velocity -= joint->frame.inv_inertia_a * impulse;
-    }
-    b->angular_velocity += joint->frame.inv_inertia_b * impulse;
-}
-
-rb_vec2 rb_joint_relative_velocity(const rb_joint *joint, const rb_body_state *a, const rb_body_state *b)
-{
-    rb_vec2 vb = rb_add(b->linear_velocity, rb_cross_sv(b->angular_velocity, joint->frame.rb));
-    if (a == NULL) {
-        return vb;
-    }
-    rb_vec2 va = rb_add(a->linear_velocity, rb_cross_sv(a->angular_velocity, joint->frame.ra));
-    return rb_sub(vb, va);
-}
-
 /* ---- the phases -------------------------------------------------------------- */
 
 /* A joint is solved when one of its bodies is dynamic and awake. */
@@ -383,6 +354,31 @@ static bool is_active(const rb_world *world, const rb_joint *joint)
     }
     const rb_body *a = &world->bodies[joint->body_a];
     return b_moves || (a->type == RB_BODY_DYNAMIC && a->awake);
+}
+
+rb_status rb_joints_collect_active(rb_world *world)
+{
+    if (rb_grow_array((void **)&world->active_joints, &world->active_joint_capacity, world->joint_count,
+                      sizeof *world->active_joints) != 0) {
+        world->active_joint_count = 0;
+        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for the joint list");
+    }
+    int count = 0;
+    for (int i = 0; i < world->joint_slots; ++i) {
+        if (world->joints[i].in_use && is_active(world, &world->joints[i])) {
+            world->active_joints[count++] = i;
+        }
+    }
+    world->active_joint_count = count;
+    return RB_OK;
+}
+
+/* The k-th joint of this step's active list, counted from the end when
+ * sweeping backwards. */
+static rb_joint *active_joint(rb_world *world, int k, bool backwards)
+{
+    int n = world->active_joint_count;
+    return &world->joints[world->active_joints[backwards ? n - 1 - k : k]];
 }
 
 static void prepare_frame(rb_world *world, rb_joint *joint)
@@ -413,11 +409,8 @@ static void prepare_frame(rb_world *world, rb_joint *joint)
 
 void rb_joints_prepare(rb_world *world, double h)
 {
-    for (int i = 0; i < world->joint_slots; ++i) {
-        rb_joint *joint = &world->joints[i];
-        if (!joint->in_use || !is_active(world, joint)) {
-            continue;
-        }
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        rb_joint *joint = active_joint(world, k, false);
         prepare_frame(world, joint);
         switch (joint->type) {
         case RB_JOINT_REVOLUTE:
@@ -443,11 +436,8 @@ void rb_joints_prepare(rb_world *world, double h)
 
 void rb_joints_warm_start(rb_world *world)
 {
-    for (int i = 0; i < world->joint_slots; ++i) {
-        rb_joint *joint = &world->joints[i];
-        if (!joint->in_use || !is_active(world, joint)) {
-            continue;
-        }
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        rb_joint *joint = active_joint(world, k, false);
         switch (joint->type) {
         case RB_JOINT_REVOLUTE:
             rb_revolute_warm_start(world, joint);
@@ -473,11 +463,8 @@ void rb_joints_warm_start(rb_world *world)
 
 void rb_joints_solve_velocities(rb_world *world, double h, bool backwards)
 {
-    for (int k = 0; k < world->joint_slots; ++k) {
-        rb_joint *joint = &world->joints[backwards ? world->joint_slots - 1 - k : k];
-        if (!joint->in_use || !is_active(world, joint)) {
-            continue;
-        }
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        rb_joint *joint = active_joint(world, k, backwards);
         switch (joint->type) {
         case RB_JOINT_REVOLUTE:
             rb_revolute_solve(world, joint, h);
@@ -504,11 +491,8 @@ void rb_joints_solve_velocities(rb_world *world, double h, bool backwards)
 bool rb_joints_correct_positions(rb_world *world, bool backwards)
 {
     bool all_within = true;
-    for (int k = 0; k < world->joint_slots; ++k) {
-        rb_joint *joint = &world->joints[backwards ? world->joint_slots - 1 - k : k];
-        if (!joint->in_use || !is_active(world, joint)) {
-            continue;
-        }
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        rb_joint *joint = active_joint(world, k, backwards);
         bool within = true;
         switch (joint->type) {
         case RB_JOINT_REVOLUTE:

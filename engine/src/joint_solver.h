@@ -21,6 +21,11 @@
 
 /* ---- the phases, over every joint --------------------------------------- */
 
+/* Lists the joints the step solves (in use, with a dynamic awake body), in
+ * creation order; the phases below visit only these. Bodies neither fall
+ * asleep nor wake within a step, so the list holds for the whole step. */
+rb_status rb_joints_collect_active(rb_world *world);
+
 /* Refreshes each joint's frame (masses, anchors at the current poses) and
  * its type's per-substep data for a substep of length h. */
 void rb_joints_prepare(rb_world *world, double h);
@@ -98,12 +103,38 @@ static inline double rb_one_sided_row_total(const rb_world *world, double mass, 
 
 rb_body_state *rb_joint_state_a(rb_world *world, const rb_joint *joint); /* NULL for a mouse joint */
 rb_body_state *rb_joint_state_b(rb_world *world, const rb_joint *joint);
-/* Applies P at the anchors: -P to A, +P to B. */
-void rb_joint_apply_linear(const rb_joint *joint, rb_body_state *a, rb_body_state *b, rb_vec2 impulse);
+/* Applies P at the anchors: -P to A, +P to B. Inline, with the next two:
+ * every joint row calls them in every pass. */
+static inline void rb_joint_apply_linear(const rb_joint *joint, rb_body_state *a, rb_body_state *b, rb_vec2 impulse)
+{
+    const rb_joint_frame *f = &joint->frame;
+    if (a != NULL) {
+        a->linear_velocity = rb_mul_sub(a->linear_velocity, f->inv_mass_a, impulse);
+        a->angular_velocity -= f->inv_inertia_a * rb_cross(f->ra, impulse);
+    }
+    b->linear_velocity = rb_mul_add(b->linear_velocity, f->inv_mass_b, impulse);
+    b->angular_velocity += f->inv_inertia_b * rb_cross(f->rb, impulse);
+}
+
 /* Applies L about the centres: -L to A, +L to B. */
-void rb_joint_apply_angular(const rb_joint *joint, rb_body_state *a, rb_body_state *b, double impulse);
+static inline void rb_joint_apply_angular(const rb_joint *joint, rb_body_state *a, rb_body_state *b, double impulse)
+{
+    if (a != NULL) {
+        a->angular_velocity -= joint->frame.inv_inertia_a * impulse;
+    }
+    b->angular_velocity += joint->frame.inv_inertia_b * impulse;
+}
+
 /* Velocity of anchor B relative to anchor A. */
-rb_vec2 rb_joint_relative_velocity(const rb_joint *joint, const rb_body_state *a, const rb_body_state *b);
+static inline rb_vec2 rb_joint_relative_velocity(const rb_joint *joint, const rb_body_state *a, const rb_body_state *b)
+{
+    rb_vec2 vb = rb_add(b->linear_velocity, rb_cross_sv(b->angular_velocity, joint->frame.rb));
+    if (a == NULL) {
+        return vb;
+    }
+    rb_vec2 va = rb_add(a->linear_velocity, rb_cross_sv(a->angular_velocity, joint->frame.ra));
+    return rb_sub(vb, va);
+}
 /* World anchor points at the poses now. */
 rb_vec2 rb_joint_anchor_a(const rb_world *world, const rb_joint *joint);
 rb_vec2 rb_joint_anchor_b(const rb_world *world, const rb_joint *joint);

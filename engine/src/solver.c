@@ -109,6 +109,7 @@ rb_status rb_solver_step(rb_world *world, double dt)
     if (rb_contact_solver_prepare(world) < 0) {
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for contact constraints");
     }
+    RB_TRY(rb_joints_collect_active(world));
     profile->prepare = rb_world_clock(world) - t;
 
     if (!world->settings.warm_starting) {

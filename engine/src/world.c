@@ -139,6 +139,7 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->pairs, &world->pair_capacity, sizeof *world->pairs);
     rb_free_array((void **)&world->sorted_pairs, &world->sorted_pair_capacity, sizeof *world->sorted_pairs);
     rb_free_array((void **)&world->pair_bucket, &world->pair_bucket_capacity, sizeof *world->pair_bucket);
+    rb_free_array((void **)&world->active_joints, &world->active_joint_capacity, sizeof *world->active_joints);
     rb_free_array((void **)&world->sweep, &world->sweep_capacity, sizeof *world->sweep);
     rb_free_array((void **)&world->island_parent, &world->island_capacity, sizeof *world->island_parent);
     rb_free_array((void **)&world->island_size, &world->island_size_capacity, sizeof *world->island_size);

@@ -327,6 +327,8 @@ struct rb_world {
 
     rb_joint *joints;
     int joint_capacity;
+    int *active_joints; /* this step's solved joints (rb_joints_collect_active) */
+    int active_joint_count, active_joint_capacity;
     int joint_slots;
     int joint_free;
     int joint_count;
