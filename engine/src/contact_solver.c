@@ -27,8 +27,8 @@
 
 static rb_vec2 tangent_of(rb_vec2 normal) { return rb_right_perp(normal); }
 
-static double effective_mass(double inv_mass_sum, double inv_ia, double inv_ib, rb_vec2 ra, rb_vec2 rb,
-                             rb_vec2 direction)
+static inline double effective_mass(double inv_mass_sum, double inv_ia, double inv_ib, rb_vec2 ra, rb_vec2 rb,
+                                    rb_vec2 direction)
 {
     double rna = rb_cross(ra, direction);
     double rnb = rb_cross(rb, direction);
@@ -157,8 +157,9 @@ int rb_contact_solver_prepare(rb_world *world)
  * or the point of a circle facing the other body). Exact at prepare time,
  * first-order accurate within the step (Catto, Box2D 2.x position
  * solver). */
-static void current_geometry(const rb_contact_constraint *c, const rb_constraint_point *p, const rb_body_state *sa,
-                             const rb_body_state *sb, rb_vec2 *normal, rb_vec2 *pa, rb_vec2 *pb)
+static inline void current_geometry(const rb_contact_constraint *c, const rb_constraint_point *p,
+                                    const rb_body_state *sa, const rb_body_state *sb, rb_vec2 *normal, rb_vec2 *pa,
+                                    rb_vec2 *pb)
 {
     rb_vec2 qa = rb_add(sa->center, rb_rotate(sa->rotation, p->local_surface_a));
     rb_vec2 qb = rb_add(sb->center, rb_rotate(sb->rotation, p->local_surface_b));
@@ -192,8 +193,8 @@ static double current_separation(const rb_contact_constraint *c, const rb_constr
  * offsets from each centre of mass. An impulse along that normal applied
  * at this one world point to both bodies conserves their momentum and
  * angular momentum. */
-static void anchors_at_midpoint(const rb_body_state *sa, const rb_body_state *sb, rb_vec2 pa, rb_vec2 pb, rb_vec2 *ra,
-                                rb_vec2 *rb)
+static inline void anchors_at_midpoint(const rb_body_state *sa, const rb_body_state *sb, rb_vec2 pa, rb_vec2 pb,
+                                       rb_vec2 *ra, rb_vec2 *rb)
 {
     rb_vec2 midpoint = rb_lerp(pa, pb, 0.5);
     *ra = rb_sub(midpoint, sa->center);
@@ -244,8 +245,8 @@ void rb_contact_solver_prepare_substep(rb_world *world, double h, bool first_sub
             if (s > 0.0) {
                 p->min_normal_velocity = -s * inv_h;
             } else if (baumgarte_bias) {
-                double push =
-                    fmin(settings->baumgarte * fmax(-s - settings->linear_slop, 0.0), settings->max_linear_correction);
+                double push = rb_min(settings->baumgarte * rb_max(-s - settings->linear_slop, 0.0),
+                                     settings->max_linear_correction);
                 p->min_normal_velocity = push * inv_h;
             } else {
                 p->min_normal_velocity = 0.0;
