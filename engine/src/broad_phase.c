@@ -15,8 +15,8 @@ static int compare_sweep_entries(const void *a, const void *b)
 {
     const struct rb_sweep_entry *p = a;
     const struct rb_sweep_entry *q = b;
-    if (p->lower_x != q->lower_x) {
-        return p->lower_x < q->lower_x ? -1 : 1;
+    if (p->box.lower.x != q->box.lower.x) {
+        return p->box.lower.x < q->box.lower.x ? -1 : 1;
     }
     return (p->shape > q->shape) - (p->shape < q->shape);
 }
@@ -183,19 +183,19 @@ rb_status rb_broad_phase_update_pairs(rb_world *world, double dt)
     for (int k = 0; k < count; ++k) {
         rb_shape *shape = &world->shapes[world->sweep[k].shape];
         shape->aabb = swept_aabb(world, world->sweep[k].shape, dt, speculative_distance);
-        world->sweep[k].lower_x = shape->aabb.lower.x;
+        world->sweep[k].box = shape->aabb;
     }
     sort_sweep(world->sweep, count);
 
     world->pair_count = 0;
+    const struct rb_sweep_entry *sweep = world->sweep;
     for (int i = 0; i < count; ++i) {
-        int a = world->sweep[i].shape;
-        rb_aabb box_a = world->shapes[a].aabb;
-        for (int j = i + 1; j < count && world->sweep[j].lower_x <= box_a.upper.x; ++j) {
-            int b = world->sweep[j].shape;
-            rb_aabb box_b = world->shapes[b].aabb;
-            if (box_a.lower.y <= box_b.upper.y && box_b.lower.y <= box_a.upper.y && rb_should_collide(world, a, b)) {
-                RB_TRY(add_pair(world, a, b));
+        rb_aabb box_a = sweep[i].box;
+        for (int j = i + 1; j < count && sweep[j].box.lower.x <= box_a.upper.x; ++j) {
+            const rb_aabb *box_b = &sweep[j].box;
+            if (box_a.lower.y <= box_b->upper.y && box_b->lower.y <= box_a.upper.y &&
+                rb_should_collide(world, sweep[i].shape, sweep[j].shape)) {
+                RB_TRY(add_pair(world, sweep[i].shape, sweep[j].shape));
             }
         }
     }

@@ -102,9 +102,12 @@ typedef struct rb_pair {
     int shape_a, shape_b; /* shape_a belongs to the body of lower index */
 } rb_pair;
 
-/* A shape in the broad phase's sorted sweep. */
+/* A shape in the broad phase's sorted sweep, with a copy of its box: the
+ * sweep compares each box with its neighbours in x, and reading them from
+ * this array in order instead of from the shapes (scattered, 300 bytes
+ * apart) took a sixth off the pairs phase of the base-100 pyramid. */
 struct rb_sweep_entry {
-    double lower_x; /* m, lower x bound of the shape's enlarged box */
+    rb_aabb box; /* m, the shape's enlarged box this step */
     int shape;
 };
 
