@@ -324,17 +324,25 @@ void rb_contact_solver_warm_start(rb_world *world)
     }
 }
 
+static inline void solve_point_friction(const rb_contact_constraint *c, rb_constraint_point *p, rb_vec2 tangent,
+                                        body_velocities *v)
+{
+    double vt = rb_dot(tangent, point_velocity(v, p));
+    double limit = c->friction * p->normal_impulse;
+    double accumulated = rb_clamp(p->tangent_impulse - p->tangent_mass * vt, -limit, limit);
+    double delta = accumulated - p->tangent_impulse;
+    p->tangent_impulse = accumulated;
+    apply_impulse(c, p, v, rb_scale(delta, tangent));
+}
+
+/* Each point's friction in turn; the two-point case, by far the most
+ * common, written out so the compiler unrolls it. */
 static inline void solve_friction(rb_contact_constraint *c, body_velocities *v)
 {
     rb_vec2 tangent = tangent_of(c->normal);
-    for (int j = 0; j < c->point_count; ++j) {
-        rb_constraint_point *p = &c->points[j];
-        double vt = rb_dot(tangent, point_velocity(v, p));
-        double limit = c->friction * p->normal_impulse;
-        double accumulated = rb_clamp(p->tangent_impulse - p->tangent_mass * vt, -limit, limit);
-        double delta = accumulated - p->tangent_impulse;
-        p->tangent_impulse = accumulated;
-        apply_impulse(c, p, v, rb_scale(delta, tangent));
+    solve_point_friction(c, &c->points[0], tangent, v);
+    if (c->point_count == 2) {
+        solve_point_friction(c, &c->points[1], tangent, v);
     }
 }
 
