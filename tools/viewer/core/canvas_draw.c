@@ -98,10 +98,14 @@ static void debug_polygon(const rb_vec2 *vertices, int count, uint32_t colour, v
         line_to(p, vertices[k]);
     }
     cairo_close_path(p->cr);
-    set_colour(p->cr, mix(outline, (rgb){1.0, 1.0, 1.0}, 0.5));
-    cairo_fill_preserve(p->cr);
-    set_colour(p->cr, mix(outline, (rgb){0.0, 0.0, 0.0}, 0.3));
-    cairo_set_line_width(p->cr, LINE_WIDTH_PX);
+    /* Bounding boxes are outlines over the shapes; shapes are filled. */
+    if (colour != RB_COLOR_AABB) {
+        set_colour(p->cr, mix(outline, (rgb){1.0, 1.0, 1.0}, 0.5));
+        cairo_fill_preserve(p->cr);
+        outline = mix(outline, (rgb){0.0, 0.0, 0.0}, 0.3);
+    }
+    set_colour(p->cr, outline);
+    cairo_set_line_width(p->cr, colour == RB_COLOR_AABB ? 1.0 : LINE_WIDTH_PX);
     cairo_stroke(p->cr);
 }
 
