@@ -15,10 +15,8 @@ struct engine_panel {
     bool syncing;
 };
 
-static void on_setting_changed(GtkWidget *widget, gpointer data)
+static void apply_settings(engine_panel *panel)
 {
-    (void)widget;
-    engine_panel *panel = data;
     rb_world *world = simulation_world(&panel->app->sim);
     if (panel->syncing || world == NULL) {
         return;
@@ -36,6 +34,19 @@ static void on_setting_changed(GtkWidget *widget, gpointer data)
         viewer_show_error(panel->app, rb_last_error());
         engine_panel_sync(panel);
     }
+}
+
+static void on_setting_changed(GtkWidget *widget, gpointer data)
+{
+    (void)widget;
+    apply_settings(data);
+}
+
+static void on_solver_chosen(GObject *drop_down, GParamSpec *spec, gpointer data)
+{
+    (void)drop_down;
+    (void)spec;
+    apply_settings(data);
 }
 
 /* Each overlay check button writes one flag of app->overlays. */
@@ -82,7 +93,7 @@ engine_panel *engine_panel_new(viewer *app)
     gtk_grid_attach(GTK_GRID(grid), panel->warm_starting, 0, 4, 2, 1);
     gtk_box_append(GTK_BOX(panel->box), grid);
 
-    g_signal_connect(panel->solver, "notify::selected", G_CALLBACK(on_setting_changed), panel);
+    g_signal_connect(panel->solver, "notify::selected", G_CALLBACK(on_solver_chosen), panel);
     g_signal_connect(panel->velocity_iterations, "value-changed", G_CALLBACK(on_setting_changed), panel);
     g_signal_connect(panel->position_iterations, "value-changed", G_CALLBACK(on_setting_changed), panel);
     g_signal_connect(panel->substeps, "value-changed", G_CALLBACK(on_setting_changed), panel);
