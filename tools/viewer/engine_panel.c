@@ -12,6 +12,7 @@ struct engine_panel {
     GtkWidget *box;
     GtkWidget *solver, *velocity_iterations, *position_iterations, *substeps, *warm_starting;
     GtkWidget *report; /* profile and statistics */
+    GtkWidget *overlay_checks[CANVAS_OVERLAY_COUNT];
     bool syncing;
 };
 
@@ -108,8 +109,9 @@ engine_panel *engine_panel_new(viewer *app)
     GtkWidget *overlays = gtk_flow_box_new();
     gtk_flow_box_set_selection_mode(GTK_FLOW_BOX(overlays), GTK_SELECTION_NONE);
     gtk_flow_box_set_max_children_per_line(GTK_FLOW_BOX(overlays), 2);
-    for (size_t k = 0; k < sizeof flags / sizeof flags[0]; ++k) {
+    for (int k = 0; k < CANVAS_OVERLAY_COUNT; ++k) {
         GtkWidget *check = gtk_check_button_new_with_label(overlay_names[k]);
+        panel->overlay_checks[k] = check;
         gtk_check_button_set_active(GTK_CHECK_BUTTON(check), *flags[k]);
         g_object_set_data(G_OBJECT(check), "viewer", app);
         g_signal_connect(check, "toggled", G_CALLBACK(on_overlay_toggled), flags[k]);
@@ -135,6 +137,11 @@ void engine_panel_sync(engine_panel *panel)
     gtk_widget_set_sensitive(panel->box, world != NULL);
     if (world == NULL) {
         return;
+    }
+    bool *flags[CANVAS_OVERLAY_COUNT];
+    canvas_overlay_flags(&panel->app->overlays, flags);
+    for (int k = 0; k < CANVAS_OVERLAY_COUNT; ++k) {
+        gtk_check_button_set_active(GTK_CHECK_BUTTON(panel->overlay_checks[k]), *flags[k]);
     }
     rb_solver_settings settings = rb_world_solver_settings(world);
     panel->syncing = true;

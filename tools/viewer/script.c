@@ -200,12 +200,10 @@ static void print_angles(const viewer *app)
 
 static bool *overlay_named(viewer *app, const char *name)
 {
-    static const char *const names[] = {"contacts", "normals", "impulses", "aabbs", "joints", "reactions", "sleeping"};
-    bool *flags[] = {&app->overlays.contact_points, &app->overlays.contact_normals, &app->overlays.contact_impulses,
-                     &app->overlays.aabbs,          &app->overlays.joints,          &app->overlays.joint_reactions,
-                     &app->overlays.sleeping};
-    for (size_t k = 0; k < sizeof flags / sizeof flags[0]; ++k) {
-        if (strcmp(name, names[k]) == 0) {
+    bool *flags[CANVAS_OVERLAY_COUNT];
+    canvas_overlay_flags(&app->overlays, flags);
+    for (int k = 0; k < CANVAS_OVERLAY_COUNT; ++k) {
+        if (strcmp(name, canvas_overlay_names[k]) == 0) {
             return flags[k];
         }
     }
@@ -347,6 +345,8 @@ static bool run_command(script *commands, const script_command *command, char *e
             return false;
         }
         *flag = strcmp(second, "on") == 0;
+        engine_panel_sync(app->engine);
+        gtk_widget_queue_draw(app->canvas);
         return true;
     }
     if (strcmp(name, "angles") == 0) {

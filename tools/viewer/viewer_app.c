@@ -7,9 +7,10 @@
 #include "live_graph.h"
 #include "viewer.h"
 
-/* How much of a model the view's shorter side starts showing, m: the
- * arm and the leg are about 0.7 m long. */
-#define MODEL_VIEW_EXTENT 1.2
+/* How much of a model the view's shorter side starts showing at least,
+ * m: the arm and the leg are about 0.7 m long, and the arm swings down
+ * that far below its shoulder. */
+#define MODEL_VIEW_EXTENT 1.5
 
 void viewer_show_error(viewer *app, const char *message)
 {
@@ -42,8 +43,6 @@ void viewer_place_view(viewer *app)
             high = rb_vmax(high, mu_model_part_centre(app->sim.model, k));
         }
         centre = rb_scale(0.5, rb_add(low, high));
-        /* The model hangs and swings below its nails. */
-        centre.y -= 0.15;
         extent = fmax(MODEL_VIEW_EXTENT, 1.6 * fmax(high.x - low.x, high.y - low.y));
     }
     app->view = view_transform_make(centre, fmin(width, height) / extent);

@@ -12,6 +12,20 @@
 #define EXERTION_BAR_WIDTH_PX 200.0
 #define EXERTION_BAR_HEIGHT_PX 14.0
 
+const char *const canvas_overlay_names[CANVAS_OVERLAY_COUNT] = {"contacts", "normals",   "impulses", "aabbs",
+                                                                "joints",   "reactions", "sleeping"};
+
+void canvas_overlay_flags(canvas_overlays *overlays, bool *flags[CANVAS_OVERLAY_COUNT])
+{
+    flags[0] = &overlays->contact_points;
+    flags[1] = &overlays->contact_normals;
+    flags[2] = &overlays->contact_impulses;
+    flags[3] = &overlays->aabbs;
+    flags[4] = &overlays->joints;
+    flags[5] = &overlays->joint_reactions;
+    flags[6] = &overlays->sleeping;
+}
+
 typedef struct rgb {
     double r, g, b;
 } rgb;

@@ -34,6 +34,14 @@ typedef struct canvas_overlays {
     bool sleeping;        /* sleeping bodies in grey; otherwise drawn as the awake ones */
 } canvas_overlays;
 
+/* The overlays one by one, in the order above, for panels and scripts:
+ * "contacts", "normals", "impulses", "aabbs", "joints", "reactions",
+ * "sleeping". */
+enum { CANVAS_OVERLAY_COUNT = 7 };
+extern const char *const canvas_overlay_names[CANVAS_OVERLAY_COUNT];
+/* Points flags[k] at the k-th flag of `overlays`. */
+void canvas_overlay_flags(canvas_overlays *overlays, bool *flags[CANVAS_OVERLAY_COUNT]);
+
 /* The grid's finest spacing (m) and how many of its cells make a major
  * cell; coarser spacings (× 10) are used while the finest would be
  * closer than CANVAS_GRID_MIN_PX pixels. */

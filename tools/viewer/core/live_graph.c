@@ -132,7 +132,9 @@ bool live_graph_draw(const live_graph *graph, const history *samples, cairo_t *c
         series[c] = (chart_series){
             .label = graph->channels[c].label, .x = data.times, .y = data.values[c], .count = (size_t)data.count};
     }
+    /* The last LIVE_GRAPH_SECONDS, or the first ones until then. */
     double end = data.count > 0 ? data.times[data.count - 1] : 0.0;
+    end = end > LIVE_GRAPH_SECONDS ? end : LIVE_GRAPH_SECONDS;
     double start = end - LIVE_GRAPH_SECONDS;
     chart figure = {
         .title = titles[graph->kind],
@@ -140,7 +142,7 @@ bool live_graph_draw(const live_graph *graph, const history *samples, cairo_t *c
         .y_label = y_labels[graph->kind],
         .series = series,
         .series_count = graph->channel_count,
-        .x_range = {.fixed = true, .min = start, .max = end > start ? end : start + LIVE_GRAPH_SECONDS},
+        .x_range = {.fixed = true, .min = start, .max = end},
     };
     bool drawn = chart_draw(&figure, cr, 0.0, 0.0, width, height, error, error_size);
     free(data.block);

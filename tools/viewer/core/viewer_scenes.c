@@ -81,7 +81,7 @@ static rb_status populate(viewer_scene *scene)
     }
     case VIEWER_SCENE_PENDULUM:
         scene->view_centre = rb_v2(0.0, -0.4 * PENDULUM_LENGTH);
-        scene->view_extent = 3.0 * PENDULUM_LENGTH;
+        scene->view_extent = 2.5 * PENDULUM_LENGTH;
         return create_pendulum(scene->world);
     case VIEWER_SCENE_BALLS:
         scene->balls = malloc(sizeof *scene->balls);
