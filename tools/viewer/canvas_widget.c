@@ -63,6 +63,7 @@ static void on_drag_begin(GtkGestureDrag *drag, double x, double y, gpointer dat
     (void)drag;
     canvas_input *input = data;
     viewer *app = input->app;
+    gtk_widget_grab_focus(app->canvas);
     input->drag_start = rb_v2(x, y);
     input->drag_last = rb_v2(0.0, 0.0);
     input->panning = !simulation_drag_begin(&app->sim, view_screen_to_world(&app->view, input->drag_start));
@@ -164,8 +165,11 @@ GtkWidget *canvas_widget_new(viewer *app)
     g_signal_connect(drag, "drag-end", G_CALLBACK(on_drag_end), input);
     gtk_widget_add_controller(area, GTK_EVENT_CONTROLLER(drag));
 
+    /* The keys reach the window after the focused widget has declined
+     * them, so typing in a spin button or moving a slider with the arrows
+     * works as usual; the canvas takes the focus when clicked. */
+    gtk_widget_set_focusable(area, TRUE);
     GtkEventController *keys = gtk_event_controller_key_new();
-    gtk_event_controller_set_propagation_phase(keys, GTK_PHASE_CAPTURE);
     g_signal_connect(keys, "key-pressed", G_CALLBACK(on_key), input);
     gtk_widget_add_controller(app->window, keys);
     return area;

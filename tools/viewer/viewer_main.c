@@ -157,6 +157,7 @@ int main(int argc, char **argv)
     build_window(&app);
     load_first(&app, &options);
     gtk_window_present(GTK_WINDOW(app.window));
+    gtk_widget_grab_focus(app.canvas);
     viewer_set_playing(&app, options.play);
 
     sim_loop clock;
