@@ -20,6 +20,7 @@ packages=(
     libgtk-4-dev     # the interactive viewer, `sinew view` (tools/viewer/): built only when present
     xvfb             # xvfb-run: the viewer's test runs it on a virtual X display
     xauth            # xvfb-run needs it for the display's authority file
+    xdotool          # the viewer's input test types keys and moves the mouse on that display
     clang-format     # formatting check in tools/check.sh
     valgrind         # memory and cache profiling
 )

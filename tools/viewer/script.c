@@ -12,6 +12,9 @@
 #include "script.h"
 
 enum { SCRIPT_MAX_WORDS = 4, SCRIPT_LINE_SIZE = 4096 };
+/* Ticks (of about a millisecond) given to the window's input after a
+ * `wait-for` file appears. */
+enum { SCRIPT_SETTLE_TICKS = 50 };
 
 typedef struct script_command {
     int line;
@@ -30,6 +33,10 @@ struct script {
     /* A screenshot waits for the window's next paint, so that it shows
      * what the commands before it did: the command's index, or -1. */
     int screenshot_waiting;
+    /* `wait-for FILE`: the file waited for (NULL when none), then the
+     * ticks left for the window's input to be handled once it exists. */
+    const char *awaited_file;
+    int settle_ticks;
     gulong paint_handler;
 };
 
@@ -38,9 +45,10 @@ static const struct {
     const char *name;
     int arguments;
 } known_commands[] = {
-    {"model", 1},      {"variant", 1},    {"weight", 1}, {"level", 1},   {"scene", 1},  {"play", 1},
-    {"activation", 2}, {"tension", 2},    {"pulse", 1},  {"recruit", 1}, {"solver", 1}, {"overlay", 2},
-    {"angles", 0},     {"screenshot", 1}, {"export", 2}, {"quit", 0},
+    {"model", 1},  {"variant", 1},    {"weight", 1},     {"level", 1},  {"scene", 1},
+    {"play", 1},   {"activation", 2}, {"tension", 2},    {"pulse", 1},  {"recruit", 1},
+    {"solver", 1}, {"overlay", 2},    {"angles", 0},     {"status", 0}, {"locate", 1},
+    {"print", 1},  {"wait-for", 1},   {"screenshot", 1}, {"export", 2}, {"quit", 0},
 };
 
 /* Splits `text` into words in place: spaces and tabs separate, double
@@ -198,6 +206,48 @@ static void print_angles(const viewer *app)
     fflush(stdout);
 }
 
+/* Where a canvas point is in the window, px: what an input tool aims at. */
+static graphene_point_t canvas_to_window(const viewer *app, rb_vec2 canvas)
+{
+    graphene_point_t in = GRAPHENE_POINT_INIT((float)canvas.x, (float)canvas.y), out = in;
+    if (!gtk_widget_compute_point(app->canvas, app->window, &in, &out)) {
+        out = in;
+    }
+    return out;
+}
+
+static void print_status(const viewer *app)
+{
+    const simulation *sim = &app->sim;
+    int recruited = sim->kind == SIMULATION_MODEL && mu_model_torque_muscle_count(sim->model) > 0
+                        ? mu_motor_pool_recruited(mu_model_motor_pool(sim->model, 0))
+                        : -1;
+    graphene_point_t corner = canvas_to_window(app, rb_v2(0.0, 0.0));
+    printf("status t=%.4f frame=%ld playing=%d dragging=%d scale=%.6g centre=%.6g,%.6g canvas=%.0f,%.0f,%d,%d "
+           "recruited=%d\n",
+           simulation_time(sim), sim->frame, app->playing, sim->dragging, app->view.scale, app->view.centre.x,
+           app->view.centre.y, corner.x, corner.y, gtk_widget_get_width(app->canvas),
+           gtk_widget_get_height(app->canvas), recruited);
+    fflush(stdout);
+}
+
+/* Prints where a model's part is in the window: "locate NAME X Y". */
+static bool locate_part(const viewer *app, const char *name, char *error, size_t error_size)
+{
+    const simulation *sim = &app->sim;
+    for (int k = 0; sim->kind == SIMULATION_MODEL && k < mu_model_part_count(sim->model); ++k) {
+        if (strcmp(mu_model_part_name(sim->model, k), name) == 0) {
+            rb_vec2 screen = view_world_to_screen(&app->view, mu_model_part_centre(sim->model, k));
+            graphene_point_t at = canvas_to_window(app, screen);
+            printf("locate %s %.0f %.0f\n", name, at.x, at.y);
+            fflush(stdout);
+            return true;
+        }
+    }
+    snprintf(error, error_size, "no part named \"%s\" in what is loaded", name);
+    return false;
+}
+
 static bool *overlay_named(viewer *app, const char *name)
 {
     bool *flags[CANVAS_OVERLAY_COUNT];
@@ -353,6 +403,22 @@ static bool run_command(script *commands, const script_command *command, char *e
         print_angles(app);
         return true;
     }
+    if (strcmp(name, "status") == 0) {
+        print_status(app);
+        return true;
+    }
+    if (strcmp(name, "locate") == 0) {
+        return locate_part(app, first, error, error_size);
+    }
+    if (strcmp(name, "print") == 0) {
+        printf("%s\n", first);
+        fflush(stdout);
+        return true;
+    }
+    if (strcmp(name, "wait-for") == 0) {
+        commands->awaited_file = first;
+        return true;
+    }
     if (strcmp(name, "screenshot") == 0) {
         commands->screenshot_waiting = commands->next - 1;
         gtk_widget_queue_draw(app->window);
@@ -402,6 +468,21 @@ static gboolean on_script_tick(gpointer data)
         commands->screenshot_waiting >= 0) {
         return G_SOURCE_CONTINUE;
     }
+    if (commands->awaited_file != NULL) {
+        if (!g_file_test(commands->awaited_file, G_FILE_TEST_EXISTS)) {
+            return G_SOURCE_CONTINUE;
+        }
+        /* The input sent before the file appeared has reached the X
+         * server; a round trip brings its events in, and a few more
+         * ticks of the main loop let the widgets handle them. */
+        commands->awaited_file = NULL;
+        gdk_display_sync(gdk_display_get_default());
+        commands->settle_ticks = SCRIPT_SETTLE_TICKS;
+    }
+    if (commands->settle_ticks > 0) {
+        --commands->settle_ticks;
+        return G_SOURCE_CONTINUE;
+    }
     if (commands->paint_handler == 0) {
         commands->paint_handler = g_signal_connect(gtk_widget_get_frame_clock(app->window), "after-paint",
                                                    G_CALLBACK(on_after_paint), commands);
@@ -434,5 +515,7 @@ void script_start(script *commands, viewer *app)
     commands->next = 0;
     commands->frames_left = 0;
     commands->screenshot_waiting = -1;
+    commands->awaited_file = NULL;
+    commands->settle_ticks = 0;
     g_timeout_add(1, on_script_tick, commands);
 }

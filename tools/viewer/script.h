@@ -17,6 +17,13 @@
  *   solver NAME             the engine's solver: baumgarte, ngs, soft_step
  *   overlay NAME on|off     contacts, normals, impulses, aabbs, joints, reactions, sleeping
  *   angles                  print "angles t=T NAME=DEG ..." with the model's hinge angles on stdout
+ *   status                  print "status t=T frame=N playing=0|1 dragging=0|1 scale=PX_PER_M
+ *                           centre=X,Y canvas=X,Y,W,H recruited=N" (the canvas's place in the window;
+ *                           recruited -1 without a motor pool)
+ *   locate PART             print "locate PART X Y": where a model's part is in the window, px
+ *   print TEXT              print TEXT on stdout
+ *   wait-for FILE           wait until FILE exists, then let the window handle its input: an
+ *                           input tool (xdotool) acts meanwhile and creates FILE when done
  *   screenshot FILE         write the window as a PNG
  *   export GRAPH FILE       write a graph's CSV (activation, tension, selected_forces, contraction)
  *   quit                    close the viewer
