@@ -260,3 +260,26 @@ Test(canvas_draw, draws_the_bones_and_the_weight)
     cairo_surface_destroy(surface);
     simulation_free(&sim);
 }
+
+Test(simulation, a_model_runs_on_after_the_engine_panel_changes_its_solver)
+{
+    simulation sim = load_arm();
+    char error[SIMULATION_ERROR_SIZE];
+    rb_world *world = simulation_world(&sim);
+    for (int type = 0; type < RB_SOLVER_TYPE_COUNT; ++type) {
+        rb_solver_settings settings = rb_world_solver_settings(world);
+        settings.type = (rb_solver_type)type;
+        settings.substeps = 3 + type;
+        settings.velocity_iterations = 2;
+        settings.warm_starting = type % 2 == 0;
+        cr_assert_eq(rb_world_set_solver_settings(world, &settings), RB_OK, "%s", rb_last_error());
+        for (int k = 0; k < 30; ++k) {
+            cr_assert(simulation_step(&sim, error, sizeof error), "%s: %s", rb_solver_type_name(settings.type), error);
+        }
+        cr_expect_eq(rb_world_statistics(world).velocity_iterations, 2 * settings.substeps);
+        double elbow = mu_model_hinge_angle(sim.model, 1);
+        cr_expect(isfinite(elbow) && elbow > -10.5 && elbow < 150.5, "%s: elbow at %g°",
+                  rb_solver_type_name(settings.type), elbow);
+    }
+    simulation_free(&sim);
+}

@@ -122,9 +122,11 @@ static gboolean on_key(GtkEventControllerKey *keys, guint keyval, guint keycode,
         return TRUE;
     }
     case GDK_KEY_p:
+    case GDK_KEY_P:
         viewer_set_playing(app, !app->playing);
         return TRUE;
     case GDK_KEY_s:
+    case GDK_KEY_S:
         viewer_step(app);
         viewer_refresh(app);
         return TRUE;

@@ -102,7 +102,7 @@ static bool install_model(simulation *sim, const char *argument, mu_model_desc *
         mu_model_desc_destroy(desc);
         return false;
     }
-    if (argument != sim->model_argument) {
+    if (argument != sim->model_argument) { /* a reload passes the kept argument itself */
         snprintf(sim->model_argument, sizeof sim->model_argument, "%s", argument);
     }
     unload(sim);
