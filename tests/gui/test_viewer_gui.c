@@ -198,3 +198,99 @@ Test(viewer, an_invalid_model_is_reported_and_the_viewer_keeps_running, .timeout
     remove(path);
     remove(dir);
 }
+
+/* The `nth` (0-based) line of the output that starts with "status ". */
+static void status_line(const char *output, int nth, char *line, size_t size)
+{
+    const char *at = output;
+    for (int k = 0; k <= nth; ++k) {
+        at = strstr(k == 0 ? at : at + 1, "status t=");
+        cr_assert_not_null(at, "no status line %d in the output:\n%s", nth, output);
+    }
+    const char *end = strchr(at, '\n');
+    size_t length = end != NULL ? (size_t)(end - at) : strlen(at);
+    snprintf(line, size, "%.*s", (int)(length < size ? length : size - 1), at);
+}
+
+static void expect_status(const char *output, int nth, const char *const *tokens)
+{
+    char line[2048];
+    status_line(output, nth, line, sizeof line);
+    for (const char *const *token = tokens; *token != NULL; ++token) {
+        cr_expect(strstr(line, *token) != NULL, "status line %d lacks \"%s\":\n%s", nth, *token, line);
+    }
+}
+
+Test(viewer, the_panels_controls_drive_the_simulation, .timeout = 240)
+{
+    char dir[64], script[128], csv[128], arguments[512], path[128], text[4096];
+    make_temp_dir(dir, sizeof dir);
+    snprintf(script, sizeof script, "%s/script.txt", dir);
+    snprintf(csv, sizeof csv, "%s/activation.csv", dir);
+    snprintf(text, sizeof text,
+             "set model leg\n"
+             "status\n"
+             "set variant \"All Gastrocnemius\"\n"
+             "set weight \"50 kg\"\n"
+             "set level 3\n"
+             "status\n"
+             "set muscle \"Gastrocnemius Lateral\"\n"
+             "set activation 0.8\n"
+             "play 30\n"
+             "status\n"
+             "export activation %s\n"
+             "set tension-mode on\n"
+             "set tension 100\n"
+             "set solver soft_step\n"
+             "set substeps 5\n"
+             "set warm-starting off\n"
+             "set velocity-iterations 3\n"
+             "set contacts on\n"
+             "play 10\n"
+             "status\n"
+             "set scene balls\n"
+             "play 5\n"
+             "set reload x\n"
+             "set step x\n"
+             "status\n"
+             "set play on\n"
+             "status\n"
+             "set variant \"All Gastrocnemius\"\n",
+             csv);
+    write_file(script, text);
+    snprintf(arguments, sizeof arguments, "sample --script '%s'", script);
+    int status = run_viewer(dir, arguments);
+    snprintf(path, sizeof path, "%s/err.txt", dir);
+    const char *errors = read_file(path);
+    cr_expect_eq(status, 1, "the last command, a variant for a scene, fails the script");
+    cr_expect(strstr(errors, "script.txt:28: the control is not available now") != NULL, "stderr:\n%s", errors);
+    snprintf(path, sizeof path, "%s/out.txt", dir);
+    const char *output = read_file(path);
+    expect_status(output, 0, (const char *const[]){"model=leg ", "variant=0 ", "level=4 ", "muscles=4 ", NULL});
+    expect_status(output, 1, (const char *const[]){"variant=1 ", "weight=1 ", "level=3 ", "muscles=2 ", NULL});
+    expect_status(output, 2,
+                  (const char *const[]){"frame=30 ", "activation=0.8 ", "target=\"Gastrocnemius Lateral\"", NULL});
+    expect_status(output, 3,
+                  (const char *const[]){"tension_mode=1 ", "tension=100 ", "solver=soft_step ", "substeps=5 ",
+                                        "warm_starting=0", "velocity_iterations=3 ", NULL});
+    expect_status(output, 4, (const char *const[]){"scene=balls ", "frame=1 ", "playing=0 ", NULL});
+    expect_status(output, 5, (const char *const[]){"playing=1 ", NULL});
+
+    /* The exported graph: the lateral gastrocnemius held at 0.8. */
+    FILE *file = fopen(csv, "r");
+    cr_assert_not_null(file, "the activation graph was not exported to %s", csv);
+    char header[512], row[512], last[512] = "";
+    cr_assert_not_null(fgets(header, sizeof header, file));
+    cr_expect_str_eq(header, "time_s,Gastrocnemius Lateral.activation,Gastrocnemius Medial.activation\n");
+    while (fgets(row, sizeof row, file) != NULL) {
+        snprintf(last, sizeof last, "%s", row);
+    }
+    fclose(file);
+    cr_expect(strstr(last, "0.5,0.8,0\n") != NULL, "the last row is \"%s\", expected t = 0.5 s, 0.8 and 0", last);
+    remove(csv);
+    remove(script);
+    remove(path);
+    snprintf(path, sizeof path, "%s/err.txt", dir);
+    remove(path);
+    remove(dir);
+}

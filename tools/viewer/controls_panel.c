@@ -9,13 +9,21 @@
 /* Largest tension target the spin button offers, N. */
 #define MAX_TENSION_TARGET 5000.0
 
+typedef enum pending_load { PENDING_NONE, PENDING_MODEL, PENDING_SCENE, PENDING_REBUILD } pending_load;
+
 struct controls_panel {
     viewer *app;
     GtkWidget *box;
     GtkWidget *model, *scene, *variant, *weight, *level;
-    GtkWidget *play, *step;
+    GtkWidget *reload, *play, *step;
     GtkWidget *target, *activation, *tension_mode, *tension;
     bool syncing; /* the widgets are being filled: their signals are not the user's */
+    /* A load chosen in a drop-down or the level, run from the main loop
+     * right after the widget's handler: loading refills the drop-downs,
+     * which GTK does not allow from inside one's own change (it hangs). */
+    pending_load pending;
+    char pending_name[SIMULATION_NAME_SIZE];
+    guint pending_source;
 };
 
 /* Replaces a drop-down's choices and selects `selected`. */
@@ -45,17 +53,44 @@ static mu_model_options chosen_options(const controls_panel *panel)
     return options;
 }
 
+static gboolean run_pending_load(gpointer data)
+{
+    controls_panel *panel = data;
+    pending_load load = panel->pending;
+    panel->pending_source = 0;
+    panel->pending = PENDING_NONE;
+    mu_model_options options = load == PENDING_REBUILD ? chosen_options(panel) : mu_default_model_options();
+    viewer_scene_kind kind;
+    if (load == PENDING_MODEL) {
+        viewer_load_model(panel->app, panel->pending_name, &options);
+    } else if (load == PENDING_SCENE && viewer_scene_from_name(panel->pending_name, &kind)) {
+        viewer_load_scene(panel->app, kind);
+    } else if (load == PENDING_REBUILD && panel->app->sim.kind == SIMULATION_MODEL) {
+        viewer_reload_model(panel->app, &options);
+    }
+    return G_SOURCE_REMOVE;
+}
+
+/* Schedules `load` (of `name`) ahead of everything else the main loop
+ * has to do; a later choice replaces one not yet run. */
+static void defer_load(controls_panel *panel, pending_load load, const char *name)
+{
+    panel->pending = load;
+    snprintf(panel->pending_name, sizeof panel->pending_name, "%s", name != NULL ? name : "");
+    if (panel->pending_source == 0) {
+        panel->pending_source = g_idle_add_full(G_PRIORITY_HIGH, run_pending_load, panel, NULL);
+    }
+}
+
 static void on_model_chosen(GObject *drop_down, GParamSpec *spec, gpointer data)
 {
     (void)drop_down;
     (void)spec;
     controls_panel *panel = data;
     const char *name = selected_text(panel->model);
-    if (panel->syncing || name == NULL) {
-        return;
+    if (!panel->syncing && name != NULL) {
+        defer_load(panel, PENDING_MODEL, name);
     }
-    mu_model_options options = mu_default_model_options();
-    viewer_load_model(panel->app, name, &options);
 }
 
 static void on_scene_chosen(GObject *drop_down, GParamSpec *spec, gpointer data)
@@ -65,23 +100,20 @@ static void on_scene_chosen(GObject *drop_down, GParamSpec *spec, gpointer data)
     controls_panel *panel = data;
     const char *name = selected_text(panel->scene);
     viewer_scene_kind kind;
-    if (panel->syncing || name == NULL || !viewer_scene_from_name(name, &kind)) {
-        return;
+    if (!panel->syncing && name != NULL && viewer_scene_from_name(name, &kind)) {
+        defer_load(panel, PENDING_SCENE, name);
     }
-    viewer_load_scene(panel->app, kind);
 }
 
-/* Variant, weight and level rebuild the model at once. */
+/* Variant, weight and level rebuild the model. */
 static void on_build_option(GObject *widget, GParamSpec *spec, gpointer data)
 {
     (void)widget;
     (void)spec;
     controls_panel *panel = data;
-    if (panel->syncing || panel->app->sim.kind != SIMULATION_MODEL) {
-        return;
+    if (!panel->syncing && panel->app->sim.kind == SIMULATION_MODEL) {
+        defer_load(panel, PENDING_REBUILD, NULL);
     }
-    mu_model_options options = chosen_options(panel);
-    viewer_reload_model(panel->app, &options);
 }
 
 static void on_reload(GtkButton *button, gpointer data)
@@ -186,6 +218,7 @@ controls_panel *controls_panel_new(viewer *app)
 
     GtkWidget *buttons = gtk_box_new(GTK_ORIENTATION_HORIZONTAL, 4);
     GtkWidget *reload = gtk_button_new_with_label("Reload");
+    panel->reload = reload;
     panel->play = gtk_toggle_button_new_with_label("Play");
     panel->step = gtk_button_new_with_label("Step");
     gtk_box_append(GTK_BOX(buttons), reload);
@@ -225,7 +258,13 @@ controls_panel *controls_panel_new(viewer *app)
     return panel;
 }
 
-void controls_panel_free(controls_panel *panel) { g_free(panel); }
+void controls_panel_free(controls_panel *panel)
+{
+    if (panel->pending_source != 0) {
+        g_source_remove(panel->pending_source);
+    }
+    g_free(panel);
+}
 
 GtkWidget *controls_panel_widget(const controls_panel *panel) { return panel->box; }
 
@@ -333,4 +372,31 @@ void controls_panel_show_playing(controls_panel *panel, bool playing)
     gtk_toggle_button_set_active(GTK_TOGGLE_BUTTON(panel->play), playing);
     gtk_button_set_label(GTK_BUTTON(panel->play), playing ? "Pause" : "Play");
     panel->syncing = false;
+}
+
+GtkWidget *controls_panel_control(const controls_panel *panel, const char *name)
+{
+    const struct {
+        const char *name;
+        GtkWidget *widget;
+    } controls[] = {
+        {"model", panel->model},
+        {"scene", panel->scene},
+        {"variant", panel->variant},
+        {"weight", panel->weight},
+        {"level", panel->level},
+        {"reload", panel->reload},
+        {"play", panel->play},
+        {"step", panel->step},
+        {"muscle", panel->target},
+        {"activation", panel->activation},
+        {"tension-mode", panel->tension_mode},
+        {"tension", panel->tension},
+    };
+    for (size_t k = 0; k < sizeof controls / sizeof controls[0]; ++k) {
+        if (strcmp(name, controls[k].name) == 0) {
+            return controls[k].widget;
+        }
+    }
+    return NULL;
 }

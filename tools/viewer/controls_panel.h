@@ -18,4 +18,8 @@ GtkWidget *controls_panel_widget(const controls_panel *panel);
 void controls_panel_sync(controls_panel *panel);
 void controls_panel_show_playing(controls_panel *panel, bool playing);
 
+/* The control named `name` (model, scene, variant, weight, level, reload,
+ * play, step, muscle, activation, tension-mode, tension), or NULL. */
+GtkWidget *controls_panel_control(const controls_panel *panel, const char *name);
+
 #endif

@@ -1,4 +1,5 @@
 #include <stdio.h>
+#include <string.h>
 
 #include "engine_panel.h"
 
@@ -184,4 +185,29 @@ void engine_panel_update(engine_panel *panel)
              stats.max_penetration, profile.relax, stats.max_joint_gap, profile.islands, stats.max_joint_angle_error,
              profile.finalize, stats.energy);
     gtk_label_set_text(GTK_LABEL(panel->report), text);
+}
+
+GtkWidget *engine_panel_control(const engine_panel *panel, const char *name)
+{
+    const struct {
+        const char *name;
+        GtkWidget *widget;
+    } controls[] = {
+        {"solver", panel->solver},
+        {"velocity-iterations", panel->velocity_iterations},
+        {"position-iterations", panel->position_iterations},
+        {"substeps", panel->substeps},
+        {"warm-starting", panel->warm_starting},
+    };
+    for (size_t k = 0; k < sizeof controls / sizeof controls[0]; ++k) {
+        if (strcmp(name, controls[k].name) == 0) {
+            return controls[k].widget;
+        }
+    }
+    for (int k = 0; k < CANVAS_OVERLAY_COUNT; ++k) {
+        if (strcmp(name, canvas_overlay_names[k]) == 0) {
+            return panel->overlay_checks[k];
+        }
+    }
+    return NULL;
 }

@@ -20,4 +20,9 @@ void engine_panel_sync(engine_panel *panel);
 /* Shows the last step's profile and statistics. */
 void engine_panel_update(engine_panel *panel);
 
+/* The control named `name` (solver, velocity-iterations,
+ * position-iterations, substeps, warm-starting, or an overlay by its name
+ * in canvas_overlay_names), or NULL. */
+GtkWidget *engine_panel_control(const engine_panel *panel, const char *name);
+
 #endif

@@ -10,6 +10,7 @@
 #include "graphs_panel.h"
 #include "screenshot.h"
 #include "script.h"
+#include "widget_input.h"
 
 enum { SCRIPT_MAX_WORDS = 4, SCRIPT_LINE_SIZE = 4096 };
 /* Ticks (of about a millisecond) given to the window's input after a
@@ -45,10 +46,9 @@ static const struct {
     const char *name;
     int arguments;
 } known_commands[] = {
-    {"model", 1},  {"variant", 1},    {"weight", 1},     {"level", 1},  {"scene", 1},
-    {"play", 1},   {"activation", 2}, {"tension", 2},    {"pulse", 1},  {"recruit", 1},
-    {"solver", 1}, {"overlay", 2},    {"angles", 0},     {"status", 0}, {"locate", 1},
-    {"print", 1},  {"wait-for", 1},   {"screenshot", 1}, {"export", 2}, {"quit", 0},
+    {"model", 1},   {"variant", 1}, {"weight", 1},   {"level", 1},  {"scene", 1},      {"play", 1},   {"activation", 2},
+    {"tension", 2}, {"pulse", 1},   {"recruit", 1},  {"solver", 1}, {"overlay", 2},    {"angles", 0}, {"status", 0},
+    {"locate", 1},  {"print", 1},   {"wait-for", 1}, {"set", 2},    {"screenshot", 1}, {"export", 2}, {"quit", 0},
 };
 
 /* Splits `text` into words in place: spaces and tabs separate, double
@@ -224,10 +224,25 @@ static void print_status(const viewer *app)
                         : -1;
     graphene_point_t corner = canvas_to_window(app, rb_v2(0.0, 0.0));
     printf("status t=%.4f frame=%ld playing=%d dragging=%d scale=%.6g centre=%.6g,%.6g canvas=%.0f,%.0f,%d,%d "
-           "recruited=%d\n",
+           "recruited=%d",
            simulation_time(sim), sim->frame, app->playing, sim->dragging, app->view.scale, app->view.centre.x,
            app->view.centre.y, corner.x, corner.y, gtk_widget_get_width(app->canvas),
            gtk_widget_get_height(app->canvas), recruited);
+    if (sim->kind == SIMULATION_MODEL) {
+        printf(" model=%s variant=%d weight=%d level=%d muscles=%d tension_mode=%d activation=%.4g tension=%.4g",
+               sim->model_argument, sim->options.variant, sim->options.weight_index, sim->options.level,
+               mu_model_muscle_count(sim->model), sim->tension_mode, sim->activation, sim->tension);
+    } else if (sim->kind == SIMULATION_SCENE) {
+        printf(" scene=%s", viewer_scene_name(sim->scene.kind));
+    }
+    rb_world *world = simulation_world(sim);
+    if (world != NULL) {
+        rb_solver_settings settings = rb_world_solver_settings(world);
+        printf(" solver=%s velocity_iterations=%d position_iterations=%d substeps=%d warm_starting=%d",
+               rb_solver_type_name(settings.type), settings.velocity_iterations, settings.position_iterations,
+               settings.substeps, settings.warm_starting);
+    }
+    printf(" target=\"%s\"\n", sim->target);
     fflush(stdout);
 }
 
@@ -409,6 +424,15 @@ static bool run_command(script *commands, const script_command *command, char *e
     }
     if (strcmp(name, "locate") == 0) {
         return locate_part(app, first, error, error_size);
+    }
+    if (strcmp(name, "set") == 0) {
+        GtkWidget *control = controls_panel_control(app->controls, first);
+        control = control != NULL ? control : engine_panel_control(app->engine, first);
+        if (control == NULL) {
+            snprintf(error, error_size, "no control named \"%s\" (tools/viewer/script.h lists them)", first);
+            return false;
+        }
+        return widget_input_set(control, second, error, error_size);
     }
     if (strcmp(name, "print") == 0) {
         printf("%s\n", first);

@@ -18,9 +18,16 @@
  *   overlay NAME on|off     contacts, normals, impulses, aabbs, joints, reactions, sleeping
  *   angles                  print "angles t=T NAME=DEG ..." with the model's hinge angles on stdout
  *   status                  print "status t=T frame=N playing=0|1 dragging=0|1 scale=PX_PER_M
- *                           centre=X,Y canvas=X,Y,W,H recruited=N" (the canvas's place in the window;
- *                           recruited -1 without a motor pool)
+ *                           centre=X,Y canvas=X,Y,W,H recruited=N ..." (the canvas's place in the
+ *                           window; recruited -1 without a motor pool), then the model's build
+ *                           options and command or the scene's name, the solver settings and
+ *                           the target="NAME"
  *   locate PART             print "locate PART X Y": where a model's part is in the window, px
+ *   set CONTROL VALUE       set a control of the panels as a user would (its handlers run):
+ *                           model, scene, variant, weight ("5 kg"), muscle: an item's text;
+ *                           level, activation, tension, solver iterations, substeps: a number;
+ *                           tension-mode, play, warm-starting and the overlays: on|off;
+ *                           reload, step: clicked (any VALUE)
  *   print TEXT              print TEXT on stdout
  *   wait-for FILE           wait until FILE exists, then let the window handle its input: an
  *                           input tool (xdotool) acts meanwhile and creates FILE when done
