@@ -22,12 +22,6 @@ void history_free(history *samples)
     *samples = (history){0};
 }
 
-void history_clear(history *samples)
-{
-    samples->count = 0;
-    samples->next = 0;
-}
-
 static double *sample_values(const history *samples, long slot)
 {
     return samples->values + (size_t)slot * (size_t)samples->muscle_count * HISTORY_QUANTITY_COUNT;

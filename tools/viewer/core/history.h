@@ -35,7 +35,6 @@ typedef struct history {
 bool history_init(history *samples, int muscle_count, long capacity);
 /* Accepts a zeroed or freed history. */
 void history_free(history *samples);
-void history_clear(history *samples);
 
 /* Adds the sample of time `time` (s): one readout per muscle. */
 void history_record(history *samples, double time, const mu_muscle_readout *readouts);

@@ -17,7 +17,6 @@ static const char *const quantity_legends[HISTORY_QUANTITY_COUNT] = {"", " total
 static const char *const quantity_columns[HISTORY_QUANTITY_COUNT] = {"activation", "total_force_N", "active_force_N",
                                                                      "passive_force_N", "normalized_contraction"};
 
-const char *live_graph_title(live_graph_kind kind) { return titles[kind]; }
 const char *live_graph_file_stem(live_graph_kind kind) { return stems[kind]; }
 
 static void add_channel(live_graph *graph, const simulation *sim, int muscle, history_quantity quantity)

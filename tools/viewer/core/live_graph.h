@@ -38,7 +38,6 @@ typedef struct live_graph {
     live_graph_channel channels[CHART_MAX_SERIES];
 } live_graph;
 
-const char *live_graph_title(live_graph_kind kind);
 /* A short name for files and buttons: "activation", "tension", ... */
 const char *live_graph_file_stem(live_graph_kind kind);
 
