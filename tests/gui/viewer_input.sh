@@ -8,6 +8,8 @@
 #   - dragging the background pans by the drag,
 #   - dragging the hand pulls it up with a mouse joint, and letting go ends it,
 #   - space steps one frame when paused (the pulse), P plays,
+#   - an Export button's file chooser writes the graph's CSV, and a path
+#     that cannot be written is shown in the window,
 #   - Up recruits 20 neurons of the worm's motor pool per press.
 #
 #   xvfb-run -a bash tests/gui/viewer_input.sh build/release/tools/sinew
@@ -74,6 +76,12 @@ status
 print pulsed
 wait-for $dir/play
 status
+locate export-activation
+print exporting
+wait-for $dir/exported
+print exporting-again
+wait-for $dir/refused
+status
 model worm
 print worm
 wait-for $dir/recruit
@@ -121,7 +129,7 @@ holds()
 }
 
 await ready
-window=$(xdotool search --sync --name '^sinew view$' | head -n 1)
+window=$(timeout 60 xdotool search --sync --onlyvisible --name '^sinew view$' | head -n 1) || true
 [[ -n "$window" ]] || die "no window named \"sinew view\""
 IFS=, read -r canvas_x canvas_y canvas_w canvas_h <<<"$(status_field canvas)"
 scale0=$(status_field scale)
@@ -175,8 +183,43 @@ go pulse pulsed
 [[ "$(status_field frame)" == $((frame + 1)) ]] || fail "space stepped from frame $frame to $(status_field frame), expected one frame"
 [[ "$(status_field playing)" == 0 ]] || fail "the viewer plays before P is pressed"
 xdotool key p
-go play worm
+go play exporting
 grep '^status ' "$dir/out.txt" | tail -n 1 | grep -q ' playing=1 ' || fail "P did not start playing"
+
+# Export the activation graph through its button and file chooser: once to
+# a file, once where no file can be made.
+read -r button_x button_y <<<"$(grep '^locate export-activation ' "$dir/out.txt" | tail -n 1 | cut -d ' ' -f 3,4)"
+export_to()
+{
+    xdotool mousemove --window "$window" "$button_x" "$button_y" click 1
+    local dialog
+    dialog=$(timeout 60 xdotool search --sync --onlyvisible --name '^Export graph as CSV$' | head -n 1) || true
+    [[ -n "$dialog" ]] || die "the Export button opened no file chooser"
+    xdotool windowfocus --sync "$dialog"
+    xdotool key --clearmodifiers ctrl+a
+    xdotool type --delay 10 "$1"
+    xdotool key Return
+}
+# Waits (up to 30 s) until the file $1 holds the text $2.
+await_text()
+{
+    for _ in $(seq 300); do
+        if grep -qsF "$2" "$1"; then
+            return 0
+        fi
+        sleep 0.1
+    done
+    return 1
+}
+export_to "$dir/activation.csv"
+await_text "$dir/activation.csv" "time_s,Biceps Short.activation," ||
+    fail "the Export button did not write the activation CSV"
+go exported exporting-again
+export_to /proc/sinew-viewer-input.csv
+await_text "$dir/err.txt" "/proc/sinew-viewer-input.csv" || fail "exporting to /proc gave no error"
+go refused worm
+grep '^status ' "$dir/out.txt" | tail -n 1 | grep -q 'message=".*/proc/sinew-viewer-input.csv' ||
+    fail "the window does not show the export's error: $(grep '^status ' "$dir/out.txt" | tail -n 1)"
 
 # The worm: Up twice recruits 40 neurons.
 xdotool key Up Up

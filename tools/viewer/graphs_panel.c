@@ -1,4 +1,5 @@
 #include <stdio.h>
+#include <string.h>
 
 #include "graphs_panel.h"
 
@@ -7,6 +8,7 @@ typedef struct graph_view {
     graphs_panel *panel;
     live_graph graph;
     GtkWidget *area;
+    GtkWidget *export_button;
 } graph_view;
 
 struct graphs_panel {
@@ -85,6 +87,7 @@ graphs_panel *graphs_panel_new(viewer *app)
         gtk_drawing_area_set_draw_func(GTK_DRAWING_AREA(view->area), draw_graph, view, NULL);
         char *label = g_strdup_printf("Export %s CSV…", live_graph_file_stem((live_graph_kind)k));
         GtkWidget *button = gtk_button_new_with_label(label);
+        view->export_button = button;
         g_free(label);
         g_signal_connect(button, "clicked", G_CALLBACK(on_export), view);
         GtkWidget *column = gtk_box_new(GTK_ORIENTATION_VERTICAL, 2);
@@ -111,4 +114,18 @@ void graphs_panel_redraw(graphs_panel *panel)
     for (int k = 0; k < LIVE_GRAPH_COUNT; ++k) {
         gtk_widget_queue_draw(panel->views[k].area);
     }
+}
+
+GtkWidget *graphs_panel_control(const graphs_panel *panel, const char *name)
+{
+    const char prefix[] = "export-";
+    if (strncmp(name, prefix, sizeof prefix - 1) != 0) {
+        return NULL;
+    }
+    for (int k = 0; k < LIVE_GRAPH_COUNT; ++k) {
+        if (strcmp(name + sizeof prefix - 1, live_graph_file_stem((live_graph_kind)k)) == 0) {
+            return panel->views[k].export_button;
+        }
+    }
+    return NULL;
 }

@@ -242,14 +242,40 @@ static void print_status(const viewer *app)
                rb_solver_type_name(settings.type), settings.velocity_iterations, settings.position_iterations,
                settings.substeps, settings.warm_starting);
     }
-    printf(" target=\"%s\"\n", sim->target);
+    printf(" target=\"%s\"", sim->target);
+    if (gtk_widget_get_visible(app->message_bar)) {
+        printf(" message=\"%s\"", gtk_label_get_text(GTK_LABEL(app->message_label)));
+    }
+    printf("\n");
     fflush(stdout);
 }
 
-/* Prints where a model's part is in the window: "locate NAME X Y". */
-static bool locate_part(const viewer *app, const char *name, char *error, size_t error_size)
+/* A control of the panels by its name (script.h lists them), or NULL. */
+static GtkWidget *control_named(const viewer *app, const char *name)
+{
+    GtkWidget *control = controls_panel_control(app->controls, name);
+    control = control != NULL ? control : engine_panel_control(app->engine, name);
+    return control != NULL ? control : graphs_panel_control(app->graphs, name);
+}
+
+/* Prints where a model's part, or the middle of a control, is in the
+ * window: "locate NAME X Y". */
+static bool locate(const viewer *app, const char *name, char *error, size_t error_size)
 {
     const simulation *sim = &app->sim;
+    GtkWidget *control = control_named(app, name);
+    if (control != NULL) {
+        graphene_point_t middle = GRAPHENE_POINT_INIT(0.5f * (float)gtk_widget_get_width(control),
+                                                      0.5f * (float)gtk_widget_get_height(control));
+        graphene_point_t at = middle;
+        if (!gtk_widget_compute_point(control, app->window, &middle, &at)) {
+            snprintf(error, error_size, "the control \"%s\" is not in the window now", name);
+            return false;
+        }
+        printf("locate %s %.0f %.0f\n", name, at.x, at.y);
+        fflush(stdout);
+        return true;
+    }
     for (int k = 0; sim->kind == SIMULATION_MODEL && k < mu_model_part_count(sim->model); ++k) {
         if (strcmp(mu_model_part_name(sim->model, k), name) == 0) {
             rb_vec2 screen = view_world_to_screen(&app->view, mu_model_part_centre(sim->model, k));
@@ -259,7 +285,7 @@ static bool locate_part(const viewer *app, const char *name, char *error, size_t
             return true;
         }
     }
-    snprintf(error, error_size, "no part named \"%s\" in what is loaded", name);
+    snprintf(error, error_size, "no part or control named \"%s\"", name);
     return false;
 }
 
@@ -423,11 +449,10 @@ static bool run_command(script *commands, const script_command *command, char *e
         return true;
     }
     if (strcmp(name, "locate") == 0) {
-        return locate_part(app, first, error, error_size);
+        return locate(app, first, error, error_size);
     }
     if (strcmp(name, "set") == 0) {
-        GtkWidget *control = controls_panel_control(app->controls, first);
-        control = control != NULL ? control : engine_panel_control(app->engine, first);
+        GtkWidget *control = control_named(app, first);
         if (control == NULL) {
             snprintf(error, error_size, "no control named \"%s\" (tools/viewer/script.h lists them)", first);
             return false;

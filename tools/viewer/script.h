@@ -21,13 +21,15 @@
  *                           centre=X,Y canvas=X,Y,W,H recruited=N ..." (the canvas's place in the
  *                           window; recruited -1 without a motor pool), then the model's build
  *                           options and command or the scene's name, the solver settings and
- *                           the target="NAME"
- *   locate PART             print "locate PART X Y": where a model's part is in the window, px
+ *                           the target="NAME", and message="TEXT" while the window shows an error
+ *   locate NAME             print "locate NAME X Y": where a model's part, or the middle of a
+ *                           control (as `set` names it), is in the window, px
  *   set CONTROL VALUE       set a control of the panels as a user would (its handlers run):
  *                           model, scene, variant, weight ("5 kg"), muscle: an item's text;
  *                           level, activation, tension, solver iterations, substeps: a number;
  *                           tension-mode, play, warm-starting and the overlays: on|off;
- *                           reload, step: clicked (any VALUE)
+ *                           reload, step, export-activation, export-tension,
+ *                           export-selected_forces, export-contraction: clicked (any VALUE)
  *   print TEXT              print TEXT on stdout
  *   wait-for FILE           wait until FILE exists, then let the window handle its input: an
  *                           input tool (xdotool) acts meanwhile and creates FILE when done

@@ -145,6 +145,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "sinew view: %s\n", error);
         return EXIT_FAILURE;
     }
+    g_set_application_name("sinew view");
     if (!gtk_init_check()) {
         fprintf(stderr, "sinew view: cannot open a display (is DISPLAY or WAYLAND_DISPLAY set?)\n");
         script_free(commands);
