@@ -294,3 +294,43 @@ Test(viewer, the_panels_controls_drive_the_simulation, .timeout = 240)
     remove(path);
     remove(dir);
 }
+
+Test(viewer, script_commands_rebuild_control_and_report_bad_values, .timeout = 240)
+{
+    char dir[64], script[128], arguments[512], path[128];
+    make_temp_dir(dir, sizeof dir);
+    snprintf(script, sizeof script, "%s/script.txt", dir);
+    write_file(script, "model arm\n"
+                       "variant \"All Biceps\"\n"
+                       "weight 5\n"
+                       "level 3\n"
+                       "tension \"Biceps Short\" 50\n"
+                       "solver baumgarte\n"
+                       "overlay aabbs on\n"
+                       "play 5\n"
+                       "status\n"
+                       "model worm\n"
+                       "recruit 60\n"
+                       "recruit -20\n"
+                       "status\n"
+                       "play many\n");
+    snprintf(arguments, sizeof arguments, "--scene balls --script '%s'", script);
+    int status = run_viewer(dir, arguments);
+    snprintf(path, sizeof path, "%s/err.txt", dir);
+    const char *errors = read_file(path);
+    cr_expect_eq(status, 1, "the bad frame count fails the script");
+    cr_expect(strstr(errors, "script.txt:14: play expects an integer from 0 to 10000000, got \"many\"") != NULL,
+              "stderr:\n%s", errors);
+    snprintf(path, sizeof path, "%s/out.txt", dir);
+    const char *output = read_file(path);
+    expect_status(output, 0,
+                  (const char *const[]){"frame=5 ", "variant=2 ", "weight=2 ", "level=3 ", "muscles=2 ",
+                                        "tension_mode=1 ", "tension=50 ", "solver=baumgarte ",
+                                        "target=\"Biceps Short\"", NULL});
+    expect_status(output, 1, (const char *const[]){"model=worm ", "recruited=40 ", NULL});
+    remove(script);
+    remove(path);
+    snprintf(path, sizeof path, "%s/err.txt", dir);
+    remove(path);
+    remove(dir);
+}
