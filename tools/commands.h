@@ -16,5 +16,6 @@ int cmd_check(int argc, char **argv);      /* sinew check FILE */
 int cmd_run(int argc, char **argv);        /* sinew run MODEL [options] */
 int cmd_plot(int argc, char **argv);       /* sinew plot CSV [options] */
 int cmd_experiment(int argc, char **argv); /* sinew experiment NAME [options] */
+int cmd_view(int argc, char **argv);       /* sinew view [MODEL] [options]: runs sinew-view */
 
 #endif

@@ -12,11 +12,15 @@ set -euo pipefail
 packages=(
     build-essential  # gcc, make, libc headers
     cmake            # >= 3.25 (CMakePresets.json version 6)
-    pkg-config       # finds criterion, gsl and cairo
+    pkg-config       # finds criterion, gsl, cairo and gtk4
     libgsl-dev       # GNU Scientific Library
     libcriterion-dev # unit tests (tests/)
     libjansson-dev   # model files (musculo/)
     libcairo2-dev    # motor-pool profile images (musculo/), charts: PNG and SVG figures (tools/chart/)
+    libgtk-4-dev     # the interactive viewer, `sinew view` (tools/viewer/): built only when present
+    xvfb             # xvfb-run: the viewer's test runs it on a virtual X display
+    xauth            # xvfb-run needs it for the display's authority file
+    xdotool          # the viewer's input test types keys and moves the mouse on that display
     clang-format     # formatting check in tools/check.sh
     valgrind         # memory and cache profiling
 )

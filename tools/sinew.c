@@ -16,6 +16,7 @@ static const char usage_text[] = "usage: sinew COMMAND [arguments]\n"
                                  "  scene NAME [options]   run an engine scene, print a summary\n"
                                  "  plot CSV [options]     draw columns of a CSV file as a PNG or SVG chart\n"
                                  "  experiment NAME        run one of the seed's experiments: CSV, figure, figures\n"
+                                 "  view [MODEL]           the interactive viewer (GTK 4): models and engine scenes\n"
                                  "\n"
                                  "`sinew COMMAND --help` describes a command's arguments.\n"
                                  "Exit status: 0 success, 1 failure (a model or control file, the engine,\n"
@@ -26,8 +27,8 @@ int main(int argc, char **argv)
     static const struct {
         const char *name;
         int (*run)(int argc, char **argv);
-    } commands[] = {{"models", cmd_models}, {"check", cmd_check}, {"run", cmd_run},
-                    {"scene", cmd_scene},   {"plot", cmd_plot},   {"experiment", cmd_experiment}};
+    } commands[] = {{"models", cmd_models}, {"check", cmd_check},           {"run", cmd_run},  {"scene", cmd_scene},
+                    {"plot", cmd_plot},     {"experiment", cmd_experiment}, {"view", cmd_view}};
     if (argc < 2) {
         fputs(usage_text, stderr);
         return EXIT_USAGE;
@@ -42,7 +43,7 @@ int main(int argc, char **argv)
         }
     }
     fprintf(stderr,
-            "sinew: unknown command \"%s\" (models, check, run, scene, plot or experiment; see `sinew --help`)\n",
+            "sinew: unknown command \"%s\" (models, check, run, scene, plot, experiment or view; see `sinew --help`)\n",
             argv[1]);
     return EXIT_USAGE;
 }

@@ -1,0 +1,336 @@
+/* `sinew view` in a window: the viewer runs under a virtual X display
+ * (xvfb-run, with GTK's Cairo renderer) with a script that loads the arm
+ * with 1 kg, lets it settle, pulses the short biceps, contracts both
+ * biceps, takes a screenshot, then loads the pyramid scene and takes
+ * another. The test reads the hinge angles the viewer printed and looks
+ * for the canvas's colours in the screenshots (decoded with Cairo).
+ * Registered only when the viewer is built and xvfb-run is found
+ * (tests/CMakeLists.txt).
+ */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp */
+
+#include <cairo.h>
+#include <criterion/criterion.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+
+#include "canvas_draw.h"
+#include "rb/debug_draw.h"
+
+static void make_temp_dir(char *path, size_t size)
+{
+    snprintf(path, size, "/tmp/sinew-view-test-XXXXXX");
+    cr_assert_not_null(mkdtemp(path), "mkdtemp failed");
+}
+
+static void write_file(const char *path, const char *text)
+{
+    FILE *file = fopen(path, "w");
+    cr_assert_not_null(file, "cannot write %s", path);
+    fputs(text, file);
+    fclose(file);
+}
+
+/* Runs `sinew view ARGUMENTS` on a virtual display; stdout and stderr go
+ * to DIR/out.txt and DIR/err.txt. Returns the exit status. GTK draws with
+ * Cairo, and GL is kept off: the viewer needs none, and Mesa's GL driver,
+ * probed otherwise, keeps an allocation that LeakSanitizer reports in the
+ * asan preset (from a library already unloaded, so no suppression can
+ * name it). */
+static int run_viewer(const char *dir, const char *arguments)
+{
+    char command[4096];
+    snprintf(
+        command, sizeof command,
+        "GSK_RENDERER=cairo GDK_DEBUG=gl-disable GDK_BACKEND=x11 timeout 120 xvfb-run -a -s '-screen 0 1600x1000x24' "
+        "'%s' view %s >'%s/out.txt' 2>'%s/err.txt'",
+        SINEW_TOOL, arguments, dir, dir);
+    int status = system(command);
+    cr_assert(WIFEXITED(status), "the viewer did not exit normally (status %d)", status);
+    return WEXITSTATUS(status);
+}
+
+static char *read_file(const char *path)
+{
+    FILE *file = fopen(path, "r");
+    cr_assert_not_null(file, "cannot read %s", path);
+    static char text[65536];
+    size_t length = fread(text, 1, sizeof text - 1, file);
+    text[length] = '\0';
+    fclose(file);
+    return text;
+}
+
+/* The angle of hinge `name` on the `nth` (0-based) "angles" line. */
+static double angle_on_line(const char *output, int nth, const char *name)
+{
+    const char *line = output;
+    for (int k = 0; k <= nth; ++k) {
+        line = strstr(k == 0 ? line : line + 1, "angles t=");
+        cr_assert_not_null(line, "no angles line %d in the output:\n%s", nth, output);
+    }
+    char key[64];
+    snprintf(key, sizeof key, " %s=", name);
+    const char *end = strchr(line, '\n');
+    const char *at = strstr(line, key);
+    cr_assert(at != NULL && (end == NULL || at < end), "no %s angle on angles line %d:\n%s", name, nth, output);
+    return strtod(at + strlen(key), NULL);
+}
+
+/* Pixels of an ARGB32 or RGB24 image within `tolerance` of `colour`. */
+static long count_colour(cairo_surface_t *image, uint32_t colour, int tolerance)
+{
+    const unsigned char *data = cairo_image_surface_get_data(image);
+    int stride = cairo_image_surface_get_stride(image);
+    long count = 0;
+    for (int y = 0; y < cairo_image_surface_get_height(image); ++y) {
+        const uint32_t *row = (const uint32_t *)(data + (size_t)y * (size_t)stride);
+        for (int x = 0; x < cairo_image_surface_get_width(image); ++x) {
+            bool near = true;
+            for (int shift = 0; shift <= 16; shift += 8) {
+                int got = (int)((row[x] >> shift) & 0xff), want = (int)((colour >> shift) & 0xff);
+                near = near && abs(got - want) <= tolerance;
+            }
+            count += near;
+        }
+    }
+    return count;
+}
+
+static cairo_surface_t *read_png(const char *path)
+{
+    cairo_surface_t *image = cairo_image_surface_create_from_png(path);
+    cr_assert_eq(cairo_surface_status(image), CAIRO_STATUS_SUCCESS, "%s: %s", path,
+                 cairo_status_to_string(cairo_surface_status(image)));
+    cr_assert_gt(cairo_image_surface_get_width(image), 400, "%s is too narrow", path);
+    cr_assert_gt(cairo_image_surface_get_height(image), 300, "%s is too low", path);
+    return image;
+}
+
+Test(viewer, the_biceps_flex_the_elbow_and_the_screenshots_show_the_arm_and_the_pyramid, .timeout = 240)
+{
+    char dir[64], script[128], arm_png[128], pyramid_png[128], arguments[512];
+    make_temp_dir(dir, sizeof dir);
+    snprintf(script, sizeof script, "%s/script.txt", dir);
+    snprintf(arm_png, sizeof arm_png, "%s/arm.png", dir);
+    snprintf(pyramid_png, sizeof pyramid_png, "%s/pyramid.png", dir);
+    char text[1024];
+    snprintf(text, sizeof text,
+             "play 120                 # the arm swings down and settles\n"
+             "angles\n"
+             "pulse \"Biceps Short\"     # one frame at activation 1\n"
+             "play 1\n"
+             "activation \"Biceps Short + Biceps Long\" 1\n"
+             "play 60\n"
+             "angles\n"
+             "screenshot %s\n"
+             "scene pyramid\n"
+             "play 30\n"
+             "screenshot %s\n"
+             "quit\n",
+             arm_png, pyramid_png);
+    write_file(script, text);
+    snprintf(arguments, sizeof arguments, "arm --weight 1 --script '%s'", script);
+    int status = run_viewer(dir, arguments);
+    char path[128];
+    snprintf(path, sizeof path, "%s/err.txt", dir);
+    cr_assert_eq(status, 0, "sinew view exited with %d:\n%s", status, read_file(path));
+    snprintf(path, sizeof path, "%s/out.txt", dir);
+    const char *output = read_file(path);
+    double settled = angle_on_line(output, 0, "Elbow"), flexed = angle_on_line(output, 1, "Elbow");
+    cr_expect(settled > 50.0 && settled < 90.0, "the settled elbow is at %g°, expected about 72°", settled);
+    cr_expect_gt(flexed, settled + 30.0, "the biceps flexed the elbow only from %g° to %g°", settled, flexed);
+
+    cairo_surface_t *arm = read_png(arm_png);
+    long bone = count_colour(arm, CANVAS_BONE, 1), weight = count_colour(arm, CANVAS_WEIGHT, 1);
+    long background = count_colour(arm, CANVAS_BACKGROUND, 1);
+    cr_expect_gt(bone, 800, "ivory bones in %s: %ld pixels", arm_png, bone);
+    cr_expect_gt(weight, 30, "the blue weight in %s: %ld pixels", arm_png, weight);
+    cr_expect_gt(background, 50000, "the canvas in %s: %ld pixels", arm_png, background);
+    cairo_surface_destroy(arm);
+
+    /* A dynamic box is drawn in its debug colour half mixed with white. */
+    uint32_t box = 0;
+    for (int shift = 0; shift <= 16; shift += 8) {
+        box |= (uint32_t)((((RB_COLOR_DYNAMIC >> shift) & 0xff) + 0xff) / 2) << shift;
+    }
+    cairo_surface_t *pyramid = read_png(pyramid_png);
+    long boxes = count_colour(pyramid, box, 2);
+    cr_expect_gt(boxes, 20000, "the pyramid's boxes in %s: %ld pixels", pyramid_png, boxes);
+    cr_expect_eq(count_colour(pyramid, CANVAS_BONE, 0), 0, "no bone left in %s", pyramid_png);
+    cairo_surface_destroy(pyramid);
+    remove(script);
+    remove(arm_png);
+    remove(pyramid_png);
+    snprintf(path, sizeof path, "%s/out.txt", dir);
+    remove(path);
+    snprintf(path, sizeof path, "%s/err.txt", dir);
+    remove(path);
+    remove(dir);
+}
+
+Test(viewer, an_invalid_model_is_reported_and_the_viewer_keeps_running, .timeout = 240)
+{
+    char dir[64], model[128], script[128], arguments[512], path[128];
+    make_temp_dir(dir, sizeof dir);
+    snprintf(model, sizeof model, "%s/broken.json", dir);
+    snprintf(script, sizeof script, "%s/script.txt", dir);
+    write_file(model, "{\"name\": \"broken\", \"bones\": [{\"name\": \"b\", \"colour\": 1}]}\n");
+    write_file(script, "angles\nmodel sample\nplay 10\nangles\nexport activation /nonexistent-dir/graph.csv\n");
+    snprintf(arguments, sizeof arguments, "'%s' --script '%s'", model, script);
+    int status = run_viewer(dir, arguments);
+    snprintf(path, sizeof path, "%s/err.txt", dir);
+    const char *errors = read_file(path);
+    cr_expect(strstr(errors, "broken.json") != NULL, "the loader's message names the file:\n%s", errors);
+    cr_expect(strstr(errors, "colour") != NULL, "and the bad key:\n%s", errors);
+    cr_expect(strstr(errors, "/nonexistent-dir/graph.csv") != NULL, "the export's error names the path:\n%s", errors);
+    cr_expect_eq(status, 1, "the failed export ends the script with status 1");
+    snprintf(path, sizeof path, "%s/out.txt", dir);
+    const char *output = read_file(path);
+    cr_expect(strstr(output, "angles t=0.0000\n") != NULL, "nothing loaded at first:\n%s", output);
+    cr_expect(strstr(output, "angles t=0.1667 Hinge=") != NULL, "then the sample ran 10 frames:\n%s", output);
+    remove(model);
+    remove(script);
+    remove(path);
+    snprintf(path, sizeof path, "%s/err.txt", dir);
+    remove(path);
+    remove(dir);
+}
+
+/* The `nth` (0-based) line of the output that starts with "status ". */
+static void status_line(const char *output, int nth, char *line, size_t size)
+{
+    const char *at = output;
+    for (int k = 0; k <= nth; ++k) {
+        at = strstr(k == 0 ? at : at + 1, "status t=");
+        cr_assert_not_null(at, "no status line %d in the output:\n%s", nth, output);
+    }
+    const char *end = strchr(at, '\n');
+    size_t length = end != NULL ? (size_t)(end - at) : strlen(at);
+    snprintf(line, size, "%.*s", (int)(length < size ? length : size - 1), at);
+}
+
+static void expect_status(const char *output, int nth, const char *const *tokens)
+{
+    char line[2048];
+    status_line(output, nth, line, sizeof line);
+    for (const char *const *token = tokens; *token != NULL; ++token) {
+        cr_expect(strstr(line, *token) != NULL, "status line %d lacks \"%s\":\n%s", nth, *token, line);
+    }
+}
+
+Test(viewer, the_panels_controls_drive_the_simulation, .timeout = 240)
+{
+    char dir[64], script[128], csv[128], arguments[512], path[128], text[4096];
+    make_temp_dir(dir, sizeof dir);
+    snprintf(script, sizeof script, "%s/script.txt", dir);
+    snprintf(csv, sizeof csv, "%s/activation.csv", dir);
+    snprintf(text, sizeof text,
+             "set model leg\n"
+             "status\n"
+             "set variant \"All Gastrocnemius\"\n"
+             "set weight \"50 kg\"\n"
+             "set level 3\n"
+             "status\n"
+             "set muscle \"Gastrocnemius Lateral\"\n"
+             "set activation 0.8\n"
+             "play 30\n"
+             "status\n"
+             "export activation %s\n"
+             "set tension-mode on\n"
+             "set tension 100\n"
+             "set solver soft_step\n"
+             "set substeps 5\n"
+             "set warm-starting off\n"
+             "set velocity-iterations 3\n"
+             "set contacts on\n"
+             "play 10\n"
+             "status\n"
+             "set scene balls\n"
+             "play 5\n"
+             "set reload x\n"
+             "set step x\n"
+             "status\n"
+             "set play on\n"
+             "status\n"
+             "set variant \"All Gastrocnemius\"\n",
+             csv);
+    write_file(script, text);
+    snprintf(arguments, sizeof arguments, "sample --script '%s'", script);
+    int status = run_viewer(dir, arguments);
+    snprintf(path, sizeof path, "%s/err.txt", dir);
+    const char *errors = read_file(path);
+    cr_expect_eq(status, 1, "the last command, a variant for a scene, fails the script");
+    cr_expect(strstr(errors, "script.txt:28: the control is not available now") != NULL, "stderr:\n%s", errors);
+    snprintf(path, sizeof path, "%s/out.txt", dir);
+    const char *output = read_file(path);
+    expect_status(output, 0, (const char *const[]){"model=leg ", "variant=0 ", "level=4 ", "muscles=4 ", NULL});
+    expect_status(output, 1, (const char *const[]){"variant=1 ", "weight=1 ", "level=3 ", "muscles=2 ", NULL});
+    expect_status(output, 2,
+                  (const char *const[]){"frame=30 ", "activation=0.8 ", "target=\"Gastrocnemius Lateral\"", NULL});
+    expect_status(output, 3,
+                  (const char *const[]){"tension_mode=1 ", "tension=100 ", "solver=soft_step ", "substeps=5 ",
+                                        "warm_starting=0", "velocity_iterations=3 ", NULL});
+    expect_status(output, 4, (const char *const[]){"scene=balls ", "frame=1 ", "playing=0 ", NULL});
+    expect_status(output, 5, (const char *const[]){"playing=1 ", NULL});
+
+    /* The exported graph: the lateral gastrocnemius held at 0.8. */
+    FILE *file = fopen(csv, "r");
+    cr_assert_not_null(file, "the activation graph was not exported to %s", csv);
+    char header[512], row[512], last[512] = "";
+    cr_assert_not_null(fgets(header, sizeof header, file));
+    cr_expect_str_eq(header, "time_s,Gastrocnemius Lateral.activation,Gastrocnemius Medial.activation\n");
+    while (fgets(row, sizeof row, file) != NULL) {
+        snprintf(last, sizeof last, "%s", row);
+    }
+    fclose(file);
+    cr_expect(strstr(last, "0.5,0.8,0\n") != NULL, "the last row is \"%s\", expected t = 0.5 s, 0.8 and 0", last);
+    remove(csv);
+    remove(script);
+    remove(path);
+    snprintf(path, sizeof path, "%s/err.txt", dir);
+    remove(path);
+    remove(dir);
+}
+
+Test(viewer, script_commands_rebuild_control_and_report_bad_values, .timeout = 240)
+{
+    char dir[64], script[128], arguments[512], path[128];
+    make_temp_dir(dir, sizeof dir);
+    snprintf(script, sizeof script, "%s/script.txt", dir);
+    write_file(script, "model arm\n"
+                       "variant \"All Biceps\"\n"
+                       "weight 5\n"
+                       "level 3\n"
+                       "tension \"Biceps Short\" 50\n"
+                       "solver baumgarte\n"
+                       "overlay aabbs on\n"
+                       "play 5\n"
+                       "status\n"
+                       "model worm\n"
+                       "recruit 60\n"
+                       "recruit -20\n"
+                       "status\n"
+                       "play many\n");
+    snprintf(arguments, sizeof arguments, "--scene balls --script '%s'", script);
+    int status = run_viewer(dir, arguments);
+    snprintf(path, sizeof path, "%s/err.txt", dir);
+    const char *errors = read_file(path);
+    cr_expect_eq(status, 1, "the bad frame count fails the script");
+    cr_expect(strstr(errors, "script.txt:14: play expects an integer from 0 to 10000000, got \"many\"") != NULL,
+              "stderr:\n%s", errors);
+    snprintf(path, sizeof path, "%s/out.txt", dir);
+    const char *output = read_file(path);
+    expect_status(output, 0,
+                  (const char *const[]){"frame=5 ", "variant=2 ", "weight=2 ", "level=3 ", "muscles=2 ",
+                                        "tension_mode=1 ", "tension=50 ", "solver=baumgarte ",
+                                        "target=\"Biceps Short\"", NULL});
+    expect_status(output, 1, (const char *const[]){"model=worm ", "recruited=40 ", NULL});
+    remove(script);
+    remove(path);
+    snprintf(path, sizeof path, "%s/err.txt", dir);
+    remove(path);
+    remove(dir);
+}

@@ -1,0 +1,283 @@
+/* The viewer's core without GTK (tools/viewer/core): the view transform,
+ * the history ring, the simulation's loads, controls and drag, the live
+ * graphs' CSV export and the canvas drawn with Cairo.
+ */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp */
+
+#include <cairo.h>
+#include <criterion/criterion.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "canvas_draw.h"
+#include "history.h"
+#include "live_graph.h"
+#include "simulation.h"
+#include "test_support.h"
+#include "view_transform.h"
+
+static void make_temp_dir(char *path, size_t size)
+{
+    snprintf(path, size, "/tmp/sinew-viewer-XXXXXX");
+    cr_assert_not_null(mkdtemp(path), "mkdtemp failed");
+}
+
+static simulation load_arm(void)
+{
+    simulation sim;
+    simulation_init(&sim);
+    mu_model_options options = mu_default_model_options();
+    options.weight_index = 1; /* 1 kg */
+    char error[SIMULATION_ERROR_SIZE];
+    cr_assert(simulation_load_model(&sim, "arm", &options, error, sizeof error), "load arm: %s", error);
+    return sim;
+}
+
+Test(view_transform, zooming_keeps_the_point_under_the_cursor)
+{
+    view_transform view = view_transform_make(rb_v2(1.0, 2.0), 100.0);
+    view_transform_resize(&view, 800.0, 600.0);
+    expect_vec_near(view_world_to_screen(&view, rb_v2(1.0, 2.0)), rb_v2(400.0, 300.0), 1e-12, "centre");
+    expect_vec_near(view_world_to_screen(&view, rb_v2(2.0, 3.0)), rb_v2(500.0, 200.0), 1e-12, "y up");
+    rb_vec2 cursor = rb_v2(123.0, 456.0);
+    rb_vec2 under = view_screen_to_world(&view, cursor);
+    view_zoom_about(&view, cursor, 1.7);
+    expect_near(view.scale, 170.0, 1e-12, "scale");
+    expect_vec_near(view_screen_to_world(&view, cursor), under, 1e-12, "point under the cursor");
+    view_pan(&view, rb_v2(17.0, -5.0));
+    expect_vec_near(view_screen_to_world(&view, rb_add(cursor, rb_v2(17.0, -5.0))), under, 1e-12, "panned");
+    view_zoom_about(&view, cursor, 1e9);
+    expect_near(view.scale, VIEW_MAX_SCALE, 0.0, "zoom clamped");
+    view_reset(&view);
+    expect_near(view.scale, 100.0, 0.0, "reset scale");
+    expect_vec_near(view.centre, rb_v2(1.0, 2.0), 0.0, "reset centre");
+}
+
+Test(history, keeps_the_last_samples_oldest_first)
+{
+    history samples;
+    cr_assert(history_init(&samples, 2, 3));
+    for (int k = 0; k < 5; ++k) {
+        mu_muscle_readout readouts[2] = {{.activation = k}, {.total_force = 10.0 * k}};
+        history_record(&samples, 0.1 * k, readouts);
+    }
+    double times[3], values[3];
+    cr_assert_eq(history_series(&samples, 1, HISTORY_TOTAL_FORCE, times, values), 3);
+    for (int k = 0; k < 3; ++k) {
+        expect_near(times[k], 0.1 * (k + 2), 1e-12, "time");
+        expect_near(values[k], 10.0 * (k + 2), 1e-12, "force");
+    }
+    history_series(&samples, 0, HISTORY_ACTIVATION, times, values);
+    expect_near(values[0], 2.0, 0.0, "activation");
+    history_free(&samples);
+}
+
+Test(simulation, a_pulse_lasts_one_frame_and_the_biceps_flex_the_elbow)
+{
+    simulation sim = load_arm();
+    char error[SIMULATION_ERROR_SIZE];
+    cr_expect_str_eq(sim.target, "Biceps Short + Biceps Long", "the first group is the target");
+    for (int k = 0; k < 120; ++k) {
+        cr_assert(simulation_step(&sim, error, sizeof error), "%s", error);
+    }
+    double settled = mu_model_hinge_angle(sim.model, 1);
+    cr_assert(simulation_select(&sim, "Biceps Short", error, sizeof error), "%s", error);
+    simulation_pulse(&sim);
+    cr_assert(simulation_step(&sim, error, sizeof error));
+    cr_expect_gt(mu_model_muscle_readout(sim.model, 0).activation, 0.99, "pulsed frame");
+    cr_assert(simulation_step(&sim, error, sizeof error));
+    cr_expect_eq(mu_model_muscle_readout(sim.model, 0).activation, 0.0, "back to the command after one frame");
+    cr_assert(simulation_select(&sim, "Biceps Short + Biceps Long", error, sizeof error));
+    cr_assert(simulation_set_activation(&sim, 1.0, error, sizeof error));
+    for (int k = 0; k < 60; ++k) {
+        cr_assert(simulation_step(&sim, error, sizeof error), "%s", error);
+    }
+    cr_expect_gt(mu_model_hinge_angle(sim.model, 1), settled + 30.0, "elbow from %g", settled);
+    cr_expect_not(simulation_select(&sim, "Bicep", error, sizeof error), "unknown muscle");
+    cr_expect_not(simulation_set_tension(&sim, -1.0, error, sizeof error), "negative tension");
+    simulation_free(&sim);
+    cr_expect_eq(rb_bytes_in_use(), 0);
+}
+
+Test(simulation, a_model_that_fails_leaves_the_previous_one)
+{
+    char dir[64], path[128], error[SIMULATION_ERROR_SIZE];
+    make_temp_dir(dir, sizeof dir);
+    snprintf(path, sizeof path, "%s/bad.json", dir);
+    FILE *file = fopen(path, "w");
+    cr_assert_not_null(file);
+    fputs("{\"name\": \"bad\", \"bones\": [{\"name\": \"b\", \"colour\": 1}]}\n", file);
+    fclose(file);
+    simulation sim = load_arm();
+    mu_model_options options = mu_default_model_options();
+    cr_expect_not(simulation_load_model(&sim, path, &options, error, sizeof error));
+    cr_expect(strstr(error, "bad.json") != NULL, "the message names the file: %s", error);
+    cr_expect_eq(sim.kind, SIMULATION_MODEL);
+    cr_expect_str_eq(sim.model_argument, "arm");
+    cr_expect_not(simulation_load_model(&sim, "no-such-model", &options, error, sizeof error));
+    cr_expect(simulation_step(&sim, error, sizeof error), "the arm still runs");
+    cr_expect(simulation_choose_weight(&sim, 5.0, &options, error, sizeof error));
+    cr_expect_eq(options.weight_index, 2);
+    cr_expect_not(simulation_choose_weight(&sim, 3.0, &options, error, sizeof error));
+    cr_expect(strstr(error, "50") != NULL, "the choices are listed: %s", error);
+    cr_expect(simulation_choose_variant(&sim, "All Biceps", &options, error, sizeof error));
+    cr_expect_eq(options.variant, 2);
+    cr_expect(simulation_reload(&sim, &options, error, sizeof error), "%s", error);
+    cr_expect_eq(mu_model_muscle_count(sim.model), 2);
+    simulation_free(&sim);
+    unlink(path);
+    rmdir(dir);
+}
+
+Test(simulation, every_scene_loads_and_steps)
+{
+    simulation sim;
+    simulation_init(&sim);
+    char error[SIMULATION_ERROR_SIZE];
+    for (int k = 0; k < VIEWER_SCENE_COUNT; ++k) {
+        viewer_scene_kind kind;
+        cr_assert(viewer_scene_from_name(viewer_scene_name((viewer_scene_kind)k), &kind));
+        cr_assert(simulation_load_scene(&sim, kind, error, sizeof error), "%s", error);
+        for (int frame = 0; frame < 3; ++frame) {
+            cr_assert(simulation_step(&sim, error, sizeof error), "%s: %s", viewer_scene_name(kind), error);
+        }
+        expect_near(simulation_time(&sim), 3.0 / 60.0, 1e-12, "scene time");
+    }
+    simulation_free(&sim);
+    cr_expect_eq(rb_bytes_in_use(), 0);
+}
+
+Test(simulation, dragging_a_bone_pulls_it)
+{
+    simulation sim = load_arm();
+    char error[SIMULATION_ERROR_SIZE];
+    int hand = -1;
+    for (int k = 0; k < mu_model_part_count(sim.model); ++k) {
+        if (strcmp(mu_model_part_name(sim.model, k), "Hand") == 0) {
+            hand = k;
+        }
+    }
+    cr_assert_geq(hand, 0);
+    rb_vec2 grip = mu_model_part_centre(sim.model, hand);
+    cr_assert(simulation_drag_begin(&sim, grip), "the hand is picked");
+    rb_vec2 target = rb_add(grip, rb_v2(0.0, 0.2));
+    simulation_drag_move(&sim, target);
+    for (int k = 0; k < 60; ++k) {
+        cr_assert(simulation_step(&sim, error, sizeof error), "%s", error);
+    }
+    cr_expect_gt(mu_model_part_centre(sim.model, hand).y, grip.y + 0.05, "the hand was lifted");
+    simulation_drag_end(&sim);
+    cr_expect_not(sim.dragging);
+    cr_expect_not(simulation_drag_begin(&sim, rb_v2(50.0, 50.0)), "nothing to pick there");
+    simulation_free(&sim);
+}
+
+Test(live_graph, exports_its_channels_as_csv)
+{
+    simulation sim = load_arm();
+    char error[CHART_ERROR_SIZE], dir[64], path[128];
+    history samples;
+    cr_assert(history_init(&samples, mu_model_muscle_count(sim.model), 10));
+    for (int k = 0; k < 4; ++k) {
+        cr_assert(simulation_step(&sim, error, sizeof error));
+        mu_muscle_readout readouts[8];
+        for (int m = 0; m < mu_model_muscle_count(sim.model); ++m) {
+            readouts[m] = mu_model_muscle_readout(sim.model, m);
+        }
+        history_record(&samples, simulation_time(&sim), readouts);
+    }
+    live_graph graph;
+    live_graph_select(&graph, LIVE_GRAPH_SELECTED_FORCES, &sim);
+    cr_assert_eq(graph.channel_count, 3, "active, passive, total of the selected muscle");
+    cr_expect_str_eq(graph.channels[1].label, "Biceps Short passive");
+    make_temp_dir(dir, sizeof dir);
+    snprintf(path, sizeof path, "%s/forces.csv", dir);
+    cr_assert(live_graph_write_csv(&graph, &samples, path, error, sizeof error), "%s", error);
+    FILE *file = fopen(path, "r");
+    cr_assert_not_null(file);
+    char header[512];
+    cr_assert_not_null(fgets(header, sizeof header, file));
+    cr_expect_str_eq(header,
+                     "time_s,Biceps Short.active_force_N,Biceps Short.passive_force_N,Biceps Short.total_force_N\n");
+    int rows = 0;
+    char line[512];
+    while (fgets(line, sizeof line, file) != NULL) {
+        ++rows;
+    }
+    fclose(file);
+    cr_expect_eq(rows, 4);
+    cr_expect_not(live_graph_write_csv(&graph, &samples, "/nonexistent-dir/x.csv", error, sizeof error));
+    cr_expect(strstr(error, "/nonexistent-dir/x.csv") != NULL, "the message names the path: %s", error);
+    live_graph_select(&graph, LIVE_GRAPH_ACTIVATION, &sim);
+    cr_expect_eq(graph.channel_count, 5, "every muscle of the arm");
+    unlink(path);
+    rmdir(dir);
+    history_free(&samples);
+    simulation_free(&sim);
+}
+
+/* Pixels of `colour` (0xRRGGBB) within `tolerance` per channel. */
+static long count_colour(cairo_surface_t *surface, uint32_t colour, int tolerance)
+{
+    cairo_surface_flush(surface);
+    const unsigned char *data = cairo_image_surface_get_data(surface);
+    int stride = cairo_image_surface_get_stride(surface);
+    long count = 0;
+    for (int y = 0; y < cairo_image_surface_get_height(surface); ++y) {
+        const uint32_t *row = (const uint32_t *)(data + (size_t)y * (size_t)stride);
+        for (int x = 0; x < cairo_image_surface_get_width(surface); ++x) {
+            bool near = true;
+            for (int shift = 0; shift <= 16; shift += 8) {
+                near = near && abs((int)((row[x] >> shift) & 0xff) - (int)((colour >> shift) & 0xff)) <= tolerance;
+            }
+            count += near;
+        }
+    }
+    return count;
+}
+
+Test(canvas_draw, draws_the_bones_and_the_weight)
+{
+    simulation sim = load_arm();
+    cairo_surface_t *surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 400, 300);
+    cairo_t *cr = cairo_create(surface);
+    /* The arm starts horizontal, from the shoulder to the fingers. */
+    rb_vec2 centre = rb_scale(0.5, rb_add(mu_model_part_centre(sim.model, 0),
+                                          mu_model_part_centre(sim.model, mu_model_part_count(sim.model) - 1)));
+    view_transform view = view_transform_make(centre, 500.0);
+    view_transform_resize(&view, 400.0, 300.0);
+    canvas_overlays overlays = {.joints = true, .aabbs = true};
+    canvas_draw(cr, &view, &sim, &overlays);
+    cr_expect_gt(count_colour(surface, CANVAS_BONE, 1), 1000, "ivory bones");
+    cr_expect_gt(count_colour(surface, CANVAS_WEIGHT, 1), 10, "the weight");
+    cr_expect_gt(count_colour(surface, CANVAS_BACKGROUND, 0), 400 * 300 / 2, "the background");
+    cairo_destroy(cr);
+    cairo_surface_destroy(surface);
+    simulation_free(&sim);
+}
+
+Test(simulation, a_model_runs_on_after_the_engine_panel_changes_its_solver)
+{
+    simulation sim = load_arm();
+    char error[SIMULATION_ERROR_SIZE];
+    rb_world *world = simulation_world(&sim);
+    for (int type = 0; type < RB_SOLVER_TYPE_COUNT; ++type) {
+        rb_solver_settings settings = rb_world_solver_settings(world);
+        settings.type = (rb_solver_type)type;
+        settings.substeps = 3 + type;
+        settings.velocity_iterations = 2;
+        settings.warm_starting = type % 2 == 0;
+        cr_assert_eq(rb_world_set_solver_settings(world, &settings), RB_OK, "%s", rb_last_error());
+        for (int k = 0; k < 30; ++k) {
+            cr_assert(simulation_step(&sim, error, sizeof error), "%s: %s", rb_solver_type_name(settings.type), error);
+        }
+        cr_expect_eq(rb_world_statistics(world).velocity_iterations, 2 * settings.substeps);
+        double elbow = mu_model_hinge_angle(sim.model, 1);
+        cr_expect(isfinite(elbow) && elbow > -10.5 && elbow < 150.5, "%s: elbow at %g°",
+                  rb_solver_type_name(settings.type), elbow);
+    }
+    simulation_free(&sim);
+}
