@@ -20,11 +20,10 @@
  * failure message printed (the release and the ASan builds print the same
  * value). It must change only with a deliberate change to the solver, the
  * integrator or the scene, recorded again the same way in the same commit
- * with a note saying why. Last recorded when the solvers began to turn
- * bodies by composing small rotations (rb_body_state_turn) instead of
- * taking cos and sin of each new angle: the rotations differ in the last
- * bits within a step. */
-#define PYRAMID_REFERENCE_HASH UINT64_C(0x506cb0d5d0dc9a91)
+ * with a note saying why. Last recorded when the contact rows began to
+ * use lever arms found once per substep (n·(vB - vA) + ωB·(rB×n) -
+ * ωA·(rA×n) rounds differently from ((vB + ωB×rB) - (vA + ωA×rA))·n). */
+#define PYRAMID_REFERENCE_HASH UINT64_C(0xb0fd30dc4798e467)
 
 /* The final state of a run: the hash and every moving body's pose. */
 typedef struct run_state {

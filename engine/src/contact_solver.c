@@ -59,10 +59,10 @@ static void prepare_block(rb_contact_constraint *c)
     const rb_constraint_point *p1 = &c->points[0];
     const rb_constraint_point *p2 = &c->points[1];
     double inv_mass_sum = c->inv_mass_a + c->inv_mass_b;
-    double rn1a = rb_cross(p1->anchor_a, c->normal);
-    double rn1b = rb_cross(p1->anchor_b, c->normal);
-    double rn2a = rb_cross(p2->anchor_a, c->normal);
-    double rn2b = rb_cross(p2->anchor_b, c->normal);
+    double rn1a = p1->normal_arm_a;
+    double rn1b = p1->normal_arm_b;
+    double rn2a = p2->normal_arm_a;
+    double rn2b = p2->normal_arm_b;
     c->k11 = inv_mass_sum + c->inv_inertia_a * rn1a * rn1a + c->inv_inertia_b * rn1b * rn1b;
     c->k22 = inv_mass_sum + c->inv_inertia_a * rn2a * rn2a + c->inv_inertia_b * rn2b * rn2b;
     c->k12 = inv_mass_sum + c->inv_inertia_a * rn1a * rn2a + c->inv_inertia_b * rn1b * rn2b;
@@ -233,13 +233,18 @@ void rb_contact_solver_prepare_substep(rb_world *world, double h, bool first_sub
             rb_vec2 pb;
             current_geometry(c, p, sa, sb, &c->normal, &pa, &pb);
             double s = rb_dot(c->normal, rb_sub(pb, pa));
-            anchors_at_midpoint(sa, sb, pa, pb, &p->anchor_a, &p->anchor_b);
-            p->normal_mass =
-                effective_mass(inv_mass_sum, c->inv_inertia_a, c->inv_inertia_b, p->anchor_a, p->anchor_b, c->normal);
-            p->tangent_mass = effective_mass(inv_mass_sum, c->inv_inertia_a, c->inv_inertia_b, p->anchor_a, p->anchor_b,
-                                             tangent_of(c->normal));
+            rb_vec2 ra;
+            rb_vec2 rb;
+            anchors_at_midpoint(sa, sb, pa, pb, &ra, &rb);
+            rb_vec2 tangent = tangent_of(c->normal);
+            p->normal_arm_a = rb_cross(ra, c->normal);
+            p->normal_arm_b = rb_cross(rb, c->normal);
+            p->tangent_arm_a = rb_cross(ra, tangent);
+            p->tangent_arm_b = rb_cross(rb, tangent);
+            p->normal_mass = effective_mass(inv_mass_sum, c->inv_inertia_a, c->inv_inertia_b, ra, rb, c->normal);
+            p->tangent_mass = effective_mass(inv_mass_sum, c->inv_inertia_a, c->inv_inertia_b, ra, rb, tangent);
             if (first_substep) {
-                p->approach_velocity = relative_velocity(sa, sb, p->anchor_a, p->anchor_b);
+                p->approach_velocity = relative_velocity(sa, sb, ra, rb);
                 p->relative_velocity = rb_dot(c->normal, p->approach_velocity);
             }
             if (s > 0.0) {
@@ -282,15 +287,42 @@ static inline void store_velocities(const body_velocities *v, rb_body_state *a, 
     b->angular_velocity = v->angular_b;
 }
 
-/* Relative velocity of the contact point on B with respect to A. */
-static inline rb_vec2 point_velocity(const body_velocities *v, const rb_constraint_point *p)
+/* The point's velocity on B relative to A along the normal, and along
+ * the tangent, from the lever arms. */
+static inline double normal_velocity(const rb_contact_constraint *c, const rb_constraint_point *p,
+                                     const body_velocities *v)
 {
-    rb_vec2 vb = rb_add(v->linear_b, rb_cross_sv(v->angular_b, p->anchor_b));
-    rb_vec2 va = rb_add(v->linear_a, rb_cross_sv(v->angular_a, p->anchor_a));
-    return rb_sub(vb, va);
+    return rb_dot(c->normal, rb_sub(v->linear_b, v->linear_a)) + v->angular_b * p->normal_arm_b -
+           v->angular_a * p->normal_arm_a;
 }
 
-/* Applies impulse P at anchors rA, rB: -P to A, +P to B. */
+static inline double tangent_velocity(rb_vec2 tangent, const rb_constraint_point *p, const body_velocities *v)
+{
+    return rb_dot(tangent, rb_sub(v->linear_b, v->linear_a)) + v->angular_b * p->tangent_arm_b -
+           v->angular_a * p->tangent_arm_a;
+}
+
+/* Applies an impulse `lambda` along `direction` (the normal or the
+ * tangent) at a point of lever arms arm_a, arm_b: -λ·direction to A,
+ * +λ·direction to B. */
+static inline void apply_row_impulse(const rb_contact_constraint *c, rb_vec2 direction, double arm_a, double arm_b,
+                                     double lambda, body_velocities *v)
+{
+    rb_vec2 impulse = rb_scale(lambda, direction);
+    v->linear_a = rb_mul_sub(v->linear_a, c->inv_mass_a, impulse);
+    v->angular_a -= c->inv_inertia_a * lambda * arm_a;
+    v->linear_b = rb_mul_add(v->linear_b, c->inv_mass_b, impulse);
+    v->angular_b += c->inv_inertia_b * lambda * arm_b;
+}
+
+static inline void apply_normal_impulse(const rb_contact_constraint *c, const rb_constraint_point *p, double lambda,
+                                        body_velocities *v)
+{
+    apply_row_impulse(c, c->normal, p->normal_arm_a, p->normal_arm_b, lambda, v);
+}
+
+/* Applies impulse P at anchors rA, rB: -P to A, +P to B (restitution,
+ * which acts at the anchors as they are after the substeps). */
 static inline void apply_impulse_at(const rb_contact_constraint *c, rb_vec2 ra, rb_vec2 rb, body_velocities *v,
                                     rb_vec2 impulse)
 {
@@ -298,13 +330,6 @@ static inline void apply_impulse_at(const rb_contact_constraint *c, rb_vec2 ra, 
     v->angular_a -= c->inv_inertia_a * rb_cross(ra, impulse);
     v->linear_b = rb_mul_add(v->linear_b, c->inv_mass_b, impulse);
     v->angular_b += c->inv_inertia_b * rb_cross(rb, impulse);
-}
-
-/* Applies impulse P at the point's anchors of this substep. */
-static inline void apply_impulse(const rb_contact_constraint *c, const rb_constraint_point *p, body_velocities *v,
-                                 rb_vec2 impulse)
-{
-    apply_impulse_at(c, p->anchor_a, p->anchor_b, v, impulse);
 }
 
 void rb_contact_solver_warm_start(rb_world *world)
@@ -317,8 +342,8 @@ void rb_contact_solver_warm_start(rb_world *world)
         rb_vec2 tangent = tangent_of(c->normal);
         for (int j = 0; j < c->point_count; ++j) {
             const rb_constraint_point *p = &c->points[j];
-            rb_vec2 impulse = rb_add(rb_scale(p->normal_impulse, c->normal), rb_scale(p->tangent_impulse, tangent));
-            apply_impulse(c, p, &v, impulse);
+            apply_row_impulse(c, c->normal, p->normal_arm_a, p->normal_arm_b, p->normal_impulse, &v);
+            apply_row_impulse(c, tangent, p->tangent_arm_a, p->tangent_arm_b, p->tangent_impulse, &v);
         }
         store_velocities(&v, a, b);
     }
@@ -327,12 +352,12 @@ void rb_contact_solver_warm_start(rb_world *world)
 static inline void solve_point_friction(const rb_contact_constraint *c, rb_constraint_point *p, rb_vec2 tangent,
                                         body_velocities *v)
 {
-    double vt = rb_dot(tangent, point_velocity(v, p));
+    double vt = tangent_velocity(tangent, p, v);
     double limit = c->friction * p->normal_impulse;
     double accumulated = rb_clamp(p->tangent_impulse - p->tangent_mass * vt, -limit, limit);
     double delta = accumulated - p->tangent_impulse;
     p->tangent_impulse = accumulated;
-    apply_impulse(c, p, v, rb_scale(delta, tangent));
+    apply_row_impulse(c, tangent, p->tangent_arm_a, p->tangent_arm_b, delta, v);
 }
 
 /* Each point's friction in turn; the two-point case, by far the most
@@ -348,12 +373,12 @@ static inline void solve_friction(rb_contact_constraint *c, body_velocities *v)
 
 static inline void solve_normal_point(rb_contact_constraint *c, rb_constraint_point *p, body_velocities *v)
 {
-    double vn = rb_dot(c->normal, point_velocity(v, p));
+    double vn = normal_velocity(c, p, v);
     double accumulated = rb_max(p->normal_impulse - p->normal_mass * (vn - p->min_normal_velocity), 0.0);
     double delta = accumulated - p->normal_impulse;
     p->normal_impulse = accumulated;
     p->max_normal_impulse = rb_max(p->max_normal_impulse, accumulated);
-    apply_impulse(c, p, v, rb_scale(delta, c->normal));
+    apply_normal_impulse(c, p, delta, v);
 }
 
 /* Both normal impulses at once: find x >= 0 with w = K·x + b >= 0 and
@@ -369,8 +394,8 @@ static inline void solve_normal_block(rb_contact_constraint *c, body_velocities 
     rb_constraint_point *p2 = &c->points[1];
     double x1_old = p1->normal_impulse;
     double x2_old = p2->normal_impulse;
-    double w1 = rb_dot(c->normal, point_velocity(v, p1)) - p1->min_normal_velocity;
-    double w2 = rb_dot(c->normal, point_velocity(v, p2)) - p2->min_normal_velocity;
+    double w1 = normal_velocity(c, p1, v) - p1->min_normal_velocity;
+    double w2 = normal_velocity(c, p2, v) - p2->min_normal_velocity;
     double b1 = w1 - (c->k11 * x1_old + c->k12 * x2_old);
     double b2 = w2 - (c->k12 * x1_old + c->k22 * x2_old);
 
@@ -401,8 +426,8 @@ static inline void solve_normal_block(rb_contact_constraint *c, body_velocities 
     p2->normal_impulse = x2;
     p1->max_normal_impulse = rb_max(p1->max_normal_impulse, x1);
     p2->max_normal_impulse = rb_max(p2->max_normal_impulse, x2);
-    apply_impulse(c, p1, v, rb_scale(x1 - x1_old, c->normal));
-    apply_impulse(c, p2, v, rb_scale(x2 - x2_old, c->normal));
+    apply_normal_impulse(c, p1, x1 - x1_old, v);
+    apply_normal_impulse(c, p2, x2 - x2_old, v);
 }
 
 void rb_contact_solver_solve_velocities(rb_world *world)
@@ -463,13 +488,13 @@ static inline void solve_soft_normal(rb_contact_constraint *c, const rb_contact_
             mass_scale = spring->mass_scale;
             impulse_scale = spring->impulse_scale;
         }
-        double vn = rb_dot(c->normal, point_velocity(v, p));
+        double vn = normal_velocity(c, p, v);
         double impulse = -p->normal_mass * mass_scale * (vn + bias) - impulse_scale * p->normal_impulse;
         double accumulated = rb_max(p->normal_impulse + impulse, 0.0);
         double delta = accumulated - p->normal_impulse;
         p->normal_impulse = accumulated;
         p->max_normal_impulse = rb_max(p->max_normal_impulse, accumulated);
-        apply_impulse(c, p, v, rb_scale(delta, c->normal));
+        apply_normal_impulse(c, p, delta, v);
     }
 }
 

@@ -7,7 +7,13 @@
 #include "world_internal.h"
 
 typedef struct rb_constraint_point {
-    rb_vec2 anchor_a, anchor_b; /* m, from each centre of mass to the point, this substep */
+    /* m, the point's lever arms about each centre of mass for this
+     * substep's normal and tangent: rA×n, rB×n, rA×t, rB×t, with rA, rB
+     * from the centres to the point. A velocity along the normal is then
+     * n·(vB - vA) + ωB·(rB×n) - ωA·(rA×n), and an impulse λ along it turns
+     * the bodies by ∓λ·(r×n)/I: the rows of the constraint's Jacobian,
+     * found once per substep instead of in every pass. */
+    double normal_arm_a, normal_arm_b, tangent_arm_a, tangent_arm_b;
     /* m, in each body's frame from its centre of mass: the material point
      * on a polygon's surface, or the centre of a circle (whose surface
      * point is wherever the normal meets it). */
