@@ -4,9 +4,9 @@
  *
  * Each box is enlarged by how far the shape may travel relative to its
  * neighbours during the step, so every pair that could touch by the end
- * of the step reaches the narrow phase and gets a speculative contact. */
-#include <stdlib.h>
-
+ * of the step reaches the narrow phase and gets a speculative contact.
+ * The pairs found are then put in body order (a counting sort), so the
+ * contacts, and every run, meet them in the same order. */
 #include "allocator.h"
 #include "broad_phase.h"
 #include "error.h"

@@ -5,6 +5,7 @@
 #ifndef RB_WORLD_INTERNAL_H
 #define RB_WORLD_INTERNAL_H
 
+#include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
 
