@@ -45,9 +45,12 @@ static inline void rb_body_state_turn(rb_body_state *state, double delta)
         state->rotation = rb_rot_from_angle(state->angle);
         return;
     }
+    /* Horner's form, the divisions by constants written as products (a
+     * division costs ten products, and the compiler may not swap one for
+     * the other itself). */
     double d2 = delta * delta;
-    double sine = delta * (1.0 - d2 / 6.0 * (1.0 - d2 / 20.0 * (1.0 - d2 / 42.0)));
-    double cosine = 1.0 - d2 / 2.0 * (1.0 - d2 / 12.0 * (1.0 - d2 / 30.0 * (1.0 - d2 / 56.0)));
+    double sine = delta * (1.0 - d2 * (1.0 / 6.0) * (1.0 - d2 * (1.0 / 20.0) * (1.0 - d2 * (1.0 / 42.0))));
+    double cosine = 1.0 - d2 * 0.5 * (1.0 - d2 * (1.0 / 12.0) * (1.0 - d2 * (1.0 / 30.0) * (1.0 - d2 * (1.0 / 56.0))));
     state->rotation = rb_mul_rot(state->rotation, (rb_rot){cosine, sine});
 }
 
