@@ -41,6 +41,12 @@ void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double 
 {
     rb_joint_frame *f = &joint->frame;
     f->point_mass = make_mass_matrix(f, f->ra, f->rb);
+    const rb_block_matrix *k = &f->point_mass;
+    double det = k->k11 * k->k22 - k->k12 * k->k12;
+    double inverse_det = det > 0.0 ? 1.0 / det : 0.0;
+    f->point_inverse11 = inverse_det * k->k22;
+    f->point_inverse12 = -inverse_det * k->k12;
+    f->point_inverse22 = inverse_det * k->k11;
 
     /* Solve for the velocities that keep the anchors together at the end
      * of the substep, not just momentarily (SHAKE; Ryckaert, Ciccotti,
@@ -108,11 +114,13 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
             return;
         }
     }
-    if (rb_block_solve2(&k, rb_neg(cdot), &impulse)) {
-        impulse = rb_soften(response, impulse, *accumulated);
-        *accumulated = rb_add(*accumulated, impulse);
-        rb_joint_apply_linear(joint, a, b, impulse);
-    }
+    /* The pin alone: x = -K⁻¹·Cdot with the substep's inverse (0 when K
+     * is singular, which only two bodies that cannot move make). */
+    impulse = rb_v2(-(f->point_inverse11 * cdot.x + f->point_inverse12 * cdot.y),
+                    -(f->point_inverse12 * cdot.x + f->point_inverse22 * cdot.y));
+    impulse = rb_soften(response, impulse, *accumulated);
+    *accumulated = rb_add(*accumulated, impulse);
+    rb_joint_apply_linear(joint, a, b, impulse);
 }
 
 double rb_point_constraint_correct(rb_world *world, rb_joint *joint, const double *angle_error)

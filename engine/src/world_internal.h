@@ -175,7 +175,11 @@ typedef struct rb_joint_frame {
     double omega_a, omega_b;  /* rad/s, the bodies' angular velocities at the start of the substep */
     /* Pins and welds only, fixed for the substep: */
     rb_block_matrix point_mass; /* the point constraint's K at ra, rb (joint_point.c) */
-    rb_vec2 point_drift;        /* m/s, the anchors' centripetal drift over the substep (joint_point.c) */
+    /* The inverse of its upper-left 2x2 (the pin alone), or all 0 when
+     * that is singular: every pass of a pin multiplies by it, where
+     * solving the 2x2 anew took two divisions each time. */
+    double point_inverse11, point_inverse12, point_inverse22;
+    rb_vec2 point_drift; /* m/s, the anchors' centripetal drift over the substep (joint_point.c) */
 } rb_joint_frame;
 
 typedef struct rb_revolute_data {
