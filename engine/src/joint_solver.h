@@ -151,7 +151,8 @@ static inline bool rb_block_solve2(const rb_block_matrix *k, rb_vec2 v, rb_vec2 
     if (!(det > 0.0)) {
         return false;
     }
-    *x = rb_v2((k->k22 * v.x - k->k12 * v.y) / det, (k->k11 * v.y - k->k12 * v.x) / det);
+    double inverse_det = 1.0 / det; /* one division instead of two */
+    *x = rb_v2((k->k22 * v.x - k->k12 * v.y) * inverse_det, (k->k11 * v.y - k->k12 * v.x) * inverse_det);
     return true;
 }
 
