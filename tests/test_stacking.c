@@ -126,3 +126,38 @@ Test(stacking, steady_steps_allocate_nothing)
     expect_no_allocation_in_steady_steps(world, "joint grid 20");
     destroy_world_and_expect_no_leak(world);
 }
+
+/* ---- Many pyramids (the benchmark's scale scene) ----------------------------
+ *
+ * scenes.h: pyramid k of `base` is centred at x = k·(base + 1), its top box
+ * at height (2·base - 1)·0.5; the boxes form one run of ids, pyramid by
+ * pyramid; out-of-range counts are refused with a message. The three
+ * pyramids stand for 5 s with no box moved more than 0.25 m. */
+Test(stacking, many_pyramids_are_laid_out_and_stand)
+{
+    rb_world *world = make_world(rb_v2(0.0, -10.0));
+    scene_pyramid pyramids;
+    cr_assert_eq(scene_many_pyramids_create(world, 3, 4, &pyramids), RB_OK, "%s", rb_last_error());
+    cr_assert_eq(pyramids.box_count, 3 * 4 * 5 / 2, "three pyramids of base 4 have 30 boxes");
+    rb_vec2 start[30];
+    for (int k = 0; k < pyramids.box_count; ++k) {
+        start[k] = rb_body_position(world, scene_body_at(pyramids.first_box, k));
+    }
+    /* Box 9 is the first pyramid's top, box 29 the last one's. */
+    expect_vec_near(start[9], rb_v2(0.0, 3.5), 1e-12, "the first pyramid's top box");
+    expect_vec_near(start[29], rb_v2(10.0, 3.5), 1e-12, "the last pyramid's top box");
+    expect_vec_near(rb_body_position(world, pyramids.top), start[29], 0.0, "out->top is the last pyramid's top");
+
+    step_world(world, TEST_DT, 300);
+    int moved = 0;
+    for (int k = 0; k < pyramids.box_count; ++k) {
+        moved += rb_distance(start[k], rb_body_position(world, scene_body_at(pyramids.first_box, k))) > BOX_MOVE_LIMIT;
+    }
+    cr_expect_eq(moved, 0, "%d boxes of the three pyramids moved more than %g m", moved, BOX_MOVE_LIMIT);
+
+    scene_pyramid unused;
+    cr_expect_eq(scene_many_pyramids_create(world, 0, 4, &unused), RB_ERR_INVALID_ARGUMENT, "a count of 0");
+    cr_expect_eq(scene_many_pyramids_create(world, 3, 101, &unused), RB_ERR_INVALID_ARGUMENT, "a base of 101");
+    cr_expect_eq(scene_many_pyramids_create(NULL, 3, 4, &unused), RB_ERR_INVALID_ARGUMENT, "no world");
+    destroy_world_and_expect_no_leak(world);
+}
