@@ -352,6 +352,9 @@ void rb_contact_solver_warm_start(rb_world *world)
 static inline void solve_point_friction(const rb_contact_constraint *c, rb_constraint_point *p, rb_vec2 tangent,
                                         body_velocities *v)
 {
+    if (p->normal_impulse == 0.0 && p->tangent_impulse == 0.0) {
+        return; /* no push, so no friction to hold or to release */
+    }
     double vt = tangent_velocity(tangent, p, v);
     double limit = c->friction * p->normal_impulse;
     double accumulated = rb_clamp(p->tangent_impulse - p->tangent_mass * vt, -limit, limit);
