@@ -66,10 +66,9 @@ void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double 
      * the substep's starting ones, so the drift is fixed for the substep. */
     rb_vec2 drift =
         rb_scale(0.5 * h, rb_sub(rb_scale(f->omega_b * f->omega_b, f->rb), rb_scale(f->omega_a * f->omega_a, f->ra)));
-    double drift_size = rb_length(drift);
     double drift_cap = world->settings.linear_slop / h;
-    if (drift_size > drift_cap) {
-        drift = rb_scale(drift_cap / drift_size, drift);
+    if (rb_length_squared(drift) > drift_cap * drift_cap) { /* a square root only when capping */
+        drift = rb_scale(drift_cap / rb_length(drift), drift);
     }
     f->point_drift = drift;
 }
