@@ -111,6 +111,16 @@ Test(cli, bad_arguments_fail_with_one_line_and_no_file)
     char csv[600];
     snprintf(csv, sizeof csv, "%s/arm.csv", dir);
     cr_expect_neq(access(csv, F_OK), 0, "a failed run left %s behind", csv);
+
+    /* An unknown model's message lists every built-in (it once left the
+     * worm out), and the usage status says the command line was wrong. */
+    cr_expect_eq(run_sinew("run nosuchmodel", log), 2, "an unknown model is a usage error");
+    FILE *f = fopen(log, "r");
+    cr_assert_not_null(f);
+    char text[1024] = "";
+    text[fread(text, 1, sizeof text - 1, f)] = '\0';
+    fclose(f);
+    cr_expect(strstr(text, "built-in: sample, arm, leg, worm;") != NULL, "the built-ins listed: %s", text);
     remove(log);
     rmdir(dir);
 }

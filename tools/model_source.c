@@ -25,7 +25,7 @@ bool model_source_is_builtin(const char *argument)
     return false;
 }
 
-int model_source_load(const char *argument, mu_model_desc **out)
+model_source_result model_source_open(const char *argument, mu_model_desc **out, char *error, size_t error_size)
 {
     *out = NULL;
     rb_status status;
@@ -36,15 +36,32 @@ int model_source_load(const char *argument, mu_model_desc **out)
     } else {
         /* A bare word that is not a built-in is more likely a misspelt
          * name than a file in the current directory; ./NAME reads one. */
-        fprintf(stderr, "sinew: unknown model \"%s\" (built-in: sample, arm, leg; or a path to a .json file)\n",
-                argument);
-        return EXIT_USAGE;
+        int written = snprintf(error, error_size, "unknown model \"%s\" (built-in:", argument);
+        for (int k = 0; k < MODEL_BUILTIN_COUNT && written >= 0 && (size_t)written < error_size; ++k) {
+            written += snprintf(error + written, error_size - (size_t)written, "%s %s", k == 0 ? "" : ",",
+                                model_builtin_names[k]);
+        }
+        if (written >= 0 && (size_t)written < error_size) {
+            snprintf(error + written, error_size - (size_t)written, "; or a path to a .json file)");
+        }
+        return MODEL_SOURCE_UNKNOWN;
     }
     if (status != RB_OK) {
-        fprintf(stderr, "sinew: %s\n", rb_last_error());
-        return EXIT_FAILURE;
+        snprintf(error, error_size, "%s", rb_last_error());
+        return MODEL_SOURCE_INVALID;
     }
-    return 0;
+    return MODEL_SOURCE_LOADED;
+}
+
+int model_source_load(const char *argument, mu_model_desc **out)
+{
+    char error[MODEL_SOURCE_ERROR_SIZE];
+    model_source_result result = model_source_open(argument, out, error, sizeof error);
+    if (result == MODEL_SOURCE_LOADED) {
+        return 0;
+    }
+    fprintf(stderr, "sinew: %s\n", error);
+    return result == MODEL_SOURCE_UNKNOWN ? EXIT_USAGE : EXIT_FAILURE;
 }
 
 void model_source_stem(const char *argument, char *stem, size_t stem_size)

@@ -19,12 +19,26 @@ extern const char *const model_builtin_names[MODEL_BUILTIN_COUNT]; /* "sample", 
 /* Whether `argument` is the name of a built-in model. */
 bool model_source_is_builtin(const char *argument);
 
+/* Bytes of model_source_open's message, its NUL included. */
+#define MODEL_SOURCE_ERROR_SIZE 1024
+
+typedef enum model_source_result {
+    MODEL_SOURCE_LOADED,
+    MODEL_SOURCE_UNKNOWN, /* neither a built-in name nor a path */
+    MODEL_SOURCE_INVALID, /* the file cannot be read or is invalid */
+} model_source_result;
+
 /* Loads the model `argument` names: a built-in name as it is, anything
- * else as a path when it contains a '/' or ends in ".json". Returns 0 with
+ * else as a path when it contains a '/' or ends in ".json". On failure
+ * `error` holds one line: the built-ins for an unknown name, or the
+ * loader's message (file, line, column and JSON path). Prints nothing:
+ * the viewer shows the line in its window. */
+model_source_result model_source_open(const char *argument, mu_model_desc **out, char *error, size_t error_size);
+
+/* model_source_open for the command line: returns 0 with
  * *out set, or an exit status after one line on stderr: EXIT_USAGE for a
  * name that is neither, EXIT_FAILURE when the file cannot be read or is
- * invalid (the loader's message names the file, line, column and JSON
- * path). */
+ * invalid. */
 int model_source_load(const char *argument, mu_model_desc **out);
 
 /* The name outputs are called after: a built-in name as it is, a path's

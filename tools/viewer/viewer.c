@@ -68,10 +68,11 @@ static void after_load(viewer *app)
     viewer_refresh(app);
 }
 
-bool viewer_load_model(viewer *app, const char *argument, const mu_model_options *options)
+/* After a model load or reload: the error in the window and the panels
+ * back to the model still loaded, or the new model shown. */
+static bool finish_model_load(viewer *app, bool loaded, const char *error)
 {
-    char error[SIMULATION_ERROR_SIZE];
-    if (!simulation_load_model(&app->sim, argument, options, error, sizeof error)) {
+    if (!loaded) {
         viewer_show_error(app, error);
         controls_panel_sync(app->controls);
         return false;
@@ -81,17 +82,16 @@ bool viewer_load_model(viewer *app, const char *argument, const mu_model_options
     return true;
 }
 
+bool viewer_load_model(viewer *app, const char *argument, const mu_model_options *options)
+{
+    char error[SIMULATION_ERROR_SIZE];
+    return finish_model_load(app, simulation_load_model(&app->sim, argument, options, error, sizeof error), error);
+}
+
 bool viewer_reload_model(viewer *app, const mu_model_options *options)
 {
     char error[SIMULATION_ERROR_SIZE];
-    if (!simulation_reload(&app->sim, options, error, sizeof error)) {
-        viewer_show_error(app, error);
-        controls_panel_sync(app->controls);
-        return false;
-    }
-    viewer_show_error(app, NULL);
-    after_load(app);
-    return true;
+    return finish_model_load(app, simulation_reload(&app->sim, options, error, sizeof error), error);
 }
 
 bool viewer_load_scene(viewer *app, viewer_scene_kind kind)

@@ -39,27 +39,6 @@ static void unload(simulation *sim)
 
 void simulation_free(simulation *sim) { unload(sim); }
 
-static bool ends_with(const char *text, const char *suffix)
-{
-    size_t length = strlen(text), suffix_length = strlen(suffix);
-    return length >= suffix_length && strcmp(text + length - suffix_length, suffix) == 0;
-}
-
-static bool load_description(const char *argument, mu_model_desc **out, char *error, size_t error_size)
-{
-    rb_status status;
-    if (model_source_is_builtin(argument)) {
-        status = mu_model_desc_load_builtin(argument, out);
-    } else if (strchr(argument, '/') != NULL || ends_with(argument, ".json")) {
-        status = mu_model_desc_load(argument, out);
-    } else {
-        snprintf(error, error_size,
-                 "unknown model \"%s\" (built-in: sample, arm, leg, worm; or a path to a .json file)", argument);
-        return false;
-    }
-    return status == RB_OK || fail_engine(error, error_size);
-}
-
 /* The name of the first muscle group of the built model, else its first
  * muscle, else "". */
 static void first_target(const simulation *sim, char *name, size_t name_size)
@@ -120,7 +99,7 @@ bool simulation_load_model(simulation *sim, const char *argument, const mu_model
                            size_t error_size)
 {
     mu_model_desc *desc;
-    if (!load_description(argument, &desc, error, error_size)) {
+    if (model_source_open(argument, &desc, error, error_size) != MODEL_SOURCE_LOADED) {
         return false;
     }
     return install_model(sim, argument, desc, options, error, error_size);
@@ -132,7 +111,7 @@ bool simulation_reload(simulation *sim, const mu_model_options *options, char *e
         return fail(error, error_size, "no model to reload");
     }
     mu_model_desc *desc;
-    if (!load_description(sim->model_argument, &desc, error, error_size)) {
+    if (model_source_open(sim->model_argument, &desc, error, error_size) != MODEL_SOURCE_LOADED) {
         return false;
     }
     return install_model(sim, sim->model_argument, desc, options, error, error_size);
