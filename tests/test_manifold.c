@@ -488,6 +488,25 @@ Test(manifold, feature_id_follows_surviving_corner)
     check_surviving_corner_keeps_id(-0.01);
 }
 
+Test(manifold, feature_ids_survive_a_change_of_reference_face)
+{
+    /* Two unit boxes as in a pyramid: the upper one (B) centred over the
+     * lower one's right edge, 1 cm deep. Its bottom face and the lower
+     * box's top face are nearly parallel, so a tilt of -1 mrad leaves the
+     * reference face on A and -2 mrad moves it to B. The same two corners
+     * meet in both frames (the lower box's top right, the upper box's
+     * bottom left cut by the other's side plane), and they must keep their
+     * ids: with the side of the reference face in the id, every point of
+     * a leaning stack lost its warm start whenever a box rocked past the
+     * tie, and a soft-step pyramid of base 100 spread by metres. */
+    rb_polygon box = make_box(0.5, 0.5);
+    rb_manifold on_a = rb_collide_polygons(&box, rb_transform_identity(), &box, pose(0.5, 0.99, -1e-3), 0.0);
+    rb_manifold on_b = rb_collide_polygons(&box, rb_transform_identity(), &box, pose(0.5, 0.99, -2e-3), 0.0);
+    cr_assert(!on_a.reference_on_b, "at -1 mrad the reference face should be the lower box's");
+    cr_assert(on_b.reference_on_b, "at -2 mrad the reference face should be the upper box's");
+    expect_same_ids(&on_a, &on_b);
+}
+
 Test(manifold, feature_ids_ignore_roundoff_at_side_planes)
 {
     /* Two equal unit boxes stacked exactly: the upper box's bottom corners

@@ -62,14 +62,18 @@ rb_status rb_contacts_update(rb_world *world)
 }
 
 /* A manifold computed with the shapes swapped, told from A to B again:
- * the normal turns round, and between outlines (polygons, segments) the
- * reference face changes side, so the flip bit of each id does too.
- * Circle points keep id 0. */
+ * the normal turns round, and between outlines the reference face
+ * changes side and each id's vertex pair its order. Circle points keep
+ * id 0. */
 static rb_manifold flip_manifold(rb_manifold m, bool outlines)
 {
     m.normal = rb_neg(m.normal);
-    for (int i = 0; outlines && i < m.point_count; ++i) {
-        m.points[i].id ^= rb_feature_id(1, 0, 0, 0);
+    if (outlines) {
+        m.reference_on_b = !m.reference_on_b;
+        for (int i = 0; i < m.point_count; ++i) {
+            uint32_t id = m.points[i].id;
+            m.points[i].id = rb_feature_id((int)(id & 0xffu), (int)(id >> 8));
+        }
     }
     return m;
 }

@@ -116,8 +116,8 @@ int rb_contact_solver_prepare(rb_world *world)
         c->radius_a = circle_a ? shape_a->geometry.circle.radius : 0.0;
         c->radius_b = circle_b ? shape_b->geometry.circle.radius : 0.0;
         /* Which face the normal belongs to: a polygon's against a circle;
-         * between polygons, the reference face (the flip bit of the id). */
-        bool reference_on_b = circle_a || (!circle_b && (contact->manifold.points[0].id >> 24) != 0);
+         * between outlines, the reference face. */
+        bool reference_on_b = circle_a || (!circle_b && contact->manifold.reference_on_b);
         if (circle_a && circle_b) {
             c->normal_follows = RB_NORMAL_FROM_CENTERS;
             c->local_normal = c->normal;

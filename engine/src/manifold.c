@@ -155,28 +155,43 @@ static int clip_segment(const rb_vec2 in[2], rb_vec2 out[2], rb_vec2 normal, dou
     return 2;
 }
 
-rb_manifold rb_clip_incident_edge(rb_vec2 v1, rb_vec2 v2, rb_vec2 reference_normal, const rb_vec2 incident[2], int flip,
-                                  int reference_edge, int incident_edge, double speculative_distance)
+rb_edge rb_polygon_edge(const rb_placed_polygon *polygon, int i)
+{
+    int next = i + 1 < polygon->count ? i + 1 : 0;
+    return (rb_edge){polygon->vertices[i], polygon->vertices[next], i, next};
+}
+
+rb_manifold rb_clip_incident_edge(rb_edge reference, rb_vec2 reference_normal, rb_edge incident, bool flip,
+                                  double speculative_distance)
 {
     rb_manifold m = {0};
-    rb_vec2 tangent = rb_normalize(rb_sub(v2, v1));
+    rb_vec2 tangent = rb_normalize(rb_sub(reference.v2, reference.v1));
+    rb_vec2 ends[2] = {incident.v1, incident.v2};
     rb_vec2 clipped_once[2];
     rb_vec2 clipped[2];
-    if (clip_segment(incident, clipped_once, rb_neg(tangent), -rb_dot(tangent, v1)) < 2 ||
-        clip_segment(clipped_once, clipped, tangent, rb_dot(tangent, v2)) < 2) {
+    if (clip_segment(ends, clipped_once, rb_neg(tangent), -rb_dot(tangent, reference.v1)) < 2 ||
+        clip_segment(clipped_once, clipped, tangent, rb_dot(tangent, reference.v2)) < 2) {
         return m;
     }
 
     /* The manifold normal points from A to B. */
     m.normal = flip ? rb_neg(reference_normal) : reference_normal;
+    m.reference_on_b = flip;
+    /* The incident edge runs against the reference face: its first end
+     * lies towards the face's second vertex, its second end towards the
+     * first. */
+    const int incident_vertex[2] = {incident.index1, incident.index2};
+    const int reference_vertex[2] = {reference.index2, reference.index1};
     for (int i = 0; i < 2; ++i) {
-        double separation = rb_dot(reference_normal, rb_sub(clipped[i], v1));
+        double separation = rb_dot(reference_normal, rb_sub(clipped[i], reference.v1));
         if (separation <= speculative_distance) {
             /* The clipped point lies on the incident surface; the
              * reference surface is `separation` behind it along the
              * reference normal: report the midpoint. */
             rb_vec2 midpoint = rb_mul_sub(clipped[i], 0.5 * separation, reference_normal);
-            rb_manifold_add_point(&m, midpoint, separation, rb_feature_id(flip, reference_edge, incident_edge, i));
+            uint32_t id = flip ? rb_feature_id(incident_vertex[i], reference_vertex[i])
+                               : rb_feature_id(reference_vertex[i], incident_vertex[i]);
+            rb_manifold_add_point(&m, midpoint, separation, id);
         }
     }
     return m;
@@ -197,7 +212,7 @@ rb_manifold rb_collide_placed_polygons(const rb_placed_polygon *pa, const rb_pla
         return m;
     }
 
-    int flip = separation_b > separation_a + RB_REFERENCE_FACE_TOLERANCE;
+    bool flip = separation_b > separation_a + RB_REFERENCE_FACE_TOLERANCE;
     const rb_placed_polygon *reference = flip ? pb : pa;
     const rb_placed_polygon *incident = flip ? pa : pb;
     int reference_edge = flip ? edge_b : edge_a;
@@ -213,14 +228,8 @@ rb_manifold rb_collide_placed_polygons(const rb_placed_polygon *pa, const rb_pla
             incident_edge = i;
         }
     }
-    int i1 = incident_edge;
-    int i2 = incident_edge + 1 < incident->count ? incident_edge + 1 : 0;
-    rb_vec2 segment[2] = {incident->vertices[i1], incident->vertices[i2]};
-
-    rb_vec2 v1 = reference->vertices[reference_edge];
-    rb_vec2 v2 = reference->vertices[reference_edge + 1 < reference->count ? reference_edge + 1 : 0];
-    return rb_clip_incident_edge(v1, v2, reference_normal, segment, flip, reference_edge, incident_edge,
-                                 speculative_distance);
+    return rb_clip_incident_edge(rb_polygon_edge(reference, reference_edge), reference_normal,
+                                 rb_polygon_edge(incident, incident_edge), flip, speculative_distance);
 }
 
 rb_manifold rb_collide_polygons(const rb_polygon *a, rb_transform xfa, const rb_polygon *b, rb_transform xfb,

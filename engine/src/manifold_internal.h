@@ -30,13 +30,23 @@ rb_placed_polygon rb_place_polygon(const rb_polygon *polygon, rb_transform xf);
 rb_manifold rb_collide_placed_polygons(const rb_placed_polygon *pa, const rb_placed_polygon *pb,
                                        double speculative_distance);
 
+/* An edge of an outline: its two vertices in the outline's order, and
+ * their indices in it, which name the vertices in feature ids. */
+typedef struct rb_edge {
+    rb_vec2 v1, v2;
+    int index1, index2;
+} rb_edge;
+
+/* Edge `i` of a polygon: from vertex i to the next. */
+rb_edge rb_polygon_edge(const rb_placed_polygon *polygon, int i);
+
 /* Clips the incident edge to the side planes of the reference face
- * v1 -> v2 (outward normal `reference_normal`) and keeps the points within
- * the speculative distance of the face. `flip` says the reference face
- * is shape B's; the normal is then reversed, so it still points from A
- * to B. Empty when the incident edge misses the face. */
-rb_manifold rb_clip_incident_edge(rb_vec2 v1, rb_vec2 v2, rb_vec2 reference_normal, const rb_vec2 incident[2], int flip,
-                                  int reference_edge, int incident_edge, double speculative_distance);
+ * (outward normal `reference_normal`) and keeps the points within the
+ * speculative distance of the face. `flip` says the reference face is
+ * shape B's; the normal is then reversed, so it still points from A to
+ * B. Empty when the incident edge misses the face. */
+rb_manifold rb_clip_incident_edge(rb_edge reference, rb_vec2 reference_normal, rb_edge incident, bool flip,
+                                  double speculative_distance);
 
 void rb_manifold_add_point(rb_manifold *m, rb_vec2 point, double separation, uint32_t id);
 

@@ -204,13 +204,10 @@ rb_manifold rb_collide_chain_segment_and_polygon(const rb_chain_segment *a, rb_t
     }
 
     /* The front face is edge 1 of the two-vertex outline: point2 -> point1. */
-    const rb_vec2 front[2] = {f.p2, f.p1};
-    const int front_edge = 1;
+    const rb_edge front = {f.p2, f.p1, 1, 0};
     if (polygon_separation > segment_separation + RB_REFERENCE_FACE_TOLERANCE &&
         admits_normal(a, &f, rb_neg(pb.normals[polygon_edge]))) {
-        rb_vec2 v1 = pb.vertices[polygon_edge];
-        rb_vec2 v2 = pb.vertices[polygon_edge + 1 < pb.count ? polygon_edge + 1 : 0];
-        m = rb_clip_incident_edge(v1, v2, pb.normals[polygon_edge], front, 1, polygon_edge, front_edge,
+        m = rb_clip_incident_edge(rb_polygon_edge(&pb, polygon_edge), pb.normals[polygon_edge], front, true,
                                   speculative_distance);
     } else {
         /* The incident edge: the polygon's edge most opposed to the front. */
@@ -223,10 +220,7 @@ rb_manifold rb_collide_chain_segment_and_polygon(const rb_chain_segment *a, rb_t
                 incident_edge = i;
             }
         }
-        const rb_vec2 incident[2] = {pb.vertices[incident_edge],
-                                     pb.vertices[incident_edge + 1 < pb.count ? incident_edge + 1 : 0]};
-        m = rb_clip_incident_edge(front[0], front[1], f.normal, incident, 0, front_edge, incident_edge,
-                                  speculative_distance);
+        m = rb_clip_incident_edge(front, f.normal, rb_polygon_edge(&pb, incident_edge), false, speculative_distance);
     }
     return rb_manifold_to_world(m, xfa);
 }

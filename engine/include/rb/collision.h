@@ -12,6 +12,7 @@
 #ifndef RB_COLLISION_H
 #define RB_COLLISION_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
 #include "rb/geometry.h"
@@ -30,19 +31,26 @@ typedef struct rb_manifold {
     rb_vec2 normal; /* unit, world, from shape A to shape B */
     rb_manifold_point points[RB_MAX_MANIFOLD_POINTS];
     int point_count; /* 0 .. 2 */
+    /* Between outlines (polygons, segments): the normal is the outward
+     * normal of shape B's reference face, reversed, rather than of shape
+     * A's. Always false when a circle is involved. */
+    bool reference_on_b;
 } rb_manifold;
 
-/* A feature id names the features that made a point. For two polygons:
- * whether shape B held the reference face, the reference edge, the
- * incident edge, and which end of the clipped incident edge (0 or 1) the
- * point came from. It does not say whether a side plane cut the point:
- * when two equal boxes are stacked, the incident vertices lie on the side
- * planes and round-off decides the cut, which must not change the id.
- * Circle points have id 0. Ids compare equal exactly when the same
- * features meet. */
-static inline uint32_t rb_feature_id(int flip, int reference_edge, int incident_edge, int end)
+/* A feature id names the two vertices, one on each shape, that made a
+ * point between outlines: the incident vertex the point comes from, and
+ * the end of the reference face on that vertex's side (its side plane
+ * cuts the incident edge there when the vertex lies beyond it). The pair
+ * is written in shape order, A's vertex first, so an id says nothing
+ * about which shape holds the reference face: when two faces are nearly
+ * parallel, as in any stack, the reference face changes sides with tiny
+ * tilts, and the same corner must keep its id, or the point loses the
+ * impulse that warm-starts it. Nor does the id say whether a side plane
+ * cut the point: for equal boxes stacked exactly, round-off decides it.
+ * Circle points have id 0. */
+static inline uint32_t rb_feature_id(int vertex_a, int vertex_b)
 {
-    return ((uint32_t)flip << 24) | ((uint32_t)reference_edge << 16) | ((uint32_t)incident_edge << 8) | (uint32_t)end;
+    return ((uint32_t)vertex_a << 8) | (uint32_t)vertex_b;
 }
 
 rb_manifold rb_collide_circles(const rb_circle *a, rb_transform xfa, const rb_circle *b, rb_transform xfb,
