@@ -76,22 +76,43 @@ static void prepare_block(rb_contact_constraint *c)
     }
 }
 
+/* The body's index if the solver moves it (dynamic and awake), else -1. */
+static int moving_index(const rb_world *world, int body)
+{
+    const rb_body *b = &world->bodies[body];
+    return b->type == RB_BODY_DYNAMIC && b->awake ? body : -1;
+}
+
 int rb_contact_solver_prepare(rb_world *world)
 {
+    /* Colour the contacts to solve, then lay their constraints out colour
+     * by colour (constraint_colouring.c). */
+    rb_colouring *colouring = &world->contact_colouring;
+    if (rb_colouring_begin(colouring, world->body_slots) != 0) {
+        world->constraint_count = 0;
+        return -1;
+    }
     int count = 0;
     for (int i = 0; i < world->contact_count; ++i) {
-        count += is_solvable(world, &world->contacts[i]) ? 1 : 0;
+        rb_contact *contact = &world->contacts[i];
+        contact->colour = -1;
+        if (is_solvable(world, contact)) {
+            contact->colour = rb_colouring_assign(colouring, moving_index(world, contact->body_a),
+                                                  moving_index(world, contact->body_b));
+            ++count;
+        }
     }
     if (rb_grow_array((void **)&world->constraints, &world->constraint_capacity, count, sizeof *world->constraints) !=
         0) {
         world->constraint_count = 0;
         return -1;
     }
+    int next[RB_COLOUR_COUNT + 1];
+    world->statistics.contact_colours = rb_colouring_offsets(colouring, next);
     bool warm = world->settings.warm_starting;
-    int n = 0;
     for (int i = 0; i < world->contact_count; ++i) {
         const rb_contact *contact = &world->contacts[i];
-        if (!is_solvable(world, contact)) {
+        if (contact->colour < 0) {
             continue;
         }
         const rb_body *body_a = &world->bodies[contact->body_a];
@@ -100,7 +121,7 @@ int rb_contact_solver_prepare(rb_world *world)
         const rb_body_state *sb = &world->states[contact->body_b];
         assert(contact->body_a != contact->body_b);
         assert(fabs(rb_length(contact->manifold.normal) - 1.0) < 1e-9);
-        rb_contact_constraint *c = &world->constraints[n++];
+        rb_contact_constraint *c = &world->constraints[next[contact->colour]++];
         c->contact = i;
         c->body_a = contact->body_a;
         c->body_b = contact->body_b;
@@ -147,8 +168,8 @@ int rb_contact_solver_prepare(rb_world *world)
         }
         c->use_block = false;
     }
-    world->constraint_count = n;
-    return n;
+    world->constraint_count = count;
+    return count;
 }
 
 /* The contact as the bodies are now: the normal, turned with the body
@@ -433,10 +454,11 @@ static inline void solve_normal_block(rb_contact_constraint *c, body_velocities 
     apply_normal_impulse(c, p2, x2 - x2_old, v);
 }
 
-void rb_contact_solver_solve_velocities(rb_world *world)
+void rb_contact_solver_solve_velocities(rb_world *world, bool backwards)
 {
-    for (int i = 0; i < world->constraint_count; ++i) {
-        rb_contact_constraint *c = &world->constraints[i];
+    int n = world->constraint_count;
+    for (int k = 0; k < n; ++k) {
+        rb_contact_constraint *c = &world->constraints[backwards ? n - 1 - k : k];
         rb_body_state *a = &world->states[c->body_a];
         rb_body_state *b = &world->states[c->body_b];
         body_velocities v = load_velocities(a, b);

@@ -57,8 +57,10 @@ int rb_contact_solver_prepare(rb_world *world);
  * impact speed for restitution. */
 void rb_contact_solver_prepare_substep(rb_world *world, double h, bool first_substep, bool baumgarte_bias);
 void rb_contact_solver_warm_start(rb_world *world);
-/* One pass of sequential impulses at the substep's bounds (Baumgarte, NGS). */
-void rb_contact_solver_solve_velocities(rb_world *world);
+/* One pass of sequential impulses at the substep's bounds (Baumgarte,
+ * NGS), over the colours in order or, `backwards`, in reverse: passes
+ * that alternate do not favour the colours solved last. */
+void rb_contact_solver_solve_velocities(rb_world *world, bool backwards);
 
 /* How the soft step's contacts answer overlap in one pass
  * (solver_soft_step.c). */

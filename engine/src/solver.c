@@ -92,8 +92,9 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
     t = rb_world_clock(world);
     for (int iteration = 0; iteration < world->settings.velocity_iterations; ++iteration) {
         rb_cables_solve(world, h);
-        rb_joints_solve_velocities(world, h, iteration % 2 == 1);
-        rb_contact_solver_solve_velocities(world);
+        bool backwards = iteration % 2 == 1;
+        rb_joints_solve_velocities(world, h, backwards);
+        rb_contact_solver_solve_velocities(world, backwards);
     }
     profile->solve_velocities += rb_world_clock(world) - t;
 

@@ -145,6 +145,7 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->island_size, &world->island_size_capacity, sizeof *world->island_size);
     rb_free_array((void **)&world->island_rest, &world->island_rest_capacity, sizeof *world->island_rest);
     rb_free_array((void **)&world->constraints, &world->constraint_capacity, sizeof *world->constraints);
+    rb_colouring_free(&world->contact_colouring);
     rb_free_array((void **)&world->joints, &world->joint_capacity, sizeof *world->joints);
     rb_free_array((void **)&world->cables, &world->cable_capacity, sizeof *world->cables);
     rb_contact_events_free(world);
@@ -238,6 +239,7 @@ size_t rb_world_bytes_in_use(const rb_world *world)
            (size_t)world->pair_bucket_capacity * sizeof *world->pair_bucket +
            (size_t)world->sweep_capacity * sizeof *world->sweep +
            (size_t)world->constraint_capacity * sizeof *world->constraints +
+           (size_t)world->contact_colouring.body_capacity * sizeof *world->contact_colouring.body_colours +
            (size_t)world->joint_capacity * sizeof *world->joints +
            (size_t)world->cable_capacity * sizeof *world->cables + rb_contact_events_bytes(world);
 }

@@ -9,6 +9,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "constraint_colouring.h"
 #include "rb/body.h"
 #include "rb/cable.h"
 #include "rb/collision.h"
@@ -123,6 +124,7 @@ typedef struct rb_contact {
     bool sensor;
     bool touching;
     bool reported_touching; /* the state the last begin or end event told */
+    int colour;             /* the solver's colour in this step; -1 when not solved */
 } rb_contact;
 
 /* The events of the last step, and the end events of shapes destroyed
@@ -333,8 +335,9 @@ struct rb_world {
     bool sweep_stale;      /* shapes were created or destroyed: rebuild the sweep */
     int solid_shape_count; /* shapes that are not sensors */
 
-    rb_contact_constraint *constraints;
+    rb_contact_constraint *constraints; /* in colour order */
     int constraint_count, constraint_capacity;
+    rb_colouring contact_colouring;
 
     rb_joint *joints;
     int joint_capacity;

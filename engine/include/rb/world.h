@@ -108,6 +108,9 @@ typedef struct rb_statistics {
     int pair_count;    /* shape pairs whose bounding boxes overlap */
     int contact_count; /* pairs with at least one manifold point */
     int manifold_point_count;
+    /* colours the contact constraints were solved in (a colour's
+     * constraints share no moving body; the overflow colour counts) */
+    int contact_colours;
     int velocity_iterations; /* done in the last step, summed over substeps */
     int position_iterations; /* NGS passes done in the last step, summed over substeps */
     int relax_iterations;    /* soft step relax passes done in the last step, summed over substeps */

@@ -1,0 +1,123 @@
+/* Graph colouring of the contact constraints (constraint_colouring.c):
+ * the rules on small graphs worked by hand, the layout a world's step
+ * leaves, and what it is for: the soft step at Box2D v3's budget (4
+ * substeps of one solve and one relax pass) holds the peers' base-100
+ * pyramid, as Box2D v3 does, with no box moving more than 0.25 m
+ * sideways in 6 s (before colouring, 49 boxes did; before the feature
+ * ids survived a change of reference face, 3,878). */
+#include "constraint_colouring.h"
+#include "contact_solver.h"
+#include "scenes/scenes.h"
+#include "test_support.h"
+
+#define FIXED -1
+
+Test(colouring, a_chain_alternates_and_the_ground_takes_the_top_colour)
+{
+    /* Bodies 0-1-2-3 in a chain, then each of 0 and 1 against the ground. */
+    rb_colouring colouring = {0};
+    cr_assert_eq(rb_colouring_begin(&colouring, 4), 0);
+    cr_expect_eq(rb_colouring_assign(&colouring, 0, 1), 0);
+    cr_expect_eq(rb_colouring_assign(&colouring, 1, 2), 1, "body 1 is in colour 0 already");
+    cr_expect_eq(rb_colouring_assign(&colouring, 2, 3), 0, "neither 2 nor 3 is in colour 0");
+    cr_expect_eq(rb_colouring_assign(&colouring, FIXED, 0), RB_COLOUR_COUNT - 1);
+    cr_expect_eq(rb_colouring_assign(&colouring, 1, FIXED), RB_COLOUR_COUNT - 1, "the ground may be in a colour twice");
+    cr_expect_eq(rb_colouring_assign(&colouring, FIXED, 0), RB_COLOUR_COUNT - 2);
+
+    int offsets[RB_COLOUR_COUNT + 1];
+    cr_expect_eq(rb_colouring_offsets(&colouring, offsets), 4, "colours 0, 1, 62 and 63 are used");
+    cr_expect_eq(offsets[0], 0);
+    cr_expect_eq(offsets[1], 2, "colour 0 holds two constraints");
+    cr_expect_eq(offsets[2], 3);
+    cr_expect_eq(offsets[RB_COLOUR_COUNT - 2], 3);
+    cr_expect_eq(offsets[RB_COLOUR_COUNT - 1], 4);
+    cr_expect_eq(offsets[RB_OVERFLOW_COLOUR], 6);
+    rb_colouring_free(&colouring);
+    cr_expect_eq(rb_bytes_in_use(), 0);
+}
+
+Test(colouring, a_body_in_every_colour_overflows)
+{
+    /* Body 0 against bodies 1 .. 65: one colour each until all 64 are
+     * taken, then the overflow colour. */
+    rb_colouring colouring = {0};
+    cr_assert_eq(rb_colouring_begin(&colouring, RB_COLOUR_COUNT + 2), 0);
+    for (int k = 0; k < RB_COLOUR_COUNT; ++k) {
+        cr_expect_eq(rb_colouring_assign(&colouring, 0, k + 1), k);
+    }
+    cr_expect_eq(rb_colouring_assign(&colouring, 0, RB_COLOUR_COUNT + 1), RB_OVERFLOW_COLOUR);
+    cr_expect_eq(rb_colouring_assign(&colouring, FIXED, 0), RB_OVERFLOW_COLOUR);
+    /* A new colouring starts empty. */
+    cr_assert_eq(rb_colouring_begin(&colouring, RB_COLOUR_COUNT + 2), 0);
+    cr_expect_eq(rb_colouring_assign(&colouring, 0, 1), 0);
+    rb_colouring_free(&colouring);
+    cr_expect_eq(rb_bytes_in_use(), 0);
+}
+
+/* After a step of the base-20 pyramid, the constraints run colour by
+ * colour, and within a colour (but overflow) no moving body appears twice. */
+Test(colouring, a_step_lays_the_pyramid_out_by_colour)
+{
+    rb_world *world = make_world(rb_v2(0.0, -9.8));
+    scene_pyramid pyramid;
+    cr_assert_eq(scene_pyramid_create(world, 20, &pyramid), RB_OK, "%s", rb_last_error());
+    step_world(world, TEST_DT, 10);
+
+    cr_assert_gt(world->constraint_count, 400, "the pyramid has %d constraints", world->constraint_count);
+    static int seen_in_colour[RB_OVERFLOW_COLOUR + 1][512];
+    int previous = 0;
+    int colours = 0;
+    for (int i = 0; i < world->constraint_count; ++i) {
+        const rb_contact_constraint *c = &world->constraints[i];
+        int colour = world->contacts[c->contact].colour;
+        cr_assert_geq(colour, previous, "constraint %d has colour %d after colour %d", i, colour, previous);
+        colours += i == 0 || colour != previous ? 1 : 0;
+        previous = colour;
+        const int bodies[2] = {c->body_a, c->body_b};
+        const double inverse_masses[2] = {c->inv_mass_a, c->inv_mass_b};
+        for (int side = 0; side < 2; ++side) {
+            if (inverse_masses[side] == 0.0 || colour == RB_OVERFLOW_COLOUR) {
+                continue;
+            }
+            cr_assert_lt(bodies[side], 512);
+            cr_expect_eq(seen_in_colour[colour][bodies[side]]++, 0, "body %d twice in colour %d", bodies[side], colour);
+        }
+    }
+    rb_statistics statistics = rb_world_statistics(world);
+    cr_expect_eq(statistics.contact_colours, colours);
+    /* A box touches at most 6 others (two below, two above, two beside)
+     * and the ground: a handful of colours, not one per contact. */
+    cr_expect_leq(colours, 12, "%d colours", colours);
+    destroy_world_and_expect_no_leak(world);
+}
+
+Test(colouring, the_soft_step_holds_the_base_100_pyramid_at_4_substeps, .timeout = 600)
+{
+    /* As in ../shared/peers: gravity 10 m/s², sleeping off. */
+    rb_world_def def = rb_default_world_def();
+    def.gravity = rb_v2(0.0, -10.0);
+    def.enable_sleep = false;
+    def.solver.type = RB_SOLVER_SOFT_STEP;
+    def.solver.substeps = 4;
+    def.solver.velocity_iterations = 1;
+    def.solver.relax_iterations = 1;
+    rb_world *world = NULL;
+    cr_assert_eq(rb_world_create(&def, &world), RB_OK, "%s", rb_last_error());
+    scene_pyramid pyramid;
+    cr_assert_eq(scene_pyramid_create(world, 100, &pyramid), RB_OK, "%s", rb_last_error());
+    static double start_x[5050];
+    cr_assert_eq(pyramid.box_count, 5050);
+    for (int k = 0; k < pyramid.box_count; ++k) {
+        start_x[k] = rb_body_position(world, scene_body_at(pyramid.first_box, k)).x;
+    }
+    step_world(world, 1.0 / 60.0, 360);
+    int moved = 0;
+    double farthest = 0.0;
+    for (int k = 0; k < pyramid.box_count; ++k) {
+        double dx = fabs(rb_body_position(world, scene_body_at(pyramid.first_box, k)).x - start_x[k]);
+        moved += dx > 0.25 ? 1 : 0;
+        farthest = fmax(farthest, dx);
+    }
+    cr_expect_eq(moved, 0, "%d boxes moved more than 0.25 m sideways (farthest %g m)", moved, farthest);
+    destroy_world_and_expect_no_leak(world);
+}
