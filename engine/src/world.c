@@ -138,6 +138,7 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->spare_contacts, &world->spare_capacity, sizeof *world->spare_contacts);
     rb_free_array((void **)&world->pairs, &world->pair_capacity, sizeof *world->pairs);
     rb_free_array((void **)&world->sorted_pairs, &world->sorted_pair_capacity, sizeof *world->sorted_pairs);
+    rb_free_array((void **)&world->candidates, &world->candidate_capacity, sizeof *world->candidates);
     rb_free_array((void **)&world->pair_bucket, &world->pair_bucket_capacity, sizeof *world->pair_bucket);
     rb_free_array((void **)&world->active_joints, &world->active_joint_capacity, sizeof *world->active_joints);
     rb_free_array((void **)&world->sweep, &world->sweep_capacity, sizeof *world->sweep);
@@ -236,6 +237,7 @@ size_t rb_world_bytes_in_use(const rb_world *world)
            (size_t)world->spare_capacity * sizeof *world->spare_contacts +
            (size_t)world->pair_capacity * sizeof *world->pairs +
            (size_t)world->sorted_pair_capacity * sizeof *world->sorted_pairs +
+           (size_t)world->candidate_capacity * sizeof *world->candidates +
            (size_t)world->pair_bucket_capacity * sizeof *world->pair_bucket +
            (size_t)world->sweep_capacity * sizeof *world->sweep +
            (size_t)world->constraint_capacity * sizeof *world->constraints +

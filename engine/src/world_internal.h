@@ -22,6 +22,11 @@
  * touch, so resting contacts stay in the solver without flickering. */
 #define RB_SPECULATIVE_SLOPS 4.0
 
+/* m: how far a shape's fat box reaches beyond its swept box in the broad
+ * phase (as Box2D's aabbMargin): the pairs are found anew only when a
+ * shape has moved about this far since they were last found. */
+#define RB_FAT_MARGIN 0.1
+
 typedef struct rb_body_state {
     rb_vec2 linear_velocity; /* m/s, of the centre of mass */
     double angular_velocity; /* rad/s */
@@ -94,8 +99,9 @@ typedef struct rb_shape {
     bool sensor;
     rb_filter filter;
     void *user_data;
-    double extent; /* m, farthest point of the shape from the body's centre of mass */
-    rb_aabb aabb;  /* m, broad phase: the box swept over the step and grown by the speculative margin */
+    double extent;    /* m, farthest point of the shape from the body's centre of mass */
+    rb_aabb aabb;     /* m, broad phase: the box swept over the step and grown by the speculative margin */
+    rb_aabb fat_aabb; /* m, broad phase: a box around `aabb`, kept while `aabb` stays inside it */
 } rb_shape;
 
 /* A pair of shapes whose boxes overlap. Contacts are kept sorted by
@@ -112,7 +118,7 @@ typedef struct rb_pair {
  * this array in order instead of from the shapes (scattered, 300 bytes
  * apart) took a sixth off the pairs phase of the base-100 pyramid. */
 struct rb_sweep_entry {
-    rb_aabb box; /* m, the shape's enlarged box this step */
+    rb_aabb box; /* m, the shape's fat box */
     int shape;
 };
 
@@ -319,6 +325,8 @@ struct rb_world {
     int spare_capacity;
     rb_pair *pairs;
     int pair_count, pair_capacity;
+    rb_pair *candidates; /* broad phase: the pairs whose fat boxes overlap, sorted as pairs are */
+    int candidate_count, candidate_capacity;
     rb_pair *sorted_pairs; /* the broad phase's counting sort writes here, then swaps */
     int sorted_pair_capacity;
     int *pair_bucket; /* the counting sort's start of each body's run of pairs */

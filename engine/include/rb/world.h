@@ -105,7 +105,10 @@ typedef struct rb_statistics {
     int awake_body_count; /* dynamic bodies awake after the step */
     int island_count;     /* groups of dynamic bodies linked by touching contacts, joints and cables */
     int shape_count;
-    int pair_count;    /* shape pairs whose bounding boxes overlap */
+    int pair_count; /* shape pairs whose bounding boxes overlap */
+    /* steps so far in which the broad phase found its candidate pairs
+     * anew (a shape had left its fat box, or shapes came or went) */
+    int broad_phase_sweeps;
     int contact_count; /* pairs with at least one manifold point */
     int manifold_point_count;
     /* colours the contact constraints were solved in (a colour's

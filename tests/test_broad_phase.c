@@ -1,0 +1,97 @@
+/* The broad phase (broad_phase.c) against brute force: after every step,
+ * the pairs it handed to the narrow phase must be exactly the pairs of
+ * shapes whose swept boxes overlap and which may collide, in
+ * (body_key, shape_key) order, however the fat boxes were reused; and a
+ * pile at rest must stop sweeping. */
+#include "broad_phase.h"
+#include "scenes/scenes.h"
+#include "test_support.h"
+
+static int compare_keys(const rb_pair *p, const rb_pair *q)
+{
+    if (p->body_key != q->body_key) {
+        return p->body_key < q->body_key ? -1 : 1;
+    }
+    return (p->shape_key > q->shape_key) - (p->shape_key < q->shape_key);
+}
+
+/* Every pair of live shapes, lower body first, whose swept boxes overlap
+ * and which may collide, checked against world->pairs in order. */
+static void expect_pairs_match_brute_force(const rb_world *world, int step)
+{
+    int found = 0;
+    for (int i = 0; i < world->shape_slots; ++i) {
+        for (int j = i + 1; j < world->shape_slots; ++j) {
+            const rb_shape *a = &world->shapes[i];
+            const rb_shape *b = &world->shapes[j];
+            if (!a->in_use || !b->in_use || !rb_aabb_overlaps(a->aabb, b->aabb) || !rb_should_collide(world, i, j)) {
+                continue;
+            }
+            int body_a = a->body;
+            int body_b = b->body;
+            int shape_a = i;
+            int shape_b = j;
+            if (body_a > body_b) {
+                body_a = b->body;
+                body_b = a->body;
+                shape_a = j;
+                shape_b = i;
+            }
+            rb_pair expected = {
+                .body_key = ((uint64_t)(uint32_t)body_a << 32) | (uint32_t)body_b,
+                .shape_key = ((uint64_t)(uint32_t)shape_a << 32) | (uint32_t)shape_b,
+            };
+            bool listed = false;
+            for (int k = 0; k < world->pair_count; ++k) {
+                listed = listed || compare_keys(&world->pairs[k], &expected) == 0;
+            }
+            cr_assert(listed, "step %d: shapes %d and %d overlap but are not paired", step, shape_a, shape_b);
+            ++found;
+        }
+    }
+    cr_assert_eq(world->pair_count, found, "step %d: %d pairs, brute force finds %d", step, world->pair_count, found);
+    for (int k = 1; k < world->pair_count; ++k) {
+        cr_assert_lt(compare_keys(&world->pairs[k - 1], &world->pairs[k]), 0, "step %d: pairs %d and %d out of order",
+                     step, k - 1, k);
+    }
+}
+
+Test(broad_phase, pairs_match_brute_force_while_balls_fall_teleport_and_vanish)
+{
+    rb_world *world = make_world(rb_v2(0.0, -9.81));
+    scene_balls balls;
+    cr_assert_eq(scene_balls_create(world, 100, 7, &balls), RB_OK, "%s", rb_last_error());
+    /* A box of our own above the balls, to destroy on the way. */
+    rb_body_id box = make_body(world, RB_BODY_DYNAMIC, rb_v2(0.0, 1.0), 0.0);
+    add_box(world, box, 0.05, 0.05, 1.0);
+    for (int step = 0; step < 240; ++step) {
+        if (step == 80) {
+            /* A teleport lands a ball among the others. */
+            cr_assert_eq(rb_body_set_transform(world, balls.balls[0], rb_body_position(world, balls.balls[1]), 0.0),
+                         RB_OK, "%s", rb_last_error());
+        }
+        if (step == 160) {
+            cr_assert_eq(rb_body_destroy(world, box), RB_OK, "%s", rb_last_error());
+        }
+        cr_assert_eq(scene_balls_apply_drag(world, &balls), RB_OK, "%s", rb_last_error());
+        step_world(world, TEST_DT, 1);
+        expect_pairs_match_brute_force(world, step);
+    }
+    destroy_world_and_expect_no_leak(world);
+}
+
+Test(broad_phase, a_pyramid_at_rest_stops_sweeping)
+{
+    rb_world *world = make_world(rb_v2(0.0, -9.8));
+    scene_pyramid pyramid;
+    cr_assert_eq(scene_pyramid_create(world, 20, &pyramid), RB_OK, "%s", rb_last_error());
+    step_world(world, TEST_DT, 60);
+    int sweeps = rb_world_statistics(world).broad_phase_sweeps;
+    cr_expect_leq(sweeps, 2, "settling took %d sweeps", sweeps);
+    for (int step = 0; step < 60; ++step) {
+        step_world(world, TEST_DT, 1);
+        expect_pairs_match_brute_force(world, step);
+    }
+    cr_expect_eq(rb_world_statistics(world).broad_phase_sweeps, sweeps, "the pyramid at rest swept again");
+    destroy_world_and_expect_no_leak(world);
+}
