@@ -232,11 +232,16 @@ rb_status rb_broad_phase_update_pairs(rb_world *world, double dt)
     if (world->sweep_stale) {
         RB_TRY(rebuild_sweep(world));
     }
-    for (int k = 0; k < world->sweep_count; ++k) {
-        int index = world->sweep[k].shape;
+    /* Every shape in the sweep, visited in index order rather than in the
+     * sweep's: the shapes and their bodies are then read one after
+     * another from memory instead of at random. */
+    bool any_in_sweep = world->sweep_count > 0;
+    for (int index = 0; any_in_sweep && index < world->shape_slots; ++index) {
         rb_shape *shape = &world->shapes[index];
-        shape->aabb = swept_aabb(world, index, dt, speculative_distance);
-        refresh = refresh || !contains(shape->fat_aabb, shape->aabb);
+        if (shape->in_use) {
+            shape->aabb = swept_aabb(world, index, dt, speculative_distance);
+            refresh = refresh || !contains(shape->fat_aabb, shape->aabb);
+        }
     }
     if (refresh) {
         RB_TRY(find_candidates(world));
