@@ -27,13 +27,17 @@
 
 static rb_vec2 tangent_of(rb_vec2 normal) { return rb_right_perp(normal); }
 
+/* The effective mass of a row whose lever arms are r×d about each centre. */
+static inline double mass_from_arms(double inv_mass_sum, double inv_ia, double inv_ib, double arm_a, double arm_b)
+{
+    double k = inv_mass_sum + inv_ia * arm_a * arm_a + inv_ib * arm_b * arm_b;
+    return k > 0.0 ? 1.0 / k : 0.0;
+}
+
 static inline double effective_mass(double inv_mass_sum, double inv_ia, double inv_ib, rb_vec2 ra, rb_vec2 rb,
                                     rb_vec2 direction)
 {
-    double rna = rb_cross(ra, direction);
-    double rnb = rb_cross(rb, direction);
-    double k = inv_mass_sum + inv_ia * rna * rna + inv_ib * rnb * rnb;
-    return k > 0.0 ? 1.0 / k : 0.0;
+    return mass_from_arms(inv_mass_sum, inv_ia, inv_ib, rb_cross(ra, direction), rb_cross(rb, direction));
 }
 
 /* Relative velocity of the contact point on B with respect to A. */
@@ -262,8 +266,10 @@ void rb_contact_solver_prepare_substep(rb_world *world, double h, bool first_sub
             p->normal_arm_b = rb_cross(rb, c->normal);
             p->tangent_arm_a = rb_cross(ra, tangent);
             p->tangent_arm_b = rb_cross(rb, tangent);
-            p->normal_mass = effective_mass(inv_mass_sum, c->inv_inertia_a, c->inv_inertia_b, ra, rb, c->normal);
-            p->tangent_mass = effective_mass(inv_mass_sum, c->inv_inertia_a, c->inv_inertia_b, ra, rb, tangent);
+            p->normal_mass =
+                mass_from_arms(inv_mass_sum, c->inv_inertia_a, c->inv_inertia_b, p->normal_arm_a, p->normal_arm_b);
+            p->tangent_mass =
+                mass_from_arms(inv_mass_sum, c->inv_inertia_a, c->inv_inertia_b, p->tangent_arm_a, p->tangent_arm_b);
             if (first_substep) {
                 p->approach_velocity = relative_velocity(sa, sb, ra, rb);
                 p->relative_velocity = rb_dot(c->normal, p->approach_velocity);
