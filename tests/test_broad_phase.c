@@ -56,6 +56,11 @@ static void expect_pairs_match_brute_force(const rb_world *world, int step)
     }
 }
 
+/* Balls fall into a pile; on the way one is teleported among the others,
+ * two are pinned together (a joint forbids its bodies to collide) and
+ * freed again, one is made static for a while (two static bodies never
+ * collide) and a box is destroyed: after every step the pairs must be
+ * brute force's, whether the candidates were found anew or kept. */
 Test(broad_phase, pairs_match_brute_force_while_balls_fall_teleport_and_vanish)
 {
     rb_world *world = make_world(rb_v2(0.0, -9.81));
@@ -64,7 +69,22 @@ Test(broad_phase, pairs_match_brute_force_while_balls_fall_teleport_and_vanish)
     /* A box of our own above the balls, to destroy on the way. */
     rb_body_id box = make_body(world, RB_BODY_DYNAMIC, rb_v2(0.0, 1.0), 0.0);
     add_box(world, box, 0.05, 0.05, 1.0);
+    rb_joint_id pin = {0};
     for (int step = 0; step < 240; ++step) {
+        if (step == 100) {
+            rb_revolute_joint_def def = rb_default_revolute_joint_def();
+            def.body_a = balls.balls[3];
+            def.body_b = balls.balls[4];
+            def.local_anchor_b = rb_body_local_point(world, balls.balls[4], rb_body_position(world, balls.balls[3]));
+            cr_assert_eq(rb_revolute_joint_create(world, &def, &pin), RB_OK, "%s", rb_last_error());
+        }
+        if (step == 140) {
+            cr_assert_eq(rb_joint_destroy(world, pin), RB_OK, "%s", rb_last_error());
+        }
+        if (step == 120 || step == 180) {
+            rb_body_type type = step == 120 ? RB_BODY_STATIC : RB_BODY_DYNAMIC;
+            cr_assert_eq(rb_body_set_type(world, balls.balls[5], type), RB_OK, "%s", rb_last_error());
+        }
         if (step == 80) {
             /* A teleport lands a ball among the others. */
             cr_assert_eq(rb_body_set_transform(world, balls.balls[0], rb_body_position(world, balls.balls[1]), 0.0),
@@ -80,6 +100,8 @@ Test(broad_phase, pairs_match_brute_force_while_balls_fall_teleport_and_vanish)
     destroy_world_and_expect_no_leak(world);
 }
 
+/* A pyramid at rest sweeps no more, yet its pairs follow every change of
+ * which shapes may collide (steps numbered from 1000 in the messages). */
 Test(broad_phase, a_pyramid_at_rest_stops_sweeping)
 {
     rb_world *world = make_world(rb_v2(0.0, -9.8));
@@ -93,5 +115,27 @@ Test(broad_phase, a_pyramid_at_rest_stops_sweeping)
         expect_pairs_match_brute_force(world, step);
     }
     cr_expect_eq(rb_world_statistics(world).broad_phase_sweeps, sweeps, "the pyramid at rest swept again");
+
+    /* Nothing moves, so only a change of which shapes may collide can
+     * make the pairs change: pinning the first two boxes of the bottom
+     * row together, freeing them, then making the first one static (it
+     * rests on the static ground). */
+    rb_body_id first = scene_body_at(pyramid.first_box, 0);
+    rb_body_id second = scene_body_at(pyramid.first_box, 1);
+    rb_revolute_joint_def def = rb_default_revolute_joint_def();
+    def.body_a = first;
+    def.body_b = second;
+    def.local_anchor_a = rb_v2(0.5, 0.0);
+    def.local_anchor_b = rb_v2(-0.5, 0.0);
+    rb_joint_id pin;
+    cr_assert_eq(rb_revolute_joint_create(world, &def, &pin), RB_OK, "%s", rb_last_error());
+    step_world(world, TEST_DT, 1);
+    expect_pairs_match_brute_force(world, 1000);
+    cr_assert_eq(rb_joint_destroy(world, pin), RB_OK, "%s", rb_last_error());
+    step_world(world, TEST_DT, 1);
+    expect_pairs_match_brute_force(world, 1001);
+    cr_assert_eq(rb_body_set_type(world, first, RB_BODY_STATIC), RB_OK, "%s", rb_last_error());
+    step_world(world, TEST_DT, 1);
+    expect_pairs_match_brute_force(world, 1002);
     destroy_world_and_expect_no_leak(world);
 }

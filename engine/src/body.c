@@ -487,6 +487,7 @@ rb_status rb_body_set_type(rb_world *world, rb_body_id id, rb_body_type type)
         world->states[index].angular_velocity = 0.0;
     }
     body->awake = true;
+    world->candidates_stale = true; /* two static or kinematic bodies never collide */
     rb_body_update_mass(world, index);
     return RB_OK;
 }

@@ -6,17 +6,20 @@
  * speculative contact. Those swept boxes are compared only for the
  * candidate pairs: the pairs whose fat boxes overlap, a fat box being a
  * swept box grown by RB_FAT_MARGIN and kept while the swept box stays
- * inside it (the fat boxes of Box2D's dynamic tree, Catto 2019). Only on
- * a step where some swept box has left its fat box are the fat boxes made
- * anew and the candidates found again: sort the shapes by the lower x of
+ * inside it (the fat boxes of Box2D's dynamic tree, Catto 2019), of
+ * shapes that may collide (rb_should_collide). Only on a step where some
+ * swept box has left its fat box, or which shapes may collide changed
+ * (candidates_stale), are the fat boxes made anew and the candidates found
+ * again: sort the shapes by the lower x of
  * their fat boxes, then sweep, each box meeting only the boxes that start
  * before it ends, O(n log n + overlaps in x). A pile at rest sweeps once;
  * the base-100 pyramid, 100 boxes tall, spent an eighth of its step
  * sweeping every step. The candidates are put in body order (a counting
  * sort), so the contacts, and every run, meet the pairs in the same
- * order; since a candidate is kept exactly when its swept boxes overlap
- * and its shapes may collide, the pairs are the same as a sweep of the
- * swept boxes would find. */
+ * order; since a candidate is kept exactly when its swept boxes overlap,
+ * the pairs are the same as a sweep of the swept boxes would find. */
+#include <stdlib.h>
+
 #include "allocator.h"
 #include "broad_phase.h"
 #include "error.h"
@@ -51,13 +54,13 @@ bool rb_should_collide(const rb_world *world, int shape_a, int shape_b)
     if (world->bodies[a->body].type != RB_BODY_DYNAMIC && world->bodies[b->body].type != RB_BODY_DYNAMIC) {
         return false;
     }
-    if (rb_joints_forbid_collision(world, a->body, b->body)) {
-        return false;
-    }
-    if (a->filter.group_index != 0 && a->filter.group_index == b->filter.group_index) {
-        return a->filter.group_index > 0;
-    }
-    return (a->filter.category_bits & b->filter.mask_bits) != 0 && (b->filter.category_bits & a->filter.mask_bits) != 0;
+    bool filters_agree = a->filter.group_index != 0 && a->filter.group_index == b->filter.group_index
+                             ? a->filter.group_index > 0
+                             : (a->filter.category_bits & b->filter.mask_bits) != 0 &&
+                                   (b->filter.category_bits & a->filter.mask_bits) != 0;
+    /* The filters first: they are a few bit operations, where the joints
+     * take a walk along a body's joint list. */
+    return filters_agree && !rb_joints_forbid_collision(world, a->body, b->body);
 }
 
 /* The shape's box at the start of the step, grown by the speculative
@@ -100,19 +103,31 @@ static rb_status add_candidate(rb_world *world, int shape_a, int shape_b)
     return RB_OK;
 }
 
-/* Insertion sort by (lower x, shape index): from one step to the next
- * the boxes barely move, so last step's order is nearly sorted and this
- * takes O(n) (a full sort would take O(n log n) every step). */
+/* Insertion sort by (lower x, shape index): from one refresh to the next
+ * the boxes barely move, so the last order is nearly sorted and this
+ * takes O(n) (a full sort would take O(n log n) every time). When the
+ * order has changed a lot (a scene blowing apart, many teleports) the
+ * insertions would cost up to O(n²): past SORT_SHIFTS_PER_ENTRY shifts
+ * an entry on average, qsort finishes the job. Either way the order is
+ * the same, as no two entries compare equal. */
+#define SORT_SHIFTS_PER_ENTRY 8
+
 static void sort_sweep(struct rb_sweep_entry *sweep, int count)
 {
+    long shifts_left = (long)SORT_SHIFTS_PER_ENTRY * count;
     for (int i = 1; i < count; ++i) {
         struct rb_sweep_entry entry = sweep[i];
         int j = i;
         while (j > 0 && compare_sweep_entries(&sweep[j - 1], &entry) > 0) {
             sweep[j] = sweep[j - 1];
             --j;
+            --shifts_left;
         }
         sweep[j] = entry;
+        if (shifts_left < 0) {
+            qsort(sweep, (size_t)count, sizeof *sweep, compare_sweep_entries);
+            return;
+        }
     }
 }
 
@@ -194,7 +209,7 @@ static bool contains(rb_aabb outer, rb_aabb inner)
 }
 
 /* New fat boxes around the swept ones, sorted, and the candidates: every
- * pair of shapes on different bodies whose fat boxes overlap. */
+ * pair of shapes that may collide and whose fat boxes overlap. */
 static rb_status find_candidates(rb_world *world)
 {
     int count = world->sweep_count;
@@ -210,11 +225,10 @@ static rb_status find_candidates(rb_world *world)
     const struct rb_sweep_entry *sweep = world->sweep;
     for (int i = 0; i < count; ++i) {
         rb_aabb box_a = sweep[i].box;
-        int body_a = world->shapes[sweep[i].shape].body;
         for (int j = i + 1; j < count && sweep[j].box.lower.x <= box_a.upper.x; ++j) {
             const rb_aabb *box_b = &sweep[j].box;
             if (box_a.lower.y <= box_b->upper.y && box_b->lower.y <= box_a.upper.y &&
-                world->shapes[sweep[j].shape].body != body_a) {
+                rb_should_collide(world, sweep[i].shape, sweep[j].shape)) {
                 RB_TRY(add_candidate(world, sweep[i].shape, sweep[j].shape));
             }
         }
@@ -228,7 +242,7 @@ rb_status rb_broad_phase_update_pairs(rb_world *world, double dt)
     /* Two sensors never pair, so while every shape is a sensor (the
      * musculoskeletal models' bones) no pair can exist: the sweep stays
      * empty and the step spends nothing here. */
-    bool refresh = world->sweep_stale;
+    bool refresh = world->sweep_stale || world->candidates_stale;
     if (world->sweep_stale) {
         RB_TRY(rebuild_sweep(world));
     }
@@ -245,10 +259,11 @@ rb_status rb_broad_phase_update_pairs(rb_world *world, double dt)
     }
     if (refresh) {
         RB_TRY(find_candidates(world));
+        world->candidates_stale = false;
         ++world->statistics.broad_phase_sweeps;
     }
 
-    /* The candidates, already in order, that may touch in this step. */
+    /* The candidates, already in order, whose swept boxes overlap. */
     if (rb_grow_array((void **)&world->pairs, &world->pair_capacity, world->candidate_count, sizeof *world->pairs) !=
         0) {
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for shape pairs");
@@ -256,8 +271,7 @@ rb_status rb_broad_phase_update_pairs(rb_world *world, double dt)
     world->pair_count = 0;
     for (int i = 0; i < world->candidate_count; ++i) {
         const rb_pair *candidate = &world->candidates[i];
-        if (rb_aabb_overlaps(world->shapes[candidate->shape_a].aabb, world->shapes[candidate->shape_b].aabb) &&
-            rb_should_collide(world, candidate->shape_a, candidate->shape_b)) {
+        if (rb_aabb_overlaps(world->shapes[candidate->shape_a].aabb, world->shapes[candidate->shape_b].aabb)) {
             world->pairs[world->pair_count++] = *candidate;
         }
     }

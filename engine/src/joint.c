@@ -85,6 +85,7 @@ rb_status rb_joint_create(rb_world *world, const rb_joint *prototype, rb_joint_i
     b->first_joint = index;
     rb_body_wake(world, joint->body_b);
     world->joint_count++;
+    world->candidates_stale = true; /* a joint may forbid its bodies to collide */
     *out = rb_make_joint_id(world, index);
     return RB_OK;
 }
@@ -108,6 +109,7 @@ static void unlink_from_body(rb_world *world, int joint, int body)
 static void free_joint(rb_world *world, int index)
 {
     rb_joint *joint = &world->joints[index];
+    world->candidates_stale = true; /* its bodies may collide again */
     if (joint->body_a >= 0) {
         unlink_from_body(world, index, joint->body_a);
         rb_body_wake(world, joint->body_a);

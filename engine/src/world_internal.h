@@ -339,8 +339,11 @@ struct rb_world {
     int island_size_capacity;
     double *island_rest; /* s, by island root: the shortest time at rest */
     int island_rest_capacity;
-    int sweep_count;       /* shapes in the sweep: all of them, or none while no shape is solid */
-    bool sweep_stale;      /* shapes were created or destroyed: rebuild the sweep */
+    int sweep_count;  /* shapes in the sweep: all of them, or none while no shape is solid */
+    bool sweep_stale; /* shapes were created or destroyed: rebuild the sweep */
+    /* a body's type changed, or a joint came or went: which shapes may
+     * collide changed, so the broad phase finds its candidates anew */
+    bool candidates_stale;
     int solid_shape_count; /* shapes that are not sensors */
 
     rb_contact_constraint *constraints; /* in colour order */
