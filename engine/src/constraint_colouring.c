@@ -9,7 +9,7 @@
  * by row, left to right, and a sweep in that order carries each pass's
  * error the same way every time. In a soft-step pyramid of base 100 at
  * 4 substeps of one pass, that bias alone moved 49 boxes more than
- * 0.25 m within 6 s; solved by colour, none moves more than 0.14 m.
+ * 0.25 m within 6 s; solved by colour, none moves more than 0.12 m.
  *
  * Each constraint takes a colour its bodies are not in yet, in the order
  * the constraints come: deterministic, and as many colours as the busiest
@@ -18,12 +18,11 @@
  * which carries everything) the highest, so that those constraints come
  * last in a forward pass and first in a backward one (Box2D v3 also
  * colours them from the top). Measured with the NGS solver at its
- * defaults, which sweeps forward and backward in turn: colouring them
- * from the bottom lets a box sliding over a chain of segments turn by
- * 6 mrad in 2 s (test_segments allows 1); sweeping only forward spreads
- * the base-100 pyramid (928 boxes moved more than 0.25 m in 6 s); with
- * both choices as here, the box stays level and no box moves more than
- * 0.19 m.
+ * defaults, which sweeps forward and backward in turn (contact_solver.h
+ * says why): colouring them from the bottom lets a box sliding over a
+ * chain of segments turn by 6 mrad in 2 s (test_segments allows 1); as
+ * here, the box stays level and no box of the base-100 pyramid moves
+ * more than 0.19 m.
  */
 #include <stdbool.h>
 #include <string.h>

@@ -529,11 +529,10 @@ static inline void solve_soft_normal(rb_contact_constraint *c, const rb_contact_
     }
 }
 
-void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *softness, bool backwards)
+void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *softness)
 {
-    int n = world->constraint_count;
-    for (int k = 0; k < n; ++k) {
-        rb_contact_constraint *c = &world->constraints[backwards ? n - 1 - k : k];
+    for (int i = 0; i < world->constraint_count; ++i) {
+        rb_contact_constraint *c = &world->constraints[i];
         rb_body_state *a = &world->states[c->body_a];
         rb_body_state *b = &world->states[c->body_b];
         double separation[RB_MAX_MANIFOLD_POINTS];

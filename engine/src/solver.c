@@ -94,7 +94,7 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
         rb_cables_solve(world, h);
         bool backwards = iteration % 2 == 1;
         rb_joints_solve_velocities(world, h, backwards);
-        rb_contact_solver_solve_velocities(world, backwards);
+        rb_contact_solver_solve_velocities(world, backwards && !contact_bias);
     }
     profile->solve_velocities += rb_world_clock(world) - t;
 
