@@ -36,7 +36,9 @@ int rb_colouring_begin(rb_colouring *colouring, int body_count)
                       sizeof *colouring->body_colours) != 0) {
         return -1;
     }
-    memset(colouring->body_colours, 0, (size_t)body_count * sizeof *colouring->body_colours);
+    if (body_count > 0) {
+        memset(colouring->body_colours, 0, (size_t)body_count * sizeof *colouring->body_colours);
+    }
     memset(colouring->sizes, 0, sizeof colouring->sizes);
     return 0;
 }
