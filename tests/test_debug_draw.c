@@ -4,6 +4,8 @@
  * and nothing else. */
 #include <math.h>
 
+#include "constraint_colouring.h"
+#include "scenes/scenes.h"
 #include "test_support.h"
 
 #define RECORD_CAPACITY 16
@@ -245,6 +247,45 @@ Test(debug_draw, contact_points_drawn_when_enabled)
         cr_expect_eq(r.points[i].color, RB_COLOR_CONTACT_POINT, "point %d has colour %06x", i, r.points[i].color);
     }
     destroy_world_and_expect_no_leak(s.world);
+}
+
+/* In colours, the points of a base-2 pyramid show the graph colouring:
+ * the two bottom boxes touch (colour 0), the top box rests on both
+ * (colours 1 and 2, as it is in colour 1 already), and both bottom boxes
+ * rest on the ground (the top colour, 63, which a body that cannot move
+ * may share). Four palette colours then, none the plain contact colour. */
+Test(debug_draw, contact_points_drawn_in_their_constraint_colours)
+{
+    rb_world *world = make_world(rb_v2(0.0, -9.8));
+    scene_pyramid pyramid;
+    cr_assert_eq(scene_pyramid_create(world, 2, &pyramid), RB_OK, "%s", rb_last_error());
+    step_world(world, TEST_DT, 2);
+    int colours = rb_world_statistics(world).contact_colours;
+    cr_assert_eq(colours, 4);
+
+    recorder r = {0};
+    rb_debug_draw draw = recording_draw(&r);
+    draw.draw_shapes = false;
+    draw.draw_contact_points = true;
+    draw.draw_contact_colours = true;
+    cr_assert_eq(rb_world_draw(world, &draw), RB_OK, "%s", rb_last_error());
+    cr_assert(r.point_count > 0 && r.point_count <= RECORD_CAPACITY, "%d points", r.point_count);
+    uint32_t seen[RB_CONSTRAINT_PALETTE_SIZE + 1];
+    int distinct = 0;
+    for (int i = 0; i < r.point_count; ++i) {
+        cr_expect_neq(r.points[i].color, RB_COLOR_CONTACT_POINT, "point %d is not in a constraint colour", i);
+        bool known = false;
+        for (int k = 0; k < distinct; ++k) {
+            known = known || seen[k] == r.points[i].color;
+        }
+        if (!known && distinct <= RB_CONSTRAINT_PALETTE_SIZE) {
+            seen[distinct++] = r.points[i].color;
+        }
+    }
+    cr_expect_eq(distinct, colours, "%d colours drawn, the contacts took %d", distinct, colours);
+    cr_expect_eq(rb_constraint_colour_rgb(RB_OVERFLOW_COLOUR), 0xffffffu);
+    cr_expect_eq(rb_constraint_colour_rgb(0), rb_constraint_colour_rgb(RB_CONSTRAINT_PALETTE_SIZE));
+    destroy_world_and_expect_no_leak(world);
 }
 
 Test(debug_draw, contact_normals_drawn_when_enabled)

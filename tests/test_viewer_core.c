@@ -259,6 +259,42 @@ Test(canvas_draw, draws_the_bones_and_the_weight)
     simulation_free(&sim);
 }
 
+/* The "colours" overlay draws the pyramid's contact points in their
+ * solver colours (rb_constraint_colour_rgb), none in the plain contact
+ * red; the plain "contacts" overlay draws them all red. */
+static void count_contact_colours(bool colours, long *first_colour, long *plain_red)
+{
+    simulation sim = {0};
+    char error[SIMULATION_ERROR_SIZE];
+    cr_assert(simulation_load_scene(&sim, VIEWER_SCENE_PYRAMID, error, sizeof error), "%s", error);
+    for (int k = 0; k < 2; ++k) {
+        cr_assert(simulation_step(&sim, error, sizeof error), "%s", error);
+    }
+    cairo_surface_t *surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 400, 300);
+    cairo_t *cr = cairo_create(surface);
+    view_transform view = view_transform_make(rb_v2(0.0, 10.0), 13.0);
+    view_transform_resize(&view, 400.0, 300.0);
+    canvas_overlays overlays = {.contact_points = !colours, .contact_colours = colours};
+    canvas_draw(cr, &view, &sim, &overlays);
+    *first_colour = count_colour(surface, rb_constraint_colour_rgb(0), 1);
+    *plain_red = count_colour(surface, RB_COLOR_CONTACT_POINT, 1);
+    cairo_destroy(cr);
+    cairo_surface_destroy(surface);
+    simulation_free(&sim);
+}
+
+Test(canvas_draw, the_colours_overlay_shows_the_solver_colours)
+{
+    long first_colour = 0;
+    long plain_red = 0;
+    count_contact_colours(true, &first_colour, &plain_red);
+    cr_expect_gt(first_colour, 100, "pixels of colour 0: %ld", first_colour);
+    cr_expect_eq(plain_red, 0, "pixels in the plain contact red: %ld", plain_red);
+    count_contact_colours(false, &first_colour, &plain_red);
+    cr_expect_eq(first_colour, 0, "pixels of colour 0 without the overlay: %ld", first_colour);
+    cr_expect_gt(plain_red, 100, "pixels in the plain contact red: %ld", plain_red);
+}
+
 Test(simulation, a_model_runs_on_after_the_engine_panel_changes_its_solver)
 {
     simulation sim = load_arm();

@@ -74,14 +74,30 @@ static void draw_aabb(rb_aabb box, const rb_debug_draw *draw)
     draw->draw_polygon(corners, 4, RB_COLOR_AABB, draw->context);
 }
 
+uint32_t rb_constraint_colour_rgb(int colour)
+{
+    static const uint32_t palette[RB_CONSTRAINT_PALETTE_SIZE] = {
+        0xe6194b, 0x3cb44b, 0x4363d8, 0xf58231, 0x911eb4, 0x42d4f4, 0xf032e6, 0xbfef45,
+    };
+    if (colour == RB_OVERFLOW_COLOUR) {
+        return 0xffffff;
+    }
+    return colour >= 0 && colour < RB_COLOUR_COUNT ? palette[colour % RB_CONSTRAINT_PALETTE_SIZE]
+                                                   : RB_COLOR_CONTACT_POINT;
+}
+
 static void draw_contacts(const rb_world *world, const rb_debug_draw *draw)
 {
     for (int i = 0; i < world->contact_count; ++i) {
-        const rb_manifold *m = &world->contacts[i].manifold;
+        const rb_contact *contact = &world->contacts[i];
+        const rb_manifold *m = &contact->manifold;
+        uint32_t point_color = draw->draw_contact_colours && contact->colour >= 0
+                                   ? rb_constraint_colour_rgb(contact->colour)
+                                   : RB_COLOR_CONTACT_POINT;
         for (int j = 0; j < m->point_count; ++j) {
             rb_vec2 p = m->points[j].point;
             if (draw->draw_contact_points && draw->draw_point != NULL) {
-                draw->draw_point(p, 5.0, RB_COLOR_CONTACT_POINT, draw->context);
+                draw->draw_point(p, 5.0, point_color, draw->context);
             }
             if (draw->draw_contact_normals && draw->draw_segment != NULL) {
                 draw->draw_segment(p, rb_mul_add(p, draw->normal_length, m->normal), RB_COLOR_CONTACT_NORMAL,

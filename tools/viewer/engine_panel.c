@@ -101,12 +101,11 @@ engine_panel *engine_panel_new(viewer *app)
     g_signal_connect(panel->substeps, "value-changed", G_CALLBACK(on_setting_changed), panel);
     g_signal_connect(panel->warm_starting, "toggled", G_CALLBACK(on_setting_changed), panel);
 
-    static const char *const overlay_names[] = {"Contact points",        "Contact normals",       "Contact impulses",
-                                                "Bounding boxes",        "Joints and their gaps", "Joint reactions",
-                                                "Sleeping bodies (grey)"};
-    bool *flags[] = {&app->overlays.contact_points, &app->overlays.contact_normals, &app->overlays.contact_impulses,
-                     &app->overlays.aabbs,          &app->overlays.joints,          &app->overlays.joint_reactions,
-                     &app->overlays.sleeping};
+    static const char *const overlay_names[CANVAS_OVERLAY_COUNT] = {
+        "Contact points",        "Contact normals", "Contact impulses",       "Bounding boxes",
+        "Joints and their gaps", "Joint reactions", "Sleeping bodies (grey)", "Contacts by solver colour"};
+    bool *flags[CANVAS_OVERLAY_COUNT];
+    canvas_overlay_flags(&app->overlays, flags);
     GtkWidget *overlays = gtk_flow_box_new();
     gtk_flow_box_set_selection_mode(GTK_FLOW_BOX(overlays), GTK_SELECTION_NONE);
     gtk_flow_box_set_max_children_per_line(GTK_FLOW_BOX(overlays), 2);

@@ -27,6 +27,11 @@ typedef struct rb_debug_draw {
     bool draw_aabbs;
     bool draw_mass; /* centre of mass as a transform */
     bool draw_contact_points;
+    /* With draw_contact_points: each point in the colour its constraint
+     * was solved in at the last step (rb_constraint_colour_rgb), so that
+     * the graph colouring shows; contacts not solved keep
+     * RB_COLOR_CONTACT_POINT. */
+    bool draw_contact_colours;
     bool draw_contact_normals;
     bool draw_contact_impulses; /* normal impulse as a segment along the normal */
     /* Anchors, segments from each body's centre to its anchor, and each
@@ -59,6 +64,12 @@ enum {
     RB_COLOR_JOINT_LIMIT = 0xff8040,
     RB_COLOR_JOINT_REACTION = 0xff40ff,
 };
+
+/* The colour that draws constraint colour `colour` (0 .. 63, or 64 for
+ * the overflow colour): a palette of RB_CONSTRAINT_PALETTE_SIZE colours in
+ * turn, white for overflow. */
+#define RB_CONSTRAINT_PALETTE_SIZE 8
+uint32_t rb_constraint_colour_rgb(int colour);
 
 rb_status rb_world_draw(const rb_world *world, const rb_debug_draw *draw);
 

@@ -13,7 +13,7 @@
 #define EXERTION_BAR_HEIGHT_PX 14.0
 
 const char *const canvas_overlay_names[CANVAS_OVERLAY_COUNT] = {"contacts", "normals",   "impulses", "aabbs",
-                                                                "joints",   "reactions", "sleeping"};
+                                                                "joints",   "reactions", "sleeping", "colours"};
 
 void canvas_overlay_flags(canvas_overlays *overlays, bool *flags[CANVAS_OVERLAY_COUNT])
 {
@@ -24,6 +24,7 @@ void canvas_overlay_flags(canvas_overlays *overlays, bool *flags[CANVAS_OVERLAY_
     flags[4] = &overlays->joints;
     flags[5] = &overlays->joint_reactions;
     flags[6] = &overlays->sleeping;
+    flags[7] = &overlays->contact_colours;
 }
 
 typedef struct rgb {
@@ -168,7 +169,8 @@ static void draw_engine(const painter *p, const rb_world *world, bool shapes)
     draw.draw_point = debug_point;
     draw.draw_shapes = shapes;
     draw.draw_aabbs = p->overlays->aabbs;
-    draw.draw_contact_points = p->overlays->contact_points;
+    draw.draw_contact_points = p->overlays->contact_points || p->overlays->contact_colours;
+    draw.draw_contact_colours = p->overlays->contact_colours;
     draw.draw_contact_normals = p->overlays->contact_normals;
     draw.draw_contact_impulses = p->overlays->contact_impulses;
     draw.draw_joints = p->overlays->joints;

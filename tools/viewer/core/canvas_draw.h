@@ -32,12 +32,15 @@ typedef struct canvas_overlays {
     bool joints;          /* anchors and links: a gap between a joint's anchors is its error */
     bool joint_reactions; /* reaction forces */
     bool sleeping;        /* sleeping bodies in grey; otherwise drawn as the awake ones */
+    /* contact points in the colour their constraint was solved in: the
+     * graph colouring (no two constraints of a colour share a moving body) */
+    bool contact_colours;
 } canvas_overlays;
 
 /* The overlays one by one, in the order above, for panels and scripts:
  * "contacts", "normals", "impulses", "aabbs", "joints", "reactions",
- * "sleeping". */
-enum { CANVAS_OVERLAY_COUNT = 7 };
+ * "sleeping", "colours". */
+enum { CANVAS_OVERLAY_COUNT = 8 };
 extern const char *const canvas_overlay_names[CANVAS_OVERLAY_COUNT];
 /* Points flags[k] at the k-th flag of `overlays`. */
 void canvas_overlay_flags(canvas_overlays *overlays, bool *flags[CANVAS_OVERLAY_COUNT]);
