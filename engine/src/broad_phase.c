@@ -258,6 +258,7 @@ rb_status rb_broad_phase_update_pairs(rb_world *world, double dt)
         }
     }
     if (refresh) {
+        world->candidates_stale = true; /* until the candidates are complete (out of memory midway) */
         RB_TRY(find_candidates(world));
         world->candidates_stale = false;
         ++world->statistics.broad_phase_sweeps;
