@@ -23,6 +23,7 @@
 # figures come from the last repetition (every engine is deterministic).
 #
 # usage: bench/compare_peers.sh [--runs R] [--scenes LIST] [--out FILE] [--build-dir DIR] [--peers DIR]
+#                                [--solver NAME] [--substeps N] [--vel N] [--pos N]
 #   --runs R       repetitions, 1 .. 100 (default 3)
 #   --scenes LIST  comma-separated, of pyramid20, pyramid100, joint_grid,
 #                  chain_hang, chain_swing (default all five)
@@ -31,6 +32,11 @@
 #                  to a temporary name and renamed
 #   --build-dir D  sinew's build directory (default build/release)
 #   --peers DIR    the peer harnesses (default ../shared/peers)
+#   --solver NAME  sinew's solver: baumgarte, ngs or soft_step (default the engine's)
+#   --substeps N, --vel N, --pos N
+#                  sinew's substeps (1 .. 1000), velocity passes (1 .. 1000) and
+#                  position or relax passes (0 .. 1000), default the engine's;
+#                  e.g. Box2D v3's budget: --solver soft_step --substeps 4 --vel 1 --pos 1
 # Exit status: 0 success, 1 failure, 2 bad command line.
 set -euo pipefail
 
@@ -41,6 +47,9 @@ scenes=("${all_scenes[@]}")
 out=compare_peers.csv
 build_dir="$root/build/release"
 peers_dir="$root/../shared/peers"
+# Sinew's settings when given, for bench_engine (pyramids) and bench_solver (joints).
+engine_settings=()
+solver_settings=()
 
 # bench_solver's protocol for the joint scenes, given to the peers too.
 grid_warmup=60
@@ -86,6 +95,27 @@ while [[ $# -gt 0 ]]; do
         --help | -h)
             usage
             exit 0
+            ;;
+        --solver)
+            [[ $# -ge 2 ]] || bad_usage "--solver needs a value"
+            case "$2" in
+                baumgarte | ngs | soft_step) ;;
+                *) bad_usage "--solver expects baumgarte, ngs or soft_step, got \"$2\"" ;;
+            esac
+            engine_settings+=(--solver "$2")
+            solver_settings+=(--method "$2")
+            shift 2
+            ;;
+        --substeps | --vel | --pos)
+            [[ $# -ge 2 ]] || bad_usage "$1 needs a value"
+            lowest=1
+            [[ "$1" == --pos ]] && lowest=0
+            if ! [[ "$2" =~ ^[0-9]{1,4}$ ]] || ((10#$2 < lowest || 10#$2 > 1000)); then
+                bad_usage "$1 expects an integer from $lowest to 1000, got \"$2\""
+            fi
+            engine_settings+=("$1" "$((10#$2))")
+            solver_settings+=("$1" "$((10#$2))")
+            shift 2
             ;;
         --runs | --scenes | --out | --build-dir | --peers)
             [[ $# -ge 2 && -n "$2" ]] || bad_usage "$1 needs a value"
@@ -166,10 +196,12 @@ record_peer() {
 }
 
 # One run of sinew on a joint scene through bench_solver at the engine's
-# default settings; checks that it ran the protocol the peers are given.
+# default settings (or those given); checks that it ran the protocol the
+# peers are given.
 run_sinew_joints() {
     local scene=$1 warmup=$2 steps=$3 csv="$work/bench_solver.csv"
-    "$build_dir/bench/bench_solver" --scene "$scene" --single --runs 1 --csv "$csv" >/dev/null
+    "$build_dir/bench/bench_solver" --scene "$scene" --single --runs 1 --csv "$csv" \
+        ${solver_settings[@]+"${solver_settings[@]}"} >/dev/null
     if [[ "$(csv_field "$csv" warmup_steps)" != "$warmup" || "$(csv_field "$csv" timed_steps)" != "$steps" ]]; then
         echo "compare_peers.sh: warning: sinew's $scene ran $(csv_field "$csv" warmup_steps) warm-up and" \
             "$(csv_field "$csv" timed_steps) timed steps, the peers $warmup and $steps" \
@@ -189,8 +221,8 @@ for ((r = 1; r <= runs; ++r)); do
         case "$scene" in
             pyramid20 | pyramid100)
                 base=${scene#pyramid}
-                line=$("$build_dir/bench/bench_engine" --scene "$scene" --runs 1 --csv "$work/bench_engine.csv" |
-                    grep '^engine=')
+                line=$("$build_dir/bench/bench_engine" --scene "$scene" --runs 1 --csv "$work/bench_engine.csv" \
+                    ${engine_settings[@]+"${engine_settings[@]}"} | grep '^engine=')
                 record sinew "$scene" "$(field "$line" median_ms)" "$(field "$line" lateral_gt_0.25)" NA NA
                 sinew_pyramid_settings="$(field "$line" solver), $(field "$line" vel_iters) vel / $(field "$line" pos_iters) pos"
                 sinew_pyramid_settings+=" / $(field "$line" relax_iters) relax / $(field "$line" substeps) substeps"
