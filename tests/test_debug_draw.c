@@ -285,6 +285,8 @@ Test(debug_draw, contact_points_drawn_in_their_constraint_colours)
     cr_expect_eq(distinct, colours, "%d colours drawn, the contacts took %d", distinct, colours);
     cr_expect_eq(rb_constraint_colour_rgb(RB_OVERFLOW_COLOUR), 0xffffffu);
     cr_expect_eq(rb_constraint_colour_rgb(0), rb_constraint_colour_rgb(RB_CONSTRAINT_PALETTE_SIZE));
+    cr_expect_eq(rb_constraint_colour_rgb(-1), (uint32_t)RB_COLOR_CONTACT_POINT, "a contact not solved");
+    cr_expect_eq(rb_constraint_colour_rgb(RB_OVERFLOW_COLOUR + 1), (uint32_t)RB_COLOR_CONTACT_POINT, "no such colour");
     destroy_world_and_expect_no_leak(world);
 }
 

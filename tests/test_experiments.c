@@ -153,24 +153,37 @@ Test(experiment, e1_the_twitch_rises_then_returns_to_rest)
     csv_table_free(&table);
 }
 
-Test(experiment, e1_pulses_have_the_asked_width_in_substeps)
+/* A run of an experiment with its --pulse-width option (or none), and
+ * how many substeps its pulse should then last. */
+typedef struct pulse_case {
+    const char *option;
+    long substeps;
+} pulse_case;
+
+/* Runs `experiment` for each case and counts the rows of its CSV `stem`
+ * where `column_name` is 1: the substeps the pulse lasted. */
+static void expect_pulse_widths(const char *experiment, const char *stem, const char *column_name,
+                                const pulse_case *cases, size_t count)
 {
-    const struct {
-        const char *option;
-        long substeps; /* at 600 Hz */
-    } cases[] = {{"", 10}, {"--pulse-width 0.002", 1}, {"--pulse-width 0.05", 30}};
-    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+    for (size_t k = 0; k < count; ++k) {
         csv_table table;
-        run_experiment("e1", cases[k].option, "e1_twitch", &table);
-        const double *activation = column(&table, "Biceps Long.activation");
+        run_experiment(experiment, cases[k].option, stem, &table);
+        const double *values = column(&table, column_name);
         long on = 0;
         for (long r = 0; r < table.row_count; ++r) {
-            on += activation[r] == 1.0;
+            on += values[r] == 1.0;
         }
-        cr_expect_eq(on, cases[k].substeps, "'%s': %ld substeps at activation 1, expected %ld", cases[k].option, on,
-                     cases[k].substeps);
+        cr_expect_eq(on, cases[k].substeps, "%s '%s': %ld substeps at %s 1, expected %ld", experiment, cases[k].option,
+                     on, column_name, cases[k].substeps);
         csv_table_free(&table);
     }
+}
+
+Test(experiment, e1_pulses_have_the_asked_width_in_substeps)
+{
+    /* At 600 Hz. */
+    const pulse_case cases[] = {{"", 10}, {"--pulse-width 0.002", 1}, {"--pulse-width 0.05", 30}};
+    expect_pulse_widths("e1", "e1_twitch", "Biceps Long.activation", cases, sizeof cases / sizeof cases[0]);
 }
 
 Test(experiment, e2_active_force_falls_and_passive_rises_with_length)
@@ -563,22 +576,9 @@ Test(experiment, p1_trains_fuse_by_200_Hz_at_over_twice_the_twitch_with_a_compli
 
 Test(experiment, p1_pulses_have_the_asked_width_in_substeps)
 {
-    const struct {
-        const char *option;
-        long substeps; /* at 6000 Hz */
-    } cases[] = {{"", 12}, {"--pulse-width 0.005", 30}, {"--pulse-width 0.00001", 1}};
-    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
-        csv_table table;
-        run_experiment("p1", cases[k].option, "p1_twitch_tetanus", &table);
-        const double *excitation = column(&table, "twitch.excitation");
-        long on = 0;
-        for (long r = 0; r < table.row_count; ++r) {
-            on += excitation[r] == 1.0;
-        }
-        cr_expect_eq(on, cases[k].substeps, "'%s': %ld substeps at excitation 1, expected %ld", cases[k].option, on,
-                     cases[k].substeps);
-        csv_table_free(&table);
-    }
+    /* At 6000 Hz. */
+    const pulse_case cases[] = {{"", 12}, {"--pulse-width 0.005", 30}, {"--pulse-width 0.00001", 1}};
+    expect_pulse_widths("p1", "p1_twitch_tetanus", "twitch.excitation", cases, sizeof cases / sizeof cases[0]);
 }
 
 Test(experiment, r1_exertion_is_the_cumulative_share_of_the_worms_pool)

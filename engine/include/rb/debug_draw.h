@@ -67,7 +67,8 @@ enum {
 
 /* The colour that draws constraint colour `colour` (0 .. 63, or 64 for
  * the overflow colour): a palette of RB_CONSTRAINT_PALETTE_SIZE colours in
- * turn, white for overflow. */
+ * turn, white for overflow; any other value (a contact not solved, -1)
+ * gets RB_COLOR_CONTACT_POINT. */
 #define RB_CONSTRAINT_PALETTE_SIZE 8
 uint32_t rb_constraint_colour_rgb(int colour);
 
