@@ -49,13 +49,24 @@ struct rb_contact_constraint {
  * dynamic body, fixing each point's surface points in the bodies' frames;
  * carries the impulses of the last step if warm starting. */
 int rb_contact_solver_prepare(rb_world *world);
+/* What a solver asks of rb_contact_solver_prepare_substep. */
+typedef struct rb_substep_rows {
+    /* record each point's relative velocity as its impact speed for
+     * restitution (the step's first substep) */
+    bool first_substep;
+    /* the normal velocity's lower bound pushes overlap beyond the slop
+     * out (Baumgarte) */
+    bool baumgarte_bias;
+    /* two-point manifolds get the 2x2 normal mass matrix and its inverse
+     * when well conditioned (the sequential solvers' block solve), and
+     * then no per-point normal masses */
+    bool block_normals;
+} rb_substep_rows;
+
 /* At the start of a substep of length h: the anchors, normal and
  * effective masses at the poses now, the separations, and from them each
- * point's lower bound on its normal velocity for the sequential solvers:
- * with baumgarte_bias, overlap beyond the slop is pushed out. On the
- * first substep it also records each point's relative velocity as the
- * impact speed for restitution. */
-void rb_contact_solver_prepare_substep(rb_world *world, double h, bool first_substep, bool baumgarte_bias);
+ * point's lower bound on its normal velocity for the sequential solvers. */
+void rb_contact_solver_prepare_substep(rb_world *world, double h, rb_substep_rows rows);
 void rb_contact_solver_warm_start(rb_world *world);
 /* One pass of sequential impulses at the substep's bounds (Baumgarte,
  * NGS), over the colours in order or, `backwards`, in reverse. NGS

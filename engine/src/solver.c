@@ -83,7 +83,10 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
     t = rb_world_clock(world);
     rb_cables_prepare(world);
     rb_joints_prepare(world, h);
-    rb_contact_solver_prepare_substep(world, h, substep == 0, contact_bias);
+    rb_contact_solver_prepare_substep(world, h,
+                                      (rb_substep_rows){.first_substep = substep == 0,
+                                                        .baumgarte_bias = contact_bias,
+                                                        .block_normals = world->settings.block_solver});
     rb_cables_warm_start(world);
     rb_joints_warm_start(world);
     rb_contact_solver_warm_start(world);

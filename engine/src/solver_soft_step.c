@@ -70,7 +70,7 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
     rb_rigid_response joint_rigid = {.mass_scale = 1.0};
 
     double t = rb_world_clock(world);
-    rb_contact_solver_prepare_substep(world, h, true, false);
+    rb_contact_solver_prepare_substep(world, h, (rb_substep_rows){.first_substep = true});
     profile->prepare += rb_world_clock(world) - t;
 
     /* Successive passes sweep the joints in alternate directions. */
