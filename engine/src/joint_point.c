@@ -16,7 +16,7 @@
  * limit correction). */
 #include "joint_solver.h"
 
-static rb_block_matrix make_mass_matrix(const rb_joint_frame *f, rb_vec2 ra, rb_vec2 rb)
+static inline rb_block_matrix make_mass_matrix(const rb_joint_frame *f, rb_vec2 ra, rb_vec2 rb)
 {
     double m = f->inv_mass_a + f->inv_mass_b;
     double ia = f->inv_inertia_a;
