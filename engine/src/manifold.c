@@ -104,6 +104,18 @@ rb_manifold rb_collide_polygon_and_circle(const rb_polygon *a, rb_transform xfa,
     return rb_manifold_to_world(m, xfa);
 }
 
+/* The polygon in its own frame: a copy, which no rotation can round. */
+static rb_placed_polygon polygon_in_own_frame(const rb_polygon *polygon)
+{
+    rb_placed_polygon placed;
+    placed.count = polygon->count;
+    for (int i = 0; i < polygon->count; ++i) {
+        placed.vertices[i] = polygon->vertices[i];
+        placed.normals[i] = polygon->normals[i];
+    }
+    return placed;
+}
+
 rb_placed_polygon rb_place_polygon(const rb_polygon *polygon, rb_transform xf)
 {
     rb_placed_polygon placed;
@@ -235,7 +247,7 @@ rb_manifold rb_collide_placed_polygons(const rb_placed_polygon *pa, const rb_pla
 rb_manifold rb_collide_polygons(const rb_polygon *a, rb_transform xfa, const rb_polygon *b, rb_transform xfb,
                                 double speculative_distance)
 {
-    rb_placed_polygon pa = rb_place_polygon(a, rb_transform_identity());
+    rb_placed_polygon pa = polygon_in_own_frame(a);
     rb_placed_polygon pb = rb_place_polygon(b, rb_inv_mul_transforms(xfa, xfb));
     return rb_manifold_to_world(rb_collide_placed_polygons(&pa, &pb, speculative_distance), xfa);
 }
