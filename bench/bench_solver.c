@@ -15,6 +15,15 @@
  *       position so that E0 = m·g·L: the largest over the run and the last.
  *   joint_grid  the peers' joint grid, 100 × 100: 60 untimed warm-up steps,
  *       then 60 timed (10 and 10 with --quick).
+ *   chain10  the joint tests' chain (tests/test_joints.c): 10 light links of
+ *       the peers' chain, no heavy box, released from the horizontal;
+ *       3600 steps (60 s), every one timed. The joint tests ask the
+ *       default settings for a worst gap under 5 mm.
+ *   cantilever  two planks welded out from a wall (scene_cantilever);
+ *       120 steps (2 s), every one timed. Its figure besides the gaps is
+ *       the tip sag: the largest distance of the outer plank's centre from
+ *       where it started, which the joint tests keep within the linear
+ *       slop (5 mm) at the default settings.
  * The joint gap is rb_world_statistics().max_joint_gap after each step
  * (warm-up included): the largest distance between a joint's two anchors.
  *
@@ -71,10 +80,11 @@ static const char usage_text[] =
     "usage: bench_solver [options]\n"
     "\n"
     "Sweeps the solver's velocity iterations, position iterations and substeps on the chain\n"
-    "(hanging, swinging), a pendulum and the joint grid; reports time per step, joint gaps and\n"
-    "the pendulum's energy drift.\n"
+    "(hanging, swinging), a pendulum, the joint grid, a 10-link chain and a welded cantilever;\n"
+    "reports time per step, joint gaps, the pendulum's energy drift and the cantilever's sag.\n"
     "\n"
-    "  --scene NAME    chain_hang, chain_swing, pendulum, joint_grid or all (default all)\n"
+    "  --scene NAME    chain_hang, chain_swing, pendulum, joint_grid, chain10, cantilever or all\n"
+    "                  (default all)\n"
     "  --method NAME   solver: soft_step, ngs, baumgarte or all (default: all for the sweep,\n"
     "                  the engine's for --single)\n"
     "  --runs N        repetitions of each setting, 1 .. 1000 (default 3)\n"
@@ -102,6 +112,10 @@ static const char usage_text[] =
 #define PENDULUM_DENSITY 1000.0 /* kg/m²; the motion does not depend on it */
 #define PENDULUM_STEPS 1200     /* 20 s, about ten swings */
 
+#define CHAIN10_LINKS 10
+#define CHAIN10_STEPS 3600   /* 60 s, as the joint test */
+#define CANTILEVER_STEPS 120 /* 2 s, as the joint test */
+
 #define GRID_N 100
 #define GRID_WARMUP 60
 #define GRID_STEPS 60
@@ -124,10 +138,13 @@ typedef enum bench_scene {
     BENCH_CHAIN_SWING,
     BENCH_PENDULUM,
     BENCH_JOINT_GRID,
+    BENCH_CHAIN10,
+    BENCH_CANTILEVER,
     BENCH_SCENE_COUNT
 } bench_scene;
 
-static const char *const bench_scene_names[BENCH_SCENE_COUNT] = {"chain_hang", "chain_swing", "pendulum", "joint_grid"};
+static const char *const bench_scene_names[BENCH_SCENE_COUNT] = {"chain_hang", "chain_swing", "pendulum",
+                                                                 "joint_grid", "chain10",     "cantilever"};
 
 typedef struct bench_options {
     bool scenes[BENCH_SCENE_COUNT];
@@ -157,7 +174,8 @@ static bool parse_names(const char *scene, const char *method, bench_options *op
     }
     if (!any) {
         fprintf(stderr,
-                "bench_solver: --scene expects chain_hang, chain_swing, pendulum, joint_grid or all, got \"%s\"\n",
+                "bench_solver: --scene expects chain_hang, chain_swing, pendulum, joint_grid, chain10, cantilever "
+                "or all, got \"%s\"\n",
                 scene);
         return false;
     }
@@ -339,9 +357,11 @@ typedef struct bench_world {
     rb_world *world;
     scene_chain chain;
     scene_joint_grid grid;
-    rb_body_id bob;   /* pendulum */
-    double energy0;   /* J, pendulum's energy at release */
-    int warmup_steps; /* untimed */
+    scene_cantilever cantilever;
+    rb_vec2 tip_start; /* m, the cantilever's outer plank's centre at the start */
+    rb_body_id bob;    /* pendulum */
+    double energy0;    /* J, pendulum's energy at release */
+    int warmup_steps;  /* untimed */
     int timed_steps;
 } bench_world;
 
@@ -434,6 +454,19 @@ static bool bench_world_create(bench_scene scene, const bench_setting *setting, 
             return engine_failed("scene_joint_grid_create");
         }
         return true;
+    case BENCH_CHAIN10:
+        bw->timed_steps = CHAIN10_STEPS;
+        if (scene_chain_create(bw->world, CHAIN10_LINKS, 0.0, SCENE_CHAIN_SWING, &bw->chain) != RB_OK) {
+            return engine_failed("scene_chain_create");
+        }
+        return true;
+    case BENCH_CANTILEVER:
+        bw->timed_steps = CANTILEVER_STEPS;
+        if (scene_cantilever_create(bw->world, &bw->cantilever) != RB_OK) {
+            return engine_failed("scene_cantilever_create");
+        }
+        bw->tip_start = rb_body_world_center(bw->world, bw->cantilever.plank2);
+        return true;
     case BENCH_SCENE_COUNT:
         break;
     }
@@ -455,6 +488,7 @@ static bool scene_is_finite(const bench_world *bw)
     switch (bw->scene) {
     case BENCH_CHAIN_HANG:
     case BENCH_CHAIN_SWING:
+    case BENCH_CHAIN10:
         /* Body B of each joint: every link and the heavy box. */
         for (int k = 0; finite && k < bw->chain.joint_count; ++k) {
             finite = body_is_finite(bw->world, rb_joint_body_b(bw->world, bw->chain.joints[k]));
@@ -467,6 +501,9 @@ static bool scene_is_finite(const bench_world *bw)
         for (int k = 0; finite && k < bw->grid.n * bw->grid.n; ++k) {
             finite = body_is_finite(bw->world, scene_body_at(bw->grid.first_body, k));
         }
+        break;
+    case BENCH_CANTILEVER:
+        finite = body_is_finite(bw->world, bw->cantilever.plank1) && body_is_finite(bw->world, bw->cantilever.plank2);
         break;
     case BENCH_SCENE_COUNT:
         break;
@@ -485,6 +522,7 @@ typedef struct bench_row {
     double median_ms;              /* NAN when no timed step was done */
     double worst_gap, final_gap;   /* m */
     double drift_max, drift_final; /* pendulum: |E - E0| / E0 */
+    double sag_max;                /* m, cantilever: the outer plank's largest distance from its start */
     bool finite;                   /* every body's state finite at the end of the last run */
     bool diverged;                 /* the last run stopped early (file comment) */
 } bench_row;
@@ -530,6 +568,7 @@ static bool run_once(const bench_options *opts, double *times, bench_row *row, d
     row->warmup_steps = bw.warmup_steps;
     row->worst_gap = row->final_gap = 0.0;
     row->drift_max = row->drift_final = 0.0;
+    row->sag_max = 0.0;
     row->diverged = false;
     int timed = 0;
     for (int step = 0; step < bw.warmup_steps + bw.timed_steps; ++step) {
@@ -549,6 +588,10 @@ static bool run_once(const bench_options *opts, double *times, bench_row *row, d
         if (row->scene == BENCH_PENDULUM) {
             row->drift_final = fabs(pendulum_energy(bw.world, bw.bob) - bw.energy0) / bw.energy0;
             row->drift_max = worse(row->drift_max, row->drift_final);
+        }
+        if (row->scene == BENCH_CANTILEVER) {
+            const rb_vec2 tip = rb_body_world_center(bw.world, bw.cantilever.plank2);
+            row->sag_max = worse(row->sag_max, rb_distance(tip, bw.tip_start));
         }
         /* Written so that NaN stops the run too. */
         if (!(row->final_gap <= BENCH_DIVERGED_GAP) || !isfinite(row->drift_final)) {
@@ -585,8 +628,8 @@ static bool run_row(const bench_options *opts, double *times, double *run_median
 
 static void print_table_header(void)
 {
-    printf("%-11s %-9s %4s %4s %4s %10s %13s %13s %10s %11s %6s %8s\n", "scene", "method", "vel", "pos", "sub",
-           "ms/step", "worst gap m", "final gap m", "drift max", "drift final", "finite", "diverged");
+    printf("%-11s %-9s %4s %4s %4s %10s %13s %13s %10s %11s %10s %6s %8s\n", "scene", "method", "vel", "pos", "sub",
+           "ms/step", "worst gap m", "final gap m", "drift max", "drift final", "sag m", "finite", "diverged");
 }
 
 static void print_row(const bench_row *r)
@@ -605,16 +648,22 @@ static void print_row(const bench_row *r)
     } else {
         printf(" %10s %11s", "-", "-");
     }
+    if (r->scene == BENCH_CANTILEVER) {
+        printf(" %10.3e", r->sag_max);
+    } else {
+        printf(" %10s", "-");
+    }
     printf(" %6s %8s\n", r->finite ? "yes" : "no", r->diverged ? "yes" : "no");
 }
 
 /* The CSV rows. The energy drift is empty except for the pendulum, the
- * median when no timed step was done. A failed write shows in the
+ * sag except for the cantilever, the median when no timed step was
+ * done. A failed write shows in the
  * stream's error flag, which atomic_file_commit checks. */
 static void write_csv(FILE *file, const bench_options *opts, const bench_row *rows, int count)
 {
     fputs("scene,correction,velocity_iterations,position_iterations,substeps,runs,warmup_steps,timed_steps,"
-          "median_ms,worst_gap_m,final_gap_m,energy_drift_max,energy_drift_final,finite,diverged\n",
+          "median_ms,worst_gap_m,final_gap_m,energy_drift_max,energy_drift_final,tip_sag_m,finite,diverged\n",
           file);
     for (int k = 0; k < count; ++k) {
         const bench_row *r = &rows[k];
@@ -630,6 +679,10 @@ static void write_csv(FILE *file, const bench_options *opts, const bench_row *ro
             fprintf(file, "%.6g,%.6g", r->drift_max, r->drift_final);
         } else {
             fputc(',', file);
+        }
+        fputc(',', file);
+        if (r->scene == BENCH_CANTILEVER) {
+            fprintf(file, "%.6g", r->sag_max);
         }
         fprintf(file, ",%s,%s\n", r->finite ? "yes" : "no", r->diverged ? "yes" : "no");
     }
@@ -658,7 +711,11 @@ int main(int argc, char **argv)
         fprintf(stderr, "bench_solver: --csv: %s\n", error);
         return EXIT_FAILURE;
     }
-    const int most_steps = CHAIN_STEPS > PENDULUM_STEPS ? CHAIN_STEPS : PENDULUM_STEPS;
+    const int scene_steps[] = {CHAIN_STEPS, PENDULUM_STEPS, CHAIN10_STEPS, CANTILEVER_STEPS};
+    int most_steps = 0;
+    for (size_t k = 0; k < sizeof scene_steps / sizeof scene_steps[0]; ++k) {
+        most_steps = scene_steps[k] > most_steps ? scene_steps[k] : most_steps;
+    }
     const int max_steps = most_steps > opts.grid_steps ? most_steps : opts.grid_steps;
     double *times = malloc((size_t)max_steps * sizeof *times);
     double *run_medians = malloc((size_t)opts.runs * sizeof *run_medians);

@@ -28,9 +28,10 @@ rb_status scene_chain_create(rb_world *world, int links, double heavy_density, s
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "scene_chain_create: links must be 1 .. %d, got %d",
                                SCENE_CHAIN_MAX_LINKS, links);
     }
-    if (!(heavy_density > 0.0 && isfinite(heavy_density))) {
+    if (!(heavy_density >= 0.0 && isfinite(heavy_density))) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT,
-                               "scene_chain_create: heavy_density must be finite and > 0 kg/m², got %g", heavy_density);
+                               "scene_chain_create: heavy_density must be finite and >= 0 kg/m², got %g",
+                               heavy_density);
     }
     if (layout != SCENE_CHAIN_HANG && layout != SCENE_CHAIN_SWING) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT,
@@ -58,7 +59,8 @@ rb_status scene_chain_create(rb_world *world, int links, double heavy_density, s
     rb_body_id previous = chain.pin;
     double previous_angle = 0.0;
     rb_vec2 previous_anchor = rb_v2(0.0, 0.0); /* on the pin: the origin */
-    for (int i = 0; i <= links; ++i) {
+    const int bodies = heavy_density > 0.0 ? links + 1 : links;
+    for (int i = 0; i < bodies; ++i) {
         /* Body i spans [0.5·i, 0.5·(i + 1)] m from the pin along the chain;
          * the heavy box is the square of the same length after the links. */
         const bool heavy = i == links;

@@ -120,8 +120,10 @@ rb_status scene_drop_create(rb_world *world, double height, double restitution, 
  * half-extents 0.25 × 0.05 m and density 1 kg/m² (0.05 kg), joined end to
  * end by revolute joints, the first pinned to a static body (no shape) at
  * the origin, and a heavy box of half-extent 0.25 m and density
- * `heavy_density` (kg/m², finite, > 0; 20 gives 5 kg, 100× a link)
- * jointed at the end. Along the chain's direction d, body i (0-based; the
+ * `heavy_density` (kg/m², finite, >= 0; 20 gives 5 kg, 100× a link)
+ * jointed at the end; with heavy_density 0 there is no heavy box (the
+ * joint tests' plain chain), `heavy` is the last link and there are
+ * `links` joints. Along the chain's direction d, body i (0-based; the
  * heavy box is i = links) has its centre at (0.5·i + 0.25)·d m, and joint i
  * joins the point 0.25 m beyond the centre of body i - 1 (the pin's origin
  * for i = 0), body A, to the point 0.25 m behind the centre of body i,
@@ -140,11 +142,31 @@ typedef enum scene_chain_layout {
 typedef struct scene_chain {
     rb_body_id pin;
     rb_body_id heavy;
-    rb_joint_id joints[SCENE_CHAIN_MAX_LINKS + 1]; /* links + 1 joints, the last one holds the heavy box */
+    rb_joint_id joints[SCENE_CHAIN_MAX_LINKS + 1]; /* links + 1 joints, the last one holds the heavy box (if any) */
     int joint_count;
 } scene_chain;
 rb_status scene_chain_create(rb_world *world, int links, double heavy_density, scene_chain_layout layout,
                              scene_chain *out);
+
+/* A cantilever of two welded planks: a static wall (a box of half-extents
+ * 0.1 × 1 m centred at (-0.1, 0), so its right face is x = 0); plank 1, a
+ * box of half-extents 0.5 × 0.1 m and density 1 kg/m² (0.2 kg) centred at
+ * (0.5, 0), welded to the wall at (0, 0); plank 2, the same box at
+ * density 2 (0.4 kg) centred at (1.5, 0), welded to plank 1 at (1, 0).
+ * Body B of each weld is the outer one; the welds are rigid (the default
+ * weld definition). At rest under gravity (0, -g) each weld carries what
+ * lies beyond it: on B a force (0, M·g) and a torque M·g·d, with M the
+ * mass carried and d the horizontal distance from the weld to that
+ * mass's centre (root: M = 0.6 kg, M·d = 0.2·0.5 + 0.4·1.5 kg·m; tip:
+ * M = 0.4 kg, d = 0.5 m). The planks sag only as far as the solver lets
+ * the welds give. */
+typedef struct scene_cantilever {
+    rb_body_id wall;
+    rb_body_id plank1, plank2;
+    rb_joint_id root; /* wall to plank 1 */
+    rb_joint_id tip;  /* plank 1 to plank 2 */
+} scene_cantilever;
+rb_status scene_cantilever_create(rb_world *world, scene_cantilever *out);
 
 /* The joint grid of shared/peers/README.md: n × n (2 .. 1000) circles of
  * radius 0.4 m, density 1 kg/m², friction 0.6, at (k, -i) m for column k
