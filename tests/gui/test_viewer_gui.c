@@ -318,7 +318,7 @@ Test(viewer, script_commands_rebuild_control_and_report_bad_values, .timeout = 2
     int status = run_viewer(dir, arguments);
     snprintf(path, sizeof path, "%s/err.txt", dir);
     const char *errors = read_file(path);
-    cr_expect_eq(status, 1, "the bad frame count fails the script");
+    cr_expect_eq(status, 1, "the bad frame count fails the script with status 1, got %d; stderr:\n%s", status, errors);
     cr_expect(strstr(errors, "script.txt:14: play expects an integer from 0 to 10000000, got \"many\"") != NULL,
               "stderr:\n%s", errors);
     snprintf(path, sizeof path, "%s/out.txt", dir);
