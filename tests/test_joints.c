@@ -324,46 +324,46 @@ Test(joints, motor_without_enough_torque_accelerates_at_max_torque_over_inertia)
 
 /* ---- Weld -------------------------------------------------------------------------- */
 
-/* A cantilever (scene_cantilever, models/scenes): box 1 (half-extents
- * 0.5 × 0.1 m, density 1: 0.2 kg,
- * centre (0.5, 0)) welded at (0, 0) to a static wall, box 2 (same shape,
- * density 2: 0.4 kg, centre (1.5, 0)) welded to box 1 at (1, 0); body B of
- * each weld is the outer one. At rest each weld carries what lies beyond
+/* The welded cantilever of models/scenes (scene_cantilever): plank 1
+ * (0.2 kg, centre (0.5, 0)) welded at (0, 0) to a static wall, plank 2
+ * (0.4 kg, centre (1.5, 0)) welded to plank 1 at (1, 0); body B of each
+ * weld is the outer plank. At rest each weld carries what lies beyond
  * it: the force on B is (0, M·g), M the mass carried, and the torque on B
  * balances the weight's moment about the anchor, τ = M·g·d with d the
  * horizontal distance from the anchor to the carried centre of mass
  * (equilibrium of the carried bodies about the anchor; the anchor force
- * has no moment there). Weld 1: M = 0.6 kg, M·d = 0.2·0.5 + 0.4·1.5;
- * weld 2: M = 0.4 kg, d = 0.5 m. Within 1 % (the issue's bound) after 2 s
- * at 60 Hz; the tip box stays within the linear slop of where it started
+ * has no moment there). Root weld: M = 0.6 kg, M·d = 0.2·0.5 + 0.4·1.5;
+ * tip weld: M = 0.4 kg, d = 0.5 m. Within 1 % (the issue's bound) after
+ * 2 s at 60 Hz; plank 2 stays within the linear slop of where it started
  * at every step. */
 Test(joints, welded_cantilever_holds_with_static_reactions)
 {
     rb_world *world = make_world(rb_v2(0.0, -G));
     scene_cantilever cantilever;
     cr_assert_eq(scene_cantilever_create(world, &cantilever), RB_OK, "scene_cantilever_create: %s", rb_last_error());
-    const rb_body_id box2 = cantilever.plank2;
+    const rb_body_id plank2 = cantilever.plank2;
     const rb_joint_id root = cantilever.root, tip = cantilever.tip;
     const double m1 = 0.2, m2 = 0.4;
     cr_assert_float_eq(rb_body_mass(world, cantilever.plank1), m1, 1e-12, "plank 1's mass");
-    cr_assert_float_eq(rb_body_mass(world, box2), m2, 1e-12, "plank 2's mass");
+    cr_assert_float_eq(rb_body_mass(world, plank2), m2, 1e-12, "plank 2's mass");
 
     const double slop = rb_world_solver_settings(world).linear_slop;
     double worst_sag = 0.0;
     for (int n = 0; n < 120; ++n) {
         step_world(world, TEST_DT, 1);
-        worst_sag = fmax(worst_sag, rb_distance(rb_body_world_center(world, box2), rb_v2(1.5, 0.0)));
+        worst_sag = fmax(worst_sag, rb_distance(rb_body_world_center(world, plank2), rb_v2(1.5, 0.0)));
     }
-    cr_expect(worst_sag <= slop, "the tip box moved %g m from its place", worst_sag);
+    cr_expect(worst_sag <= slop, "plank 2 moved %g m from its place", worst_sag);
 
     const rb_vec2 root_force = {0.0, (m1 + m2) * G};
     const double root_torque = (m1 * 0.5 + m2 * 1.5) * G;
     const rb_vec2 tip_force = {0.0, m2 * G};
     const double tip_torque = m2 * 0.5 * G;
-    expect_vec_near(rb_joint_reaction_force(world, root), root_force, 0.01 * root_force.y, "root weld force on box 1");
-    expect_near(rb_joint_reaction_torque(world, root), root_torque, 0.01 * root_torque, "root weld torque on box 1");
-    expect_vec_near(rb_joint_reaction_force(world, tip), tip_force, 0.01 * tip_force.y, "tip weld force on box 2");
-    expect_near(rb_joint_reaction_torque(world, tip), tip_torque, 0.01 * tip_torque, "tip weld torque on box 2");
+    expect_vec_near(rb_joint_reaction_force(world, root), root_force, 0.01 * root_force.y,
+                    "root weld force on plank 1");
+    expect_near(rb_joint_reaction_torque(world, root), root_torque, 0.01 * root_torque, "root weld torque on plank 1");
+    expect_vec_near(rb_joint_reaction_force(world, tip), tip_force, 0.01 * tip_force.y, "tip weld force on plank 2");
+    expect_near(rb_joint_reaction_torque(world, tip), tip_torque, 0.01 * tip_torque, "tip weld torque on plank 2");
     destroy_world_and_expect_no_leak(world);
 }
 
