@@ -100,6 +100,37 @@ Test(broad_phase, pairs_match_brute_force_while_balls_fall_teleport_and_vanish)
     destroy_world_and_expect_no_leak(world);
 }
 
+/* A ball dropped onto a pyramid at rest leaves its fat box nearly every
+ * step: only its own candidates are found anew (a search around it), the
+ * pyramid's are kept, and the pairs stay brute force's while it falls,
+ * lands and comes to rest on the top box. */
+Test(broad_phase, a_ball_falling_onto_a_resting_pyramid_is_requeried_alone)
+{
+    rb_world *world = make_world(rb_v2(0.0, -9.8));
+    scene_pyramid pyramid;
+    cr_assert_eq(scene_pyramid_create(world, 20, &pyramid), RB_OK, "%s", rb_last_error());
+    step_world(world, TEST_DT, 60);
+    rb_vec2 top = rb_body_position(world, pyramid.top);
+    rb_body_id ball = make_body(world, RB_BODY_DYNAMIC, rb_add(top, rb_v2(0.1, 3.0)), 0.0);
+    add_circle(world, ball, rb_v2(0.0, 0.0), 0.25, 1.0);
+    step_world(world, TEST_DT, 1); /* a new shape: the sweep is rebuilt */
+    rb_statistics before = rb_world_statistics(world);
+    for (int step = 0; step < 120; ++step) {
+        step_world(world, TEST_DT, 1);
+        expect_pairs_match_brute_force(world, step);
+    }
+    rb_statistics after = rb_world_statistics(world);
+    cr_expect_eq(after.broad_phase_sweeps, before.broad_phase_sweeps, "the fall swept all %d shapes again %d times",
+                 after.shape_count, after.broad_phase_sweeps - before.broad_phase_sweeps);
+    /* The falling ball outgrows its fat box each time it has fallen
+     * about RB_FAT_MARGIN beyond the step's travel the box allowed for:
+     * 17 times in a fall of 3 m (47 steps). */
+    int requeries = after.broad_phase_requeries - before.broad_phase_requeries;
+    cr_expect_geq(requeries, 5, "the ball was searched for alone in only %d steps", requeries);
+    expect_near(rb_body_position(world, ball).y, top.y + 0.75, 0.02, "the ball resting on the top box");
+    destroy_world_and_expect_no_leak(world);
+}
+
 /* A pyramid at rest sweeps no more, yet its pairs follow every change of
  * which shapes may collide (steps numbered from 1000 in the messages). */
 Test(broad_phase, a_pyramid_at_rest_stops_sweeping)

@@ -7,17 +7,26 @@
  * candidate pairs: the pairs whose fat boxes overlap, a fat box being a
  * swept box grown by RB_FAT_MARGIN and kept while the swept box stays
  * inside it (the fat boxes of Box2D's dynamic tree, Catto 2019), of
- * shapes that may collide (rb_should_collide). Only on a step where some
- * swept box has left its fat box, or which shapes may collide changed
- * (candidates_stale), are the fat boxes made anew and the candidates found
- * again: sort the shapes by the lower x of
- * their fat boxes, then sweep, each box meeting only the boxes that start
- * before it ends, O(n log n + overlaps in x). A pile at rest sweeps once;
- * the base-100 pyramid, 100 boxes tall, spent an eighth of its step
- * sweeping every step. The candidates are put in body order (a counting
- * sort), so the contacts, and every run, meet the pairs in the same
- * order; since a candidate is kept exactly when its swept boxes overlap,
- * the pairs are the same as a sweep of the swept boxes would find. */
+ * shapes that may collide (rb_should_collide). Since a candidate is kept
+ * exactly when its swept boxes overlap, the pairs are the same as a sweep
+ * of the swept boxes would find, whichever fat boxes are current.
+ *
+ * The candidates change only where fat boxes change:
+ *   - nothing left its fat box: they are kept (a pile at rest sweeps once;
+ *     the base-100 pyramid, 100 boxes tall, spent an eighth of its step
+ *     sweeping every step);
+ *   - a few shapes left theirs (a ball falling past a resting pile, the
+ *     fastest links of a swinging grid): each of those gets a new fat box,
+ *     its old candidates are dropped and its new ones are found by a range
+ *     search in the sorted sweep, O(log n + neighbours in x) per shape;
+ *   - shapes came or went, which shapes may collide changed
+ *     (candidates_stale), or more than one shape in REQUERY_LIMIT left its
+ *     box: every fat box is made anew and all candidates are found by a
+ *     sweep, each box meeting only the boxes that start before it ends,
+ *     O(n log n + overlaps in x). A grid of bodies, one column's boxes all
+ *     overlapping in x, costs the sweep a hundred tests per box.
+ * The candidates are put in body order (a counting sort), so the
+ * contacts, and every run, meet the pairs in the same order. */
 #include <stdlib.h>
 
 #include "allocator.h"
@@ -208,17 +217,30 @@ static bool contains(rb_aabb outer, rb_aabb inner)
            inner.upper.y <= outer.upper.y;
 }
 
+static rb_aabb fat_box_around(rb_aabb box)
+{
+    rb_vec2 margin = rb_v2(RB_FAT_MARGIN, RB_FAT_MARGIN);
+    return (rb_aabb){rb_sub(box.lower, margin), rb_add(box.upper, margin)};
+}
+
+static bool overlaps_in_y(const rb_aabb *a, const rb_aabb *b)
+{
+    return a->lower.y <= b->upper.y && b->lower.y <= a->upper.y;
+}
+
 /* New fat boxes around the swept ones, sorted, and the candidates: every
  * pair of shapes that may collide and whose fat boxes overlap. */
 static rb_status find_candidates(rb_world *world)
 {
     int count = world->sweep_count;
-    rb_vec2 margin = rb_v2(RB_FAT_MARGIN, RB_FAT_MARGIN);
+    double max_width = 0.0;
     for (int k = 0; k < count; ++k) {
         rb_shape *shape = &world->shapes[world->sweep[k].shape];
-        shape->fat_aabb = (rb_aabb){rb_sub(shape->aabb.lower, margin), rb_add(shape->aabb.upper, margin)};
+        shape->fat_aabb = fat_box_around(shape->aabb);
         world->sweep[k].box = shape->fat_aabb;
+        max_width = fmax(max_width, shape->fat_aabb.upper.x - shape->fat_aabb.lower.x);
     }
+    world->sweep_max_width = max_width;
     sort_sweep(world->sweep, count);
 
     world->candidate_count = 0;
@@ -227,8 +249,7 @@ static rb_status find_candidates(rb_world *world)
         rb_aabb box_a = sweep[i].box;
         for (int j = i + 1; j < count && sweep[j].box.lower.x <= box_a.upper.x; ++j) {
             const rb_aabb *box_b = &sweep[j].box;
-            if (box_a.lower.y <= box_b->upper.y && box_b->lower.y <= box_a.upper.y &&
-                rb_should_collide(world, sweep[i].shape, sweep[j].shape)) {
+            if (overlaps_in_y(&box_a, box_b) && rb_should_collide(world, sweep[i].shape, sweep[j].shape)) {
                 RB_TRY(add_candidate(world, sweep[i].shape, sweep[j].shape));
             }
         }
@@ -236,32 +257,159 @@ static rb_status find_candidates(rb_world *world)
     return sort_candidates(world);
 }
 
-rb_status rb_broad_phase_update_pairs(rb_world *world, double dt)
+/* The first entry of the sorted sweep that is not before (lower_x,
+ * shape), by bisection; `count` when all are. */
+static int first_entry_not_before(const struct rb_sweep_entry *sweep, int count, double lower_x, int shape)
+{
+    int first = 0;
+    int last = count;
+    while (first < last) {
+        int middle = first + (last - first) / 2;
+        const struct rb_sweep_entry *entry = &sweep[middle];
+        bool before = entry->box.lower.x < lower_x || (entry->box.lower.x == lower_x && entry->shape < shape);
+        if (before) {
+            first = middle + 1;
+        } else {
+            last = middle;
+        }
+    }
+    return first;
+}
+
+/* Gives each refitted shape's sweep entry its new fat box and puts the
+ * sweep back in order; false if an entry is not where its old key says
+ * (the sweep no longer mirrors the fat boxes: sweep them all instead). */
+static bool refit_entries(rb_world *world)
+{
+    struct rb_sweep_entry *sweep = world->sweep;
+    int count = world->sweep_count;
+    for (int r = 0; r < world->refit_count; ++r) {
+        const struct rb_refit *refit = &world->refits[r];
+        int k = first_entry_not_before(sweep, count, refit->old_lower_x, refit->shape);
+        if (k == count || sweep[k].shape != refit->shape) {
+            return false;
+        }
+        rb_aabb box = world->shapes[refit->shape].fat_aabb;
+        sweep[k].box = box;
+        world->sweep_max_width = fmax(world->sweep_max_width, box.upper.x - box.lower.x);
+    }
+    sort_sweep(sweep, count);
+    return true;
+}
+
+/* The candidates of the refitted shapes, found anew: the old ones are
+ * dropped, then each refitted shape meets the entries whose lower x lies
+ * within the widest box before its own box's upper x: every box that can
+ * overlap it in x. A pair of two refitted shapes is added once, by the
+ * shape of lower index. */
+static rb_status requery_refitted(rb_world *world)
+{
+    rb_shape *shapes = world->shapes;
+    int kept = 0;
+    for (int i = 0; i < world->candidate_count; ++i) {
+        const rb_pair *candidate = &world->candidates[i];
+        if (!shapes[candidate->shape_a].refitted && !shapes[candidate->shape_b].refitted) {
+            world->candidates[kept++] = *candidate;
+        }
+    }
+    world->candidate_count = kept;
+
+    const struct rb_sweep_entry *sweep = world->sweep;
+    int count = world->sweep_count;
+    for (int r = 0; r < world->refit_count; ++r) {
+        int shape = world->refits[r].shape;
+        rb_aabb box = shapes[shape].fat_aabb;
+        int k = first_entry_not_before(sweep, count, box.lower.x - world->sweep_max_width, -1);
+        for (; k < count && sweep[k].box.lower.x <= box.upper.x; ++k) {
+            const rb_aabb *other = &sweep[k].box;
+            int other_shape = sweep[k].shape;
+            if (other_shape == shape || other->upper.x < box.lower.x || !overlaps_in_y(&box, other)) {
+                continue;
+            }
+            bool queried_before = shapes[other_shape].refitted && other_shape < shape;
+            if (!queried_before && rb_should_collide(world, shape, other_shape)) {
+                RB_TRY(add_candidate(world, shape, other_shape));
+            }
+        }
+    }
+    return sort_candidates(world);
+}
+
+/* Each shape's swept box for this step; the shapes whose swept box left
+ * their fat box get a new fat box and are listed in world->refits. */
+static void sweep_boxes_forward(rb_world *world, double dt)
 {
     double speculative_distance = RB_SPECULATIVE_SLOPS * world->settings.linear_slop;
-    /* Two sensors never pair, so while every shape is a sensor (the
-     * musculoskeletal models' bones) no pair can exist: the sweep stays
-     * empty and the step spends nothing here. */
-    bool refresh = world->sweep_stale || world->candidates_stale;
+    world->refit_count = 0;
+    /* In index order rather than the sweep's: the shapes and their bodies
+     * are then read one after another from memory instead of at random. */
+    for (int index = 0; index < world->shape_slots; ++index) {
+        rb_shape *shape = &world->shapes[index];
+        if (!shape->in_use) {
+            continue;
+        }
+        shape->aabb = swept_aabb(world, index, dt, speculative_distance);
+        if (!contains(shape->fat_aabb, shape->aabb)) {
+            world->refits[world->refit_count++] = (struct rb_refit){index, shape->fat_aabb.lower.x};
+            shape->fat_aabb = fat_box_around(shape->aabb);
+        }
+    }
+}
+
+/* Past one shape in REQUERY_LIMIT leaving its fat box in a step, one
+ * sweep over all the shapes is cheaper than a search for each. */
+#define REQUERY_LIMIT 8
+
+/* Finds the candidates anew, all of them or those of the refitted shapes. */
+static rb_status update_candidates(rb_world *world, bool sweep_all)
+{
+    if (!sweep_all && world->refit_count == 0) {
+        return RB_OK;
+    }
+    world->candidates_stale = true; /* until the candidates are complete (out of memory midway) */
+    rb_status status = RB_OK;
+    if (!sweep_all) {
+        for (int r = 0; r < world->refit_count; ++r) {
+            world->shapes[world->refits[r].shape].refitted = true;
+        }
+        sweep_all = !refit_entries(world);
+        if (!sweep_all) {
+            status = requery_refitted(world);
+            ++world->statistics.broad_phase_requeries;
+        }
+        for (int r = 0; r < world->refit_count; ++r) {
+            world->shapes[world->refits[r].shape].refitted = false;
+        }
+    }
+    if (sweep_all) {
+        status = find_candidates(world);
+        ++world->statistics.broad_phase_sweeps;
+    }
+    if (status == RB_OK) {
+        world->candidates_stale = false;
+    }
+    return status;
+}
+
+rb_status rb_broad_phase_update_pairs(rb_world *world, double dt)
+{
+    bool sweep_all = world->sweep_stale || world->candidates_stale;
     if (world->sweep_stale) {
         RB_TRY(rebuild_sweep(world));
     }
-    /* Every shape in the sweep, visited in index order rather than in the
-     * sweep's: the shapes and their bodies are then read one after
-     * another from memory instead of at random. */
-    bool any_in_sweep = world->sweep_count > 0;
-    for (int index = 0; any_in_sweep && index < world->shape_slots; ++index) {
-        rb_shape *shape = &world->shapes[index];
-        if (shape->in_use) {
-            shape->aabb = swept_aabb(world, index, dt, speculative_distance);
-            refresh = refresh || !contains(shape->fat_aabb, shape->aabb);
+    /* Two sensors never pair, so while every shape is a sensor (the
+     * musculoskeletal models' bones) no pair can exist: the sweep stays
+     * empty and the step spends nothing here. */
+    if (world->sweep_count > 0) {
+        if (rb_grow_array((void **)&world->refits, &world->refit_capacity, world->shape_count, sizeof *world->refits) !=
+            0) {
+            return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for the broad phase");
         }
-    }
-    if (refresh) {
-        world->candidates_stale = true; /* until the candidates are complete (out of memory midway) */
-        RB_TRY(find_candidates(world));
-        world->candidates_stale = false;
-        ++world->statistics.broad_phase_sweeps;
+        sweep_boxes_forward(world, dt);
+        sweep_all = sweep_all || world->refit_count > world->sweep_count / REQUERY_LIMIT;
+        RB_TRY(update_candidates(world, sweep_all));
+    } else if (sweep_all) {
+        RB_TRY(update_candidates(world, true));
     }
 
     /* The candidates, already in order, whose swept boxes overlap. */

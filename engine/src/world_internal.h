@@ -102,6 +102,7 @@ typedef struct rb_shape {
     double extent;    /* m, farthest point of the shape from the body's centre of mass */
     rb_aabb aabb;     /* m, broad phase: the box swept over the step and grown by the speculative margin */
     rb_aabb fat_aabb; /* m, broad phase: a box around `aabb`, kept while `aabb` stays inside it */
+    bool refitted;    /* broad phase, within a step: `fat_aabb` was made anew and the shape is queried alone */
 } rb_shape;
 
 /* A pair of shapes whose boxes overlap. Contacts are kept sorted by
@@ -120,6 +121,13 @@ typedef struct rb_pair {
 struct rb_sweep_entry {
     rb_aabb box; /* m, the shape's fat box */
     int shape;
+};
+
+/* A shape whose swept box left its fat box, and where its entry was in
+ * the sweep: the entry is found again by its old key (lower x, shape). */
+struct rb_refit {
+    int shape;
+    double old_lower_x; /* m, the old fat box's lower x */
 };
 
 typedef struct rb_contact {
@@ -333,6 +341,9 @@ struct rb_world {
     int pair_bucket_capacity;
     struct rb_sweep_entry *sweep; /* broad phase: the shapes sorted by lower x, kept from step to step */
     int sweep_capacity;
+    double sweep_max_width;  /* m, >= 0, broad phase: no fat box in the sweep is wider in x */
+    struct rb_refit *refits; /* broad phase, within a step: the shapes that left their fat boxes */
+    int refit_count, refit_capacity;
     int *island_parent; /* union-find over bodies, found anew each step (sleep.c) */
     int island_capacity;
     int *island_size;

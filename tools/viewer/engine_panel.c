@@ -169,7 +169,7 @@ void engine_panel_update(engine_panel *panel)
              "  step        %7.3f      bodies      %6d (%d awake)\n"
              "  pairs       %7.3f      islands     %6d\n"
              "  collide     %7.3f      shapes      %6d\n"
-             "  prepare     %7.3f      pairs       %6d (swept %d times)\n"
+             "  prepare     %7.3f      pairs       %6d (swept %d, requeried %d)\n"
              "  callback    %7.3f      contacts    %6d (%d points, %d colours)\n"
              "  velocities  %7.3f      iterations  %d vel, %d pos, %d relax\n"
              "  positions   %7.3f      joints      %6d\n"
@@ -178,11 +178,12 @@ void engine_panel_update(engine_panel *panel)
              "  islands     %7.3f      joint angle %.2e rad\n"
              "  finalize    %7.3f      energy      %.4g J",
              profile.step, stats.body_count, stats.awake_body_count, profile.pairs, stats.island_count, profile.collide,
-             stats.shape_count, profile.prepare, stats.pair_count, stats.broad_phase_sweeps, profile.substep_callback,
-             stats.contact_count, stats.manifold_point_count, stats.contact_colours, profile.solve_velocities,
-             stats.velocity_iterations, stats.position_iterations, stats.relax_iterations, profile.integrate_positions,
-             stats.joint_count, profile.correct_positions, stats.max_penetration, profile.relax, stats.max_joint_gap,
-             profile.islands, stats.max_joint_angle_error, profile.finalize, stats.energy);
+             stats.shape_count, profile.prepare, stats.pair_count, stats.broad_phase_sweeps,
+             stats.broad_phase_requeries, profile.substep_callback, stats.contact_count, stats.manifold_point_count,
+             stats.contact_colours, profile.solve_velocities, stats.velocity_iterations, stats.position_iterations,
+             stats.relax_iterations, profile.integrate_positions, stats.joint_count, profile.correct_positions,
+             stats.max_penetration, profile.relax, stats.max_joint_gap, profile.islands, stats.max_joint_angle_error,
+             profile.finalize, stats.energy);
     gtk_label_set_text(GTK_LABEL(panel->report), text);
 }
 

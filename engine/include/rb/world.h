@@ -106,9 +106,13 @@ typedef struct rb_statistics {
     int island_count;     /* groups of dynamic bodies linked by touching contacts, joints and cables */
     int shape_count;
     int pair_count; /* shape pairs whose bounding boxes overlap */
-    /* steps so far in which the broad phase found its candidate pairs
-     * anew (a shape had left its fat box, or shapes came or went) */
+    /* steps so far in which the broad phase found all its candidate
+     * pairs anew (shapes came or went, which shapes may collide changed,
+     * or many shapes had left their fat boxes) */
     int broad_phase_sweeps;
+    /* steps so far in which a few shapes had left their fat boxes and
+     * only their candidate pairs were found anew */
+    int broad_phase_requeries;
     int contact_count; /* pairs with at least one manifold point */
     int manifold_point_count;
     /* colours the contact constraints were solved in (a colour's
