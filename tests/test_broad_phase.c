@@ -100,6 +100,48 @@ Test(broad_phase, pairs_match_brute_force_while_balls_fall_teleport_and_vanish)
     destroy_world_and_expect_no_leak(world);
 }
 
+/* A full search cuts the sweep into bands in y as tall as the tallest
+ * dynamic box. Here boxes of many sizes, laid out in a 2D grid close
+ * enough to touch, drift and spin without gravity past a static pillar
+ * that reaches every band and under a floor as wide as the grid, so
+ * pairs are found across band borders, with shapes in several bands, by
+ * full searches and by searches around single shapes: after every step
+ * the pairs must be brute force's. */
+Test(broad_phase, pairs_match_brute_force_in_a_drifting_grid_of_boxes_of_many_sizes)
+{
+    rb_world *world = make_world(rb_v2(0.0, 0.0));
+    rb_body_id pillar = make_body(world, RB_BODY_STATIC, rb_v2(4.8, 4.5), 0.0);
+    add_box(world, pillar, 0.15, 6.0, 1.0);
+    rb_body_id floor = make_body(world, RB_BODY_STATIC, rb_v2(4.5, -1.2), 0.0);
+    add_box(world, floor, 6.0, 0.2, 1.0);
+    unsigned seed = 12345u;
+    for (int row = 0; row < 16; ++row) {
+        for (int column = 0; column < 16; ++column) {
+            /* A linear congruential generator: sizes 0.1 to 0.5 m, speeds
+             * up to 1 m/s and 2 rad/s, the same on every run. */
+            double draw[5];
+            for (int k = 0; k < 5; ++k) {
+                seed = seed * 1664525u + 1013904223u;
+                draw[k] = (double)(seed >> 8) / (double)(1u << 24);
+            }
+            rb_vec2 position = rb_v2(0.6 * column, 0.6 * row);
+            rb_body_id box = make_body(world, RB_BODY_DYNAMIC, position, draw[0]);
+            add_box(world, box, 0.1 + 0.2 * draw[1], 0.1 + 0.2 * draw[2], 1.0);
+            cr_assert_eq(rb_body_set_linear_velocity(world, box, rb_v2(draw[3] - 0.5, draw[4] - 0.5)), RB_OK, "%s",
+                         rb_last_error());
+            cr_assert_eq(rb_body_set_angular_velocity(world, box, 4.0 * (draw[1] - 0.5)), RB_OK, "%s", rb_last_error());
+        }
+    }
+    for (int step = 0; step < 120; ++step) {
+        step_world(world, TEST_DT, 1);
+        expect_pairs_match_brute_force(world, step);
+    }
+    rb_statistics statistics = rb_world_statistics(world);
+    cr_expect_gt(statistics.broad_phase_sweeps, 1, "the drift never needed a full search");
+    cr_expect_gt(statistics.broad_phase_requeries, 0, "the drift never needed a search around single shapes");
+    destroy_world_and_expect_no_leak(world);
+}
+
 /* A ball dropped onto a pyramid at rest leaves its fat box nearly every
  * step: only its own candidates are found anew (a search around it), the
  * pyramid's are kept, and the pairs stay brute force's while it falls,

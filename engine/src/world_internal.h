@@ -344,6 +344,11 @@ struct rb_world {
     double sweep_max_width;  /* m, >= 0, broad phase: no fat box in the sweep is wider in x */
     struct rb_refit *refits; /* broad phase, within a step: the shapes that left their fat boxes */
     int refit_count, refit_capacity;
+    double tallest_dynamic_box;          /* m, >= 0, broad phase: of the swept boxes of dynamic bodies' shapes */
+    struct rb_sweep_entry *band_entries; /* broad phase: the sweep cut into bands in y, for a full search */
+    int band_entry_capacity;
+    int *band_end; /* broad phase: where each band's entries end */
+    int band_end_capacity;
     int *island_parent; /* union-find over bodies, found anew each step (sleep.c) */
     int island_capacity;
     int *island_size;
