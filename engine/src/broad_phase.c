@@ -312,7 +312,7 @@ static rb_status sweep_band(rb_world *world, const band_layout *bands, int b, co
         rb_aabb box_a = entries[i].box;
         for (int j = i + 1; j < count && entries[j].box.lower.x <= box_a.upper.x; ++j) {
             const rb_aabb *box_b = &entries[j].box;
-            if (!overlaps_in_y(&box_a, box_b) || band_of(bands, fmax(box_a.lower.y, box_b->lower.y)) != b) {
+            if (!overlaps_in_y(&box_a, box_b) || band_of(bands, rb_max(box_a.lower.y, box_b->lower.y)) != b) {
                 continue;
             }
             if (rb_should_collide(world, entries[i].shape, entries[j].shape)) {
@@ -335,9 +335,9 @@ static rb_status find_candidates(rb_world *world)
         rb_shape *shape = &world->shapes[world->sweep[k].shape];
         shape->fat_aabb = fat_box_around(shape->aabb);
         world->sweep[k].box = shape->fat_aabb;
-        max_width = fmax(max_width, shape->fat_aabb.upper.x - shape->fat_aabb.lower.x);
-        bottom = fmin(bottom, shape->fat_aabb.lower.y);
-        top = fmax(top, shape->fat_aabb.upper.y);
+        max_width = rb_max(max_width, shape->fat_aabb.upper.x - shape->fat_aabb.lower.x);
+        bottom = rb_min(bottom, shape->fat_aabb.lower.y);
+        top = rb_max(top, shape->fat_aabb.upper.y);
     }
     world->sweep_max_width = max_width;
     sort_sweep(world->sweep, count);
@@ -388,7 +388,7 @@ static bool refit_entries(rb_world *world)
         }
         rb_aabb box = world->shapes[refit->shape].fat_aabb;
         sweep[k].box = box;
-        world->sweep_max_width = fmax(world->sweep_max_width, box.upper.x - box.lower.x);
+        world->sweep_max_width = rb_max(world->sweep_max_width, box.upper.x - box.lower.x);
     }
     sort_sweep(sweep, count);
     return true;
@@ -438,7 +438,8 @@ static rb_status requery_refitted(rb_world *world)
 static void sweep_boxes_forward(rb_world *world, double dt)
 {
     double speculative_distance = RB_SPECULATIVE_SLOPS * world->settings.linear_slop;
-    world->refit_count = 0;
+    struct rb_refit *refits = world->refits;
+    int refit_count = 0;
     double tallest = 0.0;
     /* In index order rather than the sweep's: the shapes and their bodies
      * are then read one after another from memory instead of at random. */
@@ -449,13 +450,14 @@ static void sweep_boxes_forward(rb_world *world, double dt)
         }
         shape->aabb = swept_aabb(world, index, dt, speculative_distance);
         if (world->bodies[shape->body].type == RB_BODY_DYNAMIC) {
-            tallest = fmax(tallest, shape->aabb.upper.y - shape->aabb.lower.y);
+            tallest = rb_max(tallest, shape->aabb.upper.y - shape->aabb.lower.y);
         }
         if (!contains(shape->fat_aabb, shape->aabb)) {
-            world->refits[world->refit_count++] = (struct rb_refit){index, shape->fat_aabb.lower.x};
+            refits[refit_count++] = (struct rb_refit){index, shape->fat_aabb.lower.x};
             shape->fat_aabb = fat_box_around(shape->aabb);
         }
     }
+    world->refit_count = refit_count;
     world->tallest_dynamic_box = tallest;
 }
 
