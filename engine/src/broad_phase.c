@@ -323,6 +323,48 @@ static rb_status sweep_band(rb_world *world, const band_layout *bands, int b, co
     return RB_OK;
 }
 
+static double box_width(const rb_aabb *box) { return box->upper.x - box->lower.x; }
+
+/* A search around one shape scans the sweep from the widest box's width
+ * before it, so a ground 200 m across would make every search scan 200 m
+ * of the sweep. Boxes much wider than any dynamic one (over twice the
+ * widest) are listed apart and met one by one; up to WIDE_SHAPE_LIMIT of
+ * them, else none is. */
+#define WIDE_SHAPE_LIMIT 16
+
+static rb_status list_wide_shapes(rb_world *world, double max_width)
+{
+    double limit = 2.0 * (world->widest_dynamic_box + 2.0 * RB_FAT_MARGIN);
+    int wide = 0;
+    double narrow_max_width = 0.0;
+    for (int k = 0; k < world->sweep_count; ++k) {
+        double width = box_width(&world->sweep[k].box);
+        if (width > limit) {
+            ++wide;
+        } else {
+            narrow_max_width = rb_max(narrow_max_width, width);
+        }
+    }
+    world->wide_shape_count = 0;
+    if (wide > WIDE_SHAPE_LIMIT) {
+        world->wide_box_limit = INFINITY;
+        world->sweep_max_width = max_width;
+        return RB_OK;
+    }
+    if (rb_grow_array((void **)&world->wide_shapes, &world->wide_shape_capacity, wide, sizeof *world->wide_shapes) !=
+        0) {
+        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for the broad phase");
+    }
+    for (int k = 0; k < world->sweep_count; ++k) {
+        if (box_width(&world->sweep[k].box) > limit) {
+            world->wide_shapes[world->wide_shape_count++] = world->sweep[k].shape;
+        }
+    }
+    world->wide_box_limit = limit;
+    world->sweep_max_width = narrow_max_width;
+    return RB_OK;
+}
+
 /* New fat boxes around the swept ones, sorted, and the candidates: every
  * pair of shapes that may collide and whose fat boxes overlap. */
 static rb_status find_candidates(rb_world *world)
@@ -339,8 +381,8 @@ static rb_status find_candidates(rb_world *world)
         bottom = rb_min(bottom, shape->fat_aabb.lower.y);
         top = rb_max(top, shape->fat_aabb.upper.y);
     }
-    world->sweep_max_width = max_width;
     sort_sweep(world->sweep, count);
+    RB_TRY(list_wide_shapes(world, max_width));
 
     band_layout bands = layout_bands(bottom, top, world->tallest_dynamic_box + 2.0 * RB_FAT_MARGIN, count);
     RB_TRY(fill_bands(world, &bands));
@@ -375,20 +417,31 @@ static int first_entry_not_before(const struct rb_sweep_entry *sweep, int count,
 
 /* Gives each refitted shape's sweep entry its new fat box and puts the
  * sweep back in order; false if an entry is not where its old key says
- * (the sweep no longer mirrors the fat boxes: sweep them all instead). */
+ * (the sweep no longer mirrors the fat boxes: sweep them all instead).
+ * Every entry is found before any is changed: a changed entry would
+ * leave the sweep out of order for the bisections after it. */
 static bool refit_entries(rb_world *world)
 {
     struct rb_sweep_entry *sweep = world->sweep;
     int count = world->sweep_count;
     for (int r = 0; r < world->refit_count; ++r) {
-        const struct rb_refit *refit = &world->refits[r];
-        int k = first_entry_not_before(sweep, count, refit->old_lower_x, refit->shape);
-        if (k == count || sweep[k].shape != refit->shape) {
+        struct rb_refit *refit = &world->refits[r];
+        refit->entry = first_entry_not_before(sweep, count, refit->old_lower_x, refit->shape);
+        if (refit->entry == count || sweep[refit->entry].shape != refit->shape) {
             return false;
         }
+        /* A wide box that moved, or a box grown wide: the list of wide
+         * shapes would change, so all are searched for. */
+        if (box_width(&sweep[refit->entry].box) > world->wide_box_limit ||
+            box_width(&world->shapes[refit->shape].fat_aabb) > world->wide_box_limit) {
+            return false;
+        }
+    }
+    for (int r = 0; r < world->refit_count; ++r) {
+        const struct rb_refit *refit = &world->refits[r];
         rb_aabb box = world->shapes[refit->shape].fat_aabb;
-        sweep[k].box = box;
-        world->sweep_max_width = rb_max(world->sweep_max_width, box.upper.x - box.lower.x);
+        sweep[refit->entry].box = box;
+        world->sweep_max_width = rb_max(world->sweep_max_width, box_width(&box));
     }
     sort_sweep(sweep, count);
     return true;
@@ -420,7 +473,8 @@ static rb_status requery_refitted(rb_world *world)
         for (; k < count && sweep[k].box.lower.x <= box.upper.x; ++k) {
             const rb_aabb *other = &sweep[k].box;
             int other_shape = sweep[k].shape;
-            if (other_shape == shape || other->upper.x < box.lower.x || !overlaps_in_y(&box, other)) {
+            if (other_shape == shape || other->upper.x < box.lower.x || !overlaps_in_y(&box, other) ||
+                box_width(other) > world->wide_box_limit) {
                 continue;
             }
             bool queried_before = shapes[other_shape].refitted && other_shape < shape;
@@ -428,12 +482,18 @@ static rb_status requery_refitted(rb_world *world)
                 RB_TRY(add_candidate(world, shape, other_shape));
             }
         }
+        for (int w = 0; w < world->wide_shape_count; ++w) {
+            int wide_shape = world->wide_shapes[w];
+            if (rb_aabb_overlaps(box, shapes[wide_shape].fat_aabb) && rb_should_collide(world, shape, wide_shape)) {
+                RB_TRY(add_candidate(world, shape, wide_shape));
+            }
+        }
     }
     return sort_candidates(world);
 }
 
-/* Each shape's swept box for this step, and the tallest of a dynamic
- * body's; the shapes whose swept box left their fat box get a new fat box
+/* Each shape's swept box for this step, and the tallest and widest of
+ * a dynamic body's; the shapes whose swept box left their fat box get a new fat box
  * and are listed in world->refits. */
 static void sweep_boxes_forward(rb_world *world, double dt)
 {
@@ -441,6 +501,7 @@ static void sweep_boxes_forward(rb_world *world, double dt)
     struct rb_refit *refits = world->refits;
     int refit_count = 0;
     double tallest = 0.0;
+    double widest = 0.0;
     /* In index order rather than the sweep's: the shapes and their bodies
      * are then read one after another from memory instead of at random. */
     for (int index = 0; index < world->shape_slots; ++index) {
@@ -451,14 +512,16 @@ static void sweep_boxes_forward(rb_world *world, double dt)
         shape->aabb = swept_aabb(world, index, dt, speculative_distance);
         if (world->bodies[shape->body].type == RB_BODY_DYNAMIC) {
             tallest = rb_max(tallest, shape->aabb.upper.y - shape->aabb.lower.y);
+            widest = rb_max(widest, box_width(&shape->aabb));
         }
         if (!contains(shape->fat_aabb, shape->aabb)) {
-            refits[refit_count++] = (struct rb_refit){index, shape->fat_aabb.lower.x};
+            refits[refit_count++] = (struct rb_refit){.shape = index, .old_lower_x = shape->fat_aabb.lower.x};
             shape->fat_aabb = fat_box_around(shape->aabb);
         }
     }
     world->refit_count = refit_count;
     world->tallest_dynamic_box = tallest;
+    world->widest_dynamic_box = widest;
 }
 
 /* Past one shape in REQUERY_LIMIT leaving its fat box in a step, one

@@ -143,6 +143,7 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->active_joints, &world->active_joint_capacity, sizeof *world->active_joints);
     rb_free_array((void **)&world->sweep, &world->sweep_capacity, sizeof *world->sweep);
     rb_free_array((void **)&world->refits, &world->refit_capacity, sizeof *world->refits);
+    rb_free_array((void **)&world->wide_shapes, &world->wide_shape_capacity, sizeof *world->wide_shapes);
     rb_free_array((void **)&world->band_entries, &world->band_entry_capacity, sizeof *world->band_entries);
     rb_free_array((void **)&world->band_end, &world->band_end_capacity, sizeof *world->band_end);
     rb_free_array((void **)&world->island_parent, &world->island_capacity, sizeof *world->island_parent);
@@ -244,6 +245,7 @@ size_t rb_world_bytes_in_use(const rb_world *world)
            (size_t)world->pair_bucket_capacity * sizeof *world->pair_bucket +
            (size_t)world->sweep_capacity * sizeof *world->sweep +
            (size_t)world->refit_capacity * sizeof *world->refits +
+           (size_t)world->wide_shape_capacity * sizeof *world->wide_shapes +
            (size_t)world->band_entry_capacity * sizeof *world->band_entries +
            (size_t)world->band_end_capacity * sizeof *world->band_end +
            (size_t)world->constraint_capacity * sizeof *world->constraints +

@@ -123,11 +123,12 @@ struct rb_sweep_entry {
     int shape;
 };
 
-/* A shape whose swept box left its fat box, and where its entry was in
- * the sweep: the entry is found again by its old key (lower x, shape). */
+/* A shape whose swept box left its fat box, and where its entry is in
+ * the sweep: the entry is found by its old key (lower x, shape). */
 struct rb_refit {
     int shape;
     double old_lower_x; /* m, the old fat box's lower x */
+    int entry;          /* its index in the sweep, found before any entry changes */
 };
 
 typedef struct rb_contact {
@@ -341,10 +342,17 @@ struct rb_world {
     int pair_bucket_capacity;
     struct rb_sweep_entry *sweep; /* broad phase: the shapes sorted by lower x, kept from step to step */
     int sweep_capacity;
-    double sweep_max_width;  /* m, >= 0, broad phase: no fat box in the sweep is wider in x */
+    /* m, broad phase: fat boxes wider in x than this (the static ground
+     * of a scene, 200 m across) are searched for by the list below, not
+     * by a range in the sweep; +inf when there would be many */
+    double wide_box_limit;
+    double sweep_max_width; /* m, >= 0, broad phase: no other fat box in the sweep is wider in x */
+    int *wide_shapes;       /* broad phase: the shapes whose fat box is wider than wide_box_limit */
+    int wide_shape_count, wide_shape_capacity;
     struct rb_refit *refits; /* broad phase, within a step: the shapes that left their fat boxes */
     int refit_count, refit_capacity;
     double tallest_dynamic_box;          /* m, >= 0, broad phase: of the swept boxes of dynamic bodies' shapes */
+    double widest_dynamic_box;           /* m, >= 0, broad phase: the same in x */
     struct rb_sweep_entry *band_entries; /* broad phase: the sweep cut into bands in y, for a full search */
     int band_entry_capacity;
     int *band_end; /* broad phase: where each band's entries end */
