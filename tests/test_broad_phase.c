@@ -144,32 +144,50 @@ Test(broad_phase, pairs_match_brute_force_in_a_drifting_grid_of_boxes_of_many_si
     destroy_world_and_expect_no_leak(world);
 }
 
+/* A world with a base-20 pyramid settled for a second; *top is its top
+ * box's position. */
+static rb_world *make_resting_pyramid(rb_vec2 *top)
+{
+    rb_world *world = make_world(rb_v2(0.0, -9.8));
+    scene_pyramid pyramid;
+    cr_assert_eq(scene_pyramid_create(world, 20, &pyramid), RB_OK, "%s", rb_last_error());
+    step_world(world, TEST_DT, 60);
+    *top = rb_body_position(world, pyramid.top);
+    return world;
+}
+
+/* Steps once to take in shapes just created (the sweep is rebuilt), then
+ * `steps` times with the pairs checked against brute force after each;
+ * expects none of those steps to sweep all shapes again, and returns how
+ * many searched around single shapes. */
+static int step_expecting_only_requeries(rb_world *world, int steps, const char *what)
+{
+    step_world(world, TEST_DT, 1);
+    rb_statistics before = rb_world_statistics(world);
+    for (int step = 0; step < steps; ++step) {
+        step_world(world, TEST_DT, 1);
+        expect_pairs_match_brute_force(world, step);
+    }
+    rb_statistics after = rb_world_statistics(world);
+    cr_expect_eq(after.broad_phase_sweeps, before.broad_phase_sweeps, "%s swept all %d shapes again %d times", what,
+                 after.shape_count, after.broad_phase_sweeps - before.broad_phase_sweeps);
+    return after.broad_phase_requeries - before.broad_phase_requeries;
+}
+
 /* A ball dropped onto a pyramid at rest leaves its fat box nearly every
  * step: only its own candidates are found anew (a search around it), the
  * pyramid's are kept, and the pairs stay brute force's while it falls,
  * lands and comes to rest on the top box. */
 Test(broad_phase, a_ball_falling_onto_a_resting_pyramid_is_requeried_alone)
 {
-    rb_world *world = make_world(rb_v2(0.0, -9.8));
-    scene_pyramid pyramid;
-    cr_assert_eq(scene_pyramid_create(world, 20, &pyramid), RB_OK, "%s", rb_last_error());
-    step_world(world, TEST_DT, 60);
-    rb_vec2 top = rb_body_position(world, pyramid.top);
+    rb_vec2 top;
+    rb_world *world = make_resting_pyramid(&top);
     rb_body_id ball = make_body(world, RB_BODY_DYNAMIC, rb_add(top, rb_v2(0.1, 3.0)), 0.0);
     add_circle(world, ball, rb_v2(0.0, 0.0), 0.25, 1.0);
-    step_world(world, TEST_DT, 1); /* a new shape: the sweep is rebuilt */
-    rb_statistics before = rb_world_statistics(world);
-    for (int step = 0; step < 120; ++step) {
-        step_world(world, TEST_DT, 1);
-        expect_pairs_match_brute_force(world, step);
-    }
-    rb_statistics after = rb_world_statistics(world);
-    cr_expect_eq(after.broad_phase_sweeps, before.broad_phase_sweeps, "the fall swept all %d shapes again %d times",
-                 after.shape_count, after.broad_phase_sweeps - before.broad_phase_sweeps);
+    int requeries = step_expecting_only_requeries(world, 120, "the fall");
     /* The falling ball outgrows its fat box each time it has fallen
      * about RB_FAT_MARGIN beyond the step's travel the box allowed for:
      * 17 times in a fall of 3 m (47 steps). */
-    int requeries = after.broad_phase_requeries - before.broad_phase_requeries;
     cr_expect_geq(requeries, 5, "the ball was searched for alone in only %d steps", requeries);
     expect_near(rb_body_position(world, ball).y, top.y + 0.75, 0.02, "the ball resting on the top box");
     destroy_world_and_expect_no_leak(world);
@@ -181,11 +199,8 @@ Test(broad_phase, a_ball_falling_onto_a_resting_pyramid_is_requeried_alone)
  * brute force's. */
 Test(broad_phase, balls_raining_on_a_resting_pyramid_are_requeried_together)
 {
-    rb_world *world = make_world(rb_v2(0.0, -9.8));
-    scene_pyramid pyramid;
-    cr_assert_eq(scene_pyramid_create(world, 20, &pyramid), RB_OK, "%s", rb_last_error());
-    step_world(world, TEST_DT, 60);
-    rb_vec2 top = rb_body_position(world, pyramid.top);
+    rb_vec2 top;
+    rb_world *world = make_resting_pyramid(&top);
     for (int k = 0; k < 20; ++k) {
         /* Spread over the pyramid's width, in height so that they land
          * at different times, and thrown sideways so that their boxes
@@ -196,18 +211,8 @@ Test(broad_phase, balls_raining_on_a_resting_pyramid_are_requeried_together)
         cr_assert_eq(rb_body_set_linear_velocity(world, ball, rb_v2(k % 2 == 0 ? 3.0 : -3.0, 0.0)), RB_OK, "%s",
                      rb_last_error());
     }
-    step_world(world, TEST_DT, 1); /* new shapes: the sweep is rebuilt */
-    rb_statistics before = rb_world_statistics(world);
-    for (int step = 0; step < 90; ++step) {
-        step_world(world, TEST_DT, 1);
-        expect_pairs_match_brute_force(world, step);
-    }
-    rb_statistics after = rb_world_statistics(world);
-    cr_expect_eq(after.broad_phase_sweeps, before.broad_phase_sweeps, "the rain swept all %d shapes again %d times",
-                 after.shape_count, after.broad_phase_sweeps - before.broad_phase_sweeps);
-    cr_expect_geq(after.broad_phase_requeries - before.broad_phase_requeries, 10,
-                  "the balls were searched for alone in %d steps",
-                  after.broad_phase_requeries - before.broad_phase_requeries);
+    int requeries = step_expecting_only_requeries(world, 90, "the rain");
+    cr_expect_geq(requeries, 10, "the balls were searched for alone in only %d steps", requeries);
     destroy_world_and_expect_no_leak(world);
 }
 
