@@ -18,7 +18,9 @@
  * 2,100 boxes), joint_grid (the peers' 100 x 100 net), chain_hang and
  * chain_swing (the peers' 40-link chain with a 100:1 end box), balls (the
  * seed's 50 balls, seed 1, gravity (0, -9.81), drag applied before each
- * step outside the timing), and the sweep: pyramids of 105, 300, 1,035,
+ * step outside the timing), rain (300 balls falling a few at a time on
+ * the base-100 pyramid, seed 1: the broad phase's searches around the
+ * shapes that moved), and the sweep: pyramids of 105, 300, 1,035,
  * 3,003 and 10,011 boxes, whose log-log slope of time per step against
  * bodies between 1,000 and 10,000 is printed (1 for linear cost).
  *
@@ -26,7 +28,9 @@
  * overlap and the largest joint gap left after a step
  * (rb_world_statistics). What holds: a pyramid stands when no box moved
  * more than 0.25 m sideways; the joint grid when every body is finite and
- * no gap exceeded 0.5 m; a chain when no gap exceeded 0.05 m.
+ * no gap exceeded 0.5 m; a chain when no gap exceeded 0.05 m; the rain
+ * when every body is finite (the boxes it knocks more than 0.25 m
+ * sideways are counted, as for a pyramid).
  *
  * Prints one `engine=sinew scene=... median_ms=...` line per scene and
  * solver, and writes a CSV (header row; written to a temporary name and
@@ -55,7 +59,7 @@ static const char usage_text[] =
     "Times rb_world_step on the peer benchmark scenes (shared/peers/README.md) and a scaling sweep.\n"
     "\n"
     "  --scene NAME    pyramid20, pyramid100, many_pyramids, joint_grid, chain_hang, chain_swing,\n"
-    "                  balls, sweep (pyramids of 105 .. 10,011 boxes), peers (the peers' five\n"
+    "                  balls, rain, sweep (pyramids of 105 .. 10,011 boxes), peers (the peers' five\n"
     "                  scenes), all but the sweep (default), or everything\n"
     "  --solver NAME   soft_step, ngs, baumgarte or all (default: the engine's)\n"
     "  --runs N        repetitions of the whole run, 1 .. 1000 (default 5)\n"
@@ -75,6 +79,9 @@ static const char usage_text[] =
 #define BENCH_BALLS_GRAVITY (-9.81) /* m/s², the seed's */
 #define BENCH_BALLS_COUNT 50
 #define BENCH_BALLS_SEED 1
+#define BENCH_RAIN_BASE 100
+#define BENCH_RAIN_BALLS 300
+#define BENCH_RAIN_SEED 1
 #define BENCH_MOVED_THRESHOLD 0.25 /* m, the peers' collapse indicator */
 #define BENCH_GRID_MAX_GAP 0.5     /* m: a wider gap is a torn net */
 #define BENCH_CHAIN_MAX_GAP 0.05   /* m, issue 5's bar for the swinging chain */
@@ -89,7 +96,14 @@ static const char usage_text[] =
 
 /* ------------------------------------------------------------- options */
 
-typedef enum bench_kind { KIND_PYRAMID, KIND_MANY_PYRAMIDS, KIND_JOINT_GRID, KIND_CHAIN, KIND_BALLS } bench_kind;
+typedef enum bench_kind {
+    KIND_PYRAMID,
+    KIND_MANY_PYRAMIDS,
+    KIND_JOINT_GRID,
+    KIND_CHAIN,
+    KIND_BALLS,
+    KIND_RAIN
+} bench_kind;
 
 typedef struct bench_scene {
     const char *name;
@@ -107,6 +121,7 @@ static const bench_scene bench_scenes[] = {
     {"chain_hang", KIND_CHAIN, SCENE_CHAIN_HANG, true, false},
     {"chain_swing", KIND_CHAIN, SCENE_CHAIN_SWING, true, false},
     {"balls", KIND_BALLS, BENCH_BALLS_COUNT, false, false},
+    {"rain", KIND_RAIN, BENCH_RAIN_BASE, false, false},
     {"sweep105", KIND_PYRAMID, 14, false, true},
     {"sweep300", KIND_PYRAMID, 24, false, true},
     {"sweep1035", KIND_PYRAMID, 45, false, true},
@@ -144,7 +159,7 @@ static bool select_scenes(const char *name, bench_options *opts)
     if (!any) {
         fprintf(stderr,
                 "bench_engine: --scene expects pyramid20, pyramid100, many_pyramids, joint_grid, chain_hang, "
-                "chain_swing, balls, sweep, peers, all or everything, got \"%s\"\n",
+                "chain_swing, balls, rain, sweep, peers, all or everything, got \"%s\"\n",
                 name);
     }
     return any;
@@ -266,7 +281,7 @@ typedef struct bench_result {
     double max_penetration;      /* m, worst after any step of any run */
     double max_joint_gap;        /* m, likewise */
     double top_x, top_y;         /* m, pyramids' last top box at the end of the last run */
-    int moved_boxes;             /* pyramids: boxes moved > 0.25 m sideways in the last run */
+    int moved_boxes;             /* pyramids and rain: boxes moved > 0.25 m sideways in the last run */
     double max_shift;            /* m, largest sideways shift of a box */
     bool finite;                 /* every body's position finite at the end of every run */
     int escaped;                 /* balls outside the box at the end of the last run */
@@ -282,6 +297,7 @@ typedef struct bench_world {
     scene_balls balls;
     scene_joint_grid grid;
     scene_chain chain;
+    scene_rain rain;
     rb_body_id first_body; /* the scene's dynamic bodies are a run of ids from it */
     int body_count;
     double *start_x; /* m, the dynamic bodies' start x */
@@ -329,6 +345,11 @@ static rb_status build_scene(const bench_scene *scene, bench_world *bw)
         status = scene_balls_create(bw->world, scene->size, BENCH_BALLS_SEED, &bw->balls);
         bw->first_body = bw->balls.balls[0];
         bw->body_count = bw->balls.count;
+        break;
+    case KIND_RAIN:
+        status = scene_rain_create(bw->world, scene->size, BENCH_RAIN_BALLS, BENCH_RAIN_SEED, &bw->rain);
+        bw->first_body = bw->rain.pyramid.first_box;
+        bw->body_count = bw->rain.pyramid.box_count;
         break;
     }
     return status;
@@ -436,6 +457,9 @@ static void measure_scene(const bench_scene *scene, const bench_world *bw, bench
     case KIND_BALLS:
         result->holds = result->finite && result->escaped == 0;
         break;
+    case KIND_RAIN:
+        result->holds = result->finite;
+        break;
     }
 }
 
@@ -520,8 +544,10 @@ static void print_result(const bench_options *opts, const bench_result *r)
            s->position_iterations, s->relax_iterations, s->substeps, opts->warmup, opts->steps, opts->runs,
            r->median_ms, r->p10_ms, r->p90_ms, r->collide_ms, r->solve_ms, r->max_penetration, r->max_joint_gap);
     if (scene->kind == KIND_PYRAMID || scene->kind == KIND_MANY_PYRAMIDS) {
-        printf(" top_x=%.4f top_y=%.4f lateral_gt_0.25=%d max_abs_dx=%.3f", r->top_x, r->top_y, r->moved_boxes,
-               r->max_shift);
+        printf(" top_x=%.4f top_y=%.4f", r->top_x, r->top_y);
+    }
+    if (scene->kind == KIND_PYRAMID || scene->kind == KIND_MANY_PYRAMIDS || scene->kind == KIND_RAIN) {
+        printf(" lateral_gt_0.25=%d max_abs_dx=%.3f", r->moved_boxes, r->max_shift);
     }
     if (scene->kind == KIND_BALLS) {
         printf(" escaped=%d", r->escaped);
@@ -577,7 +603,7 @@ static void write_csv(FILE *file, const bench_options *opts, const bench_result 
                 rb_solver_type_name(s->type), s->velocity_iterations, s->position_iterations, s->relax_iterations,
                 s->substeps, r->bodies, r->contacts, r->joints, opts->runs, r->median_ms, r->p10_ms, r->p90_ms,
                 r->collide_ms, r->solve_ms, r->bytes, r->allocations_per_step, r->max_penetration, r->max_joint_gap);
-        if (scene->kind == KIND_PYRAMID || scene->kind == KIND_MANY_PYRAMIDS) {
+        if (scene->kind == KIND_PYRAMID || scene->kind == KIND_MANY_PYRAMIDS || scene->kind == KIND_RAIN) {
             fprintf(file, "%d", r->moved_boxes);
         }
         fprintf(file, ",%s,%s\n", r->holds ? "yes" : "no", r->deterministic ? "yes" : "no");

@@ -3,6 +3,8 @@
  * shapes whose swept boxes overlap and which may collide, in
  * (body_key, shape_key) order, however the fat boxes were reused; and a
  * pile at rest must stop sweeping. */
+#include <string.h>
+
 #include "broad_phase.h"
 #include "scenes/scenes.h"
 #include "test_support.h"
@@ -193,26 +195,33 @@ Test(broad_phase, a_ball_falling_onto_a_resting_pyramid_is_requeried_alone)
     destroy_world_and_expect_no_leak(world);
 }
 
-/* Balls raining on a pyramid at rest leave their fat boxes a few at a
- * time, fewer than one shape in eight: each step finds only their
- * candidates anew, however many of them move at once, and the pairs stay
- * brute force's. */
-Test(broad_phase, balls_raining_on_a_resting_pyramid_are_requeried_together)
+/* Balls raining on a pyramid (the rain scene: 20 balls over a base-20
+ * pyramid, thrown sideways so that their boxes change places in the
+ * sweep's order) leave their fat boxes a few at a time, fewer than one
+ * shape in eight: each step finds only their candidates anew, however
+ * many of them move at once, and the pairs stay brute force's. */
+Test(broad_phase, balls_raining_on_a_pyramid_are_requeried_together)
 {
-    rb_vec2 top;
-    rb_world *world = make_resting_pyramid(&top);
-    for (int k = 0; k < 20; ++k) {
-        /* Spread over the pyramid's width, in height so that they land
-         * at different times, and thrown sideways so that their boxes
-         * change places in the sweep's order. */
-        rb_vec2 position = rb_add(top, rb_v2(-9.0 + 0.95 * k, 2.0 + 0.7 * (k % 7)));
-        rb_body_id ball = make_body(world, RB_BODY_DYNAMIC, position, 0.0);
-        add_circle(world, ball, rb_v2(0.0, 0.0), 0.2, 1.0);
-        cr_assert_eq(rb_body_set_linear_velocity(world, ball, rb_v2(k % 2 == 0 ? 3.0 : -3.0, 0.0)), RB_OK, "%s",
-                     rb_last_error());
-    }
+    rb_world *world = make_world(rb_v2(0.0, -9.8));
+    scene_rain rain;
+    cr_assert_eq(scene_rain_create(world, 20, 20, 3, &rain), RB_OK, "%s", rb_last_error());
     int requeries = step_expecting_only_requeries(world, 90, "the rain");
     cr_expect_geq(requeries, 10, "the balls were searched for alone in only %d steps", requeries);
+    destroy_world_and_expect_no_leak(world);
+}
+
+Test(broad_phase, the_rain_scene_refuses_bad_arguments)
+{
+    rb_world *world = make_world(rb_v2(0.0, -9.8));
+    scene_rain rain;
+    cr_expect_eq(scene_rain_create(world, 20, -1, 3, &rain), RB_ERR_INVALID_ARGUMENT, "a negative ball count");
+    cr_expect(strstr(rb_last_error(), "ball_count") != NULL, "the message names the field: %s", rb_last_error());
+    cr_expect_eq(scene_rain_create(world, 20, SCENE_RAIN_MAX_BALLS + 1, 3, &rain), RB_ERR_INVALID_ARGUMENT,
+                 "too many balls");
+    cr_expect_eq(scene_rain_create(world, 0, 10, 3, &rain), RB_ERR_INVALID_ARGUMENT, "no pyramid");
+    cr_expect_eq(scene_rain_create(NULL, 20, 10, 3, &rain), RB_ERR_INVALID_ARGUMENT, "no world");
+    cr_expect_eq(scene_rain_create(world, 20, 10, 3, NULL), RB_ERR_INVALID_ARGUMENT, "no result");
+    cr_expect_eq(rb_world_statistics(world).body_count, 0, "nothing was built");
     destroy_world_and_expect_no_leak(world);
 }
 

@@ -62,6 +62,22 @@ rb_status scene_pyramid_create(rb_world *world, int base, scene_pyramid *out);
 #define SCENE_MANY_PYRAMIDS_MAX_BASE 100
 rb_status scene_many_pyramids_create(rb_world *world, int count, int base, scene_pyramid *out);
 
+/* Rain on a pyramid: the pyramid above (base 1 .. 1000) and `ball_count`
+ * (0 .. SCENE_RAIN_MAX_BALLS) balls of radius 0.2 m, density 1, friction
+ * 0.6, restitution 0, in columns 1 m apart over the pyramid's base
+ * (ball k in column k mod base, moved sideways by up to 0.2 m) and rows
+ * 2 m apart from 2 m above its top box (each ball up to 1 m higher), each
+ * thrown sideways at up to 3 m/s either way. The random numbers come
+ * from `seed` (xoshiro256**, the same on every platform). A fresh world,
+ * as for the pyramid. */
+#define SCENE_RAIN_MAX_BALLS 10000
+typedef struct scene_rain {
+    scene_pyramid pyramid;
+    rb_body_id first_ball; /* ball k is scene_body_at(first_ball, k), k = 0 .. ball_count - 1 */
+    int ball_count;
+} scene_rain;
+rb_status scene_rain_create(rb_world *world, int base, int ball_count, uint64_t seed, scene_rain *out);
+
 /* The seed's balls box (shared/spec/models.md, "balls"): a closed box
  * 2.44 m × 1.22 m of static walls (one body, four boxes 1 m thick so that
  * no ball can cross one in a step) with its lower-left inner corner at the
