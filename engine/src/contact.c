@@ -129,6 +129,16 @@ static rb_manifold compute_manifold(const rb_world *world, const rb_contact *con
     return rb_collide_polygons(&a->geometry.polygon, xfa, &b->geometry.polygon, xfb, speculative_distance);
 }
 
+double rb_contact_deepest_overlap_now(const rb_world *world, const rb_contact *contact)
+{
+    rb_manifold now = compute_manifold(world, contact, 0.0);
+    double deepest = 0.0;
+    for (int j = 0; j < now.point_count; ++j) {
+        deepest = fmax(deepest, -now.points[j].separation);
+    }
+    return deepest;
+}
+
 /* How close the two shapes must be for a speculative point: the base
  * distance plus how far their surfaces can approach in dt. */
 static double contact_speculative_distance(const rb_world *world, const rb_contact *contact, double dt)

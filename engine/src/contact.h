@@ -14,6 +14,12 @@ rb_status rb_contacts_update(rb_world *world);
  * sleeping body touched by a moving one. */
 void rb_contacts_collide(rb_world *world, double dt);
 
+/* m, >= 0: the deepest overlap of the contact's two shapes at the bodies'
+ * poses now, by the narrow phase (exact, where the solver's contact
+ * points, carried with the bodies since the step's narrow phase, are
+ * first-order). */
+double rb_contact_deepest_overlap_now(const rb_world *world, const rb_contact *contact);
+
 /* Sets `touching` on every sensor contact from the bodies' poses at the
  * end of the step, so a sensor reports what overlaps it now. */
 void rb_contacts_update_sensors(rb_world *world);

@@ -121,12 +121,13 @@ typedef struct rb_statistics {
     int velocity_iterations; /* done in the last step, summed over substeps */
     int position_iterations; /* NGS passes done in the last step, summed over substeps */
     int relax_iterations;    /* soft step relax passes done in the last step, summed over substeps */
-    /* m, >= 0: deepest overlap left after the step, at the contact points
-     * as the solver carries them with the bodies from the step's narrow
-     * phase (exact at its start, first-order within it): a ball pushed
-     * past the end of the face it touched reads deeper than it is (the
-     * rain scene of bench_engine reads 0.13 m where the next narrow phase
-     * finds less than 0.02 m) */
+    /* m, >= 0: deepest overlap left after the step at the step's contact
+     * points. Their overlap is read at the points as the solver carries
+     * them with the bodies (first-order); beyond four linear slops it is
+     * measured again by the narrow phase at the final poses. Two shapes
+     * that met within the step without a contact point (pushed together
+     * by a third faster than the speculative margin allowed for) are not
+     * counted before the next step. */
     double max_penetration;
     int joint_count;
     /* m, >= 0, after the step: the largest distance between the two
