@@ -146,15 +146,12 @@ Test(broad_phase, pairs_match_brute_force_in_a_drifting_grid_of_boxes_of_many_si
     destroy_world_and_expect_no_leak(world);
 }
 
-/* A world with a base-20 pyramid settled for a second; *top is its top
- * box's position. */
-static rb_world *make_resting_pyramid(rb_vec2 *top)
+/* A world with a base-20 pyramid settled for a second. */
+static rb_world *make_resting_pyramid(scene_pyramid *pyramid)
 {
     rb_world *world = make_world(rb_v2(0.0, -9.8));
-    scene_pyramid pyramid;
-    cr_assert_eq(scene_pyramid_create(world, 20, &pyramid), RB_OK, "%s", rb_last_error());
+    cr_assert_eq(scene_pyramid_create(world, 20, pyramid), RB_OK, "%s", rb_last_error());
     step_world(world, TEST_DT, 60);
-    *top = rb_body_position(world, pyramid.top);
     return world;
 }
 
@@ -182,8 +179,9 @@ static int step_expecting_only_requeries(rb_world *world, int steps, const char 
  * lands and comes to rest on the top box. */
 Test(broad_phase, a_ball_falling_onto_a_resting_pyramid_is_requeried_alone)
 {
-    rb_vec2 top;
-    rb_world *world = make_resting_pyramid(&top);
+    scene_pyramid pyramid;
+    rb_world *world = make_resting_pyramid(&pyramid);
+    rb_vec2 top = rb_body_position(world, pyramid.top);
     rb_body_id ball = make_body(world, RB_BODY_DYNAMIC, rb_add(top, rb_v2(0.1, 3.0)), 0.0);
     add_circle(world, ball, rb_v2(0.0, 0.0), 0.25, 1.0);
     int requeries = step_expecting_only_requeries(world, 120, "the fall");
@@ -229,10 +227,8 @@ Test(broad_phase, the_rain_scene_refuses_bad_arguments)
  * which shapes may collide (steps numbered from 1000 in the messages). */
 Test(broad_phase, a_pyramid_at_rest_stops_sweeping)
 {
-    rb_world *world = make_world(rb_v2(0.0, -9.8));
     scene_pyramid pyramid;
-    cr_assert_eq(scene_pyramid_create(world, 20, &pyramid), RB_OK, "%s", rb_last_error());
-    step_world(world, TEST_DT, 60);
+    rb_world *world = make_resting_pyramid(&pyramid);
     int sweeps = rb_world_statistics(world).broad_phase_sweeps;
     cr_expect_leq(sweeps, 2, "settling took %d sweeps", sweeps);
     for (int step = 0; step < 60; ++step) {

@@ -332,13 +332,15 @@ static double box_width(const rb_aabb *box) { return box->upper.x - box->lower.x
  * them, else none is. */
 #define WIDE_SHAPE_LIMIT 16
 
-static rb_status list_wide_shapes(rb_world *world, double max_width)
+static rb_status list_wide_shapes(rb_world *world)
 {
     double limit = 2.0 * (world->widest_dynamic_box + 2.0 * RB_FAT_MARGIN);
     int wide = 0;
+    double max_width = 0.0;
     double narrow_max_width = 0.0;
     for (int k = 0; k < world->sweep_count; ++k) {
         double width = box_width(&world->sweep[k].box);
+        max_width = rb_max(max_width, width);
         if (width > limit) {
             ++wide;
         } else {
@@ -370,19 +372,17 @@ static rb_status list_wide_shapes(rb_world *world, double max_width)
 static rb_status find_candidates(rb_world *world)
 {
     int count = world->sweep_count;
-    double max_width = 0.0;
     double bottom = INFINITY;
     double top = -INFINITY;
     for (int k = 0; k < count; ++k) {
         rb_shape *shape = &world->shapes[world->sweep[k].shape];
         shape->fat_aabb = fat_box_around(shape->aabb);
         world->sweep[k].box = shape->fat_aabb;
-        max_width = rb_max(max_width, shape->fat_aabb.upper.x - shape->fat_aabb.lower.x);
         bottom = rb_min(bottom, shape->fat_aabb.lower.y);
         top = rb_max(top, shape->fat_aabb.upper.y);
     }
     sort_sweep(world->sweep, count);
-    RB_TRY(list_wide_shapes(world, max_width));
+    RB_TRY(list_wide_shapes(world));
 
     band_layout bands = layout_bands(bottom, top, world->tallest_dynamic_box + 2.0 * RB_FAT_MARGIN, count);
     RB_TRY(fill_bands(world, &bands));
