@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench_engine: time sinew's engine on the peer benchmark scenes, and
  * on a scaling sweep.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench_models: how much faster than real time the muscle models run.
  *
  * Each built-in model runs headless (no CSV, no drawing) with every muscle

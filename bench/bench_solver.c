@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench_solver: what the solver's iteration settings buy in joint accuracy
  * and cost in time.
  *

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Instructions per step of one bench_engine scene, counted by callgrind:
 # repeatable where times are not, and the figure issue 5 sets a target on
 # (pyramid20 at the engine's defaults: 2.0 M; Box2D 2.4.1 4.12 M and

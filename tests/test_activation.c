@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Activation dynamics (Millard et al. 2013): the derivative function
  * against the hand formula, GSL's rk8pd and the equation's closed form
  * against each other, and the muscle's exponential midpoint step against

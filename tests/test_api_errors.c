@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Bad input to the world, body and shape API: every kind returns its status
  * with a message naming the function or the argument, changes nothing, and
  * leaves the world usable. (The geometry builders' own errors, rb_make_box

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The broad phase (broad_phase.c) against brute force: after every step,
  * the pairs it handed to the narrow phase must be exactly the pairs of
  * shapes whose swept boxes overlap and which may collide, in

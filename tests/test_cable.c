@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Cables: the path's length and lengthening speed, where its tension
  * pulls, and the implicit tension law, against hand-derived values.
  */

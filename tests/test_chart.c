@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The chart library (tools/chart) and the CSV tables it draws
  * (tools/io/csv_table): nice ticks against the 1-2-5 rule and the range
  * they must cover; PNG files of the asked size with the series' colour

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The sinew program, run as a user runs it: a model run writes its CSV
  * with the expected header and one row per frame; bad arguments give one
  * line on stderr, a non-zero status and no file.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `sinew plot` as a user runs it: a CSV with units in its header becomes
  * a PNG of the documented size, or an SVG; bad arguments (a missing file,
  * an unknown or non-numeric column, an unwritable or unknown output) give

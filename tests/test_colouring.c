@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Graph colouring of the contact constraints (constraint_colouring.c):
  * the rules on small graphs worked by hand, the layout a world's step
  * leaves, and what it is for: the peers' base-100 pyramid holds, no box

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Contacts: colliding circles against the conservation laws and Newton's
  * law of restitution, a dropped ball's rebound, Coulomb friction on an
  * incline, the friction and restitution mixing rules of shape.h, resting

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The Hill curves: the seed's tables (Ross et al. 2018) read, interpolated
  * (linear as the seed, or Steffen 1990) and clamped; seed 003's analytic
  * curves and their eccentric branch; the slope the muscle uses as its

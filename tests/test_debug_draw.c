@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Debug drawing: with callbacks that record what they are given, a world of
  * a static ground, one box and one circle resting on it draws exactly the
  * shapes, contact points, normals, impulses and bounding boxes asked for,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Determinism: a scene run twice gives bit-identical states, and the state
  * of a reference run matches a stored hash, so any change to the
  * simulation's arithmetic shows up here. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Contact and sensor events, and the pre-solve filter (rb/events.h).
  *
  * The events are checked against what they report on: each step's

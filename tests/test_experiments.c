@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The seed's experiments (experiments.md) as `sinew experiment` runs
  * them, each qualitative result of the report turned into a measured
  * one, read from the CSV the command writes:

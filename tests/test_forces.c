@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Forces, torques and impulses on one body, its point kinematics and frame
  * conversions, and its mass properties, against Newton's laws and the
  * closed-form mass of circles and rectangles.

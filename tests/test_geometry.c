@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shape geometry: polygon construction and validation, mass properties and
  * bounding boxes, against closed-form values derived in the comments.
  *

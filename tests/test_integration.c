@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Time integration of free bodies: free fall and projectiles against the
  * closed form of semi-implicit Euler, gravity scale, substeps, damping,
  * kinematic, static and fixed-rotation bodies.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Joints: drift of a chain and of the peers' 100:1 chain, revolute limits
  * and motor, weld reactions, distance spring and rope, the mouse joint,
  * and the API around them: invalid definitions, joints between bodies

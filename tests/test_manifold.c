@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Narrow phase: contact manifolds of rb/collision.h against hand-derived
  * geometry, and the stability of feature ids from frame to frame.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Built models: counts at every level, variant and weight (worked out by
  * hand from shared/spec/models.md), joints that start met, the muscles'
  * actions on the joints, the Triceps Medial warning, and stability under

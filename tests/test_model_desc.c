@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Model files: the built-in models load with the geometry of
  * ../shared/spec/models.md, defaults fill what a file leaves out, lookups
  * find objects by name, and every malformed or inconsistent file of the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* mu_model_substep: a frame is the model's substeps, so stepping
  * substep by substep gives the state mu_model_step gives (to rounding),
  * and the model's time counts substeps without drifting.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The motor pool (seed 001, framework.md §8) against running sums by
  * hand, profile images written here with Cairo, and the torque actuator
  * against Newton's second law for rotation (α = τ/I) and the conservation

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The Hill muscle on a cable: its force against the composition of its
  * own curves, its maximal force, the tension controller, the sign of the
  * force-velocity effect, and stability under a stiff force-velocity

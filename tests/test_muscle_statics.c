@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The report's static formulas (§2.2) and the lengths derived from the
  * anchor geometry, against hand calculations; a muscle built with the
  * derived lengths starts where they say.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The analytic pendulum suite: periods of simple and compound pendulums
  * against the exact period, energy over 100 periods, and a double
  * pendulum of two rods against its Lagrangian equations integrated by GSL.

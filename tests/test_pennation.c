@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Pennation with a fixed-width belly: the angle against sin α = w/l_f by
  * hand, its rise as the fibre shortens and its cap, and the muscle's
  * force projected on the tendon (cos α) and its fibre velocity

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Prismatic joint: a slide on an inclined axis against the analytic
  * constant acceleration, limits, motor, spring, the locked rotation, a
  * bead on a spinning rod (the axis turning with body A), momentum and

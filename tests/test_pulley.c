@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Pulley joint: the Atwood machine and its geared form against their
  * analytic accelerations, balanced loads at rest, the rope going slack
  * when a body is lifted, a body stopping at its pulley, the world's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Ray casts and world queries (rb/geometry.h, rb/query.h): single-shape
  * ray casts against analytic intersections, closest and all hits in
  * order, filters and sensors, point queries picking the bones of the arm

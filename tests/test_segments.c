@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Segment and chain shapes: manifolds against hand-derived geometry,
  * the ghost vertices that keep a chain smooth, the mass rule, the chain
  * builder, and two motions with closed forms: a disc rolling down a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Islands and sleeping: resting islands fall asleep after 0.5 s below
  * the tolerances (1 cm/s, 2 degrees/s), stay exactly where they are, and
  * wake together when touched, pushed, jointed or asked.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The world's solver settings do what rb/world.h says: the block solver,
  * warm starting, both position-correction methods, substeps, and the
  * counters and profile the step reports.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Every solver variant (rb_solver_type: Baumgarte, NGS, soft step) at the
  * engine's default iterations and substeps, on the earlier issues' tests:
  * a 10-box stack and the base-20 pyramid stand, a pendulum keeps the

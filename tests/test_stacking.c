@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Stacking: the 10-box stack and the base-20 pyramid of the benchmarks stand
  * for 10 s at 60 Hz with the default solver settings.
  *

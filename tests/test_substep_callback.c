@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The substep callback: when it runs, what it may change, and a force
  * law updated from it every substep against the analytic oscillator.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Helpers shared by the test executables (each tests/test_*.c is its own
  * Criterion program; this header only holds static inline helpers).
  *

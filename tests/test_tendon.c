@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The compliant tendon: Thelen's curve against his own formula, the
  * muscle's static equilibrium (fibre force·cos α = tendon force, computed
  * here from the readout's lengths with the test's own copy of the curves'

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The tools' shared pieces: files written atomically (tools/io) and option
  * values parsed with their ranges (tools/cli).
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Continuous collision: fast bodies do not pass through thin ones.
  *
  * A circle of radius 0.05 m at 300 m/s moves 5 m per 1/60 s step, fifty

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The viewer's core without GTK (tools/viewer/core): the view transform,
  * the history ring, the simulation's loads, controls and drag, the live
  * graphs' CSV export and the canvas drawn with Cairo.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The worm of seed 001 (models.md "worm"): its file loads as described,
  * and its torque muscle turns the top segment only when neurons are
  * recruited, by the torque its exertion gives.

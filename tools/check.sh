@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The project's test command: everything CI checks, in one run.
 #
 #   1. tools/setup.sh (installs missing packages; does nothing when all present)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `sinew experiment NAME [--out DIR] [--pulse-width S]`: runs one of the
  * seed's experiments (experiment.h) and writes DIR/STEM.csv, .png, .svg.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `sinew models` lists the built-in muscle models; `sinew check FILE`
  * validates a model file. Both describe a model by the same counts.
  */

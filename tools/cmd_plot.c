@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `sinew plot CSV [--x COL] [--y COL ...] [--out FILE] [--title TEXT]`:
  * draws columns of any CSV file with a header row as a line chart
  * (chart/chart.h), into a PNG or an SVG file.

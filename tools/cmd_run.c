@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `sinew run MODEL [options]`: build a muscle model, drive its muscles
  * from the command line and a control file, step it frame by frame,
  * write a CSV of every frame (recorder.h) and print a summary.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `sinew scene NAME [options]`: run one of the engine scenes, print a
  * summary.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `sinew view [MODEL] [options]`: the interactive viewer. It is its own
  * program, sinew-view (tools/viewer/), built beside sinew when GTK 4 is
  * found, so that the command-line tool itself never loads GTK: this

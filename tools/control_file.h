@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The control file of `sinew run --control FILE`: a schedule of controls
  * as text, one per line (README.md, "Running models"):
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The controls of a run: activations, tension targets and one-frame
  * pulses, each for a muscle or a group, scheduled over time.
  *

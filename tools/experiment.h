@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `sinew experiment NAME`: the seed's experiments (experiments.md), each
  * a scripted run or computation that writes a CSV, a figure (PNG and SVG,
  * chart/chart.h) and a few lines of figures on stdout.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* C1 the Hill curves (experiments.md; report §5.4.2 figures 5.14-5.16;
  * seed 003, framework.md §9): the seed's tables (Ross et al. 2018) as
  * the muscle reads them, with linear interpolation (the seed's) and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A built-in model run substep by substep for an experiment: loaded and
  * built as `sinew run` does (model_source.h, mu/model.h), driven by the
  * experiment between substeps, so that a pulse may be shorter than a frame.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The files of an experiment: its table as CSV, its figure as PNG and SVG,
  * each written whole or not at all. */
 #include <stdio.h>

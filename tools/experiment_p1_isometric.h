@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* P1's isometric muscle (experiments.md P1): the arm's Biceps Long, the
  * muscle E1 plots, taken out of the arm and held between two static
  * bodies with its belly at rest length, activation dynamics on (mu/

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* E1 twitch and E4 summation and tetanus (experiments.md; report §6.4.2,
  * §6.4.5): the arm, variant "All Muscles", hangs until it is at rest,
  * then both biceps get activation pulses of 1, each one frame long as

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* R1 recruitment (experiments.md R1; seed 001, framework.md §8): the
  * worm's torque muscle, its motor pool recruited from 0 to every neuron,
  * weakest first (Henneman's size principle, mu/motor_pool.h). For each

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* E2 active and passive force during relaxation (experiments.md; report
  * §6.4.3): the sample model with 50 kg, its muscle at activation 1 until
  * the weight hangs still, then the activation falls linearly to 0 over

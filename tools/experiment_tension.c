@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* E3.1 isometric and E3.2 isotonic contraction (experiments.md; report
  * §6.4.4): the arm, variant "All Muscles", hangs until at rest; then
  * Biceps Short's tension target ramps up, holds and ramps down to 0, and

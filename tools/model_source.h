@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Where a model comes from: the MODEL argument of `sinew run` names a
  * built-in model (the models/ directory of the source tree, read through
  * mu_model_desc_load_builtin) or a model file.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A progress bar on stderr for long runs. It is drawn only when stderr is
  * a terminal (a log or a pipe gets nothing extra) and the run is long: more
  * than PROGRESS_LONG_SIMULATION s simulated, or more than PROGRESS_LONG_WALL

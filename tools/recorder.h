@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The CSV of a run (`sinew run`): one row per frame, written through an
  * atomic_file (io/atomic_file.h), so a failed or interrupted run leaves
  * no half-written file and an earlier file of that name is kept.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Installs the Debian packages sinew needs to build, test and check itself.
 #
 #   tools/setup.sh           the project's packages
@@ -34,7 +35,7 @@ peer_packages=(
 
 usage()
 {
-    sed -n '2,8s/^# \{0,1\}//p' "$0"
+    sed -n '3,9s/^# \{0,1\}//p' "$0"
 }
 
 want=("${packages[@]}")

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sinew: the command-line program. main() only dispatches to the
  * subcommands (commands.h), each in its own cmd_*.c.
  */

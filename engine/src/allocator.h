@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The engine's one allocator: every byte the engine holds goes through
  * here, so rb_bytes_in_use() can prove that a destroyed world freed all. */
 #ifndef RB_ALLOCATOR_H

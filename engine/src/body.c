@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Rigid bodies: creation, pose, velocity, forces, mass. */
 #include <float.h>
 #include <string.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Broad phase by sort and sweep (Baraff 1992) over fat boxes.
  *
  * Each step, every shape's box is enlarged by how far the shape may

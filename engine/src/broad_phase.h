@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Broad phase: which shape pairs are close enough to need the narrow phase. */
 #ifndef RB_BROAD_PHASE_H
 #define RB_BROAD_PHASE_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Cables: creation, read-outs, and the implicit tension law in the
  * solver.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Cables in the solver's substep. */
 #ifndef RB_CABLE_SOLVER_H
 #define RB_CABLE_SOLVER_H

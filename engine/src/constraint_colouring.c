@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Greedy graph colouring of constraints (Box2D v3, after Melyan et al.,
  * "High-Performance Physical Simulations on Next-Generation Architecture
  * with Many Cores", Intel Technology Journal 13(4), 2009).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Graph colouring of constraints: a colour is a set of constraints no
  * two of which move the same body. */
 #ifndef RB_CONSTRAINT_COLOURING_H

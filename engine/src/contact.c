@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Contacts: created and dropped as broad-phase pairs come and go, given
  * a manifold each step, carrying solver impulses between steps, and
  * reporting when they begin and end touching. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Contacts: their life from broad-phase pairs, and the narrow phase that
  * gives each its manifold. */
 #ifndef RB_CONTACT_H

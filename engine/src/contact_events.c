@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Contact and sensor events, and the pre-solve filter. */
 #include <assert.h>
 #include <string.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Contact and sensor events: recorded by the contact phases of the step
  * (contact.c), published as arrays that stay put until the next step.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sequential impulses on contacts (Catto, "Iterative Dynamics with
  * Temporal Coherence", GDC 2005; "Fast and Simple Physics using
  * Sequential Impulses", GDC 2006).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sequential impulses on contacts: non-penetration with speculative
  * margin, Coulomb friction, restitution, and position correction by
  * Baumgarte bias or non-linear Gauss-Seidel. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Debug drawing: walks the world and calls the caller's callbacks. */
 #include "error.h"
 #include "joint_solver.h"

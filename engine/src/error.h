@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Recording errors, and the checks every API entry point runs on its
  * arguments before touching the world. */
 #ifndef RB_ERROR_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shape geometry: polygon construction (convex hull, validation) and the
  * mass properties of circles and polygons. */
 #include <float.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Joints: the pool, creation and destruction, the getters every type
  * shares, and the dispatch of the solver's phases on the joint type. */
 #include <float.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Distance joint: along the axis u from anchor A to anchor B, with
  * current length L, the joint is
  *   - a rigid bar, C = L - length = 0, without the spring;

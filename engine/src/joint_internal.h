@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What the joint types' creation functions share with joint.c. */
 #ifndef RB_JOINT_INTERNAL_H
 #define RB_JOINT_INTERNAL_H

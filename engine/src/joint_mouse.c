@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Mouse joint: pulls a point of one body towards a target with a
  * spring-damper of the given frequency and damping (on the body's mass),
  * its force capped at max_force: what a viewer uses to drag a body. The

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The point constraint shared by revolute and weld joints: anchor A and
  * anchor B coincide, C = (cB + rB) - (cA + rA) = 0, optionally solved
  * together with one angular row on ωB - ωA (a rigid weld's angle, or a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Prismatic joint: body B slides along an axis fixed in body A and does
  * not turn relative to it. With anchor A at pA = cA + rA, anchor B at
  * pB = cB + rB, d = pB - pA, the world axis u = R(θA)·û (û the unit axis

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Pulley joint: a rope from anchor A up to a fixed pulley at ground
  * anchor gA, across to a second one at gB and down to anchor B. With
  * l_a = |pA - gA|, l_b = |pB - gB| and the unit directions

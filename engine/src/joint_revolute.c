@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Revolute joint: a pin (the point constraint) plus, about the pin, an
  * optional spring, motor and lower and upper limits on the joint angle
  * θ = angle(B) - angle(A) - reference. Every angular part acts on the

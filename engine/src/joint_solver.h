@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Joints in the solver: the steps every joint type takes in a substep,
  * dispatched on the type, and the helpers the types share.
  *

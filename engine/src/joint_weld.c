@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Weld joint: the point constraint and the angular constraint
  * θ = angle(B) - angle(A) - reference = 0 freeze the bodies' relative
  * pose (the seed's glue). Each part is rigid, or soft when given a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Narrow phase: contact manifolds by the separating axis theorem.
  *
  * Polygons: the axis of least penetration among both polygons' edge

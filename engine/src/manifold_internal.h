@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The pieces of the narrow phase that the polygon and the segment
  * manifolds share: placing a polygon in another frame, SAT between two
  * placed convex outlines, and clipping an incident edge against a

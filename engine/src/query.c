@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* World queries: box overlap, point containment and ray casts. Each
  * asks the broad phase for the shapes whose boxes overlap the query's
  * box (rb_broad_phase_query), then tests those exactly. */

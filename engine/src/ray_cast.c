@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Ray casts and point tests against single shapes: pure functions of
  * the shape, its transform and the ray.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Narrow phase for segments and chain segments against circles and
  * polygons. Everything is computed in the segment's frame and moved to
  * the world at the end; the segment is always shape A, so the normal

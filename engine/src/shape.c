@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shapes: creation on a body (chains as runs of segments), materials,
  * filters, sensor overlaps. */
 #include <float.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Islands and sleeping.
  *
  * An island is a set of dynamic bodies linked by touching contacts,

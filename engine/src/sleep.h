@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Islands and sleeping: bodies that rest together stop being simulated
  * together, and wake together.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The frame of every solver's step, and the body phases they share.
  *
  *   prepare contact constraints (surface points, impulses carried over)

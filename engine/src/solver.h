@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The solver's step: the frame every solver shares (contact constraints
  * built, impulses stored), the body phases they all use, and the three
  * solvers, each a script in a file of its own:

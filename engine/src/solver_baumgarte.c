@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sequential impulses with Baumgarte stabilisation (Baumgarte,
  * "Stabilization of constraints and integrals of motion in dynamical
  * systems", Comput. Methods Appl. Mech. Eng. 1, 1972; Catto, Box2D 2.0):

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sequential impulses with non-linear Gauss-Seidel position passes
  * (Catto, Box2D 2.4; Erleben, "Stable, Robust, and Versatile Multibody
  * Dynamics Animation", 2005, §5): the velocity iterations only stop

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Soft step (Catto, "Solver2D", 2024, and Box2D v3): every rigid row is
  * solved as a stiff, heavily damped spring, integrated implicitly, so
  * that its push-out is a bounded, damped motion instead of an impulse

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A monotonic clock for the step profile. */
 #ifndef RB_TIMER_H
 #define RB_TIMER_H

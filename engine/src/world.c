@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The world: creation, destruction, settings, id look-ups and the step. */
 #include <assert.h>
 #include <float.h>

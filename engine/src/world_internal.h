@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The world's private data: object pools, contacts, solver scratch. The
  * per-body data the solver touches every iteration (velocities and pose)
  * lives apart from the rest in a compact `states` array, indexed like

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Activation dynamics (Millard et al. 2013, eq. 1-2): the state-dependent
  * time constant, the derivative function for GSL-shaped integrators, and
  * the stable step the muscle takes each substep.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The CSV reader of the digitised Hill curves (Ross et al. 2018, PLOS
  * Comput Biol, as tabulated by the seed; framework.md §4).
  *

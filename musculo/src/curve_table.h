@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The CSV reader of the digitised Hill curves (private to the muscle layer).
  *
  * The file has the header row `curve,x,y` and one knot per row; a row's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The Hill muscle's curves f_L, f_P and f_V (framework.md §4 and §9), in
  * two kinds:
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The damped fibre-tendon equilibrium (fibre_tendon.h): the balance, its
  * static solution by bisection, and the substep's backward-Euler step by
  * a safeguarded Newton iteration.

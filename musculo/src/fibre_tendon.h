@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The fibre and its compliant tendon in series (private to the muscle
  * layer): the damped equilibrium of Millard et al. 2013 (J Biomech Eng
  * 135:021005, §2.5 "damped equilibrium model").

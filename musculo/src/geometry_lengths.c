@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Lengths from the anchor geometry (derived in geometry_lengths.h). */
 #include <math.h>
 

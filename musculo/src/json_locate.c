@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A scanner over a document jansson already accepted: it only has to
  * skip values and compare keys, never to reject anything. Every read
  * stops at the end of the buffer all the same, so a text the scanner

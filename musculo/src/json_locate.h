@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Where a value sits in the text of a JSON document.
  *
  * jansson's values carry no position, so a model file's semantic errors

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Building a model from its description, and stepping it. */
 #include <math.h>
 #include <stdarg.h>

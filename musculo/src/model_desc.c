@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Loading a model file, freeing its description, finding objects in it. */
 #include <errno.h>
 #include <stdio.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Reading a JSON document against a schema, with errors that say where.
  *
  * The reader keeps the JSON path of the value being read; every failure

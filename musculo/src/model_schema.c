@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Reads a model file into a mu_model_desc, section by section: nails and
  * bones first, so that the joints, the weight and the muscles after them
  * can name them; muscles before the groups and variants that list them.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The model file's schema: what each key of a model file means, its
  * type, range and default, and the cross-checks between objects
  * (models/README.md documents the format). */

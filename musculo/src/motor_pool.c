@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The motor pool: strengths, their running sums, and the recruited count
  * (motor_pool.h). cumulative[n] = s_0 + … + s_{n-1}, so cumulative[0] = 0
  * and e(n) = cumulative[n]/cumulative[count] needs no special case for

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The Hill muscle: contractile and parallel elastic elements in parallel,
  * a tendon in series, on an engine cable.
  *

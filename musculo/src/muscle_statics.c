@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The report's static formulas (§2.2), argument checks included.
  *
  * PCSA = ACSA/cos β is the report's relation as it states it: behind one

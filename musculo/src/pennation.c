@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The fixed-width pennation model (pennation.h). sin(acos 0.1) = √0.99,
  * so the shortest fibre is w/√0.99 and its belly extent √(l² - w²) is
  * 0.1·l = w·0.1/√0.99. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Thelen's (2003) tendon curve with its joint made exact.
  *
  * The toe's slope at ε_toe is A/ε_toe with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The torque actuator: exertion · peak torque on one body, its reaction on
  * another or on the world (torque_actuator.h). */
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `sinew view` in a window: the viewer runs under a virtual X display
  * (xvfb-run, with GTK's Cairo renderer) with a script that loads the arm
  * with 1 kg, lets it settle, pulses the short biceps, contracts both

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The viewer's mouse and keys, end to end: runs `sinew view arm` with a
 # script that stops at each step (wait-for FILE) while xdotool moves the
 # mouse and types on the display, then reads what the viewer printed

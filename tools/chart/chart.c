@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Drawing a chart onto a cairo_t: layout (title, tick labels, axis labels
  * and legend around the plot area), grid, axes, series, legend. */
 #include <math.h>

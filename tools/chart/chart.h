@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Line charts drawn with Cairo: the figures of `sinew plot` and `sinew
  * experiment`, and the live graphs of a viewer, which draws the same
  * charts into its widgets' cairo_t.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A figure written as a PNG or an SVG file through an atomic_file: Cairo
  * writes into the temporary file's stream, which is renamed into place
  * only when Cairo and the stream both succeeded. */

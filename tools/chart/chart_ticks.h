@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* "Nice" axis ticks: steps of 1, 2 or 5 times a power of ten, the first
  * tick at or below the data's minimum and the last at or above its
  * maximum, to within 1e-9 of a step, the rounding of a tick's value

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Axis labels from CSV column names. sinew's CSV files put the unit in
  * the name: as a suffix, "time_s", "Biceps Long.total_force_N",
  * "velocity_m_s" (recorder.h), or in brackets, "force [N]". A label reads

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Parsing the value of one command-line option, with the checks the tools
  * share: the whole text must be the value (no trailing characters), and a
  * number must lie in its range.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A file written under a temporary name and renamed over its final name
  * only once it is complete, so that an interrupted or failed run never
  * leaves a half-written file: PATH keeps its previous content (or stays

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A table of named columns of numbers, read from or written to a CSV file
  * with one header row (the format of `sinew run` and `sinew experiment`:
  * names carry their unit, "time_s", "Biceps Long.total_force_N" or

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The simulation canvas as a GTK widget: draws through canvas_draw; the
  * mouse wheel zooms about the cursor, a right click resets the view, a
  * drag of the background pans and a drag of a body pulls it with a mouse

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The control panel: model and scene pickers, the model's variant, weight
  * and level with Reload; Play/Pause and Step; the muscle-or-group picker
  * with its activation slider (0 .. 1) or tension target (N).

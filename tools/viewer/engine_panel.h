@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The engine panel: the world's solver (type, velocity and position
  * iterations, substeps, warm starting) changed live, the canvas's
  * overlays (contacts, normals, impulses, bounding boxes, joints and their

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The graph panel: the four live graphs of the model's last seconds
  * (live_graph.h), each with an Export button that writes its channels as
  * CSV to a file chosen in a file chooser.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A screenshot of the whole window as a PNG: the window's widgets are
  * snapshotted as they are now and rendered by the window's own renderer
  * (GSK; Cairo under GSK_RENDERER=cairo), then written under a temporary

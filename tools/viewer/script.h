@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Scripted input (`sinew view --script FILE`): the viewer runs the
  * file's commands one after the other from its main loop, drawing between
  * frames as it does interactively, so a test (or a figure) can drive it

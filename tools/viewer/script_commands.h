@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The commands of a viewer script (script.h lists them): each with the
  * number of arguments it takes and the function that runs it. A command
  * that waits (play, screenshot, wait-for) records what it waits for in

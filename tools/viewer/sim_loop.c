@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sim_loop.h"
 
 static gboolean on_wake(gpointer data)

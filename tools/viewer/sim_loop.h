@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The simulation's clock: while the viewer plays, frames are stepped at
  * the simulation's own frame rate (60 Hz for the built-in models and the
  * scenes), whatever the drawing rate. A GLib timeout wakes every few

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The viewer's state, shared by its panels: the simulation and its
  * history, the canvas's view and overlays, whether it plays, and the
  * window's widgets. Every change of what is loaded goes through the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sinew-view, the interactive viewer that `sinew view` starts: the
  * window's layout (the canvas with its message bar over the graphs on the
  * left, the control and engine panels on the right), what is loaded

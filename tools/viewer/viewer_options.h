@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The command line of `sinew view` (the sinew-view program):
  *   sinew view [MODEL] [--variant NAME|N] [--weight KG] [--level N]
  *              [--scene NAME] [--play] [--script FILE]

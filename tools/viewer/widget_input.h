@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sets a control of the window as a user would, from text, so that its
  * own signal handlers run: what the script's `set CONTROL VALUE` does.
  * A drop-down takes the text of one of its items, a spin button or a

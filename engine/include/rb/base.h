@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sinew rigid-body engine: status codes, error messages and the allocator.
  *
  * Every API call that can fail returns an rb_status. On failure it also

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Rigid bodies.
  *
  * A body has a pose (origin position and angle), velocities, and mass

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Cables: a path of points fixed on bodies (origin, via points,
  * insertion) that carries a tension, as a muscle-tendon unit or a rope
  * over pulleys does.

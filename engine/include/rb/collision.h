@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Narrow phase: contact manifolds between two shapes.
  *
  * Pure functions of two shapes and their body transforms. The manifold

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Debug drawing through callbacks: the engine says what to draw, the
  * caller draws it (Cairo figure, GTK viewer, a test that counts calls).
  * Every callback may be NULL. Colours are 0xRRGGBB.

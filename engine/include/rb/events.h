@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Contact and sensor events, and the pre-solve filter.
  *
  * Events are read after a step, never delivered by callback: the step

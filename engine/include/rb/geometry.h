@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shape geometry, its mass properties, bounding boxes and ray casts.
  *
  * Geometry is given in the body's local frame (metres). Boxes are

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Handles to the objects of a world.
  *
  * An id is a slot index, the generation of the slot (bumped each time

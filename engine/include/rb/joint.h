@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Joints: constraints between two bodies, solved with the contacts by
  * sequential impulses (warm started), their drift removed by the world's
  * position-correction method.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Vectors, rotations and rigid transforms in the plane.
  *
  * Conventions: the y axis points up; angles are in radians, counter-

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* World queries: which shapes overlap a box, contain a point, or lie
  * along a ray. Enough for a viewer to pick the body under the mouse.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sinew rigid-body engine: the whole public API. */
 #ifndef RB_RB_H
 #define RB_RB_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shapes: the geometry, material and collision filter attached to a body.
  *
  * Mixing rules when two shapes touch: friction is the geometric mean

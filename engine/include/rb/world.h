@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The world: bodies, shapes, contacts and the step that advances them.
  */
 #ifndef RB_WORLD_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The seed's balls box (shared/spec/models.md, "balls"), with the seed's
  * overlapping start replaced by random non-overlapping positions now that
  * the engine has collisions. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A body with one box shape: the brick of the stack, the pyramid, the
  * incline and the grounds. */
 #include "box_body.h"

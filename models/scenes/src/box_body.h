@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Building block shared by the scenes: a body carrying one box shape.
  * Private to the scenes library.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Two planks welded end to end out from a wall: the static check of a
  * rigid weld. Each weld must carry the weight beyond it and its moment,
  * and the tip may sag only as far as the solver lets the welds give. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The chain of the peer benchmarks (shared/peers/README.md), built as
  * box2d24_bench.cpp and chipmunk_bench.c build it, so that its joint gaps
  * compare one to one: light links ending in a box 100 times heavier, the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A ball dropped on the ground: the check of restitution (a ball of
  * restitution e dropped from h rebounds to e²·h, Newton's experimental law
  * of impact) and of resting contact once it settles. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A box on an inclined plank: the textbook check of Coulomb friction
  * (static below the friction angle atan(mu), sliding with
  * a = g·(sin θ - mu·cos θ) above it). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The joint grid of the peer benchmarks (shared/peers/README.md, after
  * Box2D v3's CreateJointGrid), built as box2d24_bench.cpp builds it: same
  * creation order of bodies and joints, hence the same order in which a

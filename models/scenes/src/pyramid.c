@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The pyramid of the peer benchmarks (shared/peers/README.md), built
  * exactly as box2d24_bench.cpp and chipmunk_bench.c build it so that
  * timings and figures compare one to one. Every coordinate is a multiple

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Rain on a pyramid: the peers' pyramid with balls falling on it a few at
  * a time, the case of a broad phase whose candidates change only around
  * the shapes that move (engine/src/broad_phase.c). */

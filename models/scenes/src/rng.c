@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* xoshiro256** seeded by splitmix64; see rng.h for the references. */
 #include "rng.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A small deterministic random number generator for the scenes.
  *
  * xoshiro256** (Blackman and Vigna, "Scrambled linear pseudorandom number

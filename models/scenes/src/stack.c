@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The vertical stack of boxes (scenes.h): the classic test of a solver's
  * ability to hold a tall column still (Catto, "Iterative Dynamics with
  * Temporal Coherence", GDC 2005, whose warm starting it needs). */

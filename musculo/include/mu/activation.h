@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Activation dynamics: the first-order delay between a muscle's neural
  * excitation u and its activation a (the calcium-driven state of the
  * contractile element), as in Millard et al. 2013 (J Biomech Eng 135,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The Hill muscle's curves, as pure functions of normalized inputs.
  *
  * Normalized length l̃ = belly length / rest (optimal) length. Normalized

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Muscle and tendon lengths derived from the anchor geometry (the
  * report's third proposed improvement, framework.md §7): instead of a
  * measured belly length, the muscle-tendon path's length L at the model's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A musculoskeletal model built from its description (framework.md §5):
  * the engine world with its bodies and joints, and the muscles, at a
  * simulation level, a variant and a weight choice.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The description of a musculoskeletal model, read from a JSON model file
  * (format: models/README.md): pure data, no engine objects. The model
  * builder turns it into bodies, joints and muscles at a simulation level,

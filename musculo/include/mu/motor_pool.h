@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A motor pool (seed 001, framework.md §8): the motor neurons of one
  * muscle, each with a strength, recruited weakest first as Henneman's size
  * principle orders them (Henneman, Somjen & Carpenter 1965, J Neurophysiol

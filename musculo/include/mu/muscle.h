@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The Hill muscle (report §5.4; framework.md §4), pulling along a path of
  * body points through an engine cable.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The report's static muscle formulas (§2.2; framework.md §7): how big
  * a muscle's force is from its anatomy, before any dynamics.
  *

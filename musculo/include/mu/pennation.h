@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Pennation with a constant-thickness (fixed-width) muscle: fibres at an
  * angle α to the tendon's line of action, in a belly whose thickness
  * perpendicular to that line stays constant as the fibres shorten

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The tendon's force-strain curve: the series elastic element of a Hill
  * muscle-tendon unit.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A torque actuator (seed 001's torque muscle, framework.md §8): a torque
  * about the axis out of the plane, exertion · peak_torque, on one body,
  * and the opposite torque on a second body when one is given (a joint

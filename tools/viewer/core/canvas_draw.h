@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Draws what the viewer simulates onto a cairo_t, in the view's pixels:
  * the grid; a model's bones (ivory rounded boxes), nails (dots), hinges
  * (circles), muscles (ellipses of constant area coloured from pale pink

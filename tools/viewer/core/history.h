@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The last seconds of a model's muscles, sampled once per frame, for the
  * live graphs: a ring of samples (time and, for every built muscle, the
  * quantities the graphs show), oldest dropped first.

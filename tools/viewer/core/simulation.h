@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What the viewer simulates: a muscle model (a built-in name or a model
  * file, at a variant, weight choice and level) or an engine scene, with
  * the user's controls on it: the command of the selected muscle or group

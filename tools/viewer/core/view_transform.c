@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "view_transform.h"
 
 static double clamp_scale(double scale)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The canvas's view: which part of the world (m, y up) the widget (px,
  * y down) shows. A uniform scale in px per metre and the world point at
  * the widget's centre; zooming keeps the world point under the cursor in

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The engine scenes the viewer loads like models (models/scenes, plus a
  * pendulum of its own): each in a world of its own, with the gravity its
  * source gives it, stepped at 60 Hz, and the part of the world to show.

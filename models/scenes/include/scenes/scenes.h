@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Engine scenes, defined once and shared by the tests, the benchmarks and
  * the `sinew` tool. Each builds its bodies in an existing world (whose
  * gravity and solver settings the caller chooses) and reports the ids a
