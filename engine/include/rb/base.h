@@ -14,6 +14,12 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "rb/export.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum rb_status {
     RB_OK = 0,
     RB_ERR_INVALID_ARGUMENT, /* NaN, infinity, out of range, NULL pointer */
@@ -27,18 +33,18 @@ typedef enum rb_status {
 } rb_status;
 
 /* Short constant name of a status ("RB_ERR_STALE_ID"). */
-const char *rb_status_name(rb_status status);
+RB_API const char *rb_status_name(rb_status status);
 
 /* The message of the last failed call on this thread ("" after success). */
-const char *rb_last_error(void);
+RB_API const char *rb_last_error(void);
 
 /* The status of the last call on this thread that can fail. */
-rb_status rb_last_status(void);
+RB_API rb_status rb_last_status(void);
 
 /* Records a failure with a printf-style message and returns `status`.
  * For libraries built on the engine (scenes, the muscle layer), so that
  * one rb_last_error() carries their messages too. */
-rb_status rb_report_error(rb_status status, const char *format, ...)
+RB_API rb_status rb_report_error(rb_status status, const char *format, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 2, 3)))
 #endif
@@ -46,10 +52,14 @@ rb_status rb_report_error(rb_status status, const char *format, ...)
 
 /* Bytes currently allocated by the engine, over all worlds of the process.
  * Zero once every world is destroyed. */
-size_t rb_bytes_in_use(void);
+RB_API size_t rb_bytes_in_use(void);
 
 /* Number of allocations made so far (never decreases); lets a benchmark
  * count heap allocations in a step. */
-uint64_t rb_allocation_count(void);
+RB_API uint64_t rb_allocation_count(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

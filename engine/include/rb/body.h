@@ -10,9 +10,14 @@
 
 #include <stdbool.h>
 
+#include "rb/export.h"
 #include "rb/geometry.h"
 #include "rb/id.h"
 #include "rb/world.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef enum rb_body_type {
     RB_BODY_STATIC,    /* never moves; infinite mass */
@@ -50,91 +55,95 @@ typedef struct rb_body_def {
     void *user_data;
 } rb_body_def;
 
-rb_body_def rb_default_body_def(void);
+RB_API rb_body_def rb_default_body_def(void);
 
-rb_status rb_body_create(rb_world *world, const rb_body_def *def, rb_body_id *out);
+RB_API rb_status rb_body_create(rb_world *world, const rb_body_def *def, rb_body_id *out);
 /* Destroys the body, its shapes and its contacts. */
-rb_status rb_body_destroy(rb_world *world, rb_body_id body);
-bool rb_body_is_valid(const rb_world *world, rb_body_id body);
+RB_API rb_status rb_body_destroy(rb_world *world, rb_body_id body);
+RB_API bool rb_body_is_valid(const rb_world *world, rb_body_id body);
 
-rb_body_type rb_body_type_of(const rb_world *world, rb_body_id body);
-rb_status rb_body_set_type(rb_world *world, rb_body_id body, rb_body_type type);
+RB_API rb_body_type rb_body_type_of(const rb_world *world, rb_body_id body);
+RB_API rb_status rb_body_set_type(rb_world *world, rb_body_id body, rb_body_type type);
 
 /* Pose. */
-rb_vec2 rb_body_position(const rb_world *world, rb_body_id body); /* m, origin */
-double rb_body_angle(const rb_world *world, rb_body_id body);     /* rad, continuous (not wrapped) */
-rb_rot rb_body_rotation(const rb_world *world, rb_body_id body);
-rb_transform rb_body_transform(const rb_world *world, rb_body_id body);
-rb_vec2 rb_body_world_center(const rb_world *world, rb_body_id body); /* m, centre of mass */
-rb_vec2 rb_body_local_center(const rb_world *world, rb_body_id body); /* m, in the body frame */
-rb_status rb_body_set_transform(rb_world *world, rb_body_id body, rb_vec2 position, double angle);
+RB_API rb_vec2 rb_body_position(const rb_world *world, rb_body_id body); /* m, origin */
+RB_API double rb_body_angle(const rb_world *world, rb_body_id body);     /* rad, continuous (not wrapped) */
+RB_API rb_rot rb_body_rotation(const rb_world *world, rb_body_id body);
+RB_API rb_transform rb_body_transform(const rb_world *world, rb_body_id body);
+RB_API rb_vec2 rb_body_world_center(const rb_world *world, rb_body_id body); /* m, centre of mass */
+RB_API rb_vec2 rb_body_local_center(const rb_world *world, rb_body_id body); /* m, in the body frame */
+RB_API rb_status rb_body_set_transform(rb_world *world, rb_body_id body, rb_vec2 position, double angle);
 
 /* Velocities (of the centre of mass). */
-rb_vec2 rb_body_linear_velocity(const rb_world *world, rb_body_id body);
-double rb_body_angular_velocity(const rb_world *world, rb_body_id body);
-rb_status rb_body_set_linear_velocity(rb_world *world, rb_body_id body, rb_vec2 velocity);
-rb_status rb_body_set_angular_velocity(rb_world *world, rb_body_id body, double omega);
+RB_API rb_vec2 rb_body_linear_velocity(const rb_world *world, rb_body_id body);
+RB_API double rb_body_angular_velocity(const rb_world *world, rb_body_id body);
+RB_API rb_status rb_body_set_linear_velocity(rb_world *world, rb_body_id body, rb_vec2 velocity);
+RB_API rb_status rb_body_set_angular_velocity(rb_world *world, rb_body_id body, double omega);
 /* Velocity (m/s) of the material point now at world_point: v + ω × r. */
-rb_vec2 rb_body_point_velocity(const rb_world *world, rb_body_id body, rb_vec2 world_point);
+RB_API rb_vec2 rb_body_point_velocity(const rb_world *world, rb_body_id body, rb_vec2 world_point);
 
 /* Frame conversions. */
-rb_vec2 rb_body_world_point(const rb_world *world, rb_body_id body, rb_vec2 local_point);
-rb_vec2 rb_body_local_point(const rb_world *world, rb_body_id body, rb_vec2 world_point);
-rb_vec2 rb_body_world_vector(const rb_world *world, rb_body_id body, rb_vec2 local_vector);
-rb_vec2 rb_body_local_vector(const rb_world *world, rb_body_id body, rb_vec2 world_vector);
+RB_API rb_vec2 rb_body_world_point(const rb_world *world, rb_body_id body, rb_vec2 local_point);
+RB_API rb_vec2 rb_body_local_point(const rb_world *world, rb_body_id body, rb_vec2 world_point);
+RB_API rb_vec2 rb_body_world_vector(const rb_world *world, rb_body_id body, rb_vec2 local_vector);
+RB_API rb_vec2 rb_body_local_vector(const rb_world *world, rb_body_id body, rb_vec2 world_vector);
 
 /* Forces and impulses. Forces and torques accumulate until the end of
  * the next rb_world_step and act during all of its substeps. They are
  * ignored (RB_OK) on static and kinematic bodies. Applying one wakes the
  * body. */
 /* A force (N) at a world point: also a torque r × F about the centre of mass. */
-rb_status rb_body_apply_force(rb_world *world, rb_body_id body, rb_vec2 force, rb_vec2 world_point);
-rb_status rb_body_apply_force_to_center(rb_world *world, rb_body_id body, rb_vec2 force);
-rb_status rb_body_apply_torque(rb_world *world, rb_body_id body, double torque); /* N·m */
+RB_API rb_status rb_body_apply_force(rb_world *world, rb_body_id body, rb_vec2 force, rb_vec2 world_point);
+RB_API rb_status rb_body_apply_force_to_center(rb_world *world, rb_body_id body, rb_vec2 force);
+RB_API rb_status rb_body_apply_torque(rb_world *world, rb_body_id body, double torque); /* N·m */
 /* An impulse (N·s) at a world point: Δv = J/m, Δω = (r × J)/I at once. */
-rb_status rb_body_apply_linear_impulse(rb_world *world, rb_body_id body, rb_vec2 impulse, rb_vec2 world_point);
-rb_status rb_body_apply_linear_impulse_to_center(rb_world *world, rb_body_id body, rb_vec2 impulse);
-rb_status rb_body_apply_angular_impulse(rb_world *world, rb_body_id body, double impulse); /* N·m·s */
+RB_API rb_status rb_body_apply_linear_impulse(rb_world *world, rb_body_id body, rb_vec2 impulse, rb_vec2 world_point);
+RB_API rb_status rb_body_apply_linear_impulse_to_center(rb_world *world, rb_body_id body, rb_vec2 impulse);
+RB_API rb_status rb_body_apply_angular_impulse(rb_world *world, rb_body_id body, double impulse); /* N·m·s */
 /* The force and torque accumulated so far for the next step. */
-rb_vec2 rb_body_force(const rb_world *world, rb_body_id body);
-double rb_body_torque(const rb_world *world, rb_body_id body);
+RB_API rb_vec2 rb_body_force(const rb_world *world, rb_body_id body);
+RB_API double rb_body_torque(const rb_world *world, rb_body_id body);
 
 /* Mass. A dynamic body's mass comes from its shapes' densities; until it
  * has a shape with mass, or after rb_body_set_mass_data, it has the
  * explicit value. A dynamic body without shapes or override has mass
  * 1 kg and does not rotate. */
-double rb_body_mass(const rb_world *world, rb_body_id body);               /* kg; 0 for static, kinematic */
-double rb_body_rotational_inertia(const rb_world *world, rb_body_id body); /* kg·m², about the centre of mass */
-rb_mass_data rb_body_mass_data(const rb_world *world, rb_body_id body);
+RB_API double rb_body_mass(const rb_world *world, rb_body_id body);               /* kg; 0 for static, kinematic */
+RB_API double rb_body_rotational_inertia(const rb_world *world, rb_body_id body); /* kg·m², about the centre of mass */
+RB_API rb_mass_data rb_body_mass_data(const rb_world *world, rb_body_id body);
 /* Overrides the shapes' mass (mass > 0, inertia >= 0, finite centre);
  * the override holds until rb_body_reset_mass_data. */
-rb_status rb_body_set_mass_data(rb_world *world, rb_body_id body, const rb_mass_data *mass_data);
-rb_status rb_body_reset_mass_data(rb_world *world, rb_body_id body);
+RB_API rb_status rb_body_set_mass_data(rb_world *world, rb_body_id body, const rb_mass_data *mass_data);
+RB_API rb_status rb_body_reset_mass_data(rb_world *world, rb_body_id body);
 
 /* Damping, gravity scale, flags. */
-rb_status rb_body_set_linear_damping(rb_world *world, rb_body_id body, double damping);
-rb_status rb_body_set_angular_damping(rb_world *world, rb_body_id body, double damping);
-double rb_body_linear_damping(const rb_world *world, rb_body_id body);
-double rb_body_angular_damping(const rb_world *world, rb_body_id body);
-rb_status rb_body_set_gravity_scale(rb_world *world, rb_body_id body, double scale);
-double rb_body_gravity_scale(const rb_world *world, rb_body_id body);
-rb_status rb_body_set_fixed_rotation(rb_world *world, rb_body_id body, bool fixed);
-bool rb_body_is_fixed_rotation(const rb_world *world, rb_body_id body);
+RB_API rb_status rb_body_set_linear_damping(rb_world *world, rb_body_id body, double damping);
+RB_API rb_status rb_body_set_angular_damping(rb_world *world, rb_body_id body, double damping);
+RB_API double rb_body_linear_damping(const rb_world *world, rb_body_id body);
+RB_API double rb_body_angular_damping(const rb_world *world, rb_body_id body);
+RB_API rb_status rb_body_set_gravity_scale(rb_world *world, rb_body_id body, double scale);
+RB_API double rb_body_gravity_scale(const rb_world *world, rb_body_id body);
+RB_API rb_status rb_body_set_fixed_rotation(rb_world *world, rb_body_id body, bool fixed);
+RB_API bool rb_body_is_fixed_rotation(const rb_world *world, rb_body_id body);
 /* Waking a body wakes its island at the start of the next step; putting
  * it to sleep stops it where it is. */
-rb_status rb_body_set_awake(rb_world *world, rb_body_id body, bool awake);
+RB_API rb_status rb_body_set_awake(rb_world *world, rb_body_id body, bool awake);
 /* Disabling sleep wakes the body. */
-rb_status rb_body_enable_sleep(rb_world *world, rb_body_id body, bool enable);
-bool rb_body_is_sleep_enabled(const rb_world *world, rb_body_id body);
-bool rb_body_is_awake(const rb_world *world, rb_body_id body);
-rb_status rb_body_set_bullet(rb_world *world, rb_body_id body, bool bullet);
-bool rb_body_is_bullet(const rb_world *world, rb_body_id body);
-rb_status rb_body_set_user_data(rb_world *world, rb_body_id body, void *user_data);
-void *rb_body_user_data(const rb_world *world, rb_body_id body);
+RB_API rb_status rb_body_enable_sleep(rb_world *world, rb_body_id body, bool enable);
+RB_API bool rb_body_is_sleep_enabled(const rb_world *world, rb_body_id body);
+RB_API bool rb_body_is_awake(const rb_world *world, rb_body_id body);
+RB_API rb_status rb_body_set_bullet(rb_world *world, rb_body_id body, bool bullet);
+RB_API bool rb_body_is_bullet(const rb_world *world, rb_body_id body);
+RB_API rb_status rb_body_set_user_data(rb_world *world, rb_body_id body, void *user_data);
+RB_API void *rb_body_user_data(const rb_world *world, rb_body_id body);
 
 /* Shapes attached to the body, in creation order; returns how many it
  * copied (at most capacity). */
-int rb_body_shape_count(const rb_world *world, rb_body_id body);
-int rb_body_shapes(const rb_world *world, rb_body_id body, rb_shape_id *out, int capacity);
+RB_API int rb_body_shape_count(const rb_world *world, rb_body_id body);
+RB_API int rb_body_shapes(const rb_world *world, rb_body_id body, rb_shape_id *out, int capacity);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -16,7 +16,12 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "rb/export.h"
 #include "rb/geometry.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #define RB_MAX_MANIFOLD_POINTS 2
 
@@ -54,24 +59,24 @@ static inline uint32_t rb_feature_id(int vertex_a, int vertex_b)
     return ((uint32_t)vertex_a << 8) | (uint32_t)vertex_b;
 }
 
-rb_manifold rb_collide_circles(const rb_circle *a, rb_transform xfa, const rb_circle *b, rb_transform xfb,
-                               double speculative_distance);
+RB_API rb_manifold rb_collide_circles(const rb_circle *a, rb_transform xfa, const rb_circle *b, rb_transform xfb,
+                                      double speculative_distance);
 
-rb_manifold rb_collide_polygon_and_circle(const rb_polygon *a, rb_transform xfa, const rb_circle *b, rb_transform xfb,
-                                          double speculative_distance);
+RB_API rb_manifold rb_collide_polygon_and_circle(const rb_polygon *a, rb_transform xfa, const rb_circle *b,
+                                                 rb_transform xfb, double speculative_distance);
 
-rb_manifold rb_collide_polygons(const rb_polygon *a, rb_transform xfa, const rb_polygon *b, rb_transform xfb,
-                                double speculative_distance);
+RB_API rb_manifold rb_collide_polygons(const rb_polygon *a, rb_transform xfa, const rb_polygon *b, rb_transform xfb,
+                                       double speculative_distance);
 
 /* Segments against circles and polygons, the segment always shape A.
  * Against a polygon the segment is a two-vertex outline whose edge 0
  * runs from point1 to point2 (right normal) and edge 1 back (left
  * normal), so feature ids and reference faces follow the polygon rules
  * above. A circle point has id 0. Segments do not collide with segments. */
-rb_manifold rb_collide_segment_and_circle(const rb_segment *a, rb_transform xfa, const rb_circle *b, rb_transform xfb,
-                                          double speculative_distance);
-rb_manifold rb_collide_segment_and_polygon(const rb_segment *a, rb_transform xfa, const rb_polygon *b, rb_transform xfb,
-                                           double speculative_distance);
+RB_API rb_manifold rb_collide_segment_and_circle(const rb_segment *a, rb_transform xfa, const rb_circle *b,
+                                                 rb_transform xfb, double speculative_distance);
+RB_API rb_manifold rb_collide_segment_and_polygon(const rb_segment *a, rb_transform xfa, const rb_polygon *b,
+                                                  rb_transform xfb, double speculative_distance);
 
 /* Chain segments: one-sided (only shapes in front of the left normal
  * collide; a circle whose centre, or a polygon whose centroid, is behind
@@ -83,9 +88,14 @@ rb_manifold rb_collide_segment_and_polygon(const rb_segment *a, rb_transform xfa
  * normals a convex joint or a free end allows; otherwise the segment's
  * front (edge 1) is the reference, so a box sliding over a flat joint
  * is pushed along the chain's normal only. */
-rb_manifold rb_collide_chain_segment_and_circle(const rb_chain_segment *a, rb_transform xfa, const rb_circle *b,
-                                                rb_transform xfb, double speculative_distance);
-rb_manifold rb_collide_chain_segment_and_polygon(const rb_chain_segment *a, rb_transform xfa, const rb_polygon *b,
-                                                 rb_transform xfb, double speculative_distance);
+RB_API rb_manifold rb_collide_chain_segment_and_circle(const rb_chain_segment *a, rb_transform xfa, const rb_circle *b,
+                                                       rb_transform xfb, double speculative_distance);
+RB_API rb_manifold rb_collide_chain_segment_and_polygon(const rb_chain_segment *a, rb_transform xfa,
+                                                        const rb_polygon *b, rb_transform xfb,
+                                                        double speculative_distance);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -9,8 +9,13 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "rb/export.h"
 #include "rb/math.h"
 #include "rb/world.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct rb_debug_draw {
     /* A closed convex polygon in world coordinates. */
@@ -48,7 +53,7 @@ typedef struct rb_debug_draw {
     void *context;
 } rb_debug_draw;
 
-rb_debug_draw rb_default_debug_draw(void);
+RB_API rb_debug_draw rb_default_debug_draw(void);
 
 /* Colours used, so a test or a legend can name them. */
 enum {
@@ -71,8 +76,12 @@ enum {
  * turn, white for overflow; any other value (a contact not solved, -1)
  * gets RB_COLOR_CONTACT_POINT. */
 #define RB_CONSTRAINT_PALETTE_SIZE 8
-uint32_t rb_constraint_colour_rgb(int colour);
+RB_API uint32_t rb_constraint_colour_rgb(int colour);
 
-rb_status rb_world_draw(const rb_world *world, const rb_debug_draw *draw);
+RB_API rb_status rb_world_draw(const rb_world *world, const rb_debug_draw *draw);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -23,8 +23,13 @@
 #include <stdbool.h>
 
 #include "rb/collision.h"
+#include "rb/export.h"
 #include "rb/id.h"
 #include "rb/world.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct rb_contact_begin_event {
     rb_shape_id shape_a, shape_b;
@@ -59,8 +64,8 @@ typedef struct rb_sensor_events {
 
 /* The events of the last step (all empty before the first). A NULL world
  * gives empty arrays and an error. */
-rb_contact_events rb_world_contact_events(const rb_world *world);
-rb_sensor_events rb_world_sensor_events(const rb_world *world);
+RB_API rb_contact_events rb_world_contact_events(const rb_world *world);
+RB_API rb_sensor_events rb_world_sensor_events(const rb_world *world);
 
 /* Called during the step for every non-sensor contact that has manifold
  * points (speculative ones too: they push as well), after the narrow
@@ -73,6 +78,10 @@ typedef bool rb_pre_solve_fn(rb_shape_id shape_a, rb_shape_id shape_b, const rb_
 
 /* Registers the pre-solve filter (NULL removes it); `context` is passed
  * back to it. */
-rb_status rb_world_set_pre_solve(rb_world *world, rb_pre_solve_fn *fn, void *context);
+RB_API rb_status rb_world_set_pre_solve(rb_world *world, rb_pre_solve_fn *fn, void *context);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -10,7 +10,12 @@
 #define RB_GEOMETRY_H
 
 #include "rb/base.h"
+#include "rb/export.h"
 #include "rb/math.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #define RB_MAX_POLYGON_VERTICES 8
 
@@ -70,41 +75,41 @@ typedef struct rb_mass_data {
 } rb_mass_data;
 
 /* A box of half-extents hx, hy (m, > 0) centred on the body origin. */
-rb_status rb_make_box(double hx, double hy, rb_polygon *out);
+RB_API rb_status rb_make_box(double hx, double hy, rb_polygon *out);
 
 /* A box of half-extents hx, hy centred at `center` and turned by `angle`
  * (rad) in the body frame. */
-rb_status rb_make_offset_box(double hx, double hy, rb_vec2 center, double angle, rb_polygon *out);
+RB_API rb_status rb_make_offset_box(double hx, double hy, rb_vec2 center, double angle, rb_polygon *out);
 
 /* A convex polygon whose vertices are exactly `points` (any order, any
  * winding). Fails with RB_ERR_NOT_CONVEX when a point lies inside the
  * hull of the others or on one of its edges, RB_ERR_DEGENERATE_SHAPE when
  * the points are collinear, coincident or enclose no area, and
  * RB_ERR_INVALID_ARGUMENT for a count outside 3..8 or a non-finite point. */
-rb_status rb_make_polygon(const rb_vec2 *points, int count, rb_polygon *out);
+RB_API rb_status rb_make_polygon(const rb_vec2 *points, int count, rb_polygon *out);
 
 /* The convex hull of a point cloud as a polygon: interior and collinear
  * points are dropped, coincident points welded. Fails only when the hull
  * is degenerate (fewer than 3 vertices) or the input invalid. */
-rb_status rb_make_polygon_hull(const rb_vec2 *points, int count, rb_polygon *out);
+RB_API rb_status rb_make_polygon_hull(const rb_vec2 *points, int count, rb_polygon *out);
 
 /* Mass properties for an area density (kg/m², > 0). */
-rb_mass_data rb_circle_mass(const rb_circle *circle, double density);
-rb_mass_data rb_polygon_mass(const rb_polygon *polygon, double density);
+RB_API rb_mass_data rb_circle_mass(const rb_circle *circle, double density);
+RB_API rb_mass_data rb_polygon_mass(const rb_polygon *polygon, double density);
 
 /* Area (m²) of a shape. */
-double rb_circle_area(const rb_circle *circle);
-double rb_polygon_area(const rb_polygon *polygon);
+RB_API double rb_circle_area(const rb_circle *circle);
+RB_API double rb_polygon_area(const rb_polygon *polygon);
 
 /* The area density (kg/m²) of a plate of thickness `depth` (m, > 0) made
  * of a material of volume density `volume_density` (kg/m³, > 0), so that
  * mass = volume_density · area · depth, as the seed's bones and weights. */
-rb_status rb_area_density_from_volume(double volume_density, double depth, double *area_density);
+RB_API rb_status rb_area_density_from_volume(double volume_density, double depth, double *area_density);
 
 /* Bounding boxes of a shape placed by a transform. */
-rb_aabb rb_circle_aabb(const rb_circle *circle, rb_transform xf);
-rb_aabb rb_polygon_aabb(const rb_polygon *polygon, rb_transform xf);
-rb_aabb rb_segment_aabb(const rb_segment *segment, rb_transform xf);
+RB_API rb_aabb rb_circle_aabb(const rb_circle *circle, rb_transform xf);
+RB_API rb_aabb rb_polygon_aabb(const rb_polygon *polygon, rb_transform xf);
+RB_API rb_aabb rb_segment_aabb(const rb_segment *segment, rb_transform xf);
 
 /* Ray casts against one shape placed by xf: the ray runs from `origin`
  * to origin + translation (m, world). A hit reports where the ray enters
@@ -121,14 +126,21 @@ typedef struct rb_ray_cast_output {
     rb_vec2 normal;  /* unit, world, pointing out of the shape towards the ray's origin side */
 } rb_ray_cast_output;
 
-rb_ray_cast_output rb_ray_cast_circle(const rb_circle *circle, rb_transform xf, rb_vec2 origin, rb_vec2 translation);
-rb_ray_cast_output rb_ray_cast_polygon(const rb_polygon *polygon, rb_transform xf, rb_vec2 origin, rb_vec2 translation);
-rb_ray_cast_output rb_ray_cast_segment(const rb_segment *segment, rb_transform xf, rb_vec2 origin, rb_vec2 translation);
-rb_ray_cast_output rb_ray_cast_chain_segment(const rb_chain_segment *segment, rb_transform xf, rb_vec2 origin,
+RB_API rb_ray_cast_output rb_ray_cast_circle(const rb_circle *circle, rb_transform xf, rb_vec2 origin,
                                              rb_vec2 translation);
+RB_API rb_ray_cast_output rb_ray_cast_polygon(const rb_polygon *polygon, rb_transform xf, rb_vec2 origin,
+                                              rb_vec2 translation);
+RB_API rb_ray_cast_output rb_ray_cast_segment(const rb_segment *segment, rb_transform xf, rb_vec2 origin,
+                                              rb_vec2 translation);
+RB_API rb_ray_cast_output rb_ray_cast_chain_segment(const rb_chain_segment *segment, rb_transform xf, rb_vec2 origin,
+                                                    rb_vec2 translation);
 
 /* Whether a world point lies inside (or on) the shape placed by xf. */
-bool rb_circle_contains(const rb_circle *circle, rb_transform xf, rb_vec2 point);
-bool rb_polygon_contains(const rb_polygon *polygon, rb_transform xf, rb_vec2 point);
+RB_API bool rb_circle_contains(const rb_circle *circle, rb_transform xf, rb_vec2 point);
+RB_API bool rb_polygon_contains(const rb_polygon *polygon, rb_transform xf, rb_vec2 point);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -12,6 +12,10 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct rb_body_id {
     int32_t index;
     uint16_t world;
@@ -53,5 +57,9 @@ static inline bool rb_joint_id_equals(rb_joint_id a, rb_joint_id b)
 {
     return a.index == b.index && a.world == b.world && a.generation == b.generation;
 }
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -18,9 +18,14 @@
 
 #include <stdbool.h>
 
+#include "rb/export.h"
 #include "rb/id.h"
 #include "rb/math.h"
 #include "rb/world.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef enum rb_joint_type {
     RB_JOINT_REVOLUTE,  /* a pin: the anchors coincide, the bodies turn freely about it */
@@ -55,24 +60,25 @@ typedef struct rb_revolute_joint_def {
     void *user_data;
 } rb_revolute_joint_def;
 
-rb_revolute_joint_def rb_default_revolute_joint_def(void);
+RB_API rb_revolute_joint_def rb_default_revolute_joint_def(void);
 
 /* Fills bodies, local anchors and the reference angle so that the joint
  * pins the two bodies at `world_anchor` in their current poses. */
-rb_status rb_revolute_joint_def_at(rb_revolute_joint_def *def, const rb_world *world, rb_body_id body_a,
-                                   rb_body_id body_b, rb_vec2 world_anchor);
+RB_API rb_status rb_revolute_joint_def_at(rb_revolute_joint_def *def, const rb_world *world, rb_body_id body_a,
+                                          rb_body_id body_b, rb_vec2 world_anchor);
 
-rb_status rb_revolute_joint_create(rb_world *world, const rb_revolute_joint_def *def, rb_joint_id *out);
+RB_API rb_status rb_revolute_joint_create(rb_world *world, const rb_revolute_joint_def *def, rb_joint_id *out);
 
-double rb_revolute_joint_angle(const rb_world *world, rb_joint_id joint); /* rad */
-double rb_revolute_joint_speed(const rb_world *world, rb_joint_id joint); /* rad/s, ωB - ωA */
+RB_API double rb_revolute_joint_angle(const rb_world *world, rb_joint_id joint); /* rad */
+RB_API double rb_revolute_joint_speed(const rb_world *world, rb_joint_id joint); /* rad/s, ωB - ωA */
 /* The torque the motor applied in the last step (N·m). */
-double rb_revolute_joint_motor_torque(const rb_world *world, rb_joint_id joint);
-rb_status rb_revolute_joint_set_motor(rb_world *world, rb_joint_id joint, bool enable, double speed, double max_torque);
-rb_status rb_revolute_joint_set_limits(rb_world *world, rb_joint_id joint, bool enable_lower, double lower,
-                                       bool enable_upper, double upper);
-rb_status rb_revolute_joint_set_spring(rb_world *world, rb_joint_id joint, bool enable, double hertz,
-                                       double damping_ratio);
+RB_API double rb_revolute_joint_motor_torque(const rb_world *world, rb_joint_id joint);
+RB_API rb_status rb_revolute_joint_set_motor(rb_world *world, rb_joint_id joint, bool enable, double speed,
+                                             double max_torque);
+RB_API rb_status rb_revolute_joint_set_limits(rb_world *world, rb_joint_id joint, bool enable_lower, double lower,
+                                              bool enable_upper, double upper);
+RB_API rb_status rb_revolute_joint_set_spring(rb_world *world, rb_joint_id joint, bool enable, double hertz,
+                                              double damping_ratio);
 
 /* ---- weld ---------------------------------------------------------------- */
 
@@ -87,14 +93,14 @@ typedef struct rb_weld_joint_def {
     void *user_data;
 } rb_weld_joint_def;
 
-rb_weld_joint_def rb_default_weld_joint_def(void);
+RB_API rb_weld_joint_def rb_default_weld_joint_def(void);
 
 /* Fills bodies, anchors and reference angle so that the joint freezes the
  * two bodies' current relative pose about `world_anchor`. */
-rb_status rb_weld_joint_def_at(rb_weld_joint_def *def, const rb_world *world, rb_body_id body_a, rb_body_id body_b,
-                               rb_vec2 world_anchor);
+RB_API rb_status rb_weld_joint_def_at(rb_weld_joint_def *def, const rb_world *world, rb_body_id body_a,
+                                      rb_body_id body_b, rb_vec2 world_anchor);
 
-rb_status rb_weld_joint_create(rb_world *world, const rb_weld_joint_def *def, rb_joint_id *out);
+RB_API rb_status rb_weld_joint_create(rb_world *world, const rb_weld_joint_def *def, rb_joint_id *out);
 
 /* ---- distance -------------------------------------------------------------- */
 
@@ -116,16 +122,16 @@ typedef struct rb_distance_joint_def {
     void *user_data;
 } rb_distance_joint_def;
 
-rb_distance_joint_def rb_default_distance_joint_def(void);
+RB_API rb_distance_joint_def rb_default_distance_joint_def(void);
 
 /* Fills bodies and anchors from two world points, and sets length,
  * min_length and max_length to their current distance. */
-rb_status rb_distance_joint_def_between(rb_distance_joint_def *def, const rb_world *world, rb_body_id body_a,
-                                        rb_body_id body_b, rb_vec2 world_anchor_a, rb_vec2 world_anchor_b);
+RB_API rb_status rb_distance_joint_def_between(rb_distance_joint_def *def, const rb_world *world, rb_body_id body_a,
+                                               rb_body_id body_b, rb_vec2 world_anchor_a, rb_vec2 world_anchor_b);
 
-rb_status rb_distance_joint_create(rb_world *world, const rb_distance_joint_def *def, rb_joint_id *out);
+RB_API rb_status rb_distance_joint_create(rb_world *world, const rb_distance_joint_def *def, rb_joint_id *out);
 
-double rb_distance_joint_current_length(const rb_world *world, rb_joint_id joint); /* m */
+RB_API double rb_distance_joint_current_length(const rb_world *world, rb_joint_id joint); /* m */
 
 /* ---- mouse --------------------------------------------------------------- */
 
@@ -139,9 +145,9 @@ typedef struct rb_mouse_joint_def {
     void *user_data;
 } rb_mouse_joint_def;
 
-rb_mouse_joint_def rb_default_mouse_joint_def(void);
-rb_status rb_mouse_joint_create(rb_world *world, const rb_mouse_joint_def *def, rb_joint_id *out);
-rb_status rb_mouse_joint_set_target(rb_world *world, rb_joint_id joint, rb_vec2 target);
+RB_API rb_mouse_joint_def rb_default_mouse_joint_def(void);
+RB_API rb_status rb_mouse_joint_create(rb_world *world, const rb_mouse_joint_def *def, rb_joint_id *out);
+RB_API rb_status rb_mouse_joint_set_target(rb_world *world, rb_joint_id joint, rb_vec2 target);
 
 /* ---- prismatic ------------------------------------------------------------ */
 
@@ -171,25 +177,26 @@ typedef struct rb_prismatic_joint_def {
     void *user_data;
 } rb_prismatic_joint_def;
 
-rb_prismatic_joint_def rb_default_prismatic_joint_def(void);
+RB_API rb_prismatic_joint_def rb_default_prismatic_joint_def(void);
 
 /* Fills bodies, local anchors, local axis and the reference angle so that
  * body B slides along `world_axis` (non-zero) through `world_anchor`, at
  * translation 0 and with the relative angle it has now. */
-rb_status rb_prismatic_joint_def_at(rb_prismatic_joint_def *def, const rb_world *world, rb_body_id body_a,
-                                    rb_body_id body_b, rb_vec2 world_anchor, rb_vec2 world_axis);
+RB_API rb_status rb_prismatic_joint_def_at(rb_prismatic_joint_def *def, const rb_world *world, rb_body_id body_a,
+                                           rb_body_id body_b, rb_vec2 world_anchor, rb_vec2 world_axis);
 
-rb_status rb_prismatic_joint_create(rb_world *world, const rb_prismatic_joint_def *def, rb_joint_id *out);
+RB_API rb_status rb_prismatic_joint_create(rb_world *world, const rb_prismatic_joint_def *def, rb_joint_id *out);
 
-double rb_prismatic_joint_translation(const rb_world *world, rb_joint_id joint); /* m */
-double rb_prismatic_joint_speed(const rb_world *world, rb_joint_id joint);       /* m/s, the translation's rate */
+RB_API double rb_prismatic_joint_translation(const rb_world *world, rb_joint_id joint); /* m */
+RB_API double rb_prismatic_joint_speed(const rb_world *world, rb_joint_id joint); /* m/s, the translation's rate */
 /* The force the motor applied along the axis in the last step (N). */
-double rb_prismatic_joint_motor_force(const rb_world *world, rb_joint_id joint);
-rb_status rb_prismatic_joint_set_motor(rb_world *world, rb_joint_id joint, bool enable, double speed, double max_force);
-rb_status rb_prismatic_joint_set_limits(rb_world *world, rb_joint_id joint, bool enable_lower, double lower,
-                                        bool enable_upper, double upper);
-rb_status rb_prismatic_joint_set_spring(rb_world *world, rb_joint_id joint, bool enable, double hertz,
-                                        double damping_ratio);
+RB_API double rb_prismatic_joint_motor_force(const rb_world *world, rb_joint_id joint);
+RB_API rb_status rb_prismatic_joint_set_motor(rb_world *world, rb_joint_id joint, bool enable, double speed,
+                                              double max_force);
+RB_API rb_status rb_prismatic_joint_set_limits(rb_world *world, rb_joint_id joint, bool enable_lower, double lower,
+                                               bool enable_upper, double upper);
+RB_API rb_status rb_prismatic_joint_set_spring(rb_world *world, rb_joint_id joint, bool enable, double hertz,
+                                               double damping_ratio);
 
 /* ---- pulley ------------------------------------------------------------------ */
 
@@ -214,37 +221,41 @@ typedef struct rb_pulley_joint_def {
     void *user_data;
 } rb_pulley_joint_def;
 
-rb_pulley_joint_def rb_default_pulley_joint_def(void);
+RB_API rb_pulley_joint_def rb_default_pulley_joint_def(void);
 
 /* Fills bodies, ground anchors, local anchors (from the world points
  * anchor_a and anchor_b) and both lengths from the current poses, so that
  * the rope is just taut; ratio and min_length are left as they are. */
-rb_status rb_pulley_joint_def_between(rb_pulley_joint_def *def, const rb_world *world, rb_body_id body_a,
-                                      rb_body_id body_b, rb_vec2 ground_anchor_a, rb_vec2 ground_anchor_b,
-                                      rb_vec2 anchor_a, rb_vec2 anchor_b);
+RB_API rb_status rb_pulley_joint_def_between(rb_pulley_joint_def *def, const rb_world *world, rb_body_id body_a,
+                                             rb_body_id body_b, rb_vec2 ground_anchor_a, rb_vec2 ground_anchor_b,
+                                             rb_vec2 anchor_a, rb_vec2 anchor_b);
 
-rb_status rb_pulley_joint_create(rb_world *world, const rb_pulley_joint_def *def, rb_joint_id *out);
+RB_API rb_status rb_pulley_joint_create(rb_world *world, const rb_pulley_joint_def *def, rb_joint_id *out);
 
 /* The rope's two sides now: |anchor - ground anchor| (m). */
-double rb_pulley_joint_length_a(const rb_world *world, rb_joint_id joint);
-double rb_pulley_joint_length_b(const rb_world *world, rb_joint_id joint);
+RB_API double rb_pulley_joint_length_a(const rb_world *world, rb_joint_id joint);
+RB_API double rb_pulley_joint_length_b(const rb_world *world, rb_joint_id joint);
 
 /* ---- every joint ----------------------------------------------------------- */
 
-rb_status rb_joint_destroy(rb_world *world, rb_joint_id joint);
-bool rb_joint_is_valid(const rb_world *world, rb_joint_id joint);
-rb_joint_type rb_joint_type_of(const rb_world *world, rb_joint_id joint);
+RB_API rb_status rb_joint_destroy(rb_world *world, rb_joint_id joint);
+RB_API bool rb_joint_is_valid(const rb_world *world, rb_joint_id joint);
+RB_API rb_joint_type rb_joint_type_of(const rb_world *world, rb_joint_id joint);
 /* A mouse joint has only body B; its body A is the null id. */
-rb_body_id rb_joint_body_a(const rb_world *world, rb_joint_id joint);
-rb_body_id rb_joint_body_b(const rb_world *world, rb_joint_id joint);
-rb_vec2 rb_joint_world_anchor_a(const rb_world *world, rb_joint_id joint); /* m; the target for a mouse joint */
-rb_vec2 rb_joint_world_anchor_b(const rb_world *world, rb_joint_id joint); /* m */
+RB_API rb_body_id rb_joint_body_a(const rb_world *world, rb_joint_id joint);
+RB_API rb_body_id rb_joint_body_b(const rb_world *world, rb_joint_id joint);
+RB_API rb_vec2 rb_joint_world_anchor_a(const rb_world *world, rb_joint_id joint); /* m; the target for a mouse joint */
+RB_API rb_vec2 rb_joint_world_anchor_b(const rb_world *world, rb_joint_id joint); /* m */
 /* The force (N, world frame) and torque (N·m) the joint applied to body
  * B during the last step: accumulated impulses divided by the step's dt.
  * Body A received the opposite. */
-rb_vec2 rb_joint_reaction_force(const rb_world *world, rb_joint_id joint);
-double rb_joint_reaction_torque(const rb_world *world, rb_joint_id joint);
-void *rb_joint_user_data(const rb_world *world, rb_joint_id joint);
-rb_status rb_joint_set_user_data(rb_world *world, rb_joint_id joint, void *user_data);
+RB_API rb_vec2 rb_joint_reaction_force(const rb_world *world, rb_joint_id joint);
+RB_API double rb_joint_reaction_torque(const rb_world *world, rb_joint_id joint);
+RB_API void *rb_joint_user_data(const rb_world *world, rb_joint_id joint);
+RB_API rb_status rb_joint_set_user_data(rb_world *world, rb_joint_id joint, void *user_data);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

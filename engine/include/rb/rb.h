@@ -15,6 +15,7 @@
 #include "rb/math.h"
 #include "rb/query.h"
 #include "rb/shape.h"
+#include "rb/version.h"
 #include "rb/world.h"
 
 #endif

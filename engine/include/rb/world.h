@@ -8,8 +8,13 @@
 
 #include "rb/base.h"
 #include "rb/collision.h"
+#include "rb/export.h"
 #include "rb/id.h"
 #include "rb/math.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct rb_world rb_world;
 
@@ -38,10 +43,10 @@ typedef enum rb_solver_type {
 } rb_solver_type;
 
 /* "baumgarte", "ngs", "soft_step"; "unknown" for a value out of range. */
-const char *rb_solver_type_name(rb_solver_type type);
+RB_API const char *rb_solver_type_name(rb_solver_type type);
 /* The type whose name is `name`; RB_ERR_INVALID_ARGUMENT naming the
  * choices when there is none. */
-rb_status rb_solver_type_from_name(const char *name, rb_solver_type *type);
+RB_API rb_status rb_solver_type_from_name(const char *name, rb_solver_type *type);
 
 /* Solver settings, held by the world; see rb_world_set_solver_settings. */
 typedef struct rb_solver_settings {
@@ -147,23 +152,23 @@ typedef struct rb_statistics {
     double energy;
 } rb_statistics;
 
-rb_solver_settings rb_default_solver_settings(void);
-rb_world_def rb_default_world_def(void);
+RB_API rb_solver_settings rb_default_solver_settings(void);
+RB_API rb_world_def rb_default_world_def(void);
 
 /* Validates every field of def; on failure *out is NULL. */
-rb_status rb_world_create(const rb_world_def *def, rb_world **out);
+RB_API rb_status rb_world_create(const rb_world_def *def, rb_world **out);
 
 /* Frees the world and everything in it. Accepts NULL. */
-void rb_world_destroy(rb_world *world);
+RB_API void rb_world_destroy(rb_world *world);
 
 /* Advances the world by dt seconds (finite, > 0, <= 10). */
-rb_status rb_world_step(rb_world *world, double dt);
+RB_API rb_status rb_world_step(rb_world *world, double dt);
 
-rb_status rb_world_set_gravity(rb_world *world, rb_vec2 gravity);
-rb_vec2 rb_world_gravity(const rb_world *world);
+RB_API rb_status rb_world_set_gravity(rb_world *world, rb_vec2 gravity);
+RB_API rb_vec2 rb_world_gravity(const rb_world *world);
 
-rb_status rb_world_set_solver_settings(rb_world *world, const rb_solver_settings *settings);
-rb_solver_settings rb_world_solver_settings(const rb_world *world);
+RB_API rb_status rb_world_set_solver_settings(rb_world *world, const rb_solver_settings *settings);
+RB_API rb_solver_settings rb_world_solver_settings(const rb_world *world);
 
 /* A function the step calls at the start of every substep, before
  * gravity and forces act, with the substep's index (0 .. substeps - 1)
@@ -178,24 +183,24 @@ rb_solver_settings rb_world_solver_settings(const rb_world *world);
 typedef void rb_substep_fn(rb_world *world, int substep, double h, void *context);
 
 /* Replaces the callback; NULL removes it. Not allowed during a step. */
-rb_status rb_world_set_substep_callback(rb_world *world, rb_substep_fn *callback, void *context);
+RB_API rb_status rb_world_set_substep_callback(rb_world *world, rb_substep_fn *callback, void *context);
 
 /* All zero while profiling is off. */
-rb_profile rb_world_profile(const rb_world *world);
-rb_status rb_world_enable_profile(rb_world *world, bool enable);
-rb_statistics rb_world_statistics(const rb_world *world);
+RB_API rb_profile rb_world_profile(const rb_world *world);
+RB_API rb_status rb_world_enable_profile(rb_world *world, bool enable);
+RB_API rb_statistics rb_world_statistics(const rb_world *world);
 
 /* Disabling sleep wakes every body. */
-rb_status rb_world_enable_sleep(rb_world *world, bool enable);
-bool rb_world_is_sleep_enabled(const rb_world *world);
+RB_API rb_status rb_world_enable_sleep(rb_world *world, bool enable);
+RB_API bool rb_world_is_sleep_enabled(const rb_world *world);
 
 /* Bytes this world holds now. */
-size_t rb_world_bytes_in_use(const rb_world *world);
+RB_API size_t rb_world_bytes_in_use(const rb_world *world);
 
 /* A 64-bit hash (FNV-1a) of the bit patterns of every body's position,
  * angle and velocities, in body order: equal hashes mean bit-identical
  * states. */
-uint64_t rb_world_state_hash(const rb_world *world);
+RB_API uint64_t rb_world_state_hash(const rb_world *world);
 
 /* Contacts, in the world's deterministic order. */
 typedef struct rb_contact_data {
@@ -206,8 +211,12 @@ typedef struct rb_contact_data {
     rb_manifold manifold; /* world-space manifold, normal from A to B */
 } rb_contact_data;
 
-int rb_world_contact_count(const rb_world *world);
+RB_API int rb_world_contact_count(const rb_world *world);
 /* Copies up to `capacity` contacts into out; returns how many it copied. */
-int rb_world_contacts(const rb_world *world, rb_contact_data *out, int capacity);
+RB_API int rb_world_contacts(const rb_world *world, rb_contact_data *out, int capacity);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

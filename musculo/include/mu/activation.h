@@ -18,7 +18,12 @@
 #ifndef MU_ACTIVATION_H
 #define MU_ACTIVATION_H
 
+#include "mu/export.h"
 #include "rb/base.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct mu_activation_params {
     double excitation;        /* u, in [0, 1]: held constant over a step */
@@ -27,11 +32,11 @@ typedef struct mu_activation_params {
 } mu_activation_params;
 
 /* Excitation 0 and the default time constants. */
-mu_activation_params mu_default_activation_params(void);
+MU_API mu_activation_params mu_default_activation_params(void);
 
 /* τ(a, u) in s for activation a in [0, 1] (clamped to it) under the
  * params' excitation. NaN (and an error) for NULL or invalid params. */
-double mu_activation_time_constant(double activation, const mu_activation_params *params);
+MU_API double mu_activation_time_constant(double activation, const mu_activation_params *params);
 
 /* The derivative function, in the shape of GSL's gsl_odeiv2_system
  * function so that GSL's integrators can run it directly: state y[0] = a,
@@ -39,7 +44,7 @@ double mu_activation_time_constant(double activation, const mu_activation_params
  * t is unused (the system is autonomous while u is held). Returns 0
  * (GSL_SUCCESS), or a non-zero status (RB_ERR_INVALID_ARGUMENT, which GSL
  * reports as a failed step) for NULL pointers or invalid params. */
-int mu_activation_derivative(double t, const double y[], double dydt[], void *params);
+MU_API int mu_activation_derivative(double t, const double y[], double dydt[], void *params);
 
 /* One step of h s from activation a (in [0, 1]) under the params'
  * excitation, by the exponential midpoint rule: τ is evaluated at the
@@ -49,6 +54,10 @@ int mu_activation_derivative(double t, const double y[], double dydt[], void *pa
  * so the step is stable for any h and never overshoots: a_next lies
  * between a and u (and in [0, 1]). Second order in h (the midpoint τ).
  * NaN (and an error) for invalid arguments. */
-double mu_activation_step(double activation, double h, const mu_activation_params *params);
+MU_API double mu_activation_step(double activation, double h, const mu_activation_params *params);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -15,7 +15,12 @@
 
 #include <stddef.h>
 
+#include "mu/export.h"
 #include "rb/base.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct mu_curves mu_curves;
 
@@ -33,7 +38,7 @@ typedef struct mu_analytic_curves {
     double passive_rate;      /* d, > 0, default 10 */
 } mu_analytic_curves;
 
-mu_analytic_curves mu_default_analytic_curves(void);
+MU_API mu_analytic_curves mu_default_analytic_curves(void);
 
 /* The seed's tables (Ross et al. 2018, digitised), read from the CSV file
  * `path` (columns curve,x,y; curves active_force_length,
@@ -41,25 +46,25 @@ mu_analytic_curves mu_default_analytic_curves(void);
  * curve), interpolated as asked and clamped to their end values outside.
  * A bad file fails with a message naming the file, the line and what was
  * expected. */
-rb_status mu_curves_create_tabulated(const char *path, mu_interpolation interpolation, mu_curves **out);
+MU_API rb_status mu_curves_create_tabulated(const char *path, mu_interpolation interpolation, mu_curves **out);
 
 /* The tables shipped in models/data/hill-curves.csv. */
-rb_status mu_curves_create_seed_tables(mu_interpolation interpolation, mu_curves **out);
+MU_API rb_status mu_curves_create_seed_tables(mu_interpolation interpolation, mu_curves **out);
 
-rb_status mu_curves_create_analytic(const mu_analytic_curves *parameters, mu_curves **out);
+MU_API rb_status mu_curves_create_analytic(const mu_analytic_curves *parameters, mu_curves **out);
 
 /* Accepts NULL. */
-void mu_curves_destroy(mu_curves *curves);
+MU_API void mu_curves_destroy(mu_curves *curves);
 
 /* The curves at a normalized length or velocity. Read-only: one set may
  * serve many muscles and threads. A NaN input, or NULL curves, gives NaN
  * (visible, rather than a plausible force). */
-double mu_curve_active_length(const mu_curves *curves, double normalized_length);
-double mu_curve_passive_length(const mu_curves *curves, double normalized_length);
-double mu_curve_velocity(const mu_curves *curves, double normalized_velocity);
+MU_API double mu_curve_active_length(const mu_curves *curves, double normalized_length);
+MU_API double mu_curve_passive_length(const mu_curves *curves, double normalized_length);
+MU_API double mu_curve_velocity(const mu_curves *curves, double normalized_velocity);
 /* d f_V / d ṽ at ṽ (>= 0): the muscle's damping, for the implicit solve.
  * A table's slope is 0 outside it and one side's slope at a linear knot. */
-double mu_curve_velocity_slope(const mu_curves *curves, double normalized_velocity);
+MU_API double mu_curve_velocity_slope(const mu_curves *curves, double normalized_velocity);
 
 /* Where the last look-ups fell in each table (GSL's gsl_interp_accel):
  * the next ones, a little away, skip the binary search. Zero-initialise
@@ -69,9 +74,13 @@ typedef struct mu_curve_hint {
     size_t interval[3]; /* per table: the knot that starts the last interval found */
 } mu_curve_hint;
 
-double mu_curve_active_length_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_length);
-double mu_curve_passive_length_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_length);
-double mu_curve_velocity_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity);
-double mu_curve_velocity_slope_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity);
+MU_API double mu_curve_active_length_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_length);
+MU_API double mu_curve_passive_length_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_length);
+MU_API double mu_curve_velocity_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity);
+MU_API double mu_curve_velocity_slope_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -20,7 +20,12 @@
 #ifndef MU_GEOMETRY_LENGTHS_H
 #define MU_GEOMETRY_LENGTHS_H
 
+#include "mu/export.h"
 #include "rb/base.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct mu_derived_lengths {
     double rest_length;   /* m, > 0: the fibres' optimal length l_opt */
@@ -31,7 +36,11 @@ typedef struct mu_derived_lengths {
  * > 0; pennation_angle: rad, in [0, MU_MAX_PENNATION_ANGLE), with
  * start_normalized_length·sin(MU_MAX_PENNATION_ANGLE) > sin(pennation_angle).
  * Fails with RB_ERR_INVALID_ARGUMENT naming the argument otherwise. */
-rb_status mu_lengths_from_geometry(double path_length, double tendon_fraction, double start_normalized_length,
-                                   double pennation_angle, mu_derived_lengths *out);
+MU_API rb_status mu_lengths_from_geometry(double path_length, double tendon_fraction, double start_normalized_length,
+                                          double pennation_angle, mu_derived_lengths *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -21,11 +21,16 @@
 
 #include <stdbool.h>
 
+#include "mu/export.h"
 #include "mu/model_desc.h"
 #include "mu/motor_pool.h"
 #include "mu/muscle.h"
 #include "mu/torque_actuator.h"
 #include "rb/rb.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct mu_model mu_model;
 
@@ -36,78 +41,82 @@ typedef struct mu_model_options {
     bool weld_glues;  /* keep glues as weld joints instead of merging (default false) */
 } mu_model_options;
 
-mu_model_options mu_default_model_options(void);
+MU_API mu_model_options mu_default_model_options(void);
 
 /* Builds the model; the description must outlive it. Fails with a message
  * naming the option or the object that could not be built. */
-rb_status mu_model_create(const mu_model_desc *desc, const mu_model_options *options, mu_model **out);
+MU_API rb_status mu_model_create(const mu_model_desc *desc, const mu_model_options *options, mu_model **out);
 /* Frees the model and its world. Accepts NULL. */
-void mu_model_destroy(mu_model *model);
+MU_API void mu_model_destroy(mu_model *model);
 
-rb_world *mu_model_world(mu_model *model);
-const mu_model_desc *mu_model_description(const mu_model *model);
+MU_API rb_world *mu_model_world(mu_model *model);
+MU_API const mu_model_desc *mu_model_description(const mu_model *model);
 
 /* Advances one frame: the model's substeps, one after the other. */
-rb_status mu_model_step(mu_model *model);
+MU_API rb_status mu_model_step(mu_model *model);
 /* Advances one substep (frame duration / substeps), for controls finer
  * than a frame (a pulse of 2 ms at 600 Hz is one substep): one engine
  * step of one substep. The solve is a frame's substep; collision runs
  * before each substep instead of once per frame, which a model whose
  * parts never touch (the built-in ones: bones are sensors) does not feel. */
-rb_status mu_model_substep(mu_model *model);
-double mu_model_time(const mu_model *model);             /* s since creation */
-double mu_model_frame_duration(const mu_model *model);   /* s */
-double mu_model_substep_duration(const mu_model *model); /* s */
+MU_API rb_status mu_model_substep(mu_model *model);
+MU_API double mu_model_time(const mu_model *model);             /* s since creation */
+MU_API double mu_model_frame_duration(const mu_model *model);   /* s */
+MU_API double mu_model_substep_duration(const mu_model *model); /* s */
 
 /* Controls, by muscle or group name (each muscle is also its own group):
  * every muscle of the group that exists in the built variant. */
-rb_status mu_model_set_activation(mu_model *model, const char *name, double activation);
-rb_status mu_model_set_tension(mu_model *model, const char *name, double newtons);
+MU_API rb_status mu_model_set_activation(mu_model *model, const char *name, double activation);
+MU_API rb_status mu_model_set_tension(mu_model *model, const char *name, double newtons);
 /* The same by index among the built muscles (0 .. mu_model_muscle_count - 1). */
-rb_status mu_model_set_activation_at(mu_model *model, int index, double activation);
-rb_status mu_model_set_tension_at(mu_model *model, int index, double newtons);
+MU_API rb_status mu_model_set_activation_at(mu_model *model, int index, double activation);
+MU_API rb_status mu_model_set_tension_at(mu_model *model, int index, double newtons);
 /* Mean activation of the group's built muscles; NaN with an error for an
  * unknown name. */
-double mu_model_group_activation(const mu_model *model, const char *name);
-rb_status mu_model_set_gravity(mu_model *model, rb_vec2 gravity);
+MU_API double mu_model_group_activation(const mu_model *model, const char *name);
+MU_API rb_status mu_model_set_gravity(mu_model *model, rb_vec2 gravity);
 
 /* The built muscles, in the description's order. */
-int mu_model_muscle_count(const mu_model *model);
-const char *mu_model_muscle_name(const mu_model *model, int index);
-mu_muscle_readout mu_model_muscle_readout(const mu_model *model, int index);
-const mu_muscle *mu_model_built_muscle(const mu_model *model, int index);
+MU_API int mu_model_muscle_count(const mu_model *model);
+MU_API const char *mu_model_muscle_name(const mu_model *model, int index);
+MU_API mu_muscle_readout mu_model_muscle_readout(const mu_model *model, int index);
+MU_API const mu_muscle *mu_model_built_muscle(const mu_model *model, int index);
 /* The warnings of the build (e.g. a muscle whose path is shorter than its
  * rest length starts below the asked normalized length): one per line. */
-const char *mu_model_warnings(const mu_model *model);
+MU_API const char *mu_model_warnings(const mu_model *model);
 
 /* The built hinges, in the description's order, with their joint angle
  * (degrees, angle(bone B) - angle(bone A), as the file's limits). */
-int mu_model_hinge_count(const mu_model *model);
-const char *mu_model_hinge_name(const mu_model *model, int index);
-double mu_model_hinge_angle(const mu_model *model, int index);
+MU_API int mu_model_hinge_count(const mu_model *model);
+MU_API const char *mu_model_hinge_name(const mu_model *model, int index);
+MU_API double mu_model_hinge_angle(const mu_model *model, int index);
 
 /* The built bones and nails, in the description's order (nails first),
  * with their pose: the centre (m) and angle (degrees) of the part itself,
  * also when merged into a compound body. */
-int mu_model_part_count(const mu_model *model);
-const char *mu_model_part_name(const mu_model *model, int index);
-rb_vec2 mu_model_part_centre(const mu_model *model, int index);
-double mu_model_part_angle(const mu_model *model, int index);
+MU_API int mu_model_part_count(const mu_model *model);
+MU_API const char *mu_model_part_name(const mu_model *model, int index);
+MU_API rb_vec2 mu_model_part_centre(const mu_model *model, int index);
+MU_API double mu_model_part_angle(const mu_model *model, int index);
 
 /* The built torque muscles (seed 001), in the description's order: each
  * a motor pool whose exertion drives a torque actuator, applied before
  * every step. Recruiting sets the number of neurons (clamped to the
  * pool), by name or by index (0 .. mu_model_torque_muscle_count - 1). */
-int mu_model_torque_muscle_count(const mu_model *model);
-const char *mu_model_torque_muscle_name(const mu_model *model, int index); /* NULL for a bad index */
-rb_status mu_model_recruit(mu_model *model, const char *name, int neurons);
-rb_status mu_model_recruit_at(mu_model *model, int index, int neurons);
+MU_API int mu_model_torque_muscle_count(const mu_model *model);
+MU_API const char *mu_model_torque_muscle_name(const mu_model *model, int index); /* NULL for a bad index */
+MU_API rb_status mu_model_recruit(mu_model *model, const char *name, int neurons);
+MU_API rb_status mu_model_recruit_at(mu_model *model, int index, int neurons);
 /* The pool (recruited count, exertion) and actuator (torque); NULL for a bad index. */
-const mu_motor_pool *mu_model_motor_pool(const mu_model *model, int index);
-const mu_torque_actuator *mu_model_torque_actuator(const mu_model *model, int index);
+MU_API const mu_motor_pool *mu_model_motor_pool(const mu_model *model, int index);
+MU_API const mu_torque_actuator *mu_model_torque_actuator(const mu_model *model, int index);
 
 /* Counts of the engine objects made: bodies, joints. */
-int mu_model_body_count(const mu_model *model);
-int mu_model_joint_count(const mu_model *model);
+MU_API int mu_model_body_count(const mu_model *model);
+MU_API int mu_model_joint_count(const mu_model *model);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -19,9 +19,14 @@
 
 #include <stdbool.h>
 
+#include "mu/export.h"
 #include "rb/base.h"
 #include "rb/cable.h"
 #include "rb/math.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* Most objects one list of a model file may hold. */
 #define MU_MODEL_MAX_OBJECTS 65535
@@ -199,27 +204,31 @@ typedef struct mu_model_desc {
 /* Reads and validates the model file `path`. On success *out owns a new
  * description (free it with mu_model_desc_destroy); on failure *out is
  * NULL and rb_last_error() says what is wrong and where. */
-rb_status mu_model_desc_load(const char *path, mu_model_desc **out);
+MU_API rb_status mu_model_desc_load(const char *path, mu_model_desc **out);
 
 /* Reads the built-in model `name` ("sample", "arm", "leg") from the
  * models/ directory of the source tree. */
-rb_status mu_model_desc_load_builtin(const char *name, mu_model_desc **out);
+MU_API rb_status mu_model_desc_load_builtin(const char *name, mu_model_desc **out);
 
 /* Accepts NULL. */
-void mu_model_desc_destroy(mu_model_desc *desc);
+MU_API void mu_model_desc_destroy(mu_model_desc *desc);
 
 /* Finds the object named `name` (any kind but variants): true and *out
  * filled, or false. */
-bool mu_model_desc_find(const mu_model_desc *desc, const char *name, mu_model_ref *out);
+MU_API bool mu_model_desc_find(const mu_model_desc *desc, const char *name, mu_model_ref *out);
 
 /* Index of the variant named `name`, or -1. */
-int mu_model_desc_find_variant(const mu_model_desc *desc, const char *name);
+MU_API int mu_model_desc_find_variant(const mu_model_desc *desc, const char *name);
 
 /* The name of an object. */
-const char *mu_model_desc_name_of(const mu_model_desc *desc, mu_model_ref ref);
+MU_API const char *mu_model_desc_name_of(const mu_model_desc *desc, mu_model_ref ref);
 
 /* Whether muscle (or bone) `index` exists in variant `variant`. */
-bool mu_model_variant_has_muscle(const mu_model_variant *variant, int index);
-bool mu_model_variant_has_bone(const mu_model_variant *variant, int index);
+MU_API bool mu_model_variant_has_muscle(const mu_model_variant *variant, int index);
+MU_API bool mu_model_variant_has_bone(const mu_model_variant *variant, int index);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

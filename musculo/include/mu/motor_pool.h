@@ -19,9 +19,14 @@
 #ifndef MU_MOTOR_POOL_H
 #define MU_MOTOR_POOL_H
 
+#include "mu/export.h"
 #include "mu/muscle.h"
 #include "mu/torque_actuator.h"
 #include "rb/base.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct mu_motor_pool mu_motor_pool;
 
@@ -31,52 +36,56 @@ typedef struct mu_motor_pool mu_motor_pool;
 /* A pool of `count` (1 .. MU_MAX_MOTOR_NEURONS) neurons of the given
  * strengths (arbitrary units, each finite and >= 0, their sum > 0), copied.
  * Nothing is recruited at first. */
-rb_status mu_motor_pool_create(const double *strengths, int count, mu_motor_pool **out);
+MU_API rb_status mu_motor_pool_create(const double *strengths, int count, mu_motor_pool **out);
 
 /* `count` neurons whose strengths rise exponentially from `weakest` to
  * `strongest` (0 < weakest <= strongest, finite):
  * s_i = weakest·(strongest/weakest)^(i/(count - 1)), a single neuron
  * having `weakest`. The seed's worm: 200 neurons from 1 to 100
  * (models.md "worm"), whose first 30 % give about 3 % of the force. */
-rb_status mu_motor_pool_create_exponential(int count, double weakest, double strongest, mu_motor_pool **out);
+MU_API rb_status mu_motor_pool_create_exponential(int count, double weakest, double strongest, mu_motor_pool **out);
 
 /* The seed's profile image: a PNG exactly 1 pixel high, one neuron per
  * pixel from left to right, strength = 255 − blue (white is 0, dark red
  * 255). A pixel with alpha is unpremultiplied first; a fully transparent
  * pixel counts as white. Errors name the file: unreadable or not a PNG,
  * not 1 pixel high, more than MU_MAX_MOTOR_NEURONS wide, all white. */
-rb_status mu_motor_pool_load_png(const char *path, mu_motor_pool **out);
+MU_API rb_status mu_motor_pool_load_png(const char *path, mu_motor_pool **out);
 
 /* Strengths as numbers separated by commas, spaces, tabs or line breaks,
  * in recruitment order; `#` starts a comment to the end of its line.
  * Errors name the file and the line. */
-rb_status mu_motor_pool_load_csv(const char *path, mu_motor_pool **out);
+MU_API rb_status mu_motor_pool_load_csv(const char *path, mu_motor_pool **out);
 
 /* Accepts NULL. */
-void mu_motor_pool_destroy(mu_motor_pool *pool);
+MU_API void mu_motor_pool_destroy(mu_motor_pool *pool);
 
-int mu_motor_pool_neuron_count(const mu_motor_pool *pool);
+MU_API int mu_motor_pool_neuron_count(const mu_motor_pool *pool);
 /* The strength of neuron `index`; NaN (and an error) for a bad index. */
-double mu_motor_pool_strength(const mu_motor_pool *pool, int index);
+MU_API double mu_motor_pool_strength(const mu_motor_pool *pool, int index);
 /* The sum of every strength, > 0. NaN for NULL. */
-double mu_motor_pool_total_strength(const mu_motor_pool *pool);
+MU_API double mu_motor_pool_total_strength(const mu_motor_pool *pool);
 
 /* Recruits the first n neurons; n is clamped to 0 .. count, as the
  * seed clamps it. */
-rb_status mu_motor_pool_recruit(mu_motor_pool *pool, int n);
+MU_API rb_status mu_motor_pool_recruit(mu_motor_pool *pool, int n);
 /* Recruits `delta` more neurons (fewer when negative), clamped to
  * 0 .. count: ±1 for one neuron, ±20 for the worm's keys. */
-rb_status mu_motor_pool_recruit_more(mu_motor_pool *pool, int delta);
+MU_API rb_status mu_motor_pool_recruit_more(mu_motor_pool *pool, int delta);
 /* How many neurons are recruited, 0 .. count; -1 for NULL. */
-int mu_motor_pool_recruited(const mu_motor_pool *pool);
+MU_API int mu_motor_pool_recruited(const mu_motor_pool *pool);
 /* e(recruited), in [0, 1]; NaN for NULL. */
-double mu_motor_pool_exertion(const mu_motor_pool *pool);
+MU_API double mu_motor_pool_exertion(const mu_motor_pool *pool);
 /* e(n) for n clamped to 0 .. count, without recruiting; NaN for NULL. */
-double mu_motor_pool_exertion_at(const mu_motor_pool *pool, int n);
+MU_API double mu_motor_pool_exertion_at(const mu_motor_pool *pool, int n);
 
 /* Sets the muscle's activation (mu_muscle_set_activation) to the exertion. */
-rb_status mu_motor_pool_drive_muscle(const mu_motor_pool *pool, mu_muscle *muscle);
+MU_API rb_status mu_motor_pool_drive_muscle(const mu_motor_pool *pool, mu_muscle *muscle);
 /* Sets the actuator's exertion (mu_torque_actuator_set_exertion) to it. */
-rb_status mu_motor_pool_drive_torque(const mu_motor_pool *pool, mu_torque_actuator *actuator);
+MU_API rb_status mu_motor_pool_drive_torque(const mu_motor_pool *pool, mu_torque_actuator *actuator);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -34,9 +34,14 @@
 
 #include "mu/activation.h"
 #include "mu/curves.h"
+#include "mu/export.h"
 #include "mu/pennation.h"
 #include "mu/tendon.h"
 #include "rb/rb.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct mu_muscle mu_muscle;
 
@@ -76,7 +81,7 @@ typedef struct mu_muscle_def {
     double fibre_damping;              /* β, > 0: damping per unit ṽ over Fmax; default 0.1 (Millard 2013) */
 } mu_muscle_def;
 
-mu_muscle_def mu_default_muscle_def(void);
+MU_API mu_muscle_def mu_default_muscle_def(void);
 
 /* Everything the muscle reports after a substep. Without pennation the
  * fibre is the belly; with a rigid tendon the tendon's length is fixed. */
@@ -98,38 +103,42 @@ typedef struct mu_muscle_readout {
     double pennation_angle;        /* rad, 0 .. MU_MAX_PENNATION_ANGLE */
 } mu_muscle_readout;
 
-rb_status mu_muscle_create(rb_world *world, const mu_muscle_def *def, mu_muscle **out);
+MU_API rb_status mu_muscle_create(rb_world *world, const mu_muscle_def *def, mu_muscle **out);
 /* Removes the muscle's cable from the world (if the world still holds
  * it) and frees the muscle. Accepts NULL. */
-void mu_muscle_destroy(mu_muscle *muscle, rb_world *world);
+MU_API void mu_muscle_destroy(mu_muscle *muscle, rb_world *world);
 
 /* Sets the activation (clamped to [0, 1]) and switches tension control
  * off; with activation dynamics it sets the excitation, which the
  * activation follows from the next substep. */
-rb_status mu_muscle_set_activation(mu_muscle *muscle, double activation);
+MU_API rb_status mu_muscle_set_activation(mu_muscle *muscle, double activation);
 /* Switches tension control on: each substep the activation (with
  * activation dynamics, the excitation) moves by gain·(target - active
  * force)/max force, clamped to [0, 1]; a target of 0 drives it to 0. */
-rb_status mu_muscle_set_target_tension(mu_muscle *muscle, double target);
+MU_API rb_status mu_muscle_set_target_tension(mu_muscle *muscle, double target);
 
 /* With a compliant tendon, puts the fibre at its static equilibrium (fibre
  * force·cos α = tendon force, at rest) for the present path and
  * activation, and refreshes the readout (its total force is then the
  * tendon's). With a rigid tendon the fibre has no state of its own: only
  * the readout is refreshed, at zero velocity. */
-rb_status mu_muscle_solve_equilibrium(mu_muscle *muscle, const rb_world *world);
+MU_API rb_status mu_muscle_solve_equilibrium(mu_muscle *muscle, const rb_world *world);
 
-double mu_muscle_max_force(const mu_muscle *muscle); /* N */
+MU_API double mu_muscle_max_force(const mu_muscle *muscle); /* N */
 /* m: the rigid tendon's length, or the compliant tendon's slack length. */
-double mu_muscle_tendon_length(const mu_muscle *muscle);
-rb_cable_id mu_muscle_cable(const mu_muscle *muscle);
+MU_API double mu_muscle_tendon_length(const mu_muscle *muscle);
+MU_API rb_cable_id mu_muscle_cable(const mu_muscle *muscle);
 
-rb_status mu_muscle_prepare(mu_muscle *muscle, rb_world *world, double h);
-rb_status mu_muscle_measure(mu_muscle *muscle, const rb_world *world);
+MU_API rb_status mu_muscle_prepare(mu_muscle *muscle, rb_world *world, double h);
+MU_API rb_status mu_muscle_measure(mu_muscle *muscle, const rb_world *world);
 /* mu_muscle_measure then mu_muscle_prepare, reading the path once: for
  * the start of every substep but the first, when the state the last
  * substep left is the one the next starts from. */
-rb_status mu_muscle_advance(mu_muscle *muscle, rb_world *world, double h);
-mu_muscle_readout mu_muscle_read(const mu_muscle *muscle);
+MU_API rb_status mu_muscle_advance(mu_muscle *muscle, rb_world *world, double h);
+MU_API mu_muscle_readout mu_muscle_read(const mu_muscle *muscle);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -16,28 +16,37 @@
 #ifndef MU_MUSCLE_STATICS_H
 #define MU_MUSCLE_STATICS_H
 
+#include "mu/export.h"
 #include "rb/base.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* The optimal sarcomere length the report normalizes to, m. */
 #define MU_OPTIMAL_SARCOMERE_LENGTH 2e-6
 
 /* N, from the physiological cross-section (m², >= 0) and the specific
  * tension (N/m², > 0). */
-double mu_max_force_from_pcsa(double pcsa, double specific_tension);
+MU_API double mu_max_force_from_pcsa(double pcsa, double specific_tension);
 
 /* m², from the muscle's volume (m³, >= 0) and its resting fibre length
  * (m, > 0). */
-double mu_pcsa_from_volume(double volume, double fibre_length);
+MU_API double mu_pcsa_from_volume(double volume, double fibre_length);
 
 /* m², from the anatomical cross-section (m², >= 0) and the pennation
  * angle (rad, in [0, π/2)). */
-double mu_pcsa_from_anatomical(double anatomical_cross_section, double pennation_angle);
+MU_API double mu_pcsa_from_anatomical(double anatomical_cross_section, double pennation_angle);
 
 /* m: the resting fibre length of `sarcomeres` (> 0) optimal sarcomeres. */
-double mu_fibre_length_from_sarcomeres(double sarcomeres);
+MU_API double mu_fibre_length_from_sarcomeres(double sarcomeres);
 
 /* m: a fibre length measured (m, > 0) with sarcomeres of the measured
  * length (m, > 0), scaled to optimal sarcomeres. */
-double mu_fibre_length_normalized(double measured_fibre_length, double measured_sarcomere_length);
+MU_API double mu_fibre_length_normalized(double measured_fibre_length, double measured_sarcomere_length);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

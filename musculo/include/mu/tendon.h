@@ -20,17 +20,26 @@
 #ifndef MU_TENDON_H
 #define MU_TENDON_H
 
+#include "mu/export.h"
 #include "rb/base.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* The default strain at the maximal isometric force. */
 #define MU_DEFAULT_TENDON_STRAIN_AT_MAX_FORCE 0.049
 
 /* f_T(ε) >= 0 for a curve reaching 1 at strain_at_max_force (ε0, in
  * (0, 1]). NaN (and an error) for a NaN strain or an ε0 out of range. */
-double mu_tendon_force(double strain, double strain_at_max_force);
+MU_API double mu_tendon_force(double strain, double strain_at_max_force);
 
 /* d f_T/dε >= 0 (per unit strain), 0 while slack. NaN (and an error) as
  * mu_tendon_force. */
-double mu_tendon_stiffness(double strain, double strain_at_max_force);
+MU_API double mu_tendon_stiffness(double strain, double strain_at_max_force);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -14,7 +14,12 @@
 
 #include <stdbool.h>
 
+#include "mu/export.h"
 #include "rb/rb.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct mu_torque_actuator mu_torque_actuator;
 
@@ -26,23 +31,28 @@ typedef struct mu_torque_actuator_def {
 } mu_torque_actuator_def;
 
 /* Null bodies, peak torque 0. */
-mu_torque_actuator_def mu_default_torque_actuator_def(void);
+MU_API mu_torque_actuator_def mu_default_torque_actuator_def(void);
 
 /* Checks that the bodies exist in the world and differ, and that the peak
  * torque is finite. The exertion starts at 0. */
-rb_status mu_torque_actuator_create(const rb_world *world, const mu_torque_actuator_def *def, mu_torque_actuator **out);
+MU_API rb_status mu_torque_actuator_create(const rb_world *world, const mu_torque_actuator_def *def,
+                                           mu_torque_actuator **out);
 /* Accepts NULL. */
-void mu_torque_actuator_destroy(mu_torque_actuator *actuator);
+MU_API void mu_torque_actuator_destroy(mu_torque_actuator *actuator);
 
 /* The share of the peak torque, in [0, 1]. */
-rb_status mu_torque_actuator_set_exertion(mu_torque_actuator *actuator, double exertion);
-double mu_torque_actuator_exertion(const mu_torque_actuator *actuator); /* NaN for NULL */
+MU_API rb_status mu_torque_actuator_set_exertion(mu_torque_actuator *actuator, double exertion);
+MU_API double mu_torque_actuator_exertion(const mu_torque_actuator *actuator); /* NaN for NULL */
 /* N·m: exertion · peak_torque, on the body (its reaction on the other). NaN for NULL. */
-double mu_torque_actuator_torque(const mu_torque_actuator *actuator);
-double mu_torque_actuator_peak_torque(const mu_torque_actuator *actuator); /* N·m; NaN for NULL */
+MU_API double mu_torque_actuator_torque(const mu_torque_actuator *actuator);
+MU_API double mu_torque_actuator_peak_torque(const mu_torque_actuator *actuator); /* N·m; NaN for NULL */
 
 /* Adds the torque to the body and its opposite to the reaction body for
  * the next step. A static or kinematic body takes none (the engine's rule). */
-rb_status mu_torque_actuator_apply(const mu_torque_actuator *actuator, rb_world *world);
+MU_API rb_status mu_torque_actuator_apply(const mu_torque_actuator *actuator, rb_world *world);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif
