@@ -24,6 +24,7 @@ packages=(
     xdotool          # the viewer's input test types keys and moves the mouse on that display
     clang-format     # formatting check in tools/check.sh
     valgrind         # memory and cache profiling
+    doxygen          # the API reference from the headers (cmake --build ... --target docs)
 )
 # ---- Only with --peers: the peer engines' benchmark harnesses. ------------
 peer_packages=(
