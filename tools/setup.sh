@@ -5,8 +5,9 @@
 #   tools/setup.sh           the project's packages
 #   tools/setup.sh --peers   also what ../shared/peers needs (Box2D, Chipmunk2D, C++)
 #
-# Idempotent: when every package is installed it does nothing (no apt-get
-# update) and says so. Needs root, or sudo for a normal user.
+# Idempotent: when every package is installed and the test locale exists it
+# does nothing (no apt-get update) and says so. Needs root, or sudo for a
+# normal user.
 set -euo pipefail
 
 # ---- The project's packages: add new dependencies here, one list. ----------
@@ -25,6 +26,7 @@ packages=(
     clang-format     # formatting check in tools/check.sh
     valgrind         # memory and cache profiling
     doxygen          # the API reference from the headers (cmake --build ... --target docs)
+    locales          # de_DE.UTF-8, a decimal-comma locale the locale test runs under (generated below)
 )
 # ---- Only with --peers: the peer engines' benchmark harnesses. ------------
 peer_packages=(
@@ -69,23 +71,48 @@ for pkg in "${want[@]}"; do
     fi
 done
 
-if ((${#missing[@]} == 0)); then
-    echo "setup.sh: all packages present"
+# The locale test (tests/test_locale.c) runs sinew under a locale whose
+# decimal point is a comma; Debian ships the locales package with every
+# locale commented out of /etc/locale.gen, so it is generated here.
+test_locale=de_DE.UTF-8
+have_test_locale()
+{
+    # `locale -a` spells it de_DE.utf8.
+    locale -a 2>/dev/null | grep -qix 'de_DE\.utf-\{0,1\}8'
+}
+
+if ((${#missing[@]} == 0)) && have_test_locale; then
+    echo "setup.sh: all packages present, locale $test_locale present"
     exit 0
 fi
-
-echo "setup.sh: missing: ${missing[*]}"
 
 if ((EUID == 0)); then
     as_root=()
 elif command -v sudo >/dev/null 2>&1; then
     as_root=(sudo)
 else
-    echo "setup.sh: need root to install packages, and sudo is not available." >&2
+    echo "setup.sh: need root to install packages or generate a locale, and sudo is not available." >&2
     echo "setup.sh: run as root: apt-get update && apt-get install -y --no-install-recommends ${missing[*]}" >&2
+    echo "setup.sh: and generate $test_locale (uncomment it in /etc/locale.gen, run locale-gen)" >&2
     exit 1
 fi
 
-"${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update
-"${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
-echo "setup.sh: installed: ${missing[*]}"
+if ((${#missing[@]} > 0)); then
+    echo "setup.sh: missing: ${missing[*]}"
+    "${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update
+    "${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
+    echo "setup.sh: installed: ${missing[*]}"
+fi
+
+if ! have_test_locale; then
+    "${as_root[@]}" sed -i "s/^# *\($test_locale UTF-8\)/\1/" /etc/locale.gen
+    if ! grep -qx "$test_locale UTF-8" /etc/locale.gen; then
+        echo "$test_locale UTF-8" | "${as_root[@]}" tee -a /etc/locale.gen >/dev/null
+    fi
+    "${as_root[@]}" locale-gen
+    have_test_locale || {
+        echo "setup.sh: locale-gen did not make $test_locale" >&2
+        exit 1
+    }
+    echo "setup.sh: generated locale $test_locale"
+fi
