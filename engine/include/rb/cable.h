@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Cables: a path of points fixed on bodies (origin, via points,
+/** @file
+ * Cables: a path of points fixed on bodies (origin, via points,
  * insertion) that carries a tension, as a muscle-tendon unit or a rope
  * over pulleys does.
  *
@@ -32,36 +33,37 @@ extern "C" {
 #define RB_MAX_CABLE_POINTS 8
 
 typedef struct rb_cable_def {
-    int point_count;                           /* 2 .. RB_MAX_CABLE_POINTS */
-    rb_body_id bodies[RB_MAX_CABLE_POINTS];    /* the body of each point, in path order */
-    rb_vec2 local_points[RB_MAX_CABLE_POINTS]; /* m, each point in its body's frame (from the origin) */
+    int point_count;                           /**< 2 .. RB_MAX_CABLE_POINTS */
+    rb_body_id bodies[RB_MAX_CABLE_POINTS];    /**< the body of each point, in path order */
+    rb_vec2 local_points[RB_MAX_CABLE_POINTS]; /**< m, each point in its body's frame (from the origin) */
     void *user_data;
 } rb_cable_def;
 
 RB_API rb_cable_def rb_default_cable_def(void);
 
-/* Fails when a body id is invalid, a point is not finite, the count is out
+/** Fails when a body id is invalid, a point is not finite, the count is out
  * of range, or two consecutive points coincide (the direction between
  * them would be undefined). */
 RB_API rb_status rb_cable_create(rb_world *world, const rb_cable_def *def, rb_cable_id *out);
 RB_API rb_status rb_cable_destroy(rb_world *world, rb_cable_id cable);
 RB_API bool rb_cable_is_valid(const rb_world *world, rb_cable_id cable);
 
-/* The tension law for the following steps: base_tension (N, finite) and
+/** The tension law for the following steps: base_tension (N, finite) and
  * damping (N·s/m, >= 0, finite). Both 0 (the default): a slack cable.
  * Wakes the cable's bodies and restarts their time at rest: a cable
  * driven by a law set every substep keeps them awake. */
 RB_API rb_status rb_cable_set_tension_law(rb_world *world, rb_cable_id cable, double base_tension, double damping);
 
-/* Length (m) and lengthening speed (m/s, < 0 while shortening) now, in
+/** Length (m) and lengthening speed (m/s, < 0 while shortening) now, in
  * one pass over the path. */
 RB_API rb_status rb_cable_state(const rb_world *world, rb_cable_id cable, double *length, double *lengthening_speed);
-RB_API double rb_cable_length(const rb_world *world, rb_cable_id cable);            /* m, now */
-RB_API double rb_cable_lengthening_speed(const rb_world *world, rb_cable_id cable); /* m/s, now; < 0 while shortening */
-/* The tension (N, >= 0) the cable carried in the last substep: what the
+RB_API double rb_cable_length(const rb_world *world, rb_cable_id cable); /**< m, now */
+RB_API double rb_cable_lengthening_speed(const rb_world *world,
+                                         rb_cable_id cable); /**< m/s, now; < 0 while shortening */
+/** The tension (N, >= 0) the cable carried in the last substep: what the
  * solver applied; between bodies that cannot move, the law at rest. */
 RB_API double rb_cable_tension(const rb_world *world, rb_cable_id cable);
-/* The world positions of the path's points now; returns the count. */
+/** The world positions of the path's points now; returns the count. */
 RB_API int rb_cable_points(const rb_world *world, rb_cable_id cable, rb_vec2 *out, int capacity);
 
 #ifdef __cplusplus

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Narrow phase: contact manifolds between two shapes.
+/** @file
+ * Narrow phase: contact manifolds between two shapes.
  *
  * Pure functions of two shapes and their body transforms. The manifold
  * normal points from shape A to shape B; each point lies midway between
@@ -26,24 +27,24 @@ extern "C" {
 #define RB_MAX_MANIFOLD_POINTS 2
 
 typedef struct rb_manifold_point {
-    rb_vec2 point;          /* m, world, midway between the two surfaces */
-    double separation;      /* m, negative when overlapping */
-    uint32_t id;            /* feature id, see rb_feature_id */
-    double normal_impulse;  /* N·s, impulse the solver applied along the normal in the last step */
-    double tangent_impulse; /* N·s, friction impulse of the last step */
+    rb_vec2 point;          /**< m, world, midway between the two surfaces */
+    double separation;      /**< m, negative when overlapping */
+    uint32_t id;            /**< feature id, see rb_feature_id */
+    double normal_impulse;  /**< N·s, impulse the solver applied along the normal in the last step */
+    double tangent_impulse; /**< N·s, friction impulse of the last step */
 } rb_manifold_point;
 
 typedef struct rb_manifold {
-    rb_vec2 normal; /* unit, world, from shape A to shape B */
+    rb_vec2 normal; /**< unit, world, from shape A to shape B */
     rb_manifold_point points[RB_MAX_MANIFOLD_POINTS];
-    int point_count; /* 0 .. 2 */
-    /* Between outlines (polygons, segments): the normal is the outward
+    int point_count; /**< 0 .. 2 */
+    /** Between outlines (polygons, segments): the normal is the outward
      * normal of shape B's reference face, reversed, rather than of shape
      * A's. Always false when a circle is involved. */
     bool reference_on_b;
 } rb_manifold;
 
-/* A feature id names the two vertices, one on each shape, that made a
+/** A feature id names the two vertices, one on each shape, that made a
  * point between outlines: the incident vertex the point comes from, and
  * the end of the reference face on that vertex's side (its side plane
  * cuts the incident edge there when the vertex lies beyond it). The pair
@@ -68,7 +69,7 @@ RB_API rb_manifold rb_collide_polygon_and_circle(const rb_polygon *a, rb_transfo
 RB_API rb_manifold rb_collide_polygons(const rb_polygon *a, rb_transform xfa, const rb_polygon *b, rb_transform xfb,
                                        double speculative_distance);
 
-/* Segments against circles and polygons, the segment always shape A.
+/** Segments against circles and polygons, the segment always shape A.
  * Against a polygon the segment is a two-vertex outline whose edge 0
  * runs from point1 to point2 (right normal) and edge 1 back (left
  * normal), so feature ids and reference faces follow the polygon rules
@@ -78,7 +79,7 @@ RB_API rb_manifold rb_collide_segment_and_circle(const rb_segment *a, rb_transfo
 RB_API rb_manifold rb_collide_segment_and_polygon(const rb_segment *a, rb_transform xfa, const rb_polygon *b,
                                                   rb_transform xfb, double speculative_distance);
 
-/* Chain segments: one-sided (only shapes in front of the left normal
+/** Chain segments: one-sided (only shapes in front of the left normal
  * collide; a circle whose centre, or a polygon whose centroid, is behind
  * the line gets no points) and smoothed by the ghost vertices. A circle
  * beyond a joint belongs to the neighbour: the segment reports a point

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Debug drawing through callbacks: the engine says what to draw, the
+/** @file
+ * Debug drawing through callbacks: the engine says what to draw, the
  * caller draws it (Cairo figure, GTK viewer, a test that counts calls).
  * Every callback may be NULL. Colours are 0xRRGGBB.
  */
@@ -18,44 +19,44 @@ extern "C" {
 #endif
 
 typedef struct rb_debug_draw {
-    /* A closed convex polygon in world coordinates. */
+    /** A closed convex polygon in world coordinates. */
     void (*draw_polygon)(const rb_vec2 *vertices, int count, uint32_t color, void *context);
-    /* A circle; `axis` is a unit vector showing the body's rotation. */
+    /** A circle; `axis` is a unit vector showing the body's rotation. */
     void (*draw_circle)(rb_vec2 center, double radius, rb_vec2 axis, uint32_t color, void *context);
-    /* A line: segment shapes (in their shape colour), normals, joints. */
+    /** A line: segment shapes (in their shape colour), normals, joints. */
     void (*draw_segment)(rb_vec2 p1, rb_vec2 p2, uint32_t color, void *context);
-    /* A point of `size` pixels. */
+    /** A point of `size` pixels. */
     void (*draw_point)(rb_vec2 p, double size, uint32_t color, void *context);
-    /* A frame: the x axis red, the y axis green. */
+    /** A frame: the x axis red, the y axis green. */
     void (*draw_transform)(rb_transform xf, void *context);
 
     bool draw_shapes;
     bool draw_aabbs;
-    bool draw_mass; /* centre of mass as a transform */
+    bool draw_mass; /**< centre of mass as a transform */
     bool draw_contact_points;
-    /* With draw_contact_points: each point in the colour its constraint
+    /** With draw_contact_points: each point in the colour its constraint
      * was solved in at the last step (rb_constraint_colour_rgb), so that
      * the graph colouring shows; contacts not solved keep
      * RB_COLOR_CONTACT_POINT. */
     bool draw_contact_colours;
     bool draw_contact_normals;
-    bool draw_contact_impulses; /* normal impulse as a segment along the normal */
-    /* Anchors, segments from each body's centre to its anchor, and each
+    bool draw_contact_impulses; /**< normal impulse as a segment along the normal */
+    /** Anchors, segments from each body's centre to its anchor, and each
      * type's lines: a distance or mouse link, a prismatic slide from
      * anchor A to anchor B with a tick across the axis at each enabled
      * limit, a pulley's rope over its two ground anchors, revolute limit
      * rays. */
     bool draw_joints;
-    bool draw_joint_reactions; /* reaction force on body B as a segment from its anchor */
-    double force_scale;        /* m per N for reaction forces, default 0.01 */
-    double impulse_scale;      /* m per N·s for impulses, default 0.1 */
-    double normal_length;      /* m, default 0.1 */
+    bool draw_joint_reactions; /**< reaction force on body B as a segment from its anchor */
+    double force_scale;        /**< m per N for reaction forces, default 0.01 */
+    double impulse_scale;      /**< m per N·s for impulses, default 0.1 */
+    double normal_length;      /**< m, default 0.1 */
     void *context;
 } rb_debug_draw;
 
 RB_API rb_debug_draw rb_default_debug_draw(void);
 
-/* Colours used, so a test or a legend can name them. */
+/** Colours used, so a test or a legend can name them. */
 enum {
     RB_COLOR_STATIC = 0x80e080,
     RB_COLOR_KINEMATIC = 0x8080e0,
@@ -71,7 +72,7 @@ enum {
     RB_COLOR_JOINT_REACTION = 0xff40ff,
 };
 
-/* The colour that draws constraint colour `colour` (0 .. 63, or 64 for
+/** The colour that draws constraint colour `colour` (0 .. 63, or 64 for
  * the overflow colour): a palette of RB_CONSTRAINT_PALETTE_SIZE colours in
  * turn, white for overflow; any other value (a contact not solved, -1)
  * gets RB_COLOR_CONTACT_POINT. */

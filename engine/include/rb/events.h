@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Contact and sensor events, and the pre-solve filter.
+/** @file
+ * Contact and sensor events, and the pre-solve filter.
  *
  * Events are read after a step, never delivered by callback: the step
  * records them, and rb_world_contact_events / rb_world_sensor_events
@@ -33,7 +34,7 @@ extern "C" {
 
 typedef struct rb_contact_begin_event {
     rb_shape_id shape_a, shape_b;
-    /* As the narrow phase found it before this step's solve (impulses
+    /** As the narrow phase found it before this step's solve (impulses
      * are last step's, zero for a new contact); normal from A to B. */
     rb_manifold manifold;
 } rb_contact_begin_event;
@@ -49,7 +50,7 @@ typedef struct rb_contact_events {
     int end_count;
 } rb_contact_events;
 
-/* A non-sensor shape (the visitor) began or stopped overlapping a sensor. */
+/** A non-sensor shape (the visitor) began or stopped overlapping a sensor. */
 typedef struct rb_sensor_event {
     rb_shape_id sensor_shape;
     rb_shape_id visitor_shape;
@@ -62,12 +63,12 @@ typedef struct rb_sensor_events {
     int end_count;
 } rb_sensor_events;
 
-/* The events of the last step (all empty before the first). A NULL world
+/** The events of the last step (all empty before the first). A NULL world
  * gives empty arrays and an error. */
 RB_API rb_contact_events rb_world_contact_events(const rb_world *world);
 RB_API rb_sensor_events rb_world_sensor_events(const rb_world *world);
 
-/* Called during the step for every non-sensor contact that has manifold
+/** Called during the step for every non-sensor contact that has manifold
  * points (speculative ones too: they push as well), after the narrow
  * phase and before the solver. Return false to disable the contact for
  * this step: its points are dropped, so it pushes nothing, carries no
@@ -76,7 +77,7 @@ RB_API rb_sensor_events rb_world_sensor_events(const rb_world *world);
  * locked: the function may read it, not change it. */
 typedef bool rb_pre_solve_fn(rb_shape_id shape_a, rb_shape_id shape_b, const rb_manifold *manifold, void *context);
 
-/* Registers the pre-solve filter (NULL removes it); `context` is passed
+/** Registers the pre-solve filter (NULL removes it); `context` is passed
  * back to it. */
 RB_API rb_status rb_world_set_pre_solve(rb_world *world, rb_pre_solve_fn *fn, void *context);
 

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* RB_API marks every function of the engine's public API.
+/** @file
+ * RB_API marks every function of the engine's public API.
  *
  * The libraries are compiled with hidden visibility (-fvisibility=hidden),
  * so a shared librb.so exports exactly the functions marked here and keeps

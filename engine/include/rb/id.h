@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Handles to the objects of a world.
+/** @file
+ * Handles to the objects of a world.
  *
  * An id is a slot index, the generation of the slot (bumped each time
  * the slot is freed) and the serial number of the world that made it.

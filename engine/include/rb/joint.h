@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Joints: constraints between two bodies, solved with the contacts by
+/** @file
+ * Joints: constraints between two bodies, solved with the contacts by
  * sequential impulses (warm started), their drift removed by the world's
  * position-correction method.
  *
@@ -28,50 +29,50 @@ extern "C" {
 #endif
 
 typedef enum rb_joint_type {
-    RB_JOINT_REVOLUTE,  /* a pin: the anchors coincide, the bodies turn freely about it */
-    RB_JOINT_WELD,      /* the relative pose is frozen (the seed's glue) */
-    RB_JOINT_DISTANCE,  /* bar, spring or rope between the anchors */
-    RB_JOINT_MOUSE,     /* pulls a body point towards a target with a bounded force */
-    RB_JOINT_PRISMATIC, /* body B slides along an axis fixed in body A, without turning */
-    RB_JOINT_PULLEY,    /* a rope over two fixed pulleys: length_a + ratio·length_b at most a constant */
+    RB_JOINT_REVOLUTE,  /**< a pin: the anchors coincide, the bodies turn freely about it */
+    RB_JOINT_WELD,      /**< the relative pose is frozen (a model file's glue) */
+    RB_JOINT_DISTANCE,  /**< bar, spring or rope between the anchors */
+    RB_JOINT_MOUSE,     /**< pulls a body point towards a target with a bounded force */
+    RB_JOINT_PRISMATIC, /**< body B slides along an axis fixed in body A, without turning */
+    RB_JOINT_PULLEY,    /**< a rope over two fixed pulleys: length_a + ratio·length_b at most a constant */
 } rb_joint_type;
 
 /* ---- revolute ------------------------------------------------------------ */
 
 typedef struct rb_revolute_joint_def {
     rb_body_id body_a, body_b;
-    rb_vec2 local_anchor_a; /* m, in body A's frame */
-    rb_vec2 local_anchor_b; /* m, in body B's frame */
-    double reference_angle; /* rad: angle(B) - angle(A) at which the joint angle is 0 */
-    /* Limits on the joint angle; each side is enabled alone (the leg's
+    rb_vec2 local_anchor_a; /**< m, in body A's frame */
+    rb_vec2 local_anchor_b; /**< m, in body B's frame */
+    double reference_angle; /**< rad: angle(B) - angle(A) at which the joint angle is 0 */
+    /** Limits on the joint angle; each side is enabled alone (the leg's
      * ankle has only a lower limit). lower <= upper when both are on. */
     bool enable_lower_limit, enable_upper_limit;
-    double lower_angle, upper_angle; /* rad */
-    /* Motor: drives the joint speed to motor_speed with at most
+    double lower_angle, upper_angle; /**< rad */
+    /** Motor: drives the joint speed to motor_speed with at most
      * max_motor_torque. */
     bool enable_motor;
-    double motor_speed;      /* rad/s, finite */
-    double max_motor_torque; /* N·m, >= 0 */
-    /* Spring: pulls the joint angle towards 0 (the reference angle). */
+    double motor_speed;      /**< rad/s, finite */
+    double max_motor_torque; /**< N·m, >= 0 */
+    /** Spring: pulls the joint angle towards 0 (the reference angle). */
     bool enable_spring;
-    double spring_hertz;         /* Hz, >= 0 */
-    double spring_damping_ratio; /* >= 0 */
-    bool collide_connected;      /* whether the two bodies' shapes still collide (default false) */
+    double spring_hertz;         /**< Hz, >= 0 */
+    double spring_damping_ratio; /**< >= 0 */
+    bool collide_connected;      /**< whether the two bodies' shapes still collide (default false) */
     void *user_data;
 } rb_revolute_joint_def;
 
 RB_API rb_revolute_joint_def rb_default_revolute_joint_def(void);
 
-/* Fills bodies, local anchors and the reference angle so that the joint
+/** Fills bodies, local anchors and the reference angle so that the joint
  * pins the two bodies at `world_anchor` in their current poses. */
 RB_API rb_status rb_revolute_joint_def_at(rb_revolute_joint_def *def, const rb_world *world, rb_body_id body_a,
                                           rb_body_id body_b, rb_vec2 world_anchor);
 
 RB_API rb_status rb_revolute_joint_create(rb_world *world, const rb_revolute_joint_def *def, rb_joint_id *out);
 
-RB_API double rb_revolute_joint_angle(const rb_world *world, rb_joint_id joint); /* rad */
-RB_API double rb_revolute_joint_speed(const rb_world *world, rb_joint_id joint); /* rad/s, ωB - ωA */
-/* The torque the motor applied in the last step (N·m). */
+RB_API double rb_revolute_joint_angle(const rb_world *world, rb_joint_id joint); /**< rad */
+RB_API double rb_revolute_joint_speed(const rb_world *world, rb_joint_id joint); /**< rad/s, ωB - ωA */
+/** The torque the motor applied in the last step (N·m). */
 RB_API double rb_revolute_joint_motor_torque(const rb_world *world, rb_joint_id joint);
 RB_API rb_status rb_revolute_joint_set_motor(rb_world *world, rb_joint_id joint, bool enable, double speed,
                                              double max_torque);
@@ -84,18 +85,18 @@ RB_API rb_status rb_revolute_joint_set_spring(rb_world *world, rb_joint_id joint
 
 typedef struct rb_weld_joint_def {
     rb_body_id body_a, body_b;
-    rb_vec2 local_anchor_a, local_anchor_b; /* m */
-    double reference_angle;                 /* rad, angle(B) - angle(A) held */
-    /* 0 Hz means rigid; a positive frequency makes that part soft. */
-    double linear_hertz, linear_damping_ratio;   /* Hz >= 0, >= 0 */
-    double angular_hertz, angular_damping_ratio; /* Hz >= 0, >= 0 */
+    rb_vec2 local_anchor_a, local_anchor_b; /**< m */
+    double reference_angle;                 /**< rad, angle(B) - angle(A) held */
+    /** 0 Hz means rigid; a positive frequency makes that part soft. */
+    double linear_hertz, linear_damping_ratio;   /**< Hz >= 0, >= 0 */
+    double angular_hertz, angular_damping_ratio; /**< Hz >= 0, >= 0 */
     bool collide_connected;
     void *user_data;
 } rb_weld_joint_def;
 
 RB_API rb_weld_joint_def rb_default_weld_joint_def(void);
 
-/* Fills bodies, anchors and reference angle so that the joint freezes the
+/** Fills bodies, anchors and reference angle so that the joint freezes the
  * two bodies' current relative pose about `world_anchor`. */
 RB_API rb_status rb_weld_joint_def_at(rb_weld_joint_def *def, const rb_world *world, rb_body_id body_a,
                                       rb_body_id body_b, rb_vec2 world_anchor);
@@ -106,42 +107,42 @@ RB_API rb_status rb_weld_joint_create(rb_world *world, const rb_weld_joint_def *
 
 typedef struct rb_distance_joint_def {
     rb_body_id body_a, body_b;
-    rb_vec2 local_anchor_a, local_anchor_b; /* m */
-    double length;                          /* m, > 0: the bar's length, or the spring's rest length */
-    /* Without the spring the joint is a rigid bar of `length`. With it the
+    rb_vec2 local_anchor_a, local_anchor_b; /**< m */
+    double length;                          /**< m, > 0: the bar's length, or the spring's rest length */
+    /** Without the spring the joint is a rigid bar of `length`. With it the
      * anchors are pulled towards `length` by a spring of spring_hertz (0: no
      * pull at all, as a rope). */
     bool enable_spring;
-    double spring_hertz;         /* Hz, >= 0 */
-    double spring_damping_ratio; /* >= 0 */
-    /* Limits keep the distance in [min_length, max_length] whatever the
+    double spring_hertz;         /**< Hz, >= 0 */
+    double spring_damping_ratio; /**< >= 0 */
+    /** Limits keep the distance in [min_length, max_length] whatever the
      * spring does: a rope is enable_spring with 0 Hz and a max_length. */
     bool enable_limit;
-    double min_length, max_length; /* m, 0 <= min <= max */
+    double min_length, max_length; /**< m, 0 <= min <= max */
     bool collide_connected;
     void *user_data;
 } rb_distance_joint_def;
 
 RB_API rb_distance_joint_def rb_default_distance_joint_def(void);
 
-/* Fills bodies and anchors from two world points, and sets length,
+/** Fills bodies and anchors from two world points, and sets length,
  * min_length and max_length to their current distance. */
 RB_API rb_status rb_distance_joint_def_between(rb_distance_joint_def *def, const rb_world *world, rb_body_id body_a,
                                                rb_body_id body_b, rb_vec2 world_anchor_a, rb_vec2 world_anchor_b);
 
 RB_API rb_status rb_distance_joint_create(rb_world *world, const rb_distance_joint_def *def, rb_joint_id *out);
 
-RB_API double rb_distance_joint_current_length(const rb_world *world, rb_joint_id joint); /* m */
+RB_API double rb_distance_joint_current_length(const rb_world *world, rb_joint_id joint); /**< m */
 
 /* ---- mouse --------------------------------------------------------------- */
 
 typedef struct rb_mouse_joint_def {
-    rb_body_id body;      /* the dragged body (dynamic) */
-    rb_vec2 local_anchor; /* m, the dragged point in the body's frame */
-    rb_vec2 target;       /* m, world */
-    double max_force;     /* N, >= 0 */
-    double hertz;         /* Hz, > 0, default 5 */
-    double damping_ratio; /* >= 0, default 0.7 */
+    rb_body_id body;      /**< the dragged body (dynamic) */
+    rb_vec2 local_anchor; /**< m, the dragged point in the body's frame */
+    rb_vec2 target;       /**< m, world */
+    double max_force;     /**< N, >= 0 */
+    double hertz;         /**< Hz, > 0, default 5 */
+    double damping_ratio; /**< >= 0, default 0.7 */
     void *user_data;
 } rb_mouse_joint_def;
 
@@ -151,35 +152,35 @@ RB_API rb_status rb_mouse_joint_set_target(rb_world *world, rb_joint_id joint, r
 
 /* ---- prismatic ------------------------------------------------------------ */
 
-/* Body B slides along an axis fixed in body A through anchor A; the
+/** Body B slides along an axis fixed in body A through anchor A; the
  * relative angle is held at the reference angle. The joint translation
  * is s = (anchor B - anchor A)·axis (m), 0 where the anchors coincide. */
 typedef struct rb_prismatic_joint_def {
     rb_body_id body_a, body_b;
-    rb_vec2 local_anchor_a; /* m, in body A's frame */
-    rb_vec2 local_anchor_b; /* m, in body B's frame */
-    rb_vec2 local_axis_a;   /* in body A's frame: any non-zero finite vector, normalised on creation; default (1, 0) */
-    double reference_angle; /* rad: angle(B) - angle(A) held */
-    /* Limits on the translation; each side is enabled alone. lower <=
+    rb_vec2 local_anchor_a; /**< m, in body A's frame */
+    rb_vec2 local_anchor_b; /**< m, in body B's frame */
+    rb_vec2 local_axis_a; /**< in body A's frame: any non-zero finite vector, normalised on creation; default (1, 0) */
+    double reference_angle; /**< rad: angle(B) - angle(A) held */
+    /** Limits on the translation; each side is enabled alone. lower <=
      * upper when both are on. */
     bool enable_lower_limit, enable_upper_limit;
-    double lower_translation, upper_translation; /* m */
-    /* Motor: drives the translation speed to motor_speed with at most
+    double lower_translation, upper_translation; /**< m */
+    /** Motor: drives the translation speed to motor_speed with at most
      * max_motor_force. */
     bool enable_motor;
-    double motor_speed;     /* m/s, finite */
-    double max_motor_force; /* N, >= 0 */
-    /* Spring: pulls the translation towards 0 (anchor B on anchor A). */
+    double motor_speed;     /**< m/s, finite */
+    double max_motor_force; /**< N, >= 0 */
+    /** Spring: pulls the translation towards 0 (anchor B on anchor A). */
     bool enable_spring;
-    double spring_hertz;         /* Hz, >= 0 */
-    double spring_damping_ratio; /* >= 0 */
-    bool collide_connected;      /* whether the two bodies' shapes still collide (default false) */
+    double spring_hertz;         /**< Hz, >= 0 */
+    double spring_damping_ratio; /**< >= 0 */
+    bool collide_connected;      /**< whether the two bodies' shapes still collide (default false) */
     void *user_data;
 } rb_prismatic_joint_def;
 
 RB_API rb_prismatic_joint_def rb_default_prismatic_joint_def(void);
 
-/* Fills bodies, local anchors, local axis and the reference angle so that
+/** Fills bodies, local anchors, local axis and the reference angle so that
  * body B slides along `world_axis` (non-zero) through `world_anchor`, at
  * translation 0 and with the relative angle it has now. */
 RB_API rb_status rb_prismatic_joint_def_at(rb_prismatic_joint_def *def, const rb_world *world, rb_body_id body_a,
@@ -187,9 +188,9 @@ RB_API rb_status rb_prismatic_joint_def_at(rb_prismatic_joint_def *def, const rb
 
 RB_API rb_status rb_prismatic_joint_create(rb_world *world, const rb_prismatic_joint_def *def, rb_joint_id *out);
 
-RB_API double rb_prismatic_joint_translation(const rb_world *world, rb_joint_id joint); /* m */
-RB_API double rb_prismatic_joint_speed(const rb_world *world, rb_joint_id joint); /* m/s, the translation's rate */
-/* The force the motor applied along the axis in the last step (N). */
+RB_API double rb_prismatic_joint_translation(const rb_world *world, rb_joint_id joint); /**< m */
+RB_API double rb_prismatic_joint_speed(const rb_world *world, rb_joint_id joint); /**< m/s, the translation's rate */
+/** The force the motor applied along the axis in the last step (N). */
 RB_API double rb_prismatic_joint_motor_force(const rb_world *world, rb_joint_id joint);
 RB_API rb_status rb_prismatic_joint_set_motor(rb_world *world, rb_joint_id joint, bool enable, double speed,
                                               double max_force);
@@ -200,7 +201,7 @@ RB_API rb_status rb_prismatic_joint_set_spring(rb_world *world, rb_joint_id join
 
 /* ---- pulley ------------------------------------------------------------------ */
 
-/* A rope from anchor A over a pulley at ground_anchor_a, then over one at
+/** A rope from anchor A over a pulley at ground_anchor_a, then over one at
  * ground_anchor_b down to anchor B (the pulleys are fixed world points):
  * with length_a = |anchor A - ground A| and length_b likewise,
  *   length_a + ratio·length_b <= constant = def.length_a + ratio·def.length_b.
@@ -212,18 +213,18 @@ RB_API rb_status rb_prismatic_joint_set_spring(rb_world *world, rb_joint_id join
  * by the tension itself (the pulleys take the rest). */
 typedef struct rb_pulley_joint_def {
     rb_body_id body_a, body_b;
-    rb_vec2 ground_anchor_a, ground_anchor_b; /* m, world */
-    rb_vec2 local_anchor_a, local_anchor_b;   /* m, in each body's frame */
-    double length_a, length_b;                /* m, >= min_length: the rope's two sides when taut */
-    double ratio;                             /* > 0, default 1: how much side A pays out per metre of side B */
-    double min_length;                        /* m, > 0, default 0.05: how near a body comes to its pulley */
+    rb_vec2 ground_anchor_a, ground_anchor_b; /**< m, world */
+    rb_vec2 local_anchor_a, local_anchor_b;   /**< m, in each body's frame */
+    double length_a, length_b;                /**< m, >= min_length: the rope's two sides when taut */
+    double ratio;                             /**< > 0, default 1: how much side A pays out per metre of side B */
+    double min_length;                        /**< m, > 0, default 0.05: how near a body comes to its pulley */
     bool collide_connected;
     void *user_data;
 } rb_pulley_joint_def;
 
 RB_API rb_pulley_joint_def rb_default_pulley_joint_def(void);
 
-/* Fills bodies, ground anchors, local anchors (from the world points
+/** Fills bodies, ground anchors, local anchors (from the world points
  * anchor_a and anchor_b) and both lengths from the current poses, so that
  * the rope is just taut; ratio and min_length are left as they are. */
 RB_API rb_status rb_pulley_joint_def_between(rb_pulley_joint_def *def, const rb_world *world, rb_body_id body_a,
@@ -232,7 +233,7 @@ RB_API rb_status rb_pulley_joint_def_between(rb_pulley_joint_def *def, const rb_
 
 RB_API rb_status rb_pulley_joint_create(rb_world *world, const rb_pulley_joint_def *def, rb_joint_id *out);
 
-/* The rope's two sides now: |anchor - ground anchor| (m). */
+/** The rope's two sides now: |anchor - ground anchor| (m). */
 RB_API double rb_pulley_joint_length_a(const rb_world *world, rb_joint_id joint);
 RB_API double rb_pulley_joint_length_b(const rb_world *world, rb_joint_id joint);
 
@@ -241,12 +242,13 @@ RB_API double rb_pulley_joint_length_b(const rb_world *world, rb_joint_id joint)
 RB_API rb_status rb_joint_destroy(rb_world *world, rb_joint_id joint);
 RB_API bool rb_joint_is_valid(const rb_world *world, rb_joint_id joint);
 RB_API rb_joint_type rb_joint_type_of(const rb_world *world, rb_joint_id joint);
-/* A mouse joint has only body B; its body A is the null id. */
+/** A mouse joint has only body B; its body A is the null id. */
 RB_API rb_body_id rb_joint_body_a(const rb_world *world, rb_joint_id joint);
 RB_API rb_body_id rb_joint_body_b(const rb_world *world, rb_joint_id joint);
-RB_API rb_vec2 rb_joint_world_anchor_a(const rb_world *world, rb_joint_id joint); /* m; the target for a mouse joint */
-RB_API rb_vec2 rb_joint_world_anchor_b(const rb_world *world, rb_joint_id joint); /* m */
-/* The force (N, world frame) and torque (N·m) the joint applied to body
+RB_API rb_vec2 rb_joint_world_anchor_a(const rb_world *world,
+                                       rb_joint_id joint); /**< m; the target for a mouse joint */
+RB_API rb_vec2 rb_joint_world_anchor_b(const rb_world *world, rb_joint_id joint); /**< m */
+/** The force (N, world frame) and torque (N·m) the joint applied to body
  * B during the last step: accumulated impulses divided by the step's dt.
  * Body A received the opposite. */
 RB_API rb_vec2 rb_joint_reaction_force(const rb_world *world, rb_joint_id joint);

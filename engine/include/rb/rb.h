@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* sinew rigid-body engine: the whole public API. */
+/** @file
+ * sinew rigid-body engine: the whole public API. */
 #ifndef RB_RB_H
 #define RB_RB_H
 

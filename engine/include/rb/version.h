@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* The version of sinew, which the engine and the muscle layer share.
+/** @file
+ * The version of sinew, which the engine and the muscle layer share.
  *
  * Semantic versioning: within a MAJOR version (and, before 1.0, within a
  * MINOR version) a program built against these headers keeps building and
@@ -26,14 +27,14 @@ extern "C" {
 
 #define RB_VERSION_STRINGIFY_(x) #x
 #define RB_VERSION_STRINGIFY(x) RB_VERSION_STRINGIFY_(x)
-/* "MAJOR.MINOR.PATCH", e.g. "0.2.0". */
+/** "MAJOR.MINOR.PATCH", e.g. "0.2.0". */
 #define RB_VERSION_STRING                                                                                              \
     RB_VERSION_STRINGIFY(RB_VERSION_MAJOR)                                                                             \
     "." RB_VERSION_STRINGIFY(RB_VERSION_MINOR) "." RB_VERSION_STRINGIFY(RB_VERSION_PATCH)
-/* One number that grows with every release: MAJOR·10000 + MINOR·100 + PATCH. */
+/** One number that grows with every release: MAJOR·10000 + MINOR·100 + PATCH. */
 #define RB_VERSION_NUMBER (RB_VERSION_MAJOR * 10000 + RB_VERSION_MINOR * 100 + RB_VERSION_PATCH)
 
-/* The library's version, "MAJOR.MINOR.PATCH". Never NULL. */
+/** The library's version, "MAJOR.MINOR.PATCH". Never NULL. */
 RB_API const char *rb_version(void);
 
 #ifdef __cplusplus

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Activation dynamics: the first-order delay between a muscle's neural
+/** @file
+ * Activation dynamics: the first-order delay between a muscle's neural
  * excitation u and its activation a (the calcium-driven state of the
  * contractile element), as in Millard et al. 2013 (J Biomech Eng 135,
  * "Flexing computational muscle", eq. 1-2) and OpenSim's
@@ -12,8 +13,8 @@
  * Activating is fast from rest (τ = τ_act/2 at a = 0) and slows as a
  * nears 1 (2·τ_act); deactivating is slow from full activation
  * (τ_deact/2 at a = 1 ... 2·τ_deact at a = 0). Defaults τ_act = 10 ms,
- * τ_deact = 40 ms (Millard 2013, Thelen 2003; experiments.md lists
- * 10-15 ms and 40-60 ms as the common values).
+ * τ_deact = 40 ms (Millard et al. 2013, Thelen 2003; Zajac 1989,
+ * Thelen 2003 and Millard et al. 2013 use 10-15 ms and 40-60 ms).
  */
 #ifndef MU_ACTIVATION_H
 #define MU_ACTIVATION_H
@@ -26,19 +27,19 @@ extern "C" {
 #endif
 
 typedef struct mu_activation_params {
-    double excitation;        /* u, in [0, 1]: held constant over a step */
-    double activation_time;   /* τ_act, s, > 0; default 0.010 */
-    double deactivation_time; /* τ_deact, s, > 0; default 0.040 */
+    double excitation;        /**< u, in [0, 1]: held constant over a step */
+    double activation_time;   /**< τ_act, s, > 0; default 0.010 */
+    double deactivation_time; /**< τ_deact, s, > 0; default 0.040 */
 } mu_activation_params;
 
-/* Excitation 0 and the default time constants. */
+/** Excitation 0 and the default time constants. */
 MU_API mu_activation_params mu_default_activation_params(void);
 
-/* τ(a, u) in s for activation a in [0, 1] (clamped to it) under the
+/** τ(a, u) in s for activation a in [0, 1] (clamped to it) under the
  * params' excitation. NaN (and an error) for NULL or invalid params. */
 MU_API double mu_activation_time_constant(double activation, const mu_activation_params *params);
 
-/* The derivative function, in the shape of GSL's gsl_odeiv2_system
+/** The derivative function, in the shape of GSL's gsl_odeiv2_system
  * function so that GSL's integrators can run it directly: state y[0] = a,
  * dydt[0] = (u - a)/τ(a, u); params is a const mu_activation_params *.
  * t is unused (the system is autonomous while u is held). Returns 0
@@ -46,7 +47,7 @@ MU_API double mu_activation_time_constant(double activation, const mu_activation
  * reports as a failed step) for NULL pointers or invalid params. */
 MU_API int mu_activation_derivative(double t, const double y[], double dydt[], void *params);
 
-/* One step of h s from activation a (in [0, 1]) under the params'
+/** One step of h s from activation a (in [0, 1]) under the params'
  * excitation, by the exponential midpoint rule: τ is evaluated at the
  * midpoint state a* = u + (a - u)·exp(-h/(2·τ(a, u))), then
  *   a_next = u + (a - u)·exp(-h/τ(a*, u)).

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* MU_API marks every function of the muscle layer's public API.
+/** @file
+ * MU_API marks every function of the muscle layer's public API.
  *
  * The libraries are compiled with hidden visibility (-fvisibility=hidden),
  * so a shared libmu.so exports exactly the functions marked here and keeps

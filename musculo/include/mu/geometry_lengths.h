@@ -1,6 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* Muscle and tendon lengths derived from the anchor geometry (the
- * report's third proposed improvement, framework.md §7): instead of a
+/** @file
+ * Muscle and tendon lengths derived from the anchor geometry (the third
+ * improvement proposed by Castanyer, "Implementació d'un model
+ * computacional de sistemes musculoesquelètics", 2023-24): instead of a
  * measured belly length, the muscle-tendon path's length L at the model's
  * start pose and the fraction of it that is tendon.
  *
@@ -28,11 +30,11 @@ extern "C" {
 #endif
 
 typedef struct mu_derived_lengths {
-    double rest_length;   /* m, > 0: the fibres' optimal length l_opt */
-    double tendon_length; /* m, >= 0: f·L (a rigid tendon's length, a compliant one's slack length) */
+    double rest_length;   /**< m, > 0: the fibres' optimal length l_opt */
+    double tendon_length; /**< m, >= 0: f·L (a rigid tendon's length, a compliant one's slack length) */
 } mu_derived_lengths;
 
-/* path_length: m, > 0; tendon_fraction in [0, 1); start_normalized_length
+/** path_length: m, > 0; tendon_fraction in [0, 1); start_normalized_length
  * > 0; pennation_angle: rad, in [0, MU_MAX_PENNATION_ANGLE), with
  * start_normalized_length·sin(MU_MAX_PENNATION_ANGLE) > sin(pennation_angle).
  * Fails with RB_ERR_INVALID_ARGUMENT naming the argument otherwise. */

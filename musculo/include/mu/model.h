@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* A musculoskeletal model built from its description (framework.md §5):
+/** @file
+ * A musculoskeletal model built from its description (model_desc.h):
  * the engine world with its bodies and joints, and the muscles, at a
  * simulation level, a variant and a weight choice.
  *
@@ -11,7 +12,7 @@
  * address the parts either way.
  *
  * One frame of 1/frame_rate s is one engine step split into the model's
- * substeps (the seed: 60 Hz, 10 substeps); at the start of each substep
+ * substeps (the built-in models: 60 Hz, 10 substeps); at the start of each substep
  * every muscle reads what the previous substep did and sets its tension
  * law from its state (the engine's substep callback). Collision runs
  * once per frame.
@@ -35,63 +36,63 @@ extern "C" {
 typedef struct mu_model mu_model;
 
 typedef struct mu_model_options {
-    int level;        /* 0 .. 4, default 4 */
-    int variant;      /* index into the description's variants, default 0 */
-    int weight_index; /* index into the weight's masses, default 0 */
-    bool weld_glues;  /* keep glues as weld joints instead of merging (default false) */
+    int level;        /**< 0 .. 4, default 4 */
+    int variant;      /**< index into the description's variants, default 0 */
+    int weight_index; /**< index into the weight's masses, default 0 */
+    bool weld_glues;  /**< keep glues as weld joints instead of merging (default false) */
 } mu_model_options;
 
 MU_API mu_model_options mu_default_model_options(void);
 
-/* Builds the model; the description must outlive it. Fails with a message
+/** Builds the model; the description must outlive it. Fails with a message
  * naming the option or the object that could not be built. */
 MU_API rb_status mu_model_create(const mu_model_desc *desc, const mu_model_options *options, mu_model **out);
-/* Frees the model and its world. Accepts NULL. */
+/** Frees the model and its world. Accepts NULL. */
 MU_API void mu_model_destroy(mu_model *model);
 
 MU_API rb_world *mu_model_world(mu_model *model);
 MU_API const mu_model_desc *mu_model_description(const mu_model *model);
 
-/* Advances one frame: the model's substeps, one after the other. */
+/** Advances one frame: the model's substeps, one after the other. */
 MU_API rb_status mu_model_step(mu_model *model);
-/* Advances one substep (frame duration / substeps), for controls finer
+/** Advances one substep (frame duration / substeps), for controls finer
  * than a frame (a pulse of 2 ms at 600 Hz is one substep): one engine
  * step of one substep. The solve is a frame's substep; collision runs
  * before each substep instead of once per frame, which a model whose
  * parts never touch (the built-in ones: bones are sensors) does not feel. */
 MU_API rb_status mu_model_substep(mu_model *model);
-MU_API double mu_model_time(const mu_model *model);             /* s since creation */
-MU_API double mu_model_frame_duration(const mu_model *model);   /* s */
-MU_API double mu_model_substep_duration(const mu_model *model); /* s */
+MU_API double mu_model_time(const mu_model *model);             /**< s since creation */
+MU_API double mu_model_frame_duration(const mu_model *model);   /**< s */
+MU_API double mu_model_substep_duration(const mu_model *model); /**< s */
 
-/* Controls, by muscle or group name (each muscle is also its own group):
+/** Controls, by muscle or group name (each muscle is also its own group):
  * every muscle of the group that exists in the built variant. */
 MU_API rb_status mu_model_set_activation(mu_model *model, const char *name, double activation);
 MU_API rb_status mu_model_set_tension(mu_model *model, const char *name, double newtons);
-/* The same by index among the built muscles (0 .. mu_model_muscle_count - 1). */
+/** The same by index among the built muscles (0 .. mu_model_muscle_count - 1). */
 MU_API rb_status mu_model_set_activation_at(mu_model *model, int index, double activation);
 MU_API rb_status mu_model_set_tension_at(mu_model *model, int index, double newtons);
-/* Mean activation of the group's built muscles; NaN with an error for an
+/** Mean activation of the group's built muscles; NaN with an error for an
  * unknown name. */
 MU_API double mu_model_group_activation(const mu_model *model, const char *name);
 MU_API rb_status mu_model_set_gravity(mu_model *model, rb_vec2 gravity);
 
-/* The built muscles, in the description's order. */
+/** The built muscles, in the description's order. */
 MU_API int mu_model_muscle_count(const mu_model *model);
 MU_API const char *mu_model_muscle_name(const mu_model *model, int index);
 MU_API mu_muscle_readout mu_model_muscle_readout(const mu_model *model, int index);
 MU_API const mu_muscle *mu_model_built_muscle(const mu_model *model, int index);
-/* The warnings of the build (e.g. a muscle whose path is shorter than its
+/** The warnings of the build (e.g. a muscle whose path is shorter than its
  * rest length starts below the asked normalized length): one per line. */
 MU_API const char *mu_model_warnings(const mu_model *model);
 
-/* The built hinges, in the description's order, with their joint angle
+/** The built hinges, in the description's order, with their joint angle
  * (degrees, angle(bone B) - angle(bone A), as the file's limits). */
 MU_API int mu_model_hinge_count(const mu_model *model);
 MU_API const char *mu_model_hinge_name(const mu_model *model, int index);
 MU_API double mu_model_hinge_angle(const mu_model *model, int index);
 
-/* The built bones and nails, in the description's order (nails first),
+/** The built bones and nails, in the description's order (nails first),
  * with their pose: the centre (m) and angle (degrees) of the part itself,
  * also when merged into a compound body. */
 MU_API int mu_model_part_count(const mu_model *model);
@@ -99,19 +100,20 @@ MU_API const char *mu_model_part_name(const mu_model *model, int index);
 MU_API rb_vec2 mu_model_part_centre(const mu_model *model, int index);
 MU_API double mu_model_part_angle(const mu_model *model, int index);
 
-/* The built torque muscles (seed 001), in the description's order: each
+/** The built torque muscles (motor-pool muscles after McIntyre,
+ * "Simulated Muscles"), in the description's order: each
  * a motor pool whose exertion drives a torque actuator, applied before
  * every step. Recruiting sets the number of neurons (clamped to the
  * pool), by name or by index (0 .. mu_model_torque_muscle_count - 1). */
 MU_API int mu_model_torque_muscle_count(const mu_model *model);
-MU_API const char *mu_model_torque_muscle_name(const mu_model *model, int index); /* NULL for a bad index */
+MU_API const char *mu_model_torque_muscle_name(const mu_model *model, int index); /**< NULL for a bad index */
 MU_API rb_status mu_model_recruit(mu_model *model, const char *name, int neurons);
 MU_API rb_status mu_model_recruit_at(mu_model *model, int index, int neurons);
-/* The pool (recruited count, exertion) and actuator (torque); NULL for a bad index. */
+/** The pool (recruited count, exertion) and actuator (torque); NULL for a bad index. */
 MU_API const mu_motor_pool *mu_model_motor_pool(const mu_model *model, int index);
 MU_API const mu_torque_actuator *mu_model_torque_actuator(const mu_model *model, int index);
 
-/* Counts of the engine objects made: bodies, joints. */
+/** Counts of the engine objects made: bodies, joints. */
 MU_API int mu_model_body_count(const mu_model *model);
 MU_API int mu_model_joint_count(const mu_model *model);
 

@@ -1,5 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* A motor pool (seed 001, framework.md §8): the motor neurons of one
+/** @file
+ * A motor pool (after Robert McIntyre, "Simulated Muscles", aurellem):
+ * the motor neurons of one
  * muscle, each with a strength, recruited weakest first as Henneman's size
  * principle orders them (Henneman, Somjen & Carpenter 1965, J Neurophysiol
  * 28: small motor units are recruited before large ones).
@@ -8,7 +10,7 @@
  *
  *   e(n) = (s_0 + … + s_{n-1}) / (s_0 + … + s_{count-1}),
  *
- * so e(0) = 0 and e(count) = 1. The seed summed the first n + 1
+ * so e(0) = 0 and e(count) = 1. McIntyre's code summed the first n + 1
  * strengths, so that recruiting nothing still exerted the weakest
  * neuron's share; that off-by-one is not kept. The exertion drives a Hill
  * muscle's activation or a torque actuator's share of its peak torque.
@@ -30,58 +32,58 @@ extern "C" {
 
 typedef struct mu_motor_pool mu_motor_pool;
 
-/* At most this many neurons (a human muscle has tens to a few thousand). */
+/** At most this many neurons (a human muscle has tens to a few thousand). */
 #define MU_MAX_MOTOR_NEURONS 100000
 
-/* A pool of `count` (1 .. MU_MAX_MOTOR_NEURONS) neurons of the given
+/** A pool of `count` (1 .. MU_MAX_MOTOR_NEURONS) neurons of the given
  * strengths (arbitrary units, each finite and >= 0, their sum > 0), copied.
  * Nothing is recruited at first. */
 MU_API rb_status mu_motor_pool_create(const double *strengths, int count, mu_motor_pool **out);
 
-/* `count` neurons whose strengths rise exponentially from `weakest` to
+/** `count` neurons whose strengths rise exponentially from `weakest` to
  * `strongest` (0 < weakest <= strongest, finite):
  * s_i = weakest·(strongest/weakest)^(i/(count - 1)), a single neuron
- * having `weakest`. The seed's worm: 200 neurons from 1 to 100
- * (models.md "worm"), whose first 30 % give about 3 % of the force. */
+ * having `weakest`. The built-in worm model: 200 neurons from 1 to 100,
+ * whose first 30 % give about 3 % of the force. */
 MU_API rb_status mu_motor_pool_create_exponential(int count, double weakest, double strongest, mu_motor_pool **out);
 
-/* The seed's profile image: a PNG exactly 1 pixel high, one neuron per
+/** McIntyre's profile image: a PNG exactly 1 pixel high, one neuron per
  * pixel from left to right, strength = 255 − blue (white is 0, dark red
  * 255). A pixel with alpha is unpremultiplied first; a fully transparent
  * pixel counts as white. Errors name the file: unreadable or not a PNG,
  * not 1 pixel high, more than MU_MAX_MOTOR_NEURONS wide, all white. */
 MU_API rb_status mu_motor_pool_load_png(const char *path, mu_motor_pool **out);
 
-/* Strengths as numbers separated by commas, spaces, tabs or line breaks,
+/** Strengths as numbers separated by commas, spaces, tabs or line breaks,
  * in recruitment order; `#` starts a comment to the end of its line.
  * Errors name the file and the line. */
 MU_API rb_status mu_motor_pool_load_csv(const char *path, mu_motor_pool **out);
 
-/* Accepts NULL. */
+/** Accepts NULL. */
 MU_API void mu_motor_pool_destroy(mu_motor_pool *pool);
 
 MU_API int mu_motor_pool_neuron_count(const mu_motor_pool *pool);
-/* The strength of neuron `index`; NaN (and an error) for a bad index. */
+/** The strength of neuron `index`; NaN (and an error) for a bad index. */
 MU_API double mu_motor_pool_strength(const mu_motor_pool *pool, int index);
-/* The sum of every strength, > 0. NaN for NULL. */
+/** The sum of every strength, > 0. NaN for NULL. */
 MU_API double mu_motor_pool_total_strength(const mu_motor_pool *pool);
 
-/* Recruits the first n neurons; n is clamped to 0 .. count, as the
- * seed clamps it. */
+/** Recruits the first n neurons; n is clamped to 0 .. count, as the
+ * McIntyre's code clamps it. */
 MU_API rb_status mu_motor_pool_recruit(mu_motor_pool *pool, int n);
-/* Recruits `delta` more neurons (fewer when negative), clamped to
+/** Recruits `delta` more neurons (fewer when negative), clamped to
  * 0 .. count: ±1 for one neuron, ±20 for the worm's keys. */
 MU_API rb_status mu_motor_pool_recruit_more(mu_motor_pool *pool, int delta);
-/* How many neurons are recruited, 0 .. count; -1 for NULL. */
+/** How many neurons are recruited, 0 .. count; -1 for NULL. */
 MU_API int mu_motor_pool_recruited(const mu_motor_pool *pool);
-/* e(recruited), in [0, 1]; NaN for NULL. */
+/** e(recruited), in [0, 1]; NaN for NULL. */
 MU_API double mu_motor_pool_exertion(const mu_motor_pool *pool);
-/* e(n) for n clamped to 0 .. count, without recruiting; NaN for NULL. */
+/** e(n) for n clamped to 0 .. count, without recruiting; NaN for NULL. */
 MU_API double mu_motor_pool_exertion_at(const mu_motor_pool *pool, int n);
 
-/* Sets the muscle's activation (mu_muscle_set_activation) to the exertion. */
+/** Sets the muscle's activation (mu_muscle_set_activation) to the exertion. */
 MU_API rb_status mu_motor_pool_drive_muscle(const mu_motor_pool *pool, mu_muscle *muscle);
-/* Sets the actuator's exertion (mu_torque_actuator_set_exertion) to it. */
+/** Sets the actuator's exertion (mu_torque_actuator_set_exertion) to it. */
 MU_API rb_status mu_motor_pool_drive_torque(const mu_motor_pool *pool, mu_torque_actuator *actuator);
 
 #ifdef __cplusplus

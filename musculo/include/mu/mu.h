@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* sinew muscle layer: the whole public API (and, through rb/rb.h, the
+/** @file
+ * sinew muscle layer: the whole public API (and, through rb/rb.h, the
  * engine's). */
 #ifndef MU_MU_H
 #define MU_MU_H

@@ -1,9 +1,11 @@
 /* SPDX-License-Identifier: MIT */
-/* The report's static muscle formulas (§2.2; framework.md §7): how big
+/** @file
+ * Static muscle formulas, as Castanyer's "Implementació d'un model
+ * computacional de sistemes musculoesquelètics" (2023-24) states them: how big
  * a muscle's force is from its anatomy, before any dynamics.
  *
  *   Fmax = PCSA·σ                   σ the specific tension, 0.2-0.4 MPa in
- *                                   mammals (experiments.md)
+ *                                   mammals
  *   PCSA = V/l_f                    volume over the resting fibre length
  *   PCSA = ACSA/cos β               anatomical cross-section and pennation
  *   l_f  = n·2 µm                   n sarcomeres in series of optimal 2 µm
@@ -23,25 +25,25 @@
 extern "C" {
 #endif
 
-/* The optimal sarcomere length the report normalizes to, m. */
+/** The optimal sarcomere length fibre lengths are normalized to, m. */
 #define MU_OPTIMAL_SARCOMERE_LENGTH 2e-6
 
-/* N, from the physiological cross-section (m², >= 0) and the specific
+/** N, from the physiological cross-section (m², >= 0) and the specific
  * tension (N/m², > 0). */
 MU_API double mu_max_force_from_pcsa(double pcsa, double specific_tension);
 
-/* m², from the muscle's volume (m³, >= 0) and its resting fibre length
+/** m², from the muscle's volume (m³, >= 0) and its resting fibre length
  * (m, > 0). */
 MU_API double mu_pcsa_from_volume(double volume, double fibre_length);
 
-/* m², from the anatomical cross-section (m², >= 0) and the pennation
+/** m², from the anatomical cross-section (m², >= 0) and the pennation
  * angle (rad, in [0, π/2)). */
 MU_API double mu_pcsa_from_anatomical(double anatomical_cross_section, double pennation_angle);
 
-/* m: the resting fibre length of `sarcomeres` (> 0) optimal sarcomeres. */
+/** m: the resting fibre length of `sarcomeres` (> 0) optimal sarcomeres. */
 MU_API double mu_fibre_length_from_sarcomeres(double sarcomeres);
 
-/* m: a fibre length measured (m, > 0) with sarcomeres of the measured
+/** m: a fibre length measured (m, > 0) with sarcomeres of the measured
  * length (m, > 0), scaled to optimal sarcomeres. */
 MU_API double mu_fibre_length_normalized(double measured_fibre_length, double measured_sarcomere_length);
 

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* The tendon's force-strain curve: the series elastic element of a Hill
+/** @file
+ * The tendon's force-strain curve: the series elastic element of a Hill
  * muscle-tendon unit.
  *
  * Strain ε = (l_T - l_s)/l_s over the tendon's slack length l_s; the force
@@ -27,14 +28,14 @@
 extern "C" {
 #endif
 
-/* The default strain at the maximal isometric force. */
+/** The default strain at the maximal isometric force. */
 #define MU_DEFAULT_TENDON_STRAIN_AT_MAX_FORCE 0.049
 
-/* f_T(ε) >= 0 for a curve reaching 1 at strain_at_max_force (ε0, in
+/** f_T(ε) >= 0 for a curve reaching 1 at strain_at_max_force (ε0, in
  * (0, 1]). NaN (and an error) for a NaN strain or an ε0 out of range. */
 MU_API double mu_tendon_force(double strain, double strain_at_max_force);
 
-/* d f_T/dε >= 0 (per unit strain), 0 while slack. NaN (and an error) as
+/** d f_T/dε >= 0 (per unit strain), 0 while slack. NaN (and an error) as
  * mu_tendon_force. */
 MU_API double mu_tendon_stiffness(double strain, double strain_at_max_force);
 

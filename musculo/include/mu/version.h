@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* The version of the muscle layer: sinew's version, shared with the engine
+/** @file
+ * The version of the muscle layer: sinew's version, shared with the engine
  * (rb/version.h), so MU_VERSION_STRING is RB_VERSION_STRING.
  *
  * mu_version() is the version of the libmu a program runs with, which may
@@ -21,7 +22,7 @@ extern "C" {
 #define MU_VERSION_PATCH RB_VERSION_PATCH
 #define MU_VERSION_STRING RB_VERSION_STRING
 
-/* The library's version, "MAJOR.MINOR.PATCH". Never NULL. */
+/** The library's version, "MAJOR.MINOR.PATCH". Never NULL. */
 MU_API const char *mu_version(void);
 
 #ifdef __cplusplus
