@@ -402,10 +402,10 @@ Test(model_desc, physiology_options_are_read_and_lengths_derived)
     mu_model_desc_destroy(desc);
 }
 
-/* The complete example of models/README.md is a model file that loads. */
+/* The complete example of docs/model-format.md is a model file that loads. */
 Test(model_desc, the_readme_example_loads)
 {
-    FILE *readme = fopen(SINEW_SOURCE_DIR "/models/README.md", "rb");
+    FILE *readme = fopen(SINEW_SOURCE_DIR "/docs/model-format.md", "rb");
     cr_assert_not_null(readme);
     static char text[65536];
     size_t length = fread(text, 1, sizeof text - 1, readme);
@@ -413,7 +413,7 @@ Test(model_desc, the_readme_example_loads)
     text[length] = '\0';
     const char *fence = "```json\n";
     char *start = strstr(text, fence);
-    cr_assert_not_null(start, "models/README.md has no ```json block");
+    cr_assert_not_null(start, "docs/model-format.md has no ```json block");
     start += strlen(fence);
     char *end = strstr(start, "```");
     cr_assert_not_null(end);

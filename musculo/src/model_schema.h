@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The model file's schema: what each key of a model file means, its
  * type, range and default, and the cross-checks between objects
- * (models/README.md documents the format). */
+ * (docs/model-format.md documents the format). */
 #ifndef MU_MODEL_SCHEMA_H
 #define MU_MODEL_SCHEMA_H
 
