@@ -200,6 +200,7 @@ static inline void current_geometry(const rb_contact_constraint *c, const rb_con
         *normal = rb_rotate(sa->rotation, c->local_normal);
         break;
     case RB_NORMAL_TURNS_WITH_B:
+    default: /* no other value; said so that no path leaves *normal unset */
         *normal = rb_rotate(sb->rotation, c->local_normal);
         break;
     }

@@ -60,7 +60,7 @@ rb_status rb_prismatic_joint_def_at(rb_prismatic_joint_def *def, const rb_world 
     const char *f = "rb_prismatic_joint_def_at";
     rb_clear_error();
     RB_TRY(rb_check_pointer(f, "def", def));
-    rb_vec2 axis;
+    rb_vec2 axis = {0.0, 0.0};
     RB_TRY(normalise_axis(f, "world_axis", world_axis, &axis));
     RB_TRY(rb_joint_anchor_at(world, body_a, body_b, world_anchor, f, &def->local_anchor_a, &def->local_anchor_b,
                               &def->reference_angle));

@@ -11,6 +11,7 @@
 #define MU_CURVE_TABLE_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "rb/base.h"
 
@@ -28,11 +29,12 @@ typedef struct mu_curve_table {
     size_t count;
 } mu_curve_table;
 
-/* Reads the three curves of the file `path`, each with at least
- * `minimum_points` knots (`interpolation_name` says why, for the message).
- * On failure nothing is held, `tables` is left zeroed and the message names
- * the file, the line and what was expected. */
-rb_status mu_curve_tables_read(const char *path, size_t minimum_points, const char *interpolation_name,
+/* Reads the three curves from `file` (open for reading, left open), each
+ * with at least `minimum_points` knots (`interpolation_name` says why, for
+ * the message); `path` names the file in messages. On failure nothing is
+ * held, `tables` is left zeroed and the message names the file, the line
+ * and what was expected. */
+rb_status mu_curve_tables_read(const char *path, FILE *file, size_t minimum_points, const char *interpolation_name,
                                mu_curve_table tables[MU_CURVE_KIND_COUNT]);
 
 /* Frees the knots of every table and zeroes them; accepts zeroed tables. */

@@ -15,12 +15,16 @@
  * (and threads): GSL is called without an accelerator, whose cached
  * interval would be state written on every evaluation.
  */
+#include <errno.h>
 #include <gsl/gsl_interp.h>
 #include <math.h>
 #include <stdbool.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "curve_table.h"
+#include "data_file.h"
 #include "mu/curves.h"
 
 struct mu_curves {
@@ -48,16 +52,11 @@ mu_analytic_curves mu_default_analytic_curves(void)
     };
 }
 
-rb_status mu_curves_create_tabulated(const char *path, mu_interpolation interpolation, mu_curves **out)
+/* The tabulated curves of the table read from `file`, named `path` in
+ * messages. */
+static rb_status create_tabulated(const char *path, FILE *file, mu_interpolation interpolation, mu_curves **out)
 {
     const char *f = "mu_curves_create_tabulated";
-    if (out == NULL) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: out is NULL", f);
-    }
-    *out = NULL;
-    if (path == NULL) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: path is NULL", f);
-    }
     const gsl_interp_type *type = NULL;
     const char *type_name = NULL;
     switch (interpolation) {
@@ -84,7 +83,7 @@ rb_status mu_curves_create_tabulated(const char *path, mu_interpolation interpol
      * and gsl_interp_init reject, so neither can fail below but for memory
      * (on which GSL's default error handler aborts before returning NULL;
      * a program that turned the handler off gets our error). */
-    rb_status status = mu_curve_tables_read(path, gsl_interp_type_min_size(type), type_name, curves->tables);
+    rb_status status = mu_curve_tables_read(path, file, gsl_interp_type_min_size(type), type_name, curves->tables);
     for (size_t kind = 0; kind < MU_CURVE_KIND_COUNT && status == RB_OK; kind++) {
         const mu_curve_table *table = &curves->tables[kind];
         curves->interpolants[kind] = gsl_interp_alloc(type, table->count);
@@ -102,9 +101,39 @@ rb_status mu_curves_create_tabulated(const char *path, mu_interpolation interpol
     return RB_OK;
 }
 
+rb_status mu_curves_create_tabulated(const char *path, mu_interpolation interpolation, mu_curves **out)
+{
+    const char *f = "mu_curves_create_tabulated";
+    if (out == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: out is NULL", f);
+    }
+    *out = NULL;
+    if (path == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: path is NULL", f);
+    }
+    FILE *file = fopen(path, "r");
+    if (file == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s: cannot open the file: %s", f, path, strerror(errno));
+    }
+    rb_status status = create_tabulated(path, file, interpolation, out);
+    fclose(file);
+    return status;
+}
+
 rb_status mu_curves_create_seed_tables(mu_interpolation interpolation, mu_curves **out)
 {
-    return mu_curves_create_tabulated(SINEW_DATA_DIR "/data/hill-curves.csv", interpolation, out);
+    if (out == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_curves_create_seed_tables: out is NULL");
+    }
+    *out = NULL;
+    mu_data_file data;
+    rb_status status = mu_data_file_open(MU_CURVE_TABLE_FILE, "mu_curves_create_seed_tables", &data);
+    if (status != RB_OK) {
+        return status;
+    }
+    status = create_tabulated(data.label, data.stream, interpolation, out);
+    mu_data_file_close(&data);
+    return status;
 }
 
 /* `value` is finite and above `minimum` (NaN fails too). */

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "data_file.h"
 #include "model_schema.h"
 #include "mu/model_desc.h"
 
@@ -45,6 +46,34 @@ static rb_status read_file(const char *path, char **text, size_t *length)
     return RB_OK;
 }
 
+/* Parses and validates the model text (`length` bytes, not terminated),
+ * named `path` in messages. */
+static rb_status parse_text(const char *path, const char *text, size_t length, mu_model_desc **out)
+{
+    /* Duplicate keys are rejected here, so that every JSON path names one value. */
+    json_error_t error;
+    json_t *root = json_loadb(text, length, JSON_REJECT_DUPLICATES, &error);
+    if (root == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s:%d:%d: invalid JSON: %s", path, error.line, error.column,
+                               error.text);
+    }
+    rb_status status = RB_OK;
+    mu_model_desc *desc = calloc(1, sizeof *desc);
+    if (desc == NULL) {
+        status = rb_report_error(RB_ERR_OUT_OF_MEMORY, "mu_model_desc_load: out of memory");
+    } else {
+        mu_json_reader reader = {.file = path, .text = text, .length = length};
+        status = mu_model_parse(&reader, root, desc);
+    }
+    json_decref(root);
+    if (status != RB_OK) {
+        mu_model_desc_destroy(desc);
+        return status;
+    }
+    *out = desc;
+    return RB_OK;
+}
+
 rb_status mu_model_desc_load(const char *path, mu_model_desc **out)
 {
     if (out == NULL) {
@@ -60,29 +89,22 @@ rb_status mu_model_desc_load(const char *path, mu_model_desc **out)
     if (status != RB_OK) {
         return status;
     }
-    /* Duplicate keys are rejected here, so that every JSON path names one value. */
-    json_error_t error;
-    json_t *root = json_loadb(text, length, JSON_REJECT_DUPLICATES, &error);
-    if (root == NULL) {
-        free(text);
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s:%d:%d: invalid JSON: %s", path, error.line, error.column,
-                               error.text);
-    }
-    mu_model_desc *desc = calloc(1, sizeof *desc);
-    if (desc == NULL) {
-        status = rb_report_error(RB_ERR_OUT_OF_MEMORY, "mu_model_desc_load: out of memory");
-    } else {
-        mu_json_reader reader = {.file = path, .text = text, .length = length};
-        status = mu_model_parse(&reader, root, desc);
-    }
-    json_decref(root);
+    status = parse_text(path, text, length, out);
     free(text);
-    if (status != RB_OK) {
-        mu_model_desc_destroy(desc);
-        return status;
+    return status;
+}
+
+/* The built-in models' names, "sample, arm, ...", for a message. */
+static const char *builtin_model_list(void)
+{
+    static _Thread_local char list[256];
+    size_t used = 0;
+    list[0] = '\0';
+    for (size_t i = 0; i < mu_builtin_model_name_count && used < sizeof list; ++i) {
+        int written = snprintf(list + used, sizeof list - used, "%s%s", i > 0 ? ", " : "", mu_builtin_model_names[i]);
+        used += written > 0 ? (size_t)written : 0;
     }
-    *out = desc;
-    return RB_OK;
+    return list;
 }
 
 rb_status mu_model_desc_load_builtin(const char *name, mu_model_desc **out)
@@ -91,19 +113,49 @@ rb_status mu_model_desc_load_builtin(const char *name, mu_model_desc **out)
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_desc_load_builtin: out is NULL");
     }
     *out = NULL;
-    /* A plain name keeps the path inside models/. */
+    /* A plain name keeps a path made from it inside SINEW_DATA_DIR. */
     if (name == NULL || name[0] == '\0' || strspn(name, "abcdefghijklmnopqrstuvwxyz0123456789_-") != strlen(name)) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT,
                                "mu_model_desc_load_builtin: name is \"%s\", expected a built-in model's name "
                                "(lower-case letters, digits, '_' or '-')",
                                name != NULL ? name : "(null)");
     }
-    char path[4096];
-    int written = snprintf(path, sizeof path, "%s/%s.json", SINEW_DATA_DIR, name);
-    if (written < 0 || (size_t)written >= sizeof path) {
+    char file_name[256];
+    int written = snprintf(file_name, sizeof file_name, "%s.json", name);
+    if (written < 0 || (size_t)written >= sizeof file_name) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_desc_load_builtin: name \"%s\" is too long", name);
     }
-    return mu_model_desc_load(path, out);
+    const char *dir = mu_data_dir();
+    if (dir != NULL) {
+        char path[4096];
+        written = snprintf(path, sizeof path, "%s/%s", dir, file_name);
+        if (written < 0 || (size_t)written >= sizeof path) {
+            return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_desc_load_builtin: %s=%s is too long a path",
+                                   MU_DATA_DIR_VARIABLE, dir);
+        }
+        return mu_model_desc_load(path, out);
+    }
+    const mu_embedded_file *file = mu_embedded_file_find(file_name);
+    if (file == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                               "mu_model_desc_load_builtin: no built-in model is named \"%s\", expected one of %s",
+                               name, builtin_model_list());
+    }
+    char label[300];
+    snprintf(label, sizeof label, "%s (built into libmu)", file_name);
+    return parse_text(label, (const char *)file->data, file->size, out);
+}
+
+int mu_builtin_model_count(void) { return (int)mu_builtin_model_name_count; }
+
+const char *mu_builtin_model_name(int index)
+{
+    if (index < 0 || (size_t)index >= mu_builtin_model_name_count) {
+        rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_builtin_model_name: index is %d, expected 0 to %d", index,
+                        (int)mu_builtin_model_name_count - 1);
+        return NULL;
+    }
+    return mu_builtin_model_names[index];
 }
 
 void mu_model_desc_destroy(mu_model_desc *desc)

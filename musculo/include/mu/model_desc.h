@@ -206,9 +206,17 @@ typedef struct mu_model_desc {
  * NULL and rb_last_error() says what is wrong and where. */
 MU_API rb_status mu_model_desc_load(const char *path, mu_model_desc **out);
 
-/* Reads the built-in model `name` ("sample", "arm", "leg") from the
- * models/ directory of the source tree. */
+/* Reads the built-in model `name` ("sample", "arm", "leg", "worm"), which is
+ * compiled into the library; when the environment variable SINEW_DATA_DIR
+ * names a folder, reads NAME.json from that folder instead. */
 MU_API rb_status mu_model_desc_load_builtin(const char *name, mu_model_desc **out);
+
+/* How many models are built in. */
+MU_API int mu_builtin_model_count(void);
+/* The name of built-in model `index` (0 to mu_builtin_model_count() - 1,
+ * in the order `sinew models` lists them); NULL, with the error recorded,
+ * out of range. */
+MU_API const char *mu_builtin_model_name(int index);
 
 /* Accepts NULL. */
 MU_API void mu_model_desc_destroy(mu_model_desc *desc);
