@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: MIT */
-/* The description of a musculoskeletal model, read from a JSON model file
- * (format: models/README.md): pure data, no engine objects. The model
+/** @file
+ * The description of a musculoskeletal model, read from a JSON model file
+ * (format: docs/model-format.md): pure data, no engine objects. The model
  * builder turns it into bodies, joints and muscles at a simulation level,
- * a variant and a weight choice (framework.md §5).
+ * a variant and a weight choice (model.h).
  *
  * Positions, centres and anchors are in m; a position is relative to the
  * model's origin (before `placement` moves the model), an anchor or path
@@ -28,10 +29,10 @@
 extern "C" {
 #endif
 
-/* Most objects one list of a model file may hold. */
+/** Most objects one list of a model file may hold. */
 #define MU_MODEL_MAX_OBJECTS 65535
 
-/* The kinds of named objects. All of them share one namespace (a name is
+/** The kinds of named objects. All of them share one namespace (a name is
  * unique among a model's nails, bones, hinges, glues, weight, muscles and
  * groups), so one name finds one object; variants have their own. */
 typedef enum mu_model_kind {
@@ -45,142 +46,142 @@ typedef enum mu_model_kind {
     MU_MODEL_TORQUE_MUSCLE,
 } mu_model_kind;
 
-/* One object of the description: desc->nails[index], desc->bones[index],
+/** One object of the description: desc->nails[index], desc->bones[index],
  * ...; the weight has index 0. A reference to a body is a nail or a bone. */
 typedef struct mu_model_ref {
     mu_model_kind kind;
-    int index; /* 0 .. the kind's count - 1 */
+    int index; /**< 0 .. the kind's count - 1 */
 } mu_model_ref;
 
-/* A static anchor point (framework.md §3). */
+/** A static anchor point. */
 typedef struct mu_model_nail {
     char *name;
-    rb_vec2 position; /* m */
+    rb_vec2 position; /**< m */
 } mu_model_nail;
 
-/* A box; its mass is density·size.x·size.y·depth. */
+/** A box; its mass is density·size.x·size.y·depth. */
 typedef struct mu_model_bone {
     char *name;
-    rb_vec2 centre; /* m */
-    rb_vec2 size;   /* m, x extent and y extent in the bone's frame, each > 0 */
-    double angle;   /* degrees, counter-clockwise; default 0 */
-    double depth;   /* m, > 0; default the smaller extent (the bone's thickness) */
-    bool is_static; /* default false */
-    double density; /* kg/m³, > 0; default 1900 */
+    rb_vec2 centre; /**< m */
+    rb_vec2 size;   /**< m, x extent and y extent in the bone's frame, each > 0 */
+    double angle;   /**< degrees, counter-clockwise; default 0 */
+    double depth;   /**< m, > 0; default the smaller extent (the bone's thickness) */
+    bool is_static; /**< default false */
+    double density; /**< kg/m³, > 0; default 1900 */
 } mu_model_bone;
 
-/* A revolute joint pinning anchor_a on body A to anchor_b on body B. The
+/** A revolute joint pinning anchor_a on body A to anchor_b on body B. The
  * joint angle is angle(B) - angle(A); each limit is on only when given. */
 typedef struct mu_model_hinge {
     char *name;
-    mu_model_ref body_a, body_b; /* nails or bones, different */
-    rb_vec2 anchor_a, anchor_b;  /* m, in each body's frame */
-    double radius;               /* m, > 0: drawn size only */
+    mu_model_ref body_a, body_b; /**< nails or bones, different */
+    rb_vec2 anchor_a, anchor_b;  /**< m, in each body's frame */
+    double radius;               /**< m, > 0: drawn size only */
     bool has_lower, has_upper;
-    double lower, upper; /* degrees in [-360, 360]; lower <= upper when both are on */
+    double lower, upper; /**< degrees in [-360, 360]; lower <= upper when both are on */
 } mu_model_hinge;
 
-/* A weld freezing the relative pose the two bodies have when it is made. */
+/** A weld freezing the relative pose the two bodies have when it is made. */
 typedef struct mu_model_glue {
     char *name;
-    mu_model_ref body_a, body_b; /* nails or bones, different */
+    mu_model_ref body_a, body_b; /**< nails or bones, different */
 } mu_model_glue;
 
-/* The load: an iron disc (framework.md §3) at `position`, glued to `body`;
+/** The load: an iron disc (7874 kg/m³, 0.10 m deep) at `position`, glued to `body`;
  * the weight choice picks its mass, and no disc is made for 0 kg. */
 typedef struct mu_model_weight {
     char *name;
     mu_model_ref body;
-    rb_vec2 position; /* m, the disc's centre */
-    int mass_count;   /* 1 .. MU_MODEL_MAX_OBJECTS: the weight choices */
-    double *masses;   /* kg, each >= 0 */
+    rb_vec2 position; /**< m, the disc's centre */
+    int mass_count;   /**< 1 .. MU_MODEL_MAX_OBJECTS: the weight choices */
+    double *masses;   /**< kg, each >= 0 */
 } mu_model_weight;
 
 typedef enum mu_model_curve_set {
-    MU_MODEL_CURVES_TABULATED, /* the seed's tables (models/data/hill-curves.csv) */
-    MU_MODEL_CURVES_ANALYTIC,  /* seed 003's analytic curves */
+    MU_MODEL_CURVES_TABULATED, /**< the original report's tables (models/data/hill-curves.csv) */
+    MU_MODEL_CURVES_ANALYTIC,  /**< the MATLAB Hill worksheet's analytic curves (curves.h) */
 } mu_model_curve_set;
 
-/* One point of a muscle's path: origin, via points, insertion. */
+/** One point of a muscle's path: origin, via points, insertion. */
 typedef struct mu_model_path_point {
-    mu_model_ref body; /* a nail or a bone */
-    rb_vec2 point;     /* m, in the body's frame */
+    mu_model_ref body; /**< a nail or a bone */
+    rb_vec2 point;     /**< m, in the body's frame */
 } mu_model_path_point;
 
-/* A Hill muscle (framework.md §4); the fields map onto mu_muscle_def. */
+/** A Hill muscle (muscle.h); the fields map onto mu_muscle_def. */
 typedef struct mu_model_muscle {
     char *name;
-    double rest_length; /* m, > 0: the fibres' optimal length */
-    /* Maximal isometric force: max_force when > 0, else the circular
+    double rest_length; /**< m, > 0: the fibres' optimal length */
+    /** Maximal isometric force: max_force when > 0, else the circular
      * cross-section π·rest_width²/4 times specific_tension. */
-    double max_force;               /* N, > 0, or 0 when not given */
-    double rest_width;              /* m, > 0, or 0 when not given (then max_force is given) */
-    double specific_tension;        /* N/m², > 0; default 1.5e6; unused when max_force is given */
-    double max_velocity;            /* m/s, > 0; default 0.25 */
-    double start_normalized_length; /* in [0.5, 1.5]; default 1; unused when tendon_length >= 0 */
-    double tendon_length;           /* m, >= 0, or -1 when not given (then from start_normalized_length) */
-    double symmetry;                /* in [0, 1]: where the belly sits between the path's ends; default 0.5 */
-    mu_model_curve_set curves;      /* default MU_MODEL_CURVES_TABULATED */
-    int point_count;                /* 2 .. RB_MAX_CABLE_POINTS */
+    double max_force;               /**< N, > 0, or 0 when not given */
+    double rest_width;              /**< m, > 0, or 0 when not given (then max_force is given) */
+    double specific_tension;        /**< N/m², > 0; default 1.5e6; unused when max_force is given */
+    double max_velocity;            /**< m/s, > 0; default 0.25 */
+    double start_normalized_length; /**< in [0.5, 1.5]; default 1; unused when tendon_length >= 0 */
+    double tendon_length;           /**< m, >= 0, or -1 when not given (then from start_normalized_length) */
+    double symmetry;                /**< in [0, 1]: where the belly sits between the path's ends; default 0.5 */
+    mu_model_curve_set curves;      /**< default MU_MODEL_CURVES_TABULATED */
+    int point_count;                /**< 2 .. RB_MAX_CABLE_POINTS */
     mu_model_path_point path[RB_MAX_CABLE_POINTS];
-    /* Geometry-derived lengths (geometry_lengths.h): the tendon's share of
+    /** Geometry-derived lengths (geometry_lengths.h): the tendon's share of
      * the path's length at the model's start pose, in [0, 1), or -1 when
      * not given. When given, rest_length and tendon_length above hold the
      * lengths derived from it at load. */
     double tendon_fraction;
-    double pennation_angle; /* degrees in [0, 80] at the optimal fibre length; default 0 */
-    /* Activation dynamics (activation.h): off by default. */
+    double pennation_angle; /**< degrees in [0, 80] at the optimal fibre length; default 0 */
+    /** Activation dynamics (activation.h): off by default. */
     bool activation_dynamics;
-    double activation_time;   /* s, > 0; default 0.010 */
-    double deactivation_time; /* s, > 0; default 0.040 */
-    /* A compliant tendon (tendon.h): off by default (rigid). Its slack
+    double activation_time;   /**< s, > 0; default 0.010 */
+    double deactivation_time; /**< s, > 0; default 0.040 */
+    /** A compliant tendon (tendon.h): off by default (rigid). Its slack
      * length, tendon_length or the one derived at build, is > 0: checked
      * at load against the path's length at the start pose. */
     bool compliant_tendon;
-    double tendon_strain_at_max_force; /* in (0, 1]; default 0.049 */
-    double fibre_damping;              /* > 0; default 0.1 */
+    double tendon_strain_at_max_force; /**< in (0, 1]; default 0.049 */
+    double fibre_damping;              /**< > 0; default 0.1 */
 } mu_model_muscle;
 
-/* A torque muscle (seed 001, framework.md §8; torque_actuator.h and
+/** A torque muscle (after McIntyre, "Simulated Muscles"; torque_actuator.h and
  * motor_pool.h): exertion · peak_torque on `body` about the axis out of
  * the plane, its reaction on `reaction_body` (or the world), the exertion
  * set by recruiting neurons of an exponential motor pool. Built at level 3
  * and above when its bones are in the variant. */
 typedef struct mu_model_torque_muscle {
     char *name;
-    mu_model_ref body;          /* a bone */
-    bool has_reaction_body;     /* default false: the reaction goes to the world */
-    mu_model_ref reaction_body; /* a nail or bone other than body */
-    double peak_torque;         /* N·m, finite: the torque at full recruitment, counter-clockwise when > 0 */
-    int neurons;                /* 1 .. MU_MAX_MOTOR_NEURONS */
-    double weakest, strongest;  /* strengths of the first and last neuron, 0 < weakest <= strongest */
-    int recruited;              /* neurons recruited at the start, 0 .. neurons; default 0 */
+    mu_model_ref body;          /**< a bone */
+    bool has_reaction_body;     /**< default false: the reaction goes to the world */
+    mu_model_ref reaction_body; /**< a nail or bone other than body */
+    double peak_torque;         /**< N·m, finite: the torque at full recruitment, counter-clockwise when > 0 */
+    int neurons;                /**< 1 .. MU_MAX_MOTOR_NEURONS */
+    double weakest, strongest;  /**< strengths of the first and last neuron, 0 < weakest <= strongest */
+    int recruited;              /**< neurons recruited at the start, 0 .. neurons; default 0 */
 } mu_model_torque_muscle;
 
-/* Muscles driven together. Each muscle is also a group of its own, which
+/** Muscles driven together. Each muscle is also a group of its own, which
  * the model provides; these are the groups the file adds. */
 typedef struct mu_model_group {
     char *name;
-    int muscle_count; /* 1 .. MU_MODEL_MAX_OBJECTS */
-    int *muscles;     /* indices into desc->muscles, distinct */
+    int muscle_count; /**< 1 .. MU_MODEL_MAX_OBJECTS */
+    int *muscles;     /**< indices into desc->muscles, distinct */
 } mu_model_group;
 
-/* Which muscles and bones exist when the model is built in this variant.
+/** Which muscles and bones exist when the model is built in this variant.
  * Every muscle's path lies on bones of the variant (or nails). */
 typedef struct mu_model_variant {
     char *name;
-    int muscle_count; /* 0 .. desc->muscle_count */
-    int *muscles;     /* indices into desc->muscles, distinct, in file order */
-    int bone_count;   /* 0 .. desc->bone_count; all bones unless the file lists them */
-    int *bones;       /* indices into desc->bones, distinct */
+    int muscle_count; /**< 0 .. desc->muscle_count */
+    int *muscles;     /**< indices into desc->muscles, distinct, in file order */
+    int bone_count;   /**< 0 .. desc->bone_count; all bones unless the file lists them */
+    int *bones;       /**< indices into desc->bones, distinct */
 } mu_model_variant;
 
 typedef struct mu_model_desc {
     char *name;
-    rb_vec2 gravity;   /* m/s², default (0, -9.8) */
-    double frame_rate; /* Hz, > 0; default 60 */
-    int substeps;      /* per frame, >= 1; default 10 */
-    rb_vec2 placement; /* m, added to every position when the model is built; default (0, 0) */
+    rb_vec2 gravity;   /**< m/s², default (0, -9.8) */
+    double frame_rate; /**< Hz, > 0; default 60 */
+    int substeps;      /**< per frame, >= 1; default 10 */
+    rb_vec2 placement; /**< m, added to every position when the model is built; default (0, 0) */
     int nail_count;
     mu_model_nail *nails;
     int bone_count;
@@ -190,48 +191,48 @@ typedef struct mu_model_desc {
     int glue_count;
     mu_model_glue *glues;
     bool has_weight;
-    mu_model_weight weight; /* all zero without a weight */
+    mu_model_weight weight; /**< all zero without a weight */
     int muscle_count;
     mu_model_muscle *muscles;
     int group_count;
     mu_model_group *groups;
     int torque_muscle_count;
     mu_model_torque_muscle *torque_muscles;
-    int variant_count; /* >= 1: without "variants" in the file, one variant "Default" with everything */
+    int variant_count; /**< >= 1: without "variants" in the file, one variant "Default" with everything */
     mu_model_variant *variants;
 } mu_model_desc;
 
-/* Reads and validates the model file `path`. On success *out owns a new
+/** Reads and validates the model file `path`. On success *out owns a new
  * description (free it with mu_model_desc_destroy); on failure *out is
  * NULL and rb_last_error() says what is wrong and where. */
 MU_API rb_status mu_model_desc_load(const char *path, mu_model_desc **out);
 
-/* Reads the built-in model `name` ("sample", "arm", "leg", "worm"), which is
+/** Reads the built-in model `name` ("sample", "arm", "leg", "worm"), which is
  * compiled into the library; when the environment variable SINEW_DATA_DIR
  * names a folder, reads NAME.json from that folder instead. */
 MU_API rb_status mu_model_desc_load_builtin(const char *name, mu_model_desc **out);
 
-/* How many models are built in. */
+/** How many models are built in. */
 MU_API int mu_builtin_model_count(void);
-/* The name of built-in model `index` (0 to mu_builtin_model_count() - 1,
+/** The name of built-in model `index` (0 to mu_builtin_model_count() - 1,
  * in the order `sinew models` lists them); NULL, with the error recorded,
  * out of range. */
 MU_API const char *mu_builtin_model_name(int index);
 
-/* Accepts NULL. */
+/** Accepts NULL. */
 MU_API void mu_model_desc_destroy(mu_model_desc *desc);
 
-/* Finds the object named `name` (any kind but variants): true and *out
+/** Finds the object named `name` (any kind but variants): true and *out
  * filled, or false. */
 MU_API bool mu_model_desc_find(const mu_model_desc *desc, const char *name, mu_model_ref *out);
 
-/* Index of the variant named `name`, or -1. */
+/** Index of the variant named `name`, or -1. */
 MU_API int mu_model_desc_find_variant(const mu_model_desc *desc, const char *name);
 
-/* The name of an object. */
+/** The name of an object. */
 MU_API const char *mu_model_desc_name_of(const mu_model_desc *desc, mu_model_ref ref);
 
-/* Whether muscle (or bone) `index` exists in variant `variant`. */
+/** Whether muscle (or bone) `index` exists in variant `variant`. */
 MU_API bool mu_model_variant_has_muscle(const mu_model_variant *variant, int index);
 MU_API bool mu_model_variant_has_bone(const mu_model_variant *variant, int index);
 
