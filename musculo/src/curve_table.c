@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* The CSV reader of the digitised Hill curves (Ross et al. 2018, PLOS
- * Comput Biol, as tabulated by the seed; framework.md §4).
+/* The digitised Hill curves (Ross et al. 2018, PLOS Comput Biol), read
+ * with the one CSV reader (csv_reader.h): it splits records, this file
+ * gives them their meaning.
  *
  * A curve file is data a person edits by hand, so the reader trusts none of
  * it: every failure names the file, the line and what was expected, and
@@ -8,20 +9,16 @@
  * default error handler aborts the process on non-increasing x or too few
  * points, so those must never reach it).
  */
-#include <errno.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "csv_reader.h"
 #include "curve_table.h"
 
 #define HEADER "curve,x,y"
-
-/* Longest line accepted, newline included; a knot row is about 30
- * characters, so a longer line is a broken file, not data. */
-#define MAX_LINE 256
 
 static const char *const curve_names[MU_CURVE_KIND_COUNT] = {
     [MU_CURVE_ACTIVE_LENGTH] = "active_force_length",
@@ -33,79 +30,54 @@ static const char *const curve_names[MU_CURVE_KIND_COUNT] = {
 static const char *const function_name = "mu_curves_create_tabulated";
 
 typedef struct reader {
-    const char *path;
-    FILE *file;
-    size_t line_number;                    /* of the line in `line` */
-    char line[MAX_LINE];                   /* without its line ending */
-    size_t capacity[MU_CURVE_KIND_COUNT];  /* allocated knots per table */
-    size_t last_line[MU_CURVE_KIND_COUNT]; /* line of each curve's last knot, 0 before one */
+    mu_csv_reader csv;                    /* the file's records (csv_reader.h) */
+    size_t capacity[MU_CURVE_KIND_COUNT]; /* allocated knots per table */
+    long last_line[MU_CURVE_KIND_COUNT];  /* line of each curve's last knot, 0 before one */
 } reader;
 
-/* Reads the next line into r->line without its "\n" or "\r\n" (files
- * saved on Windows). Sets *got_line to false at the end of the file. */
-static rb_status next_line(reader *r, bool *got_line)
+/* The next record; *got_record is false at the end of the file. */
+static rb_status next_record(reader *r, bool *got_record)
 {
-    if (fgets(r->line, sizeof r->line, r->file) == NULL) {
-        *got_line = false;
-        if (ferror(r->file)) {
-            return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s:%zu: read error after this line", function_name,
-                                   r->path, r->line_number);
-        }
-        return RB_OK;
+    mu_csv_result result = mu_csv_reader_next(&r->csv);
+    *got_record = result == MU_CSV_RECORD;
+    if (result == MU_CSV_ERROR) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s", function_name, r->csv.error);
     }
-    r->line_number++;
-    size_t length = strlen(r->line);
-    bool ended = length > 0 && r->line[length - 1] == '\n';
-    if (!ended && !feof(r->file)) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT,
-                               "%s: %s:%zu: line longer than %d characters, expected a row curve,x,y", function_name,
-                               r->path, r->line_number, MAX_LINE - 2);
-    }
-    while (length > 0 && (r->line[length - 1] == '\n' || r->line[length - 1] == '\r')) {
-        r->line[--length] = '\0';
-    }
-    *got_line = true;
     return RB_OK;
 }
 
 static rb_status read_header(reader *r)
 {
-    bool got_line = false;
-    rb_status status = next_line(r, &got_line);
+    bool got_record = false;
+    rb_status status = next_record(r, &got_record);
     if (status != RB_OK) {
         return status;
     }
-    if (!got_line) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s:1: the file is empty, expected the header row '%s'",
-                               function_name, r->path, HEADER);
+    if (!got_record) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                               "%s: %s:1: the file is empty or blank, expected the header row '%s'", function_name,
+                               r->csv.path, HEADER);
     }
-    /* Spreadsheets often start a UTF-8 CSV with a byte-order mark. */
-    const char *header = r->line;
-    if (strncmp(header, "\xEF\xBB\xBF", 3) == 0) {
-        header += 3;
-    }
-    if (strcmp(header, HEADER) != 0) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s:1: header row is '%s', expected '%s'", function_name,
-                               r->path, header, HEADER);
+    const mu_csv_reader *csv = &r->csv;
+    if (csv->field_count != 3 || strcmp(csv->fields[0], "curve") != 0 || strcmp(csv->fields[1], "x") != 0 ||
+        strcmp(csv->fields[2], "y") != 0) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s:%ld: header row is '%s', expected '%s'", function_name,
+                               csv->path, csv->line_number, csv->line, HEADER);
     }
     return RB_OK;
 }
 
-/* `text` (field `field` of the current line) as a finite number. strtod
- * follows the C locale's decimal point; under a decimal-comma locale a
- * knot would not parse to its end and the row fails loudly rather than
- * being misread. */
-static rb_status parse_number(const reader *r, const char *field, const char *text, double *out)
+/* Field `field` (named `name` in messages) of the current record as a
+ * finite number. */
+static rb_status parse_number(const reader *r, const char *name, const char *field, double *out)
 {
-    char *end = NULL;
-    *out = strtod(text, &end);
-    if (end == text || *end != '\0') {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s:%zu: %s is '%s', expected a number", function_name,
-                               r->path, r->line_number, field, text);
+    if (mu_csv_number(field, out) != MU_CSV_NUMBER) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s:%ld: %s is '%s', expected a number", function_name,
+                               r->csv.path, r->csv.line_number, name, field);
     }
     if (!isfinite(*out)) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s:%zu: %s is '%s', expected a finite number",
-                               function_name, r->path, r->line_number, field, text);
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s:%ld: %s is '%s', expected a finite number",
+                               function_name, r->csv.path, r->csv.line_number, name, field);
     }
     return RB_OK;
 }
@@ -117,14 +89,14 @@ static rb_status append_knot(reader *r, mu_curve_table *table, mu_curve_kind kin
         size_t capacity = r->capacity[kind] == 0 ? 64 : 2 * r->capacity[kind];
         double *xs = realloc(table->x, capacity * sizeof *xs);
         if (xs == NULL) {
-            return rb_report_error(RB_ERR_OUT_OF_MEMORY, "%s: %s:%zu: out of memory for %zu knots", function_name,
-                                   r->path, r->line_number, capacity);
+            return rb_report_error(RB_ERR_OUT_OF_MEMORY, "%s: %s:%ld: out of memory for %zu knots", function_name,
+                                   r->csv.path, r->csv.line_number, capacity);
         }
         table->x = xs;
         double *ys = realloc(table->y, capacity * sizeof *ys);
         if (ys == NULL) {
-            return rb_report_error(RB_ERR_OUT_OF_MEMORY, "%s: %s:%zu: out of memory for %zu knots", function_name,
-                                   r->path, r->line_number, capacity);
+            return rb_report_error(RB_ERR_OUT_OF_MEMORY, "%s: %s:%ld: out of memory for %zu knots", function_name,
+                                   r->csv.path, r->csv.line_number, capacity);
         }
         table->y = ys;
         r->capacity[kind] = capacity;
@@ -132,37 +104,33 @@ static rb_status append_knot(reader *r, mu_curve_table *table, mu_curve_kind kin
     table->x[table->count] = x;
     table->y[table->count] = y;
     table->count++;
-    r->last_line[kind] = r->line_number;
+    r->last_line[kind] = r->csv.line_number;
     return RB_OK;
 }
 
-/* One row curve,x,y (r->line, modified in place) into its table. */
+/* The current record, curve,x,y, into its table. */
 static rb_status read_row(reader *r, mu_curve_table tables[MU_CURVE_KIND_COUNT])
 {
-    char *x_text = strchr(r->line, ',');
-    char *y_text = x_text == NULL ? NULL : strchr(x_text + 1, ',');
-    if (y_text == NULL || strchr(y_text + 1, ',') != NULL) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s:%zu: row is '%s', expected three fields curve,x,y",
-                               function_name, r->path, r->line_number, r->line);
+    const mu_csv_reader *csv = &r->csv;
+    if (csv->field_count != 3) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s:%ld: row is '%s', expected three fields curve,x,y",
+                               function_name, csv->path, csv->line_number, csv->line);
     }
-    *x_text++ = '\0';
-    *y_text++ = '\0';
-    const char *name = r->line;
-
+    const char *name = csv->fields[0];
     size_t kind = 0;
     while (kind < MU_CURVE_KIND_COUNT && strcmp(name, curve_names[kind]) != 0) {
         kind++;
     }
     if (kind == MU_CURVE_KIND_COUNT) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s:%zu: unknown curve '%s', expected %s, %s or %s",
-                               function_name, r->path, r->line_number, name, curve_names[0], curve_names[1],
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s:%ld: unknown curve '%s', expected %s, %s or %s",
+                               function_name, csv->path, csv->line_number, name, curve_names[0], curve_names[1],
                                curve_names[2]);
     }
     double x = 0.0;
     double y = 0.0;
-    rb_status status = parse_number(r, "x", x_text, &x);
+    rb_status status = parse_number(r, "x", csv->fields[1], &x);
     if (status == RB_OK) {
-        status = parse_number(r, "y", y_text, &y);
+        status = parse_number(r, "y", csv->fields[2], &y);
     }
     if (status != RB_OK) {
         return status;
@@ -171,9 +139,9 @@ static rb_status read_row(reader *r, mu_curve_table tables[MU_CURVE_KIND_COUNT])
     if (table->count > 0 && !(x > table->x[table->count - 1])) {
         return rb_report_error(
             RB_ERR_INVALID_ARGUMENT,
-            "%s: %s:%zu: x = %.10g of %s is not above its previous knot's x = %.10g (line %zu), expected x "
+            "%s: %s:%ld: x = %.10g of %s is not above its previous knot's x = %.10g (line %ld), expected x "
             "strictly increasing within a curve",
-            function_name, r->path, r->line_number, x, name, table->x[table->count - 1], r->last_line[kind]);
+            function_name, csv->path, csv->line_number, x, name, table->x[table->count - 1], r->last_line[kind]);
     }
     return append_knot(r, table, (mu_curve_kind)kind, x, y);
 }
@@ -188,15 +156,15 @@ static rb_status check_counts(const reader *r, size_t minimum_points, const char
         }
         if (tables[kind].count == 0) {
             return rb_report_error(RB_ERR_INVALID_ARGUMENT,
-                                   "%s: %s:%zu: the file ends without a row of curve %s, expected at least %zu knots "
+                                   "%s: %s:%ld: the file ends without a row of curve %s, expected at least %zu knots "
                                    "(%s interpolation)",
-                                   function_name, r->path, r->line_number, curve_names[kind], minimum_points,
+                                   function_name, r->csv.path, r->csv.line_number, curve_names[kind], minimum_points,
                                    interpolation_name);
         }
         return rb_report_error(
             RB_ERR_INVALID_ARGUMENT,
-            "%s: %s:%zu: curve %s ends here with %zu knots, expected at least %zu (%s interpolation)", function_name,
-            r->path, r->last_line[kind], curve_names[kind], tables[kind].count, minimum_points, interpolation_name);
+            "%s: %s:%ld: curve %s ends here with %zu knots, expected at least %zu (%s interpolation)", function_name,
+            r->csv.path, r->last_line[kind], curve_names[kind], tables[kind].count, minimum_points, interpolation_name);
     }
     return RB_OK;
 }
@@ -205,35 +173,27 @@ static rb_status read_rows(reader *r, mu_curve_table tables[MU_CURVE_KIND_COUNT]
 {
     rb_status status = read_header(r);
     while (status == RB_OK) {
-        bool got_line = false;
-        status = next_line(r, &got_line);
-        if (status != RB_OK || !got_line) {
+        bool got_record = false;
+        status = next_record(r, &got_record);
+        if (status != RB_OK || !got_record) {
             break;
         }
-        /* Blank lines (a trailing one, or spacing between the curves)
-         * carry no knot. */
-        if (r->line[0] != '\0') {
-            status = read_row(r, tables);
-        }
+        status = read_row(r, tables);
     }
     return status;
 }
 
-rb_status mu_curve_tables_read(const char *path, size_t minimum_points, const char *interpolation_name,
+rb_status mu_curve_tables_read(const char *path, FILE *file, size_t minimum_points, const char *interpolation_name,
                                mu_curve_table tables[MU_CURVE_KIND_COUNT])
 {
     memset(tables, 0, MU_CURVE_KIND_COUNT * sizeof tables[0]);
-    FILE *file = fopen(path, "r");
-    if (file == NULL) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s: cannot open the file: %s", function_name, path,
-                               strerror(errno));
-    }
-    reader r = {.path = path, .file = file};
+    reader r = {.capacity = {0}};
+    mu_csv_reader_init(&r.csv, path, file, 0);
     rb_status status = read_rows(&r, tables);
     if (status == RB_OK) {
         status = check_counts(&r, minimum_points, interpolation_name, tables);
     }
-    fclose(file);
+    mu_csv_reader_free(&r.csv);
     if (status != RB_OK) {
         mu_curve_tables_free(tables);
     }

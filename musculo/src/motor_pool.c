@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "csv_reader.h"
 #include "mu/motor_pool.h"
 
 struct mu_motor_pool {
@@ -219,7 +220,33 @@ static bool push_strength(double **values, int *count, int *capacity, double val
     return true;
 }
 
-static bool is_separator(int c) { return c == ',' || c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == EOF; }
+/* Every field of every record of the file as a strength, appended. */
+static rb_status read_strengths(const char *f, mu_csv_reader *csv, double **values, int *count)
+{
+    int capacity = 0;
+    mu_csv_result result;
+    while ((result = mu_csv_reader_next(csv)) == MU_CSV_RECORD) {
+        for (int k = 0; k < csv->field_count; ++k) {
+            double value = 0.0;
+            if (mu_csv_number(csv->fields[k], &value) != MU_CSV_NUMBER || !(value >= 0.0 && isfinite(value))) {
+                return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                                       "%s: %s:%ld: \"%s\" is not a strength, expected a finite number >= 0", f,
+                                       csv->path, csv->line_number, csv->fields[k]);
+            }
+            if (*count == MU_MAX_MOTOR_NEURONS) {
+                return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s:%ld: more than %d strengths", f, csv->path,
+                                       csv->line_number, MU_MAX_MOTOR_NEURONS);
+            }
+            if (!push_strength(values, count, &capacity, value)) {
+                return rb_report_error(RB_ERR_OUT_OF_MEMORY, "%s: %s: out of memory", f, csv->path);
+            }
+        }
+    }
+    if (result == MU_CSV_ERROR) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s", f, csv->error);
+    }
+    return RB_OK;
+}
 
 rb_status mu_motor_pool_load_csv(const char *path, mu_motor_pool **out)
 {
@@ -233,62 +260,14 @@ rb_status mu_motor_pool_load_csv(const char *path, mu_motor_pool **out)
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s: cannot open: %s, expected a CSV of strengths", f, path,
                                strerror(errno));
     }
+    /* The profile's own format (mu/motor_pool.h): numbers separated by
+     * commas or blanks, '#' comments. */
+    mu_csv_reader csv;
+    mu_csv_reader_init(&csv, path, file, MU_CSV_SPACE_SEPARATES | MU_CSV_COMMENTS);
     double *values = NULL;
     int count = 0;
-    int capacity = 0;
-    int line = 1;
-    char token[64];
-    size_t length = 0;
-    bool in_comment = false;
-    rb_status status = RB_OK;
-    for (;;) {
-        const int c = fgetc(file);
-        if (in_comment && c != '\n' && c != EOF) {
-            continue;
-        }
-        if (c == '#' || is_separator(c)) {
-            if (length > 0) {
-                token[length] = '\0';
-                char *end = NULL;
-                const double value = strtod(token, &end);
-                if (*end != '\0' || !(value >= 0.0 && isfinite(value))) {
-                    status = rb_report_error(RB_ERR_INVALID_ARGUMENT,
-                                             "%s: %s:%d: \"%s\" is not a strength, expected a finite number >= 0", f,
-                                             path, line, token);
-                    break;
-                }
-                if (count == MU_MAX_MOTOR_NEURONS) {
-                    status = rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s:%d: more than %d strengths", f, path,
-                                             line, MU_MAX_MOTOR_NEURONS);
-                    break;
-                }
-                if (!push_strength(&values, &count, &capacity, value)) {
-                    status = rb_report_error(RB_ERR_OUT_OF_MEMORY, "%s: %s: out of memory", f, path);
-                    break;
-                }
-                length = 0;
-            }
-            in_comment = c == '#';
-            if (c == '\n') {
-                ++line;
-                in_comment = false;
-            }
-            if (c == EOF) {
-                break;
-            }
-            continue;
-        }
-        if (length + 1 >= sizeof token) {
-            status = rb_report_error(RB_ERR_INVALID_ARGUMENT,
-                                     "%s: %s:%d: a field longer than %zu characters, expected a number", f, path, line,
-                                     sizeof token - 1);
-            break;
-        }
-        token[length++] = (char)c;
-    }
-    if (status == RB_OK && ferror(file)) {
-        status = rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s: read error, expected a readable file", f, path);
-    }
+    rb_status status = read_strengths(f, &csv, &values, &count);
+    mu_csv_reader_free(&csv);
     fclose(file);
     if (status == RB_OK && count == 0) {
         status =

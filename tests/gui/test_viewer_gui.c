@@ -34,24 +34,26 @@ static void write_file(const char *path, const char *text)
     fclose(file);
 }
 
-/* Runs `sinew view ARGUMENTS` on a virtual display; stdout and stderr go
- * to DIR/out.txt and DIR/err.txt. Returns the exit status. GTK draws with
+/* Runs `sinew view ARGUMENTS` on a virtual display, with `environment`
+ * ("NAME=VALUE ...", or "") set for it; stdout and stderr go to
+ * DIR/out.txt and DIR/err.txt. Returns the exit status. GTK draws with
  * Cairo, and GL is kept off: the viewer needs none, and Mesa's GL driver,
  * probed otherwise, keeps an allocation that LeakSanitizer reports in the
  * asan preset (from a library already unloaded, so no suppression can
  * name it). */
-static int run_viewer(const char *dir, const char *arguments)
+static int run_viewer_with(const char *dir, const char *environment, const char *arguments)
 {
     char command[4096];
-    snprintf(
-        command, sizeof command,
-        "GSK_RENDERER=cairo GDK_DEBUG=gl-disable GDK_BACKEND=x11 timeout 120 xvfb-run -a -s '-screen 0 1600x1000x24' "
-        "'%s' view %s >'%s/out.txt' 2>'%s/err.txt'",
-        SINEW_TOOL, arguments, dir, dir);
+    snprintf(command, sizeof command,
+             "%s GSK_RENDERER=cairo GDK_DEBUG=gl-disable GDK_BACKEND=x11 timeout 120 xvfb-run -a -s '-screen 0 "
+             "1600x1000x24' '%s' view %s >'%s/out.txt' 2>'%s/err.txt'",
+             environment, SINEW_TOOL, arguments, dir, dir);
     int status = system(command);
     cr_assert(WIFEXITED(status), "the viewer did not exit normally (status %d)", status);
     return WEXITSTATUS(status);
 }
+
+static int run_viewer(const char *dir, const char *arguments) { return run_viewer_with(dir, "", arguments); }
 
 static char *read_file(const char *path)
 {
@@ -334,4 +336,60 @@ Test(viewer, script_commands_rebuild_control_and_report_bad_values, .timeout = 2
     snprintf(path, sizeof path, "%s/err.txt", dir);
     remove(path);
     remove(dir);
+}
+
+/* The viewer's numbers use '.' under a decimal-comma locale as under C:
+ * GTK takes its locale from the environment, and the viewer gives
+ * LC_NUMERIC back to "C" after GTK starts. Under LC_ALL=de_DE.UTF-8 the
+ * arm loads (its curve tables read), the "angles" lines and the exported
+ * graph are byte for byte those of LC_ALL=C. The locale must exist:
+ * tools/setup.sh generates it. */
+Test(viewer, numbers_are_the_same_under_a_decimal_comma_locale, .timeout = 240)
+{
+    const char *locales[2] = {"C", "de_DE.UTF-8"};
+    char *outputs[2], *graphs[2];
+    size_t graph_lengths[2];
+    for (int k = 0; k < 2; ++k) {
+        char dir[64], script[128], graph[128], arguments[512], text[512];
+        make_temp_dir(dir, sizeof dir);
+        snprintf(script, sizeof script, "%s/script.txt", dir);
+        snprintf(graph, sizeof graph, "%s/graph.csv", dir);
+        snprintf(text, sizeof text,
+                 "activation \"Biceps Short\" 0.5\n"
+                 "play 30\n"
+                 "angles\n"
+                 "export activation %s\n"
+                 "quit\n",
+                 graph);
+        write_file(script, text);
+        snprintf(arguments, sizeof arguments, "arm --weight 1 --script '%s'", script);
+        char environment[128];
+        snprintf(environment, sizeof environment, "LANG=%s LC_ALL=%s", locales[k], locales[k]);
+        int status = run_viewer_with(dir, environment, arguments);
+        char path[128];
+        snprintf(path, sizeof path, "%s/err.txt", dir);
+        const char *errors = read_file(path);
+        cr_assert_eq(status, 0, "sinew view under %s exited with %d:\n%s", locales[k], status, errors);
+        cr_expect_eq(strstr(errors, "expected a number"), NULL, "under %s:\n%s", locales[k], errors);
+        snprintf(path, sizeof path, "%s/out.txt", dir);
+        outputs[k] = strdup(read_file(path));
+        FILE *file = fopen(graph, "rb");
+        cr_assert_not_null(file, "under %s the graph was not exported to %s", locales[k], graph);
+        graphs[k] = calloc(1, 65536);
+        cr_assert_not_null(graphs[k]);
+        graph_lengths[k] = fread(graphs[k], 1, 65535, file);
+        fclose(file);
+        char command[256];
+        snprintf(command, sizeof command, "rm -rf '%s'", dir);
+        cr_expect_eq(system(command), 0);
+    }
+    cr_expect_not_null(strstr(outputs[0], "angles t=0.5000"), "the C locale's output:\n%s", outputs[0]);
+    cr_expect_str_eq(outputs[1], outputs[0], "the viewer's output differs under %s", locales[1]);
+    cr_expect(graph_lengths[0] > 0 && graph_lengths[0] == graph_lengths[1] &&
+                  memcmp(graphs[0], graphs[1], graph_lengths[0]) == 0,
+              "the exported graph differs under %s:\n%s\nunder C:\n%s", locales[1], graphs[1], graphs[0]);
+    for (int k = 0; k < 2; ++k) {
+        free(outputs[k]);
+        free(graphs[k]);
+    }
 }

@@ -1,6 +1,4 @@
 /* SPDX-License-Identifier: MIT */
-#define _POSIX_C_SOURCE 200809L /* getline */
-
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -9,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "csv_reader.h" /* musculo/src: the muscle layer's internal CSV reader */
 #include "io/atomic_file.h"
 #include "io/csv_table.h"
 
@@ -121,162 +120,58 @@ int csv_table_find(const csv_table *table, const char *name)
 
 /* ---------------------------------------------------------------- reading */
 
-/* Splits `line` in place into at most `capacity` fields (stored in
- * `fields`, unquoted); returns the number of fields, or -1 with `problem`
- * set for an unterminated quote or more than `capacity` fields. The line
- * has no line break. */
-static int split_fields(char *line, char **fields, int capacity, const char **problem)
+/* The file's records come from the muscle layer's CSV reader, the one
+ * reader of every CSV file sinew reads (musculo/src/csv_reader.h). */
+
+static bool read_header(mu_csv_reader *csv, csv_table *table, char *error, size_t error_size)
 {
-    int count = 0;
-    char *read = line;
-    while (true) {
-        if (count == capacity) {
-            *problem = "more fields than the header";
-            return -1;
-        }
-        char *write = read;
-        fields[count++] = write;
-        if (*read == '"') {
-            ++read;
-            while (true) {
-                if (*read == '\0') {
-                    *problem = "a quoted field is not closed on its line";
-                    return -1;
-                }
-                if (*read == '"' && read[1] == '"') {
-                    *write++ = '"';
-                    read += 2;
-                } else if (*read == '"') {
-                    ++read;
-                    break;
-                } else {
-                    *write++ = *read++;
-                }
-            }
-            if (*read != ',' && *read != '\0') {
-                *problem = "text after a closing quote";
-                return -1;
-            }
-        } else {
-            while (*read != ',' && *read != '\0') {
-                *write++ = *read++;
-            }
-        }
-        char separator = *read;
-        *write = '\0';
-        if (separator == '\0') {
-            return count;
-        }
-        ++read;
+    mu_csv_result result = mu_csv_reader_next(csv);
+    if (result == MU_CSV_ERROR) {
+        return fail(error, error_size, "%s", csv->error);
     }
+    if (result == MU_CSV_END) {
+        return fail(error, error_size, "%s: empty file: expected a header row of column names", csv->path);
+    }
+    for (int c = 0; c < csv->field_count; ++c) {
+        if (csv->fields[c][0] == '\0') {
+            return fail(error, error_size, "%s:%ld: header: column %d has no name", csv->path, csv->line_number, c + 1);
+        }
+    }
+    return csv_table_init(table, csv->field_count, (const char *const *)csv->fields, error, error_size);
 }
 
-/* Reads one line into *line without its line break; false at the end. */
-static bool read_line(FILE *stream, char **line, size_t *size)
-{
-    ssize_t length = getline(line, size, stream);
-    if (length < 0) {
-        return false;
-    }
-    while (length > 0 && ((*line)[length - 1] == '\n' || (*line)[length - 1] == '\r')) {
-        (*line)[--length] = '\0';
-    }
-    return true;
-}
-
-static bool blank(const char *line) { return line[strspn(line, " \t")] == '\0'; }
-
-static double parse_cell(const char *text, bool *ok)
-{
-    const char *start = text + strspn(text, " \t");
-    if (*start == '\0') {
-        *ok = true;
-        return NAN;
-    }
-    char *end;
-    errno = 0;
-    double value = strtod(start, &end);
-    *ok = end != start && end[strspn(end, " \t")] == '\0';
-    return *ok ? value : NAN;
-}
-
-static bool read_header(FILE *stream, const char *path, csv_table *table, char **line, size_t *size, long *line_number,
-                        char *error, size_t error_size)
-{
-    do {
-        if (!read_line(stream, line, size)) {
-            return fail(error, error_size, "%s: empty file: expected a header row of column names", path);
-        }
-        ++*line_number;
-    } while (blank(*line));
-    /* A header of n fields has n - 1 commas outside quotes at most. */
-    int capacity = 1;
-    for (const char *c = *line; *c != '\0'; ++c) {
-        capacity += *c == ',';
-    }
-    char **fields = malloc((size_t)capacity * sizeof *fields);
-    if (fields == NULL) {
-        return fail(error, error_size, "out of memory");
-    }
-    const char *problem = NULL;
-    int count = split_fields(*line, fields, capacity, &problem);
-    bool ok = count > 0;
-    if (!ok) {
-        fail(error, error_size, "%s:%ld: header: %s", path, *line_number, problem);
-    }
-    for (int c = 0; ok && c < count; ++c) {
-        if (fields[c][0] == '\0') {
-            ok = fail(error, error_size, "%s:%ld: header: column %d has no name", path, *line_number, c + 1);
-        }
-    }
-    if (ok) {
-        ok = csv_table_init(table, count, (const char *const *)fields, error, error_size);
-    }
-    free(fields);
-    return ok;
-}
-
-static bool read_rows(FILE *stream, const char *path, csv_table *table, char **line, size_t *size, long *line_number,
-                      char *error, size_t error_size)
+static bool read_rows(mu_csv_reader *csv, csv_table *table, char *error, size_t error_size)
 {
     int columns = table->column_count;
-    char **fields = malloc((size_t)columns * sizeof *fields);
     double *values = malloc((size_t)columns * sizeof *values);
-    bool ok = fields != NULL && values != NULL;
-    if (!ok) {
-        fail(error, error_size, "out of memory");
+    if (values == NULL) {
+        return fail(error, error_size, "out of memory");
     }
-    while (ok && read_line(stream, line, size)) {
-        ++*line_number;
-        if (blank(*line)) {
-            continue;
-        }
-        const char *problem = NULL;
-        int count = split_fields(*line, fields, columns, &problem);
-        if (count < 0) {
-            ok = fail(error, error_size, "%s:%ld: %s (the header has %d fields)", path, *line_number, problem, columns);
-            break;
-        }
-        if (count != columns) {
-            ok = fail(error, error_size, "%s:%ld: %d fields, the header has %d", path, *line_number, count, columns);
+    bool ok = true;
+    mu_csv_result result = MU_CSV_END;
+    while (ok && (result = mu_csv_reader_next(csv)) == MU_CSV_RECORD) {
+        if (csv->field_count != columns) {
+            ok = fail(error, error_size, "%s:%ld: %d fields, the header has %d", csv->path, csv->line_number,
+                      csv->field_count, columns);
             break;
         }
         for (int c = 0; c < columns; ++c) {
-            bool number;
-            values[c] = parse_cell(fields[c], &number);
+            mu_csv_cell cell = mu_csv_number(csv->fields[c], &values[c]);
+            if (cell != MU_CSV_NUMBER) {
+                values[c] = NAN; /* an empty cell is a gap; anything else makes the column not numeric */
+            }
             csv_column *column = &table->columns[c];
-            if (!number && column->numeric) {
+            if (cell == MU_CSV_NOT_A_NUMBER && column->numeric) {
                 column->numeric = false;
-                column->bad_line = *line_number;
-                snprintf(column->bad_cell, sizeof column->bad_cell, "%s", fields[c]);
+                column->bad_line = csv->line_number;
+                snprintf(column->bad_cell, sizeof column->bad_cell, "%s", csv->fields[c]);
             }
         }
         ok = csv_table_add_row(table, values, error, error_size);
     }
-    if (ok && ferror(stream)) {
-        ok = fail(error, error_size, "%s: cannot read: %s", path, strerror(errno));
+    if (ok && result == MU_CSV_ERROR) {
+        ok = fail(error, error_size, "%s", csv->error);
     }
-    free(fields);
     free(values);
     return ok;
 }
@@ -291,12 +186,10 @@ bool csv_table_read(const char *path, csv_table *table, char *error, size_t erro
     if (stream == NULL) {
         return fail(error, error_size, "%s: %s", path, strerror(errno));
     }
-    char *line = NULL;
-    size_t size = 0;
-    long line_number = 0;
-    bool ok = read_header(stream, path, table, &line, &size, &line_number, error, error_size) &&
-              read_rows(stream, path, table, &line, &size, &line_number, error, error_size);
-    free(line);
+    mu_csv_reader csv;
+    mu_csv_reader_init(&csv, path, stream, 0);
+    bool ok = read_header(&csv, table, error, error_size) && read_rows(&csv, table, error, error_size);
+    mu_csv_reader_free(&csv);
     fclose(stream);
     if (!ok) {
         csv_table_free(table);

@@ -4,11 +4,14 @@
  * names carry their unit, "time_s", "Biceps Long.total_force_N" or
  * "force [N]").
  *
- * Reading: fields are separated by commas; a field in double quotes may
- * hold commas and doubled quotes (RFC 4180), but not line breaks; a line
- * may end in CRLF; blank lines are skipped. Every row must have as many
- * fields as the header. A cell is a number as strtod reads it (nan and
- * inf included) with nothing after it but spaces; an empty cell is a NaN.
+ * Reading goes through the muscle layer's CSV reader, the one reader of
+ * every CSV file sinew reads (musculo/src/csv_reader.h): fields are
+ * separated by commas; a field in double quotes may hold commas and
+ * doubled quotes (RFC 4180), but not line breaks; a line may end in CRLF;
+ * a byte-order mark and blank lines are skipped. Every row must have as
+ * many fields as the header. A cell is a number as strtod reads it in the
+ * C locale (nan and inf included) with only spaces around it; an empty
+ * cell is a NaN.
  * A column with any other cell is not numeric: it is kept, its values
  * NaN, with the first such cell remembered for the message of whoever
  * asks for the column.

@@ -6,6 +6,7 @@
  * loop until the window closes.
  */
 #include <gtk/gtk.h>
+#include <locale.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -152,6 +153,14 @@ int main(int argc, char **argv)
         script_free(commands);
         return EXIT_FAILURE;
     }
+    /* gtk_init_check took the whole locale from the environment (LANG,
+     * LC_ALL): GTK's messages and dialogs stay in the user's language,
+     * but numbers go back to the C locale, so that under a decimal-comma
+     * locale such as de_DE.UTF-8 the viewer still reads files, control
+     * values and scripts with '.', and writes status lines, "angles",
+     * graph exports and chart ticks with '.' (tests/gui/test_viewer_gui.c
+     * compares them with LC_ALL=C's). */
+    setlocale(LC_NUMERIC, "C");
     viewer app = {.exit_status = EXIT_SUCCESS, .overlays = {.joints = false}};
     simulation_init(&app.sim);
     app.view = view_transform_make(rb_v2(0.0, 0.0), 400.0);
