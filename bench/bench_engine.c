@@ -2,7 +2,7 @@
 /* bench_engine: time sinew's engine on the peer benchmark scenes, and
  * on a scaling sweep.
  *
- * Protocol of shared/peers/README.md, so the figures compare with
+ * The peer harnesses' protocol (docs/benchmarks.md), so the figures compare with
  * box2d24_bench and chipmunk_bench run on the same machine: dt = 1/60 s,
  * `warmup` untimed steps, then `steps` steps each timed alone with
  * clock_gettime(CLOCK_MONOTONIC); gravity (0, -10), friction 0.6,
@@ -18,7 +18,7 @@
  * base 20 and 100), many_pyramids (10 pyramids of base 20 side by side,
  * 2,100 boxes), joint_grid (the peers' 100 x 100 net), chain_hang and
  * chain_swing (the peers' 40-link chain with a 100:1 end box), balls (the
- * seed's 50 balls, seed 1, gravity (0, -9.81), drag applied before each
+ * original report's 50 balls, seed 1, gravity (0, -9.81), drag applied before each
  * step outside the timing), rain (300 balls falling a few at a time on
  * the base-100 pyramid, seed 1: the broad phase's searches around the
  * shapes that moved), and the sweep: pyramids of 105, 300, 1,035,
@@ -57,7 +57,7 @@ enum { EXIT_USAGE = 2 };
 static const char usage_text[] =
     "usage: bench_engine [options]\n"
     "\n"
-    "Times rb_world_step on the peer benchmark scenes (shared/peers/README.md) and a scaling sweep.\n"
+    "Times rb_world_step on the peer benchmark scenes (docs/benchmarks.md) and a scaling sweep.\n"
     "\n"
     "  --scene NAME    pyramid20, pyramid100, many_pyramids, joint_grid, chain_hang, chain_swing,\n"
     "                  balls, rain, sweep (pyramids of 105 .. 10,011 boxes), peers (the peers' five\n"
@@ -77,7 +77,7 @@ static const char usage_text[] =
 
 #define BENCH_DT (1.0 / 60.0)       /* s, the peers' step */
 #define BENCH_PEER_GRAVITY (-10.0)  /* m/s², the peers' */
-#define BENCH_BALLS_GRAVITY (-9.81) /* m/s², the seed's */
+#define BENCH_BALLS_GRAVITY (-9.81) /* m/s², the original's */
 #define BENCH_BALLS_COUNT 50
 #define BENCH_BALLS_SEED 1
 #define BENCH_RAIN_BASE 100

@@ -3,7 +3,7 @@
  * and cost in time.
  *
  * Scenes (gravity (0, -10) m/s², dt = 1/60 s, no sleeping):
- *   chain_hang, chain_swing  the peers' chain (shared/peers/README.md): 40
+ *   chain_hang, chain_swing  the peers' chain (docs/benchmarks.md): 40
  *       links and a 100:1 heavy box, hanging at rest or released from the
  *       horizontal; 300 steps (5 s), every one timed. The gaps are the
  *       peers' figures with their --warmup 0 --steps 300: the worst over

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Compares sinew's engine with the peer engines Debian packages, Box2D 2.4.1
-# and Chipmunk2D 7.0.3, on the scenes of shared/peers/README.md, as ratios
+# and Chipmunk2D 7.0.3, on the peer harnesses' scenes (docs/benchmarks.md), as ratios
 # measured in one session on this machine.
 #
 # Scenes and protocols (dt = 1/60 s, gravity (0, -10)):

@@ -211,7 +211,7 @@ Test(activation, muscle_activation_follows_its_excitation)
 {
     /* With dynamics on, mu_muscle_set_activation sets the excitation and
      * the activation follows it substep by substep exactly as the
-     * midpoint step does; with dynamics off it is set at once (the seed). */
+     * midpoint step does; with dynamics off it is set at once (the original). */
     const double h = 1.0 / 600.0;
     const mu_analytic_curves parameters = mu_default_analytic_curves();
     mu_curves *curves = NULL;

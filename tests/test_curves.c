@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* The Hill curves: the seed's tables (Ross et al. 2018) read, interpolated
- * (linear as the seed, or Steffen 1990) and clamped; seed 003's analytic
+/* The Hill curves: the original report's tables (Ross et al. 2018) read,
+ * interpolated (linear as the original, or Steffen 1990) and clamped; the
+ * MATLAB Hill worksheet's analytic
  * curves and their eccentric branch; the slope the muscle uses as its
  * damping; and the reader's and the parameters' errors.
  *
@@ -42,7 +43,7 @@ static const struct {
 
 static const mu_interpolation interpolations[2] = {MU_INTERPOLATION_LINEAR, MU_INTERPOLATION_STEFFEN};
 
-/* The knots of curve `name` in the seed's file, in file order. */
+/* The knots of curve `name` in the tables' file, in file order. */
 static knots read_seed_knots(const char *name)
 {
     FILE *file = fopen(SEED_TABLES, "r");
@@ -184,7 +185,7 @@ Test(curves, steffen_is_monotone_between_monotone_knots)
 
 Test(curves, seed_tables_values_at_rest)
 {
-    /* The seed's linear tables at l̃ = 1 and ṽ = 0 (framework.md §4): f_V(0)
+    /* The linear tables at l̃ = 1 and ṽ = 0: f_V(0)
      * is not exactly 1, since no knot sits at 0. */
     mu_curves *curves = seed_tables(MU_INTERPOLATION_LINEAR);
     const knots v = read_seed_knots("force_velocity");
@@ -206,7 +207,8 @@ Test(curves, seed_tables_values_at_rest)
     mu_curves_destroy(curves);
 }
 
-/* Seed 003's formulas, written as the seed writes them. */
+/* The formulas of the MATLAB worksheet "1D Muscle Model based on the Hill
+ * 2-Element Model", written as the worksheet writes them. */
 static double seed_active_length(double width, double l) { return exp(-pow((l - 1.0) / width, 2.0)); }
 
 static double seed_passive_length(double c, double d, double l) { return fmax(c * (exp(d * (l - 1.0)) - 1.0), 0.0); }
@@ -220,7 +222,7 @@ static double seed_velocity(double a, double max_force, double max_velocity, dou
 
 Test(curves, analytic_set_follows_seed_003)
 {
-    /* The seed's constants (a = 0.25 N, F_MAX = 5 N, Vmax = 1.5 mm/s), and
+    /* The worksheet's constants (a = 0.25 N, F_MAX = 5 N, Vmax = 1.5 mm/s), and
      * a second set with every parameter changed. */
     const double seed_a[2] = {0.25, 1.0};
     const double seed_max_force[2] = {5.0, 4.0};
@@ -233,14 +235,14 @@ Test(curves, analytic_set_follows_seed_003)
         expect_near(p.curvature, seed_a[s] / seed_max_force[s], 1e-15, "curvature is a/F_MAX");
         mu_curves *curves = analytic(&p);
         for (int i = 0; i <= 150; i++) {
-            /* l̃ over [0, 1.5], the seed's L_TOT = 0 : 1.5·L_rest. */
+            /* l̃ over [0, 1.5], the worksheet's L_TOT = 0 : 1.5·L_rest. */
             const double l = i / 100.0;
             expect_near(mu_curve_active_length(curves, l), seed_active_length(p.width, l), 1e-14, "analytic f_L");
             const double passive = seed_passive_length(p.passive_scale, p.passive_rate, l);
             expect_near(mu_curve_passive_length(curves, l), passive, 1e-14 + 1e-12 * passive, "analytic f_P");
         }
         for (int i = 0; i <= 10; i++) {
-            /* The seed's family of shortening speeds V = (i/10)·Vmax. */
+            /* The worksheet's family of shortening speeds V = (i/10)·Vmax. */
             const double speed = i / 10.0 * seed_max_velocity[s];
             const double expected = seed_velocity(seed_a[s], seed_max_force[s], seed_max_velocity[s], speed);
             expect_near(mu_curve_velocity(curves, -speed / seed_max_velocity[s]), expected, 1e-14,

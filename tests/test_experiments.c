@@ -1,6 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* The seed's experiments (experiments.md) as `sinew experiment` runs
- * them, each qualitative result of the report turned into a measured
+/* The experiments of Castanyer's report ("Implementació d'un model
+ * computacional de sistemes musculoesquelètics", 2023-24; docs/experiments.md)
+ * as `sinew experiment` runs them, each qualitative result of the report
+ * turned into a measured
  * one, read from the CSV the command writes:
  *   E1   the contraction rises, then returns to rest;
  *   E2   along the relaxation the active force falls and the passive
@@ -9,7 +11,7 @@
  *   E3.2 during the plateau the tension stays within 5 % of its target
  *        while the length falls; afterwards the muscle lengthens;
  *   E4   two pulses peak higher than one, the train higher than two;
- *   C1   seed 003's family of curves against its closed form;
+ *   C1   the MATLAB Hill worksheet's family of curves against its closed form;
  *   P1   the isometric twitch rises and relaxes, relaxing slower than it
  *        contracts; with the rigid tendon the force is the activation's,
  *        checked against the closed form and an independent integration
@@ -305,13 +307,14 @@ Test(experiment, e4_two_pulses_peak_higher_than_one_and_the_train_higher_than_tw
     double rest = one[start - 1];
     cr_expect(peaks[1] > peaks[0], "two pulses peak at %.4f, one at %.4f", peaks[1], peaks[0]);
     cr_expect(peaks[2] > peaks[1], "the train peaks at %.4f, two pulses at %.4f", peaks[2], peaks[1]);
-    /* The seed: "a much larger contraction". */
+    /* The report: "a much larger contraction". */
     cr_expect(peaks[2] - rest > 2.0 * (peaks[0] - rest), "train rise %.4f, one pulse's %.4f", peaks[2] - rest,
               peaks[0] - rest);
     csv_table_free(&table);
 }
 
-/* Seed 003's total force (framework.md §9), written out here from its
+/* The total force of the MATLAB worksheet "1D Muscle Model based on the
+ * Hill 2-Element Model", written out here from its
  * formulas: F = F_MAX·(f_L·f_V + max(F_PE, 0)), f_L = exp(-((l-1)/0.25)²),
  * f_V = (1 - V')/(1 + V'/0.05), F_PE = 0.01·(exp(10·(l-1)) - 1). */
 static double seed003_force(double length_mm, double shortening)
@@ -323,7 +326,7 @@ static double seed003_force(double length_mm, double shortening)
     return 5.0 * (fl * fv + passive);
 }
 
-/* The knots of `curve` in the seed's table file (lines curve,x,y). */
+/* The knots of `curve` in the curve table file (lines curve,x,y). */
 static int read_knots(const char *curve, double *x, double *y, int capacity)
 {
     FILE *f = fopen(SINEW_SOURCE_DIR "/models/data/hill-curves.csv", "r");
@@ -615,7 +618,7 @@ Test(experiment, r1_exertion_is_the_cumulative_share_of_the_worms_pool)
     }
     cr_expect_eq(exertion[0], 0.0, "no neuron exerts %g", exertion[0]);
     expect_near_relative(exertion[200], 1.0, 1e-12, "every neuron");
-    /* models.md: the first 30 % give about 3 % of the force. */
+    /* The worm's pool: the first 30 % give about 3 % of the force. */
     cr_expect(exertion[60] > 0.02 && exertion[60] < 0.04, "30 %% of the pool exert %.4f", exertion[60]);
     csv_table_free(&table);
 }

@@ -21,7 +21,7 @@
 
 #define REL 1e-12
 
-/* The seed's gravity, -9.8 m/s², plus a sideways part so that both axes
+/* The models' gravity, -9.8 m/s², plus a sideways part so that both axes
  * are checked. */
 static const rb_vec2 gravity = {0.5, -9.8};
 

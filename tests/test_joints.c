@@ -100,7 +100,7 @@ Test(joints, scenes_refuse_bad_arguments)
     destroy_world_and_expect_no_leak(world);
 }
 
-/* The peers' hard case (shared/peers/README.md): 40 links and a box 100
+/* The peers' hard case (docs/benchmarks.md): 40 links and a box 100
  * times heavier, swinging from horizontal, gravity (0, -10), 60 Hz, the
  * default solver settings: the worst gap over 0-5 s stays below 0.1 m
  * (Box2D 2.4 and Chipmunk come apart by metres; Box2D v3 with 4 substeps

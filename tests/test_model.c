@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Built models: counts at every level, variant and weight (worked out by
- * hand from shared/spec/models.md), joints that start met, the muscles'
+ * hand from the original report's geometry), joints that start met, the muscles'
  * actions on the joints, the Triceps Medial warning, and stability under
  * full activation switched on and off.
  */
@@ -176,7 +176,7 @@ Test(model, the_muscles_move_their_joints_the_right_way)
 
 Test(model, triceps_medial_too_short_is_reported)
 {
-    /* models.md: its whole path is about 0.185 m, shorter than its rest
+    /* Its whole path is about 0.185 m, shorter than its rest
      * length 0.2087 m at the asked normalized length 1.0. */
     mu_model_desc *desc = load("arm");
     mu_model *model = build(desc, 3, 0, 0, false);
@@ -285,7 +285,7 @@ Test(model, compliant_tendons_with_activation_dynamics_stay_stable)
      * their muscles switched fully on and off every 0.5 s for 10 s: no NaN
      * anywhere, and no part faster than the bound the rigid models keep
      * (20 m/s, so the kinetic energy stays bounded), nor more than twice
-     * as fast as with the seed's muscles plus 0.5 m/s. */
+     * as fast as with the original muscles plus 0.5 m/s. */
     const char *names[] = {"arm", "leg"};
     for (int n = 0; n < 2; ++n) {
         mu_model_desc *desc = load(names[n]);
@@ -306,7 +306,7 @@ Test(model, compliant_tendons_with_activation_dynamics_stay_stable)
             mu_model *compliant = build(desc, 4, 0, w, false);
             const double fastest = fastest_part_under_switching(compliant, 10.0, names[n]);
             cr_expect(fastest < 20.0 && fastest < 2.0 * rigid_fastest + 0.5,
-                      "%s weight %d: a part moved at %g m/s (%g with the seed's muscles)", names[n], w, fastest,
+                      "%s weight %d: a part moved at %g m/s (%g with the original muscles)", names[n], w, fastest,
                       rigid_fastest);
             cr_log_info("%s weight %d: fastest part %g m/s compliant, %g m/s rigid", names[n], w, fastest,
                         rigid_fastest);
@@ -360,7 +360,7 @@ Test(model, muscles_do_not_ring_at_the_substep_frequency)
      * step is one substep: with the biceps fully active, after 1 s no
      * muscle's velocity changes sign between consecutive substeps more
      * than a few times over the next 0.5 s. An explicit force-velocity
-     * term would flip it every substep (framework.md §4). */
+     * term would flip it every substep. */
     mu_model_desc *desc = load("arm");
     desc->frame_rate = 600.0;
     desc->substeps = 1;
@@ -389,7 +389,7 @@ Test(model, muscles_do_not_ring_at_the_substep_frequency)
 Test(model, a_hanging_load_is_held_by_the_tension_its_weight_asks)
 {
     /* The sample's Bone2 hangs from its muscle alone, straight below
-     * Bone1 (models.md). At rest the muscle carries exactly the weight
+     * Bone1. At rest the muscle carries exactly the weight
      * below it: Bone2 (1900 kg/m³ · 0.05 · 0.05 · 0.05 m = 0.2375 kg) and
      * the 5 kg disc, times g = 9.8. 1 % leaves room for the last of the
      * settling; a force read from the wrong place is off by far more. */

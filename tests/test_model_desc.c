@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Model files: the built-in models load with the geometry of
- * ../shared/spec/models.md, defaults fill what a file leaves out, lookups
+ * the original report's figures and code, defaults fill what a file leaves out, lookups
  * find objects by name, and every malformed or inconsistent file of the
  * corpus (tests/data/bad_models) fails with its expected message (file,
  * line and column, JSON path, what was expected) and no description.
@@ -211,12 +211,12 @@ Test(model_desc, arm_loads_as_models_md_gives_it)
     cr_expect_eq(biceps_short->symmetry, 0.6);
     cr_expect_eq(biceps_short->max_force, 0.0, "the force comes from the width and σ");
     expect_near(0.25 * RB_PI * biceps_short->rest_width * biceps_short->rest_width * biceps_short->specific_tension,
-                1267.0, 0.5, "the biceps' Fmax (models.md: about 1267 N)");
+                1267.0, 0.5, "the biceps' Fmax (about 1267 N)");
     cr_expect_eq(biceps_short->point_count, 2);
     expect_path_point(desc, biceps_short, 0, "Scapula", 0.05, 0.0);
     expect_path_point(desc, biceps_short, 1, "Radius", -0.0859, 0.012);
 
-    /* The seed's pulley is the path's origin, its tendon anchor a via point. */
+    /* The original's pulley is the path's origin, its tendon anchor a via point. */
     const mu_model_muscle *biceps_long = &desc->muscles[index_of(desc, MU_MODEL_MUSCLE, "Biceps Long")];
     cr_expect_eq(biceps_long->start_normalized_length, 1.25);
     cr_expect_eq(biceps_long->point_count, 3);
@@ -235,7 +235,7 @@ Test(model_desc, arm_loads_as_models_md_gives_it)
         path += rb_length(rb_sub(model_point(desc, medial->path[i + 1].body, medial->path[i + 1].point),
                                  model_point(desc, medial->path[i].body, medial->path[i].point)));
     }
-    expect_near(path, 0.185, 0.001, "Triceps Medial's path (models.md: about 0.185 m, below its rest length)");
+    expect_near(path, 0.185, 0.001, "Triceps Medial's path (about 0.185 m, below its rest length)");
     const mu_model_muscle *triceps_long = &desc->muscles[index_of(desc, MU_MODEL_MUSCLE, "Triceps Long")];
     expect_path_point(desc, triceps_long, 0, "Scapula", -0.05, 0.0167);
 
@@ -248,7 +248,7 @@ Test(model_desc, arm_loads_as_models_md_gives_it)
     expect_variant_muscles(desc, "All Biceps", biceps, 2);
     expect_variant_muscles(desc, "All Triceps", triceps, 3);
     expect_variant_muscles(desc, "All Biceps + Triceps", all, 5);
-    cr_expect_eq(mu_model_desc_find_variant(desc, "Biceps Short"), 1, "variants are numbered as in models.md");
+    cr_expect_eq(mu_model_desc_find_variant(desc, "Biceps Short"), 1, "variants are numbered as in the original");
 
     const mu_model_group *group = &desc->groups[index_of(desc, MU_MODEL_GROUP, "Biceps Short + Biceps Long")];
     cr_expect_eq(group->muscle_count, 2);

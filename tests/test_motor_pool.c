@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The motor pool (seed 001, framework.md §8) against running sums by
+/* The motor pool (after McIntyre, "Simulated Muscles") against running sums by
  * hand, profile images written here with Cairo, and the torque actuator
  * against Newton's second law for rotation (α = τ/I) and the conservation
  * of angular momentum under an internal torque pair.
@@ -61,7 +61,7 @@ Test(motor_pool, exertion_is_the_running_sum_share)
     cr_expect_eq(mu_motor_pool_neuron_count(pool), 5);
     expect_near(mu_motor_pool_total_strength(pool), 20.0, 0.0, "total");
     cr_expect_eq(mu_motor_pool_recruited(pool), 0, "nothing recruited at first");
-    expect_near(mu_motor_pool_exertion(pool), 0.0, 0.0, "n = 0 exerts nothing (not the seed's s_0)");
+    expect_near(mu_motor_pool_exertion(pool), 0.0, 0.0, "n = 0 exerts nothing (not McIntyre's s_0)");
     for (int n = 0; n <= 5; ++n) {
         cr_assert_eq(mu_motor_pool_recruit(pool, n), RB_OK);
         expect_near(mu_motor_pool_exertion(pool), cumsum[n] / 20.0, 1e-15, "e(n) = cumsum[n]/cumsum[all]");
@@ -94,7 +94,7 @@ Test(motor_pool, exponential_profile_of_the_worm)
         const double expected = (pow(q, n) - 1.0) / (pow(q, 200) - 1.0);
         expect_near(mu_motor_pool_exertion_at(pool, n), expected, 1e-12, "geometric sum share");
     }
-    /* models.md: the first 30 % give about 3 % of the force. */
+    /* The worm's pool: the first 30 % give about 3 % of the force. */
     const double first_30 = mu_motor_pool_exertion_at(pool, 60);
     cr_expect(first_30 > 0.02 && first_30 < 0.04, "first 30 %% give %g", first_30);
     mu_motor_pool_destroy(pool);

@@ -161,7 +161,7 @@ static double force_while_moving(double speed)
 
 Test(muscle, shortening_lowers_and_lengthening_raises_the_force)
 {
-    /* The seed clipped every shortening to zero velocity; with signed
+    /* The original clipped every shortening to zero velocity; with signed
      * velocity a muscle shortening at a tenth of Vmax pulls with
      * f_V(-0.1) < 1 of its isometric force, and one lengthening at that
      * speed with f_V(0.1) > 1 (the insertion is kinematic, so its speed is

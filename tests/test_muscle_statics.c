@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The report's static formulas (§2.2) and the lengths derived from the
+/* The static formulas of Castanyer's report and the lengths derived from the
  * anchor geometry, against hand calculations; a muscle built with the
  * derived lengths starts where they say.
  */
@@ -26,8 +26,8 @@ Test(statics, max_force_and_pcsa_by_hand)
     /* 50 000 sarcomeres of 2 µm: 10 cm; 12 cm measured at 2.4 µm: 10 cm. */
     expect_near(mu_fibre_length_from_sarcomeres(50000.0), 0.1, 1e-15, "n·2 µm");
     expect_near(mu_fibre_length_normalized(0.12, 2.4e-6), 0.1, 1e-15, "l·2 µm/s");
-    /* The seed's biceps: π·(0.0328 m)²/4 at 1.5 MPa. */
-    expect_near(mu_max_force_from_pcsa(RB_PI * 0.0328 * 0.0328 / 4.0, 1.5e6), 1267.4, 0.05, "the seed's biceps");
+    /* The original biceps: π·(0.0328 m)²/4 at 1.5 MPa. */
+    expect_near(mu_max_force_from_pcsa(RB_PI * 0.0328 * 0.0328 / 4.0, 1.5e6), 1267.4, 0.05, "the original biceps");
 }
 
 Test(statics, bad_arguments_are_errors)

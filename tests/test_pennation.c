@@ -49,7 +49,7 @@ Test(pennation, angle_is_capped_below_ninety_degrees)
     }
     /* A belly shorter than the shortest fibre's extent gets the shortest fibre. */
     expect_near(mu_pennation_fibre_length(0.001, width), shortest, 1e-15, "fibre at the cap");
-    /* Unpennated: no angle, and the belly is the fibre (any sign, as the seed). */
+    /* Unpennated: no angle, and the belly is the fibre (any sign, as the original). */
     cr_expect_eq(mu_pennation_angle(0.01, 0.0), 0.0);
     cr_expect_eq(mu_pennation_fibre_length(-0.01, 0.0), -0.01);
     cr_expect(isnan(mu_pennation_width(0.1, MU_MAX_PENNATION_ANGLE)), "α_opt at the cap");

@@ -5,7 +5,7 @@
  * Limits: "standing" is the issue's figure, the top box less than 1 cm
  * sideways from where it started (a stack that starts to topple leaves it
  * within a second, a fallen one by metres). No pyramid box may move more than
- * 0.25 m, the peers' threshold (README of shared/peers), half a box. The
+ * 0.25 m, the peers' threshold (docs/benchmarks.md), half a box. The
  * deepest overlap after any step must stay under 3 linear slops: position
  * correction leaves at most one slop at rest, and one step of gravity adds
  * g·dt² = 2.7 mm before the solver pushes back; a solver that lets boxes sink

@@ -38,7 +38,7 @@ static inline void expect_vec_near(rb_vec2 actual, rb_vec2 expected, double tole
               expected.y, tolerance);
 }
 
-/* The step of the seed and the benchmarks: 60 Hz. */
+/* The step of the models and the benchmarks: 60 Hz. */
 #define TEST_DT (1.0 / 60.0)
 
 /* A world with the default solver settings and the given gravity; the test

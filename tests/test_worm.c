@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The worm of seed 001 (models.md "worm"): its file loads as described,
+/* The worm of McIntyre's "Simulated Muscles": its file loads as described,
  * and its torque muscle turns the top segment only when neurons are
  * recruited, by the torque its exertion gives.
  */

@@ -4,8 +4,8 @@
  *   - a rigid bar, C = L - length = 0, without the spring;
  *   - a spring-damper towards `length` with it (0 Hz: no pull at all);
  *   - and, with the limit, min_length <= L <= max_length whatever the
- *     spring does: a rope is a 0 Hz spring with a max_length (report
- *     §3.3.3: "rigid bar" and "maximum distance" constraints).
+ *     spring does: a rope is a 0 Hz spring with a max_length (the "rigid
+ *     bar" and "maximum distance" constraints of Box2D).
  * An impulse λ along u changes the length rate by λ/m_u, with
  *   1/m_u = 1/mA + 1/mB + (rA × u)²/IA + (rB × u)²/IB. */
 #include <float.h>

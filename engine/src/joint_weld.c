@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Weld joint: the point constraint and the angular constraint
  * θ = angle(B) - angle(A) - reference = 0 freeze the bodies' relative
- * pose (the seed's glue). Each part is rigid, or soft when given a
+ * pose (a model file's glue). Each part is rigid, or soft when given a
  * frequency: a spring-damper towards the frozen pose. Each substep solves
  * the angle, then the point. */
 #include <float.h>

@@ -1,13 +1,16 @@
 /* SPDX-License-Identifier: MIT */
-/* The Hill muscle's curves f_L, f_P and f_V (framework.md §4 and §9), in
+/* The Hill muscle's curves f_L, f_P and f_V, in
  * two kinds:
  *
- * - tabulated: the seed's tables digitised from Ross et al. 2018 (PLOS
- *   Comput Biol), interpolated by GSL, straight lines as the seed or
+ * - tabulated: the tables of Castanyer ("Implementació d'un model
+ *   computacional de sistemes musculoesquelètics", 2023-24), digitised
+ *   from Ross et al. 2018 (PLOS Comput Biol), interpolated by GSL,
+ *   straight lines as Castanyer's or
  *   Steffen's monotone cubic (Steffen 1990, Astron. Astrophys. 239:443),
  *   which is smooth yet never overshoots its knots; clamped to the end
  *   values outside the table;
- * - analytic: seed 003's Gaussian force-length, exponential passive curve
+ * - analytic: the Gaussian force-length of the MATLAB worksheet "1D
+ *   Muscle Model based on the Hill 2-Element Model" (anonymous), exponential passive curve
  *   and Hill's (1938) hyperbola for shortening, joined at ṽ = 0 to an
  *   eccentric branch for lengthening (derived at analytic_velocity).
  *
@@ -40,9 +43,9 @@ struct mu_curves {
 
 mu_analytic_curves mu_default_analytic_curves(void)
 {
-    /* Seed 003's constants: SK = 0.25; a/F0 = 0.25 N / 5 N; c = 0.01,
-     * d = 10. The plateau is ours (the seed has no lengthening branch);
-     * 1.5 lies in the physiological 1.4-1.8 (experiments.md). */
+    /* The MATLAB worksheet's constants: SK = 0.25; a/F0 = 0.25 N / 5 N;
+     * c = 0.01, d = 10. The plateau is ours (the worksheet has no
+     * lengthening branch); 1.5 lies in the physiological 1.4-1.8. */
     return (mu_analytic_curves){
         .width = 0.25,
         .curvature = 0.05,
@@ -151,12 +154,13 @@ rb_status mu_curves_create_analytic(const mu_analytic_curves *parameters, mu_cur
     }
     const mu_analytic_curves p = *parameters;
     if (!in_range(p.width, 0.0)) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: width is %g, expected a finite SK > 0 (seed 003: 0.25)", f,
-                               p.width);
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                               "%s: width is %g, expected a finite SK > 0 (the Hill worksheet's: 0.25)", f, p.width);
     }
     if (!in_range(p.curvature, 0.0)) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT,
-                               "%s: curvature is %g, expected a finite a/F0 > 0 (seed 003: 0.05)", f, p.curvature);
+                               "%s: curvature is %g, expected a finite a/F0 > 0 (the Hill worksheet's: 0.05)", f,
+                               p.curvature);
     }
     if (!in_range(p.eccentric_plateau, 1.0)) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT,
@@ -165,11 +169,13 @@ rb_status mu_curves_create_analytic(const mu_analytic_curves *parameters, mu_cur
     }
     if (!in_range(p.passive_scale, 0.0)) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT,
-                               "%s: passive_scale is %g, expected a finite c > 0 (seed 003: 0.01)", f, p.passive_scale);
+                               "%s: passive_scale is %g, expected a finite c > 0 (the Hill worksheet's: 0.01)", f,
+                               p.passive_scale);
     }
     if (!in_range(p.passive_rate, 0.0)) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT,
-                               "%s: passive_rate is %g, expected a finite d > 0 (seed 003: 10)", f, p.passive_rate);
+                               "%s: passive_rate is %g, expected a finite d > 0 (the Hill worksheet's: 10)", f,
+                               p.passive_rate);
     }
     mu_curves *curves = calloc(1, sizeof *curves);
     if (curves == NULL) {
@@ -220,7 +226,7 @@ static void end_lookup(mu_curve_kind kind, mu_curve_hint *hint, const gsl_interp
 
 /* The interpolant at x, its end values outside the table, and never below
  * 0: a muscle only pulls, and a hand-edited table may dip below (the
- * report's annex prints -0.001 for the first passive knots). */
+ * original report's annex prints -0.001 for the first passive knots). */
 static double tabulated_value(const mu_curves *curves, mu_curve_kind kind, mu_curve_hint *hint, double x)
 {
     const mu_curve_table *table = &curves->tables[kind];
@@ -259,7 +265,7 @@ static double tabulated_slope(const mu_curves *curves, mu_curve_kind kind, mu_cu
 
 /* Analytic f_V, with k = a/F0 (curvature) and P the eccentric plateau.
  *
- * Shortening (ṽ <= 0), seed 003's hyperbola (Hill 1938) in the shortening
+ * Shortening (ṽ <= 0), the MATLAB worksheet's hyperbola (Hill 1938) in the shortening
  * speed s = -ṽ:
  *   f_V = (1 - s)/(1 + s/k) = k(1 - s)/(k + s)   for 0 <= s <= 1, 0 beyond.
  * Its slope: d f_V/ds = k·(-(k + s) - (1 - s))/(k + s)² = -k(1 + k)/(k + s)²,
@@ -312,7 +318,8 @@ double mu_curve_active_length_hinted(const mu_curves *curves, mu_curve_hint *hin
     if (curves->tabulated) {
         return tabulated_value(curves, MU_CURVE_ACTIVE_LENGTH, hint, normalized_length);
     }
-    /* Seed 003 (Challis 1994 after Hatze 1981): a Gaussian of width SK. */
+    /* The MATLAB worksheet's (Challis 1994 after Hatze 1981): a Gaussian
+     * of width SK. */
     const double z = (normalized_length - 1.0) / curves->analytic.width;
     return exp(-z * z);
 }
@@ -325,7 +332,7 @@ double mu_curve_passive_length_hinted(const mu_curves *curves, mu_curve_hint *hi
     if (curves->tabulated) {
         return tabulated_value(curves, MU_CURVE_PASSIVE_LENGTH, hint, normalized_length);
     }
-    /* Seed 003: c·(exp(d·(l̃ - 1)) - 1), counted only where positive, that
+    /* The MATLAB worksheet's: c·(exp(d·(l̃ - 1)) - 1), counted only where positive, that
      * is for l̃ > 1; expm1 keeps its digits just above l̃ = 1. */
     if (normalized_length <= 1.0) {
         return 0.0;

@@ -20,7 +20,7 @@
  * balance at the substep's end, with l_f + h·v and the predicted path
  * length. Backward Euler is stable for the stiff fibre-tendon pair (with
  * only β to damp a passive fibre against a stiff tendon its time constant
- * β·l_s·ε0/(1.72·Vmax) is about 1 ms for the seed's Vmax of 0.25 m/s, below
+ * β·l_s·ε0/(1.72·Vmax) is about 1 ms for the original's Vmax of 0.25 m/s, below
  * the 1.7 ms substep, where an explicit step would diverge).
  */
 #ifndef MU_FIBRE_TENDON_H

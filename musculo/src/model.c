@@ -10,11 +10,12 @@
 #include "mu/motor_pool.h"
 #include "mu/torque_actuator.h"
 
-/* Framework constants (framework.md §3). */
+/* The constants of Castanyer's framework ("Implementació d'un model
+ * computacional de sistemes musculoesquelètics", 2023-24). */
 #define BONE_DAMPING 8.0  /* 1/s, linear and angular */
-#define BONE_FRICTION 8.0 /* the seed's; bones are sensors, so it never acts */
+#define BONE_FRICTION 8.0 /* the original's; bones are sensors, so it never acts */
 #define BONE_RESTITUTION 0.5
-#define NAIL_HALF_EXTENT 0.0025 /* m: the seed's tiny box */
+#define NAIL_HALF_EXTENT 0.0025 /* m: the original's tiny box */
 #define IRON_DENSITY 7874.0     /* kg/m³ */
 #define WEIGHT_DEPTH 0.10       /* m */
 #define DEGREES (180.0 / RB_PI)
@@ -481,9 +482,9 @@ static rb_status create_world_and_curves(mu_model *model)
     rb_world_def def = rb_default_world_def();
     def.gravity = model->desc->gravity;
     /* One engine step per frame, split into the model's substeps (600 Hz
-     * for the seed); the muscles update at the start of each substep from
+     * for the built-in models); the muscles update at the start of each substep from
      * the substep callback. At 600 Hz, 4 velocity and 1 position pass
-     * give the motion the seed's 8 and 3 give (the arm's biceps holds the
+     * give the motion the original's 8 and 3 give (the arm's biceps holds the
      * elbow at 134.5 degrees either way, the model tests pass) for 70 %
      * of the time. */
     def.enable_profile = false; /* a tenth of a small model's step */

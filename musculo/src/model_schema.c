@@ -13,12 +13,13 @@
 #include "mu/motor_pool.h"
 #include "mu/muscle.h"
 
-/* The seed's defaults (framework.md §2–§4). */
+/* The defaults of Castanyer's framework ("Implementació d'un model
+ * computacional de sistemes musculoesquelètics", 2023-24). */
 #define DEFAULT_GRAVITY_Y (-9.8)       /* m/s² */
 #define DEFAULT_FRAME_RATE 60.0        /* Hz */
 #define DEFAULT_SUBSTEPS 10            /* per frame */
 #define DEFAULT_BONE_DENSITY 1900.0    /* kg/m³ */
-#define DEFAULT_SPECIFIC_TENSION 1.5e6 /* N/m², the seed's code (its report's table says 3e5) */
+#define DEFAULT_SPECIFIC_TENSION 1.5e6 /* N/m², the original code's (its report's table says 3e5) */
 #define DEFAULT_MAX_VELOCITY 0.25      /* m/s */
 #define DEFAULT_START_NORMALIZED_LENGTH 1.0
 #define DEFAULT_SYMMETRY 0.5
@@ -26,11 +27,11 @@
  * (Lieber and Fridén 2000); the model's cap is 84.26° (pennation.h). */
 #define MAX_PENNATION_DEGREES 80.0
 #define DEGREES (180.0 / RB_PI)
-/* The seed's named minimal and maximal normalized lengths (framework.md
- * §4): the range its muscles work in. */
+/* The original's named minimal and maximal normalized lengths: the range
+ * its muscles work in. */
 #define MIN_START_NORMALIZED_LENGTH 0.5
 #define MAX_START_NORMALIZED_LENGTH 1.5
-/* A hinge limit beyond a full turn is a mistake, usually the seed's ±999°
+/* A hinge limit beyond a full turn is a mistake, usually the original's ±999°
  * for "no limit", which the format says by leaving the limit out. */
 #define MAX_LIMIT_DEGREES 360.0
 #define MAX_SUBSTEPS 1000
@@ -253,7 +254,7 @@ static rb_status parse_muscle_force(mu_json_reader *reader, const json_t *object
     return RB_OK;
 }
 
-/* Vmax: max_velocity in m/s (the seed's), or max_velocity_rest_lengths in
+/* Vmax: max_velocity in m/s (the original's), or max_velocity_rest_lengths in
  * rest lengths per second (as physiology states it, e.g. 10 /s), stored
  * in m/s by parse_muscle once the rest length is known (it may be derived
  * from the path). */
@@ -321,7 +322,7 @@ static rb_status parse_muscle_size(mu_json_reader *reader, const json_t *object,
                                mu_json_positive, "the fibres' rest (optimal) length in m", &muscle->rest_length);
 }
 
-/* The options beyond the seed's muscle: pennation, activation dynamics
+/* The options beyond the original muscle: pennation, activation dynamics
  * and a compliant tendon, each an object of its parameters. */
 static rb_status parse_muscle_physiology(mu_json_reader *reader, const json_t *object, mu_model_muscle *muscle)
 {

@@ -4,11 +4,12 @@
  *
  *   F = Fmax·(a·f_L(l̃)·f_V(ṽ) + f_P(l̃))·cos α     (Hill 1938; Zajac 1989)
  *
- * Rigid tendon (the seed's): the fibre follows the path. The
+ * Rigid tendon (as in Castanyer's, "Implementació d'un model computacional
+ * de sistemes musculoesquelètics", 2023-24): the fibre follows the path. The
  * force-velocity term makes F depend on the lengthening speed v with
  * slope c = Fmax·a·f_L·f_V'(ṽ)/Vmax, a damper stiff enough (about 86 kN·s/m
  * for the biceps) that an explicit force diverges at 600 Hz
- * (framework.md §4). So the muscle does not apply F itself: it linearizes
+ * as an explicit force. So the muscle does not apply F itself: it linearizes
  * F about the present velocity, F(v') ≈ F(v) + c·(v' - v), and hands the
  * cable the law T = T0 + c·v' with T0 = F(v) - c·v, which the solver
  * takes implicitly with the bodies' motion. With pennation the fibre
@@ -145,7 +146,7 @@ static double pennation_cosine(double fibre_length, double width)
 }
 
 /* The rigid tendon's fibre: the belly itself without pennation (the
- * seed's, any sign), else √(x² + w²). */
+ * original's, any sign), else √(x² + w²). */
 static double rigid_fibre_length(const mu_muscle *muscle, double path)
 {
     const double belly = path - muscle->tendon_length;
@@ -313,8 +314,8 @@ double mu_muscle_max_force(const mu_muscle *muscle) { return muscle->max_force; 
 double mu_muscle_tendon_length(const mu_muscle *muscle) { return muscle->tendon_length; }
 rb_cable_id mu_muscle_cable(const mu_muscle *muscle) { return muscle->cable; }
 
-/* The seed's proportional controller on the active force, once per
- * substep (report annex C.7), on the excitation when there is one. */
+/* Castanyer's proportional controller on the active force, once per
+ * substep, on the excitation when there is one. */
 static void control_tension(mu_muscle *muscle)
 {
     const double error = muscle->target_tension - muscle->readout.active_force;

@@ -1,5 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* The report's static formulas (§2.2), argument checks included.
+/* The static formulas of Castanyer's report ("Implementació d'un model
+ * computacional de sistemes musculoesquelètics", 2023-24), argument
+ * checks included.
  *
  * PCSA = ACSA/cos β is the report's relation as it states it: behind one
  * anatomical section of a pennate muscle lie more fibres, packed

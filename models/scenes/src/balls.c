@@ -1,5 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* The seed's balls box (shared/spec/models.md, "balls"), with the seed's
+/* The balls box of the first engine in Castanyer's report ("Implementació
+ * d'un model computacional de sistemes musculoesquelètics", 2023-24): a
+ * 2.44 m x 1.22 m billiard table, with the report's
  * overlapping start replaced by random non-overlapping positions now that
  * the engine has collisions. */
 #include <math.h>
@@ -19,7 +21,7 @@
 #define BALLS_MAX_RESTITUTION 1.0
 #define BALLS_MIN_FORCE 2.0              /* N */
 #define BALLS_MAX_FORCE 70.0             /* N */
-#define BALLS_KICK_DURATION (1.0 / 60.0) /* s, the seed's time step */
+#define BALLS_KICK_DURATION (1.0 / 60.0) /* s, the original's time step */
 #define BALLS_MIN_ANGLE 20.0             /* degrees from +x, counter-clockwise */
 #define BALLS_MAX_ANGLE 160.0            /* degrees */
 
@@ -146,7 +148,7 @@ rb_status scene_balls_create(rb_world *world, int count, uint64_t seed, scene_ba
         if (status != RB_OK) {
             return status;
         }
-        /* The seed pushed each ball with a force held for one of its
+        /* The original pushed each ball with a force held for one of its
          * 1/60 s steps: the impulse F·Δt, given at once. */
         const rb_vec2 impulse = rb_scale(force * BALLS_KICK_DURATION, rb_v2(cos(angle), sin(angle)));
         status = rb_body_apply_linear_impulse_to_center(world, ball, impulse);

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The chain of the peer benchmarks (shared/peers/README.md), built as
+/* The chain of the peer benchmarks (docs/benchmarks.md), built as
  * box2d24_bench.cpp and chipmunk_bench.c build it, so that its joint gaps
  * compare one to one: light links ending in a box 100 times heavier, the
  * classic case where an iterative solver lets the joints stretch, since

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The joint grid of the peer benchmarks (shared/peers/README.md, after
+/* The joint grid of the peer benchmarks (docs/benchmarks.md, after
  * Box2D v3's CreateJointGrid), built as box2d24_bench.cpp builds it: same
  * creation order of bodies and joints, hence the same order in which a
  * sequential solver visits the joints. A net hung from seven static bodies

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The pyramid of the peer benchmarks (shared/peers/README.md), built
+/* The pyramid of the peer benchmarks (docs/benchmarks.md), built
  * exactly as box2d24_bench.cpp and chipmunk_bench.c build it so that
  * timings and figures compare one to one. Every coordinate is a multiple
  * of 0.5 with a small integer numerator, hence exact in float and double:
