@@ -63,8 +63,9 @@ install(FILES ${PROJECT_SOURCE_DIR}/models/sample.json ${PROJECT_SOURCE_DIR}/mod
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/models/controls
         DESTINATION ${CMAKE_INSTALL_DATADIR}/sinew
         COMPONENT runtime)
+# The model file format is docs/model-format.md (models/README.md only
+# points to it, and would replace the top-level README.md here).
 install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/LICENSE ${PROJECT_SOURCE_DIR}/CHANGELOG.md
-              ${PROJECT_SOURCE_DIR}/models/README.md
         DESTINATION ${CMAKE_INSTALL_DOCDIR}
         COMPONENT documentation)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/
