@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "experiment.h"
 #include "io/atomic_file.h"
+#include "io/provenance.h"
 
 /* DIR/STEM.EXTENSION, or DIR/STEM_PART.EXTENSION for a part other than
  * ""; false when it does not fit. */
@@ -19,6 +20,24 @@ static bool part_path(const experiment *self, const experiment_options *options,
     int written = snprintf(path, path_size, "%s%s%s%s%s.%s", options->out_dir, separator, self->stem,
                            part[0] != '\0' ? "_" : "", part, extension);
     return written > 0 && (size_t)written < path_size;
+}
+
+/* The CSV file `csv`, then its sidecar (io/provenance.h) naming the
+ * experiment and its options. */
+static bool write_table(const experiment *self, const experiment_options *options, const csv_table *table,
+                        const char *csv, char *error, size_t error_size)
+{
+    json_t *settings = json_pack("{s:s, s:s, s:o}", "experiment", self->name, "stem", self->stem, "pulse_width_s",
+                                 options->pulse_width > 0.0 ? json_real(options->pulse_width) : json_null());
+    if (settings == NULL) {
+        snprintf(error, error_size, "out of memory");
+        return false;
+    }
+    if (!csv_table_write(table, csv, error, error_size)) {
+        json_decref(settings);
+        return false;
+    }
+    return provenance_write_sidecar(csv, settings, error, error_size);
 }
 
 static bool output_path(const experiment *self, const experiment_options *options, const char *extension, char *path,
@@ -37,8 +56,8 @@ int experiment_write(const experiment *self, const experiment_options *options, 
         return EXIT_FAILURE;
     }
     char error[CHART_ERROR_SIZE];
-    if (!csv_table_write(table, csv, error, sizeof error) || !chart_write_png(figure, png, error, sizeof error) ||
-        !chart_write_svg(figure, svg, error, sizeof error)) {
+    if (!write_table(self, options, table, csv, error, sizeof error) ||
+        !chart_write_png(figure, png, error, sizeof error) || !chart_write_svg(figure, svg, error, sizeof error)) {
         fprintf(stderr, "sinew: %s\n", error);
         return EXIT_FAILURE;
     }
@@ -56,7 +75,7 @@ int experiment_write_table(const experiment *self, const experiment_options *opt
         return EXIT_FAILURE;
     }
     char error[CHART_ERROR_SIZE];
-    if (!csv_table_write(table, csv, error, sizeof error)) {
+    if (!write_table(self, options, table, csv, error, sizeof error)) {
         fprintf(stderr, "sinew: %s\n", error);
         return EXIT_FAILURE;
     }

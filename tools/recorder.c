@@ -79,14 +79,18 @@ static void free_lists(recorder *csv)
 {
     free(csv->hinges);
     free(csv->parts);
+    json_decref(csv->settings);
     csv->hinges = NULL;
     csv->parts = NULL;
+    csv->settings = NULL;
 }
 
-bool recorder_open(recorder *csv, const char *path, const mu_model *model, char *error, size_t error_size)
+bool recorder_open(recorder *csv, const char *path, mu_model *model, const mu_model_options *options, char *error,
+                   size_t error_size)
 {
     *csv = (recorder){.hinges = NULL};
-    if (!collect_built(csv, model)) {
+    csv->settings = provenance_model_settings(model, options);
+    if (csv->settings == NULL || !collect_built(csv, model)) {
         snprintf(error, error_size, "out of memory");
         free_lists(csv);
         return false;
@@ -137,8 +141,21 @@ bool recorder_write_row(recorder *csv, const mu_model *model, double time, char 
 
 bool recorder_commit(recorder *csv, char *error, size_t error_size)
 {
+    json_t *settings = csv->settings;
+    csv->settings = NULL;
     free_lists(csv);
-    return atomic_file_commit(&csv->file, error, error_size);
+    char path[ATOMIC_FILE_PATH_MAX];
+    snprintf(path, sizeof path, "%s", csv->file.path);
+    if (!atomic_file_commit(&csv->file, error, error_size)) {
+        json_decref(settings);
+        return false;
+    }
+    /* Frame rate from the model's own settings: rows / rate is the run's
+     * duration, as --duration rounded it to whole frames. */
+    double frame_rate = json_real_value(json_object_get(settings, "frame_rate_hz"));
+    json_object_set_new(settings, "frames", json_integer(csv->rows));
+    json_object_set_new(settings, "duration_s", json_real((double)csv->rows / frame_rate));
+    return provenance_write_sidecar(path, settings, error, error_size);
 }
 
 void recorder_abandon(recorder *csv)

@@ -11,6 +11,10 @@
  * built hinge NAME.angle_deg; for every built part (nails, then bones)
  * NAME.x_m, NAME.y_m, NAME.angle_deg. A header field holding a comma, a
  * quote or a line break is quoted as RFC 4180 says.
+ *
+ * Beside it, PATH-metadata.json names the version, the command line and
+ * the model's settings as built (io/provenance.h), with the frames
+ * recorded.
  */
 #ifndef SINEW_RECORDER_H
 #define SINEW_RECORDER_H
@@ -19,6 +23,7 @@
 #include <stddef.h>
 
 #include "io/atomic_file.h"
+#include "io/provenance.h"
 #include "mu/model.h"
 
 /* Quantities recorded per muscle, per hinge and per part. */
@@ -31,16 +36,19 @@ typedef struct recorder {
     int *parts; /* model indices of the built parts */
     int part_count;
     long rows;
+    json_t *settings; /* of the sidecar: the model's, taken at the start */
 } recorder;
 
-/* Opens `path` and writes the header for the model as built. On failure
- * nothing is left on disk and `error` says why. */
-bool recorder_open(recorder *csv, const char *path, const mu_model *model, char *error, size_t error_size);
+/* Opens `path` and writes the header for the model as built with
+ * `options`. On failure nothing is left on disk and `error` says why. */
+bool recorder_open(recorder *csv, const char *path, mu_model *model, const mu_model_options *options, char *error,
+                   size_t error_size);
 
 /* Writes the row of the model's present state at `time` s. */
 bool recorder_write_row(recorder *csv, const mu_model *model, double time, char *error, size_t error_size);
 
-/* Renames the file into place; either way the recorder is closed after. */
+/* Renames the file into place, then writes its sidecar; either way the
+ * recorder is closed after. */
 bool recorder_commit(recorder *csv, char *error, size_t error_size);
 
 /* Removes the temporary file; the recorder is closed after. */

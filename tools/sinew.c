@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "commands.h"
+#include "io/provenance.h"
 
 static const char usage_text[] = "usage: sinew COMMAND [arguments]\n"
                                  "\n"
@@ -25,6 +26,8 @@ static const char usage_text[] = "usage: sinew COMMAND [arguments]\n"
 
 int main(int argc, char **argv)
 {
+    /* Every CSV sidecar and figure names the command that made it. */
+    provenance_set_command_line(argc, argv);
     static const struct {
         const char *name;
         int (*run)(int argc, char **argv);

@@ -12,6 +12,7 @@
 
 #include <cairo.h>
 #include <criterion/criterion.h>
+#include <jansson.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -342,8 +343,9 @@ Test(viewer, script_commands_rebuild_control_and_report_bad_values, .timeout = 2
  * GTK takes its locale from the environment, and the viewer gives
  * LC_NUMERIC back to "C" after GTK starts. Under LC_ALL=de_DE.UTF-8 the
  * arm loads (its curve tables read), the "angles" lines and the exported
- * graph are byte for byte those of LC_ALL=C. The locale must exist:
- * tools/setup.sh generates it. */
+ * graph are byte for byte those of LC_ALL=C; the export's sidecar names
+ * the graph and the model. The locale must exist: tools/setup.sh
+ * generates it. */
 Test(viewer, numbers_are_the_same_under_a_decimal_comma_locale, .timeout = 240)
 {
     const char *locales[2] = {"C", "de_DE.UTF-8"};
@@ -379,6 +381,19 @@ Test(viewer, numbers_are_the_same_under_a_decimal_comma_locale, .timeout = 240)
         cr_assert_not_null(graphs[k]);
         graph_lengths[k] = fread(graphs[k], 1, 65535, file);
         fclose(file);
+        /* Beside the export, its sidecar (tools/io/provenance.h) names the
+         * graph and the model as built. */
+        char sidecar[160];
+        snprintf(sidecar, sizeof sidecar, "%s-metadata.json", graph);
+        json_error_t json_error;
+        json_t *root = json_load_file(sidecar, 0, &json_error);
+        cr_assert_not_null(root, "%s: %s", sidecar, json_error.text);
+        json_t *settings = json_object_get(json_object_get(root, "sinew"), "settings");
+        cr_expect_str_eq(json_string_value(json_object_get(settings, "graph")), "activation");
+        cr_expect_str_eq(json_string_value(json_object_get(settings, "model")), "arm");
+        cr_expect_eq(json_real_value(json_object_get(settings, "weight_kg")), 1.0);
+        cr_expect_str_eq(json_string_value(json_object_get(root, "url")), "graph.csv");
+        json_decref(root);
         char command[256];
         snprintf(command, sizeof command, "rm -rf '%s'", dir);
         cr_expect_eq(system(command), 0);

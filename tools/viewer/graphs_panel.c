@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "graphs_panel.h"
+#include "io/provenance.h"
 
 /* One graph's drawing area and what it shows. */
 typedef struct graph_view {
@@ -30,9 +31,42 @@ static void draw_graph(GtkDrawingArea *area, cairo_t *cr, int width, int height,
     }
 }
 
+/* The sidecar's settings (io/provenance.h): the graph, and the model as
+ * built or the scene's engine settings. NULL when out of memory. */
+static json_t *export_settings(simulation *sim, live_graph_kind kind)
+{
+    json_t *settings = json_pack("{s:s, s:f}", "graph", live_graph_file_stem(kind), "frame_rate_hz",
+                                 1.0 / simulation_frame_duration(sim));
+    if (settings != NULL && sim->kind == SIMULATION_MODEL) {
+        json_t *model = provenance_model_settings(sim->model, &sim->options);
+        if (model == NULL || json_object_update(settings, model) != 0 ||
+            json_object_set_new(settings, "model_argument", json_string(sim->model_argument)) != 0) {
+            json_decref(settings);
+            settings = NULL;
+        }
+        json_decref(model);
+    } else if (settings != NULL && simulation_world(sim) != NULL) {
+        const rb_solver_settings solver = rb_world_solver_settings(simulation_world(sim));
+        if (json_object_set_new(settings, "solver", provenance_solver_settings(&solver)) != 0) {
+            json_decref(settings);
+            settings = NULL;
+        }
+    }
+    return settings;
+}
+
 bool graphs_panel_export(graphs_panel *panel, live_graph_kind kind, const char *path, char *error, size_t error_size)
 {
-    return live_graph_write_csv(&panel->views[kind].graph, &panel->app->samples, path, error, error_size);
+    json_t *settings = export_settings(&panel->app->sim, kind);
+    if (settings == NULL) {
+        snprintf(error, error_size, "out of memory");
+        return false;
+    }
+    if (!live_graph_write_csv(&panel->views[kind].graph, &panel->app->samples, path, error, error_size)) {
+        json_decref(settings);
+        return false;
+    }
+    return provenance_write_sidecar(path, settings, error, error_size);
 }
 
 static void on_export_chosen(GtkNativeDialog *dialog, int response, gpointer data)

@@ -14,6 +14,7 @@
 #include "controls_panel.h"
 #include "engine_panel.h"
 #include "graphs_panel.h"
+#include "io/provenance.h"
 #include "script.h"
 #include "sim_loop.h"
 #include "viewer.h"
@@ -131,6 +132,8 @@ static void load_first(viewer *app, const viewer_options *options)
 
 int main(int argc, char **argv)
 {
+    /* Every graph export's sidecar names the command that made it. */
+    provenance_set_command_line(argc, argv);
     viewer_options options;
     switch (viewer_options_parse(argc - 1, argv + 1, &options)) {
     case VIEWER_PARSE_HELP:
