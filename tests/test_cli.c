@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* The sinew program, run as a user runs it: a model run writes its CSV
  * with the expected header and one row per frame; bad arguments give one
- * line on stderr, a non-zero status and no file.
+ * line on stderr, a non-zero status and no file; every command's help
+ * lists the options its parser takes; `scene` runs the scenes the viewer
+ * offers; --version gives the library's version.
  */
 #define _POSIX_C_SOURCE 200809L /* mkdtemp, popen */
 
@@ -11,6 +13,9 @@
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include "rb/version.h"
+#include "scenes/registry.h"
 
 /* Runs `sinew ARGS` with stdout and stderr sent to `log`; returns its
  * exit status. */
@@ -124,4 +129,174 @@ Test(cli, bad_arguments_fail_with_one_line_and_no_file)
     cr_expect(strstr(text, "built-in: sample, arm, leg, worm;") != NULL, "the built-ins listed: %s", text);
     remove(log);
     rmdir(dir);
+}
+
+/* Runs `sinew ARGS` and returns its status, with stdout and stderr
+ * together in `output`. */
+static int run_sinew_output(const char *args, char *output, size_t size)
+{
+    char log[] = "/tmp/sinew-cli-log-XXXXXX";
+    int fd = mkstemp(log);
+    cr_assert(fd >= 0);
+    close(fd);
+    int status = run_sinew(args, log);
+    FILE *f = fopen(log, "r");
+    cr_assert_not_null(f);
+    output[fread(output, 1, size - 1, f)] = '\0';
+    fclose(f);
+    remove(log);
+    return status;
+}
+
+static int count_lines(const char *text)
+{
+    int lines = 0;
+    for (const char *c = text; *c != '\0'; ++c) {
+        lines += *c == '\n';
+    }
+    return lines;
+}
+
+/* The commands that take options, with an operand each accepts. */
+static const char *const commands[] = {"models",     "check",         "run arm", "scene pyramid",
+                                       "plot x.csv", "experiment e1", "version"};
+
+Test(cli, the_version_is_the_library_version)
+{
+    char output[4096], expected[64];
+    snprintf(expected, sizeof expected, "sinew %s\n", rb_version());
+    cr_expect_eq(run_sinew_output("--version", output, sizeof output), 0);
+    cr_expect_str_eq(output, expected);
+    cr_expect_eq(run_sinew_output("version", output, sizeof output), 0);
+    cr_expect_str_eq(output, expected);
+    cr_expect_str_eq(rb_version(), RB_VERSION_STRING, "the program runs with the library it was built with");
+    /* --help lists every command, the version among them. */
+    cr_expect_eq(run_sinew_output("--help", output, sizeof output), 0);
+    const char *names[] = {"models", "check", "run", "scene", "plot", "experiment", "view", "version"};
+    for (size_t k = 0; k < sizeof names / sizeof names[0]; ++k) {
+        char line[32];
+        snprintf(line, sizeof line, "\n  %s ", names[k]);
+        cr_expect(strstr(output, line) != NULL, "no \"%s\" in: %s", line, output);
+    }
+    cr_expect(strstr(output, "--version") != NULL, "%s", output);
+}
+
+/* Every option in a command's help is one its parser knows: given with an
+ * empty value (`--NAME=`), each is refused for its value or for having
+ * one, never as unknown, and nothing runs. */
+Test(cli, every_command_accepts_each_option_its_help_lists)
+{
+    for (size_t c = 0; c < sizeof commands / sizeof commands[0]; ++c) {
+        char args[256], help[16384];
+        snprintf(args, sizeof args, "%.*s --help", (int)strcspn(commands[c], " "), commands[c]);
+        cr_assert_eq(run_sinew_output(args, help, sizeof help), 0, "'sinew %s' failed: %s", args, help);
+        cr_expect(strncmp(help, "usage: sinew ", 13) == 0, "'sinew %s': %s", args, help);
+        int listed = 0;
+        for (const char *line = strstr(help, "\n  --"); line != NULL; line = strstr(line + 1, "\n  --")) {
+            char name[64];
+            snprintf(name, sizeof name, "%.*s", (int)strcspn(line + 3, " \n"), line + 3);
+            if (strcmp(name, "--help") == 0) {
+                continue;
+            }
+            ++listed;
+            char output[4096];
+            snprintf(args, sizeof args, "%s %s=", commands[c], name);
+            cr_expect_eq(run_sinew_output(args, output, sizeof output), 2, "'sinew %s': %s", args, output);
+            cr_expect(strstr(output, "unknown option") == NULL, "'sinew %s': %s", args, output);
+            cr_expect_eq(count_lines(output), 1, "'sinew %s': %s", args, output);
+            cr_expect(strstr(output, name) != NULL, "'sinew %s' does not name the option: %s", args, output);
+        }
+        cr_expect(listed > 0 || strcmp(commands[c], "models") == 0 || strcmp(commands[c], "check") == 0 ||
+                      strcmp(commands[c], "version") == 0,
+                  "'sinew %s --help' lists no options", commands[c]);
+    }
+}
+
+Test(cli, every_command_refuses_an_unknown_option_in_one_line)
+{
+    for (size_t c = 0; c < sizeof commands / sizeof commands[0]; ++c) {
+        char args[256], output[4096];
+        snprintf(args, sizeof args, "%s --frobnicate 1", commands[c]);
+        cr_expect_eq(run_sinew_output(args, output, sizeof output), 2, "'sinew %s': %s", args, output);
+        cr_expect_eq(count_lines(output), 1, "'sinew %s': %s", args, output);
+        char command[64];
+        snprintf(command, sizeof command, "sinew %.*s: unknown option \"--frobnicate\"", (int)strcspn(commands[c], " "),
+                 commands[c]);
+        cr_expect(strstr(output, command) != NULL, "'sinew %s': %s", args, output);
+    }
+}
+
+/* `sinew scene` runs every scene of the registry the viewer offers, and
+ * its trace goes where `run` and `experiment` put their files: --out DIR,
+ * named after the scene, angles in degrees. */
+Test(cli, scene_runs_every_scene_of_the_registry_with_the_shared_flags)
+{
+    char dir[] = "/tmp/sinew-cli-XXXXXX";
+    cr_assert_not_null(mkdtemp(dir));
+    char help[16384];
+    cr_assert_eq(run_sinew_output("scene --help", help, sizeof help), 0, "%s", help);
+    for (int k = 0; k < SCENE_KIND_COUNT; ++k) {
+        const scene_entry *entry = &scene_registry[k];
+        char listed[64], args[512], output[4096], path[600];
+        snprintf(listed, sizeof listed, "\n  %s ", entry->name);
+        cr_expect(strstr(help, listed) != NULL, "'sinew scene --help' does not list %s", entry->name);
+        for (int p = 0; p < entry->parameter_count; ++p) {
+            snprintf(listed, sizeof listed, "\n  --%s ", entry->parameters[p].name);
+            cr_expect(strstr(help, listed) != NULL, "no --%s in 'sinew scene --help'", entry->parameters[p].name);
+        }
+        snprintf(args, sizeof args, "scene %s --duration 0.05 --hz 60 --out '%s'", entry->name, dir);
+        cr_expect_eq(run_sinew_output(args, output, sizeof output), 0, "'sinew %s': %s", args, output);
+        snprintf(listed, sizeof listed, "scene        %s", entry->name);
+        cr_expect(strstr(output, listed) != NULL, "%s", output);
+        snprintf(path, sizeof path, "%s/%s.csv", dir, entry->name);
+        FILE *f = fopen(path, "r");
+        cr_assert_not_null(f, "no trace %s: %s", path, output);
+        char line[256] = "";
+        cr_expect_not_null(fgets(line, sizeof line, f));
+        cr_expect_str_eq(line, "time_s,body,x_m,y_m,angle_deg,vx_m_s,vy_m_s,omega_deg_s\n");
+        int rows = 0;
+        while (fgets(line, sizeof line, f) != NULL) {
+            ++rows;
+        }
+        fclose(f);
+        remove(path);
+        /* Three steps of each dynamic body. */
+        cr_expect(rows > 0 && rows % 3 == 0, "%s: %d rows", entry->name, rows);
+    }
+    rmdir(dir);
+
+    /* The viewer, when it is built, offers the same scenes. */
+    if (run_sinew_output("view --help", help, sizeof help) == 0) {
+        for (int k = 0; k < SCENE_KIND_COUNT; ++k) {
+            char listed[64];
+            snprintf(listed, sizeof listed, "\n  %s ", scene_registry[k].name);
+            cr_expect(strstr(help, listed) != NULL, "'sinew view --help' does not list %s", scene_registry[k].name);
+        }
+    }
+}
+
+Test(cli, scene_refuses_bad_parameters_in_one_line)
+{
+    static const struct {
+        const char *args;
+        const char *message;
+    } cases[] = {
+        {"scene", "missing the scene's name"},
+        {"scene nosuch", "unknown scene \"nosuch\""},
+        {"scene pyramid --count 3", "--count does not apply to scene pyramid"},
+        {"scene stack --count 0", "--count expects an integer from 1 to 1000"},
+        {"scene incline --angle 1.5e3", "--angle expects a number >= 0 and <= 80"},
+        {"scene balls --seed -1", "--seed expects an integer from 0"},
+        {"scene drop --duration 0.001 --hz 60", "less than one step"},
+        {"scene drop --seconds 1", "unknown option \"--seconds\""},
+        {"scene drop --csv x.csv", "unknown option \"--csv\""},
+        {"scene drop pyramid", "unexpected argument \"pyramid\": give one scene"},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        char output[4096];
+        cr_expect_eq(run_sinew_output(cases[k].args, output, sizeof output), 2, "'sinew %s': %s", cases[k].args,
+                     output);
+        cr_expect_eq(count_lines(output), 1, "'sinew %s': %s", cases[k].args, output);
+        cr_expect(strstr(output, cases[k].message) != NULL, "'sinew %s': %s", cases[k].args, output);
+    }
 }

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* `sinew experiment NAME [--out DIR] [--pulse-width S]`: runs one of the
- * seed's experiments (experiment.h) and writes DIR/STEM.csv, .png, .svg.
+ * experiments (experiment.h) and writes DIR/STEM.csv, .png, .svg.
  */
 #include <errno.h>
 #include <stdio.h>
@@ -8,38 +8,54 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "cli/option_value.h"
+#include "cli/options.h"
 #include "commands.h"
 #include "experiment.h"
 
-static void print_usage(FILE *stream)
-{
-    fputs("usage: sinew experiment NAME [--out DIR] [--pulse-width S]\n"
-          "\n"
-          "Runs one of the seed's experiments (docs: experiments.md) and writes DIR/STEM.csv, its figure\n"
-          "DIR/STEM.png and DIR/STEM.svg, and a few lines of figures.\n"
-          "\n"
-          "experiments:\n",
-          stream);
-    for (int k = 0; k < experiment_count; ++k) {
-        fprintf(stream, "  %-6s %-15s %s\n", experiment_list[k].name, experiment_list[k].stem,
-                experiment_list[k].summary);
-    }
-    fprintf(stream,
-            "\n"
-            "options:\n"
-            "  --out DIR          directory of the files (default .)\n"
-            "  --pulse-width S    width of E1's, E4's and P1's pulses, > 0 .. %g s (P1: .. %g s), rounded to\n"
-            "                     whole substeps (default: one frame for E1 and E4, as the seed's space bar;\n"
-            "                     2 ms for P1)\n"
-            "  --help             print this text\n",
-            EXPERIMENT_MAX_PULSE_WIDTH, EXPERIMENT_P1_MAX_PULSE_WIDTH);
-}
+enum { OPT_OUT, OPT_PULSE_WIDTH };
 
-static int usage_error(const char *message)
+static const cli_option options_table[] = {
+    {.name = "out",
+     .id = OPT_OUT,
+     .kind = CLI_PATH,
+     .value_name = "DIR",
+     .help = "directory of the files",
+     .fallback = "."},
+    {.name = "pulse-width",
+     .id = OPT_PULSE_WIDTH,
+     .kind = CLI_NUMBER,
+     .value_name = "S",
+     .help = "width of the pulses in s, rounded to whole substeps, for the experiments\n"
+             "that give pulses (each one's longest is listed below); by default one\n"
+             "frame for e1 and e4, as the original program's space bar, and 2 ms for p1",
+     .min = 0.0,
+     .max = EXPERIMENT_MAX_PULSE_WIDTH,
+     .min_open = true},
+};
+
+static const cli_command command = {
+    .name = "sinew experiment",
+    .operands = "NAME [options]",
+    .max_operands = 1,
+    .operand = "experiment",
+    .about = "Runs one of the experiments listed below and writes DIR/STEM.csv, its figure\n"
+             "DIR/STEM.png and DIR/STEM.svg, and a few lines of figures.\n",
+    .options = options_table,
+    .option_count = sizeof options_table / sizeof options_table[0],
+};
+
+static void print_help(FILE *stream)
 {
-    fprintf(stderr, "sinew: %s (see `sinew experiment --help`)\n", message);
-    return EXIT_USAGE;
+    cli_print_help(&command, stream);
+    fputs("\nexperiments (NAME, STEM, what it shows; the longest --pulse-width):\n", stream);
+    for (int k = 0; k < experiment_count; ++k) {
+        const experiment *entry = &experiment_list[k];
+        fprintf(stream, "  %-6s %-17s %s", entry->name, entry->stem, entry->summary);
+        if (entry->max_pulse_width > 0.0) {
+            fprintf(stream, "; pulses up to %g s", entry->max_pulse_width);
+        }
+        fputc('\n', stream);
+    }
 }
 
 static const experiment *find_experiment(const char *name)
@@ -68,35 +84,26 @@ static int list_experiments(const char *name)
 
 int cmd_experiment(int argc, char **argv)
 {
-    static const char *const with_value[] = {"--out", "--pulse-width"};
     experiment_options options = {.out_dir = ".", .pulse_width = 0.0};
-    const char *name = NULL;
-    char error[OPTION_ERROR_SIZE];
-    for (int i = 0; i < argc; ++i) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            print_usage(stdout);
-            return EXIT_SUCCESS;
+    cli_parser parser;
+    cli_parser_start(&parser, &command, argc, argv);
+    cli_value value;
+    int id;
+    while ((id = cli_next(&parser, &value)) >= 0) {
+        if (id == OPT_OUT) {
+            options.out_dir = value.text;
+        } else {
+            options.pulse_width = value.number;
         }
-        if (strncmp(argv[i], "--", 2) != 0) {
-            if (name != NULL) {
-                snprintf(error, sizeof error, "unexpected argument \"%s\": give one experiment", argv[i]);
-                return usage_error(error);
-            }
-            name = argv[i];
-            continue;
-        }
-        const char *option, *value;
-        if (!option_split(argc, argv, &i, with_value, sizeof with_value / sizeof with_value[0], &option, &value, error,
-                          sizeof error)) {
-            return usage_error(error);
-        }
-        bool ok = strcmp(option, "--out") == 0
-                      ? option_parse_path(option, value, &options.out_dir, error, sizeof error)
-                      : option_parse_double(option, value, 0.0, true, EXPERIMENT_MAX_PULSE_WIDTH, &options.pulse_width,
-                                            error, sizeof error);
-        if (!ok) {
-            return usage_error(error);
-        }
+    }
+    const char *name = id == CLI_END && parser.operand_count == 1 ? parser.operands[0] : NULL;
+    cli_parser_finish(&parser);
+    if (id == CLI_HELP) {
+        print_help(stdout);
+        return EXIT_SUCCESS;
+    }
+    if (id == CLI_ERROR) {
+        return EXIT_USAGE;
     }
     const experiment *chosen = name != NULL ? find_experiment(name) : NULL;
     if (chosen == NULL) {
@@ -104,12 +111,10 @@ int cmd_experiment(int argc, char **argv)
     }
     if (options.pulse_width > chosen->max_pulse_width) {
         if (chosen->max_pulse_width > 0.0) {
-            snprintf(error, sizeof error, "--pulse-width %g: %s takes pulses of at most %g s", options.pulse_width,
-                     chosen->name, chosen->max_pulse_width);
-        } else {
-            snprintf(error, sizeof error, "--pulse-width: %s gives no pulses", chosen->name);
+            return cli_usage_error(&command, "--pulse-width %g: %s takes pulses of at most %g s", options.pulse_width,
+                                   chosen->name, chosen->max_pulse_width);
         }
-        return usage_error(error);
+        return cli_usage_error(&command, "--pulse-width: %s gives no pulses", chosen->name);
     }
     struct stat info;
     if (stat(options.out_dir, &info) != 0) {

@@ -11,16 +11,23 @@
 #include "model_source.h"
 #include "mu/model.h"
 
-static const char models_usage[] = "usage: sinew models\n"
-                                   "\n"
-                                   "Lists the built-in models (models/*.json) with their variants, weight choices,\n"
-                                   "muscles and groups: the names `sinew run` takes.\n";
+static const cli_command models_command = {
+    .name = "sinew models",
+    .operands = "",
+    .operand = "",
+    .about = "Lists the built-in models (models/*.json) with their variants, weight choices,\n"
+             "muscles and groups: the names `sinew run` takes.\n",
+};
 
-static const char check_usage[] = "usage: sinew check FILE\n"
-                                  "\n"
-                                  "Validates the model file FILE (format: models/README.md) and builds it in each\n"
-                                  "of its variants. Prints a one-line summary and exits 0, or prints what is wrong\n"
-                                  "and where (file:line:column, the JSON path, what was expected) and exits 1.\n";
+static const cli_command check_command = {
+    .name = "sinew check",
+    .operands = "FILE",
+    .max_operands = 1,
+    .operand = "model file",
+    .about = "Validates the model file FILE (format: models/README.md) and builds it in each\n"
+             "of its variants. Prints a one-line summary and exits 0, or prints what is wrong\n"
+             "and where (file:line:column, the JSON path, what was expected) and exits 1.\n",
+};
 
 static const char *plural(int count) { return count == 1 ? "" : "s"; }
 
@@ -64,13 +71,10 @@ static void print_builtin(const char *name, const mu_model_desc *desc)
 
 int cmd_models(int argc, char **argv)
 {
-    if (argc > 0 && (strcmp(argv[0], "--help") == 0 || strcmp(argv[0], "-h") == 0)) {
-        fputs(models_usage, stdout);
-        return EXIT_SUCCESS;
-    }
-    if (argc > 0) {
-        fprintf(stderr, "sinew: models takes no arguments, got \"%s\"\n", argv[0]);
-        return EXIT_USAGE;
+    const char *operand;
+    int id = cli_parse_operand(&models_command, argc, argv, &operand);
+    if (id != CLI_END) {
+        return id == CLI_HELP ? EXIT_SUCCESS : EXIT_USAGE;
     }
     for (int k = 0; k < MODEL_BUILTIN_COUNT; ++k) {
         mu_model_desc *desc;
@@ -144,15 +148,14 @@ static int build_every_variant(const char *path, const mu_model_desc *desc)
 
 int cmd_check(int argc, char **argv)
 {
-    if (argc > 0 && (strcmp(argv[0], "--help") == 0 || strcmp(argv[0], "-h") == 0)) {
-        fputs(check_usage, stdout);
-        return EXIT_SUCCESS;
+    const char *path;
+    int id = cli_parse_operand(&check_command, argc, argv, &path);
+    if (id != CLI_END) {
+        return id == CLI_HELP ? EXIT_SUCCESS : EXIT_USAGE;
     }
-    if (argc != 1) {
-        fprintf(stderr, "sinew: check takes one model file, got %d arguments (see `sinew check --help`)\n", argc);
-        return EXIT_USAGE;
+    if (path == NULL) {
+        return cli_usage_error(&check_command, "missing the model file");
     }
-    const char *path = argv[0];
     mu_model_desc *desc;
     if (mu_model_desc_load(path, &desc) != RB_OK) {
         fprintf(stderr, "sinew: %s\n", rb_last_error());

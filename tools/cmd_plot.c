@@ -9,26 +9,51 @@
 
 #include "chart/chart.h"
 #include "chart/column_label.h"
-#include "cli/option_value.h"
+#include "cli/options.h"
 #include "commands.h"
 #include "io/atomic_file.h"
 #include "io/csv_table.h"
 
-static const char usage_text[] =
-    "usage: sinew plot CSV [--x COLUMN] [--y COLUMN ...] [--out FILE.png|FILE.svg] [--title TEXT]\n"
-    "\n"
-    "Draws columns of a CSV file with a header row (as `sinew run` and `sinew experiment`\n"
-    "write) as a line chart.\n"
-    "\n"
-    "options:\n"
-    "  --x COLUMN      the column along x (default: the first)\n"
-    "  --y COLUMN      a column along y (repeatable; default: every other numeric column,\n"
-    "                  the first 8 when there are more)\n"
-    "  --out FILE      FILE.png or FILE.svg (default: the CSV's name with .png)\n"
-    "  --title TEXT    the chart's title (default: the CSV's file name)\n"
-    "  --help          print this text\n"
-    "\n"
-    "Columns are named as in the header, units included: --y \"Biceps Long.total_force_N\".\n";
+enum { OPT_X, OPT_Y, OPT_OUT, OPT_TITLE };
+
+static const cli_option options_table[] = {
+    {.name = "x",
+     .id = OPT_X,
+     .kind = CLI_TEXT,
+     .value_name = "COLUMN",
+     .help = "the column along x",
+     .fallback = "the first"},
+    {.name = "y",
+     .id = OPT_Y,
+     .kind = CLI_TEXT,
+     .value_name = "COLUMN",
+     .help = "a column along y (repeatable; by default every other numeric column,\n"
+             "the first 8 when there are more)"},
+    {.name = "out",
+     .id = OPT_OUT,
+     .kind = CLI_PATH,
+     .value_name = "FILE",
+     .help = "FILE.png or FILE.svg",
+     .fallback = "the CSV's name with .png"},
+    {.name = "title",
+     .id = OPT_TITLE,
+     .kind = CLI_TEXT,
+     .value_name = "TEXT",
+     .help = "the chart's title",
+     .fallback = "the CSV's file name"},
+};
+
+static const cli_command command = {
+    .name = "sinew plot",
+    .operands = "CSV [options]",
+    .max_operands = 1,
+    .operand = "CSV file",
+    .about = "Draws columns of a CSV file with a header row (as `sinew run`, `sinew scene` and\n"
+             "`sinew experiment` write) as a line chart.\n",
+    .options = options_table,
+    .option_count = sizeof options_table / sizeof options_table[0],
+    .notes = "Columns are named as in the header, units included: --y \"Biceps Long.total_force_N\".\n",
+};
 
 /* Series drawn when --y is not given: more lines than this cannot be
  * told apart. */
@@ -47,55 +72,43 @@ typedef struct plot_options {
     const char *title;
 } plot_options;
 
-static int usage_error(const char *message)
-{
-    fprintf(stderr, "sinew: %s (see `sinew plot --help`)\n", message);
-    return EXIT_USAGE;
-}
-
-/* Returns 0, EXIT_SUCCESS + 100 for --help, or an exit status. */
+/* Returns 0, PARSE_HELP for --help, or an exit status. */
 enum { PARSE_HELP = 100 };
 static int parse_arguments(int argc, char **argv, plot_options *opts)
 {
-    static const char *const with_value[] = {"--x", "--y", "--out", "--title"};
-    char error[OPTION_ERROR_SIZE];
-    for (int i = 0; i < argc; ++i) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            return PARSE_HELP;
+    cli_parser parser;
+    cli_parser_start(&parser, &command, argc, argv);
+    cli_value value;
+    int id;
+    while ((id = cli_next(&parser, &value)) >= 0) {
+        switch (id) {
+        case OPT_X:
+            opts->x = value.text;
+            break;
+        case OPT_Y:
+            opts->y[opts->y_count++] = value.text;
+            break;
+        case OPT_OUT:
+            opts->out = value.text;
+            break;
+        default:
+            opts->title = value.text;
+            break;
         }
-        if (strncmp(argv[i], "--", 2) != 0) {
-            if (opts->csv_path != NULL) {
-                snprintf(error, sizeof error, "unexpected argument \"%s\": give one CSV file", argv[i]);
-                return usage_error(error);
-            }
-            opts->csv_path = argv[i];
-            continue;
-        }
-        const char *option, *value;
-        if (!option_split(argc, argv, &i, with_value, sizeof with_value / sizeof with_value[0], &option, &value, error,
-                          sizeof error)) {
-            return usage_error(error);
-        }
-        if (value[0] == '\0') {
-            snprintf(error, sizeof error, "%s needs a non-empty value", option);
-            return usage_error(error);
-        }
-        if (strcmp(option, "--x") == 0) {
-            opts->x = value;
-        } else if (strcmp(option, "--y") == 0) {
-            opts->y[opts->y_count++] = value;
-        } else if (strcmp(option, "--out") == 0) {
-            opts->out = value;
-        } else {
-            opts->title = value;
-        }
+    }
+    if (id == CLI_END && parser.operand_count == 1) {
+        opts->csv_path = parser.operands[0];
+    }
+    cli_parser_finish(&parser);
+    if (id != CLI_END) {
+        return id == CLI_HELP ? PARSE_HELP : EXIT_USAGE;
     }
     if (opts->csv_path == NULL) {
-        return usage_error("missing the CSV file");
+        return cli_usage_error(&command, "missing the CSV file");
     }
     if (opts->y_count > CHART_MAX_SERIES) {
-        snprintf(error, sizeof error, "%d columns with --y; a chart draws at most %d", opts->y_count, CHART_MAX_SERIES);
-        return usage_error(error);
+        return cli_usage_error(&command, "%d columns with --y; a chart draws at most %d", opts->y_count,
+                               CHART_MAX_SERIES);
     }
     return 0;
 }
@@ -257,7 +270,7 @@ int cmd_plot(int argc, char **argv)
     }
     int code = parse_arguments(argc, argv, &opts);
     if (code == PARSE_HELP) {
-        fputs(usage_text, stdout);
+        cli_print_help(&command, stdout);
         free(opts.y);
         return EXIT_SUCCESS;
     }

@@ -17,6 +17,7 @@
 #include <sys/stat.h>
 
 #include "cli/option_value.h"
+#include "cli/options.h"
 #include "commands.h"
 #include "control_file.h"
 #include "controls.h"
@@ -24,36 +25,112 @@
 #include "progress.h"
 #include "recorder.h"
 
-static const char usage_text[] =
-    "usage: sinew run MODEL [options]\n"
-    "\n"
-    "Runs a muscle model, writes a CSV of every frame and prints a summary.\n"
-    "MODEL is a built-in model (sample, arm, leg; see `sinew models`) or a model file\n"
-    "(a path containing '/' or ending in .json).\n"
-    "\n"
-    "options:\n"
-    "  --variant NAME|N        the variant, by name or index (default 0)\n"
-    "  --weight KG             the weight choice of that mass (default: the first choice)\n"
-    "  --weight-index N        the weight choice by index\n"
-    "  --level N               0 nothing, 1 bones, 2 + joints, 3 + muscles, 4 + weight (default 4)\n"
-    "  --duration S            simulated time, > 0 .. 1e6 s (default 10)\n"
-    "  --activation NAME=A     activation 0 .. 1 of a muscle or group from t = 0 (repeatable)\n"
-    "  --tension NAME=N        tension target in N of a muscle or group from t = 0 (repeatable)\n"
-    "  --recruit NAME=N        neurons 0 .. pool size recruited by a torque muscle from t = 0 (repeatable)\n"
-    "  --control FILE          scheduled controls: lines `TIME activation NAME VALUE`,\n"
-    "                          `TIME tension NAME NEWTONS`, `TIME pulse NAME [VALUE]`;\n"
-    "                          '#' comments; names with spaces in double quotes\n"
-    "  --out DIR               directory of the CSV, DIR/MODEL.csv (default .)\n"
-    "  --weld-glues            keep glues as weld joints instead of merged bodies\n"
-    "  --help                  print this text\n"
-    "\n"
-    "Controls act in order: the command line's, then the file's. The CSV has one row per\n"
-    "frame: time_s, then per muscle NAME.activation, NAME.target_tension_N, NAME.length_m,\n"
-    "NAME.normalized_length, NAME.velocity_m_s, NAME.normalized_velocity,\n"
-    "NAME.contraction_m, NAME.normalized_contraction, NAME.active_force_N,\n"
-    "NAME.passive_force_N, NAME.total_force_N, NAME.excitation, NAME.fibre_length_m,\n"
-    "NAME.tendon_length_m, NAME.pennation_angle_deg; per hinge NAME.angle_deg; per part\n"
-    "NAME.x_m, NAME.y_m, NAME.angle_deg (README.md, \"Running models\").\n";
+enum {
+    OPT_VARIANT,
+    OPT_WEIGHT,
+    OPT_WEIGHT_INDEX,
+    OPT_LEVEL,
+    OPT_DURATION,
+    OPT_ACTIVATION,
+    OPT_TENSION,
+    OPT_RECRUIT,
+    OPT_CONTROL,
+    OPT_OUT,
+    OPT_WELD_GLUES,
+};
+
+static const cli_option options_table[] = {
+    {.name = "variant",
+     .id = OPT_VARIANT,
+     .kind = CLI_TEXT,
+     .value_name = "NAME|N",
+     .help = "the variant, by name or index",
+     .fallback = "0"},
+    {.name = "weight",
+     .id = OPT_WEIGHT,
+     .kind = CLI_NUMBER,
+     .value_name = "KG",
+     .help = "the weight choice of that mass",
+     .min = 0.0,
+     .max = 1e9,
+     .fallback = "the first"},
+    {.name = "weight-index",
+     .id = OPT_WEIGHT_INDEX,
+     .kind = CLI_INT,
+     .value_name = "N",
+     .help = "the weight choice by index",
+     .min = 0,
+     .max = MU_MODEL_MAX_OBJECTS - 1},
+    {.name = "level",
+     .id = OPT_LEVEL,
+     .kind = CLI_INT,
+     .value_name = "N",
+     .help = "0 nothing, 1 bones, 2 + joints, 3 + muscles, 4 + weight",
+     .min = 0,
+     .max = 4,
+     .fallback = "4"},
+    {.name = "duration",
+     .id = OPT_DURATION,
+     .kind = CLI_NUMBER,
+     .value_name = "S",
+     .help = "simulated time in s",
+     .min = 0.0,
+     .max = 1e6,
+     .min_open = true,
+     .fallback = "10"},
+    {.name = "activation",
+     .id = OPT_ACTIVATION,
+     .kind = CLI_TEXT,
+     .value_name = "NAME=A",
+     .help = "activation 0 .. 1 of a muscle or group from t = 0 (repeatable)"},
+    {.name = "tension",
+     .id = OPT_TENSION,
+     .kind = CLI_TEXT,
+     .value_name = "NAME=N",
+     .help = "tension target in N of a muscle or group from t = 0 (repeatable)"},
+    {.name = "recruit",
+     .id = OPT_RECRUIT,
+     .kind = CLI_TEXT,
+     .value_name = "NAME=N",
+     .help = "neurons 0 .. pool size recruited by a torque muscle from t = 0 (repeatable)"},
+    {.name = "control",
+     .id = OPT_CONTROL,
+     .kind = CLI_PATH,
+     .value_name = "FILE",
+     .help = "scheduled controls: lines `TIME activation NAME VALUE`,\n"
+             "`TIME tension NAME NEWTONS`, `TIME pulse NAME [VALUE]`;\n"
+             "'#' comments; names with spaces in double quotes"},
+    {.name = "out",
+     .id = OPT_OUT,
+     .kind = CLI_PATH,
+     .value_name = "DIR",
+     .help = "directory of the CSV, DIR/MODEL.csv",
+     .fallback = "."},
+    {.name = "weld-glues",
+     .id = OPT_WELD_GLUES,
+     .kind = CLI_FLAG,
+     .value_name = NULL,
+     .help = "keep glues as weld joints instead of merged bodies"},
+};
+
+static const cli_command command = {
+    .name = "sinew run",
+    .operands = "MODEL [options]",
+    .max_operands = 1,
+    .operand = "model",
+    .about = "Runs a muscle model, writes a CSV of every frame and prints a summary.\n"
+             "MODEL is a built-in model (sample, arm, leg, worm; see `sinew models`) or a model file\n"
+             "(a path containing '/' or ending in .json).\n",
+    .options = options_table,
+    .option_count = sizeof options_table / sizeof options_table[0],
+    .notes = "Controls act in order: the command line's, then the file's. The CSV has one row per\n"
+             "frame: time_s, then per muscle NAME.activation, NAME.target_tension_N, NAME.length_m,\n"
+             "NAME.normalized_length, NAME.velocity_m_s, NAME.normalized_velocity,\n"
+             "NAME.contraction_m, NAME.normalized_contraction, NAME.active_force_N,\n"
+             "NAME.passive_force_N, NAME.total_force_N, NAME.excitation, NAME.fibre_length_m,\n"
+             "NAME.tendon_length_m, NAME.pennation_angle_deg; per hinge NAME.angle_deg; per part\n"
+             "NAME.x_m, NAME.y_m, NAME.angle_deg (README.md, \"Running models\").\n",
+};
 
 /* Most frames a run may have: beyond any useful run, and a bound on the
  * CSV a typing mistake could start writing. */
@@ -83,106 +160,70 @@ typedef struct run_options {
     bool weld_glues;
 } run_options;
 
-static int usage_error(const char *message, const char *detail)
-{
-    fputs("sinew: ", stderr);
-    fprintf(stderr, message, detail);
-    fputs(" (see `sinew run --help`)\n", stderr);
-    return EXIT_USAGE;
-}
-
-/* Parses one option's value; returns 0 or an exit status. */
-static int parse_option_value(const char *option, const char *value, run_options *opts)
-{
-    char error[OPTION_ERROR_SIZE];
-    bool ok = true;
-    if (strcmp(option, "--variant") == 0) {
-        opts->variant = value;
-    } else if (strcmp(option, "--weight") == 0) {
-        ok = option_parse_double(option, value, 0.0, false, 1e9, &opts->weight_kg, error, sizeof error);
-        opts->has_weight_kg = ok;
-    } else if (strcmp(option, "--weight-index") == 0) {
-        ok = option_parse_int(option, value, 0, MU_MODEL_MAX_OBJECTS - 1, &opts->weight_index, error, sizeof error);
-    } else if (strcmp(option, "--level") == 0) {
-        ok = option_parse_int(option, value, 0, 4, &opts->level, error, sizeof error);
-    } else if (strcmp(option, "--duration") == 0) {
-        ok = option_parse_double(option, value, 0.0, true, 1e6, &opts->duration, error, sizeof error);
-    } else if (strcmp(option, "--activation") == 0 || strcmp(option, "--tension") == 0) {
-        opts->controls[opts->control_count++] = (command_line_control){
-            .kind = option[2] == 'a' ? CONTROL_ACTIVATION : CONTROL_TENSION,
-            .text = value,
-        };
-    } else if (strcmp(option, "--recruit") == 0) {
-        opts->recruits[opts->recruit_count++] = value;
-    } else if (strcmp(option, "--control") == 0) {
-        ok = option_parse_path(option, value, &opts->control_path, error, sizeof error);
-    } else {
-        ok = option_parse_path(option, value, &opts->out_dir, error, sizeof error);
-    }
-    if (!ok) {
-        fprintf(stderr, "sinew: %s\n", error);
-        return EXIT_USAGE;
-    }
-    return 0;
-}
-
 typedef enum parse_result { PARSE_OK, PARSE_HELP, PARSE_ERROR } parse_result;
 
-/* Parses the arguments after `sinew run`: one MODEL and options, each
- * `--name value` or `--name=value`, in any order. opts->controls must
- * hold argc entries. */
+/* Parses the arguments after `sinew run`: one MODEL and options, in any
+ * order. opts->controls and opts->recruits must hold argc entries. */
 static parse_result parse_arguments(int argc, char **argv, run_options *opts)
 {
-    static const char *const with_value[] = {"--variant",    "--weight",  "--weight-index", "--level", "--duration",
-                                             "--activation", "--tension", "--control",      "--out",   "--recruit"};
-    for (int i = 0; i < argc; ++i) {
-        const char *argument = argv[i];
-        if (strcmp(argument, "--help") == 0 || strcmp(argument, "-h") == 0) {
-            return PARSE_HELP;
-        }
-        if (strcmp(argument, "--weld-glues") == 0) {
+    cli_parser parser;
+    cli_parser_start(&parser, &command, argc, argv);
+    cli_value value;
+    int id;
+    while ((id = cli_next(&parser, &value)) >= 0) {
+        switch (id) {
+        case OPT_VARIANT:
+            opts->variant = value.text;
+            break;
+        case OPT_WEIGHT:
+            opts->weight_kg = value.number;
+            opts->has_weight_kg = true;
+            break;
+        case OPT_WEIGHT_INDEX:
+            opts->weight_index = (int)value.integer;
+            break;
+        case OPT_LEVEL:
+            opts->level = (int)value.integer;
+            break;
+        case OPT_DURATION:
+            opts->duration = value.number;
+            break;
+        case OPT_ACTIVATION:
+        case OPT_TENSION:
+            opts->controls[opts->control_count++] = (command_line_control){
+                .kind = id == OPT_ACTIVATION ? CONTROL_ACTIVATION : CONTROL_TENSION,
+                .text = value.text,
+            };
+            break;
+        case OPT_RECRUIT:
+            opts->recruits[opts->recruit_count++] = value.text;
+            break;
+        case OPT_CONTROL:
+            opts->control_path = value.text;
+            break;
+        case OPT_OUT:
+            opts->out_dir = value.text;
+            break;
+        case OPT_WELD_GLUES:
             opts->weld_glues = true;
-            continue;
-        }
-        if (strncmp(argument, "--", 2) != 0) {
-            if (opts->model != NULL) {
-                usage_error("unexpected argument \"%s\": give one model", argument);
-                return PARSE_ERROR;
-            }
-            opts->model = argument;
-            continue;
-        }
-        const char *equals = strchr(argument, '=');
-        size_t name_length = equals != NULL ? (size_t)(equals - argument) : strlen(argument);
-        const char *option = NULL;
-        for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; ++k) {
-            if (strlen(with_value[k]) == name_length && strncmp(argument, with_value[k], name_length) == 0) {
-                option = with_value[k];
-            }
-        }
-        if (option == NULL) {
-            usage_error("unknown option \"%s\"", argument);
-            return PARSE_ERROR;
-        }
-        const char *value = NULL;
-        if (equals != NULL) {
-            value = equals + 1;
-        } else if (i + 1 < argc && strncmp(argv[i + 1], "--", 2) != 0) {
-            value = argv[++i];
-        } else {
-            usage_error("%s needs a value", option);
-            return PARSE_ERROR;
-        }
-        if (parse_option_value(option, value, opts) != 0) {
-            return PARSE_ERROR;
+            break;
+        default:
+            break;
         }
     }
+    if (id == CLI_END && parser.operand_count == 1) {
+        opts->model = parser.operands[0];
+    }
+    cli_parser_finish(&parser);
+    if (id != CLI_END) {
+        return id == CLI_HELP ? PARSE_HELP : PARSE_ERROR;
+    }
     if (opts->model == NULL) {
-        usage_error("%s", "missing the model (sample, arm, leg or a .json file)");
+        cli_usage_error(&command, "missing the model (sample, arm, leg, worm or a model file)");
         return PARSE_ERROR;
     }
     if (opts->has_weight_kg && opts->weight_index >= 0) {
-        usage_error("%s", "give --weight or --weight-index, not both");
+        cli_usage_error(&command, "give --weight or --weight-index, not both");
         return PARSE_ERROR;
     }
     return PARSE_OK;
@@ -564,7 +605,7 @@ static int prepare(run_state *run)
         run->angle_min[h] = NAN;
         run->angle_max[h] = NAN;
     }
-    if (!recorder_open(&run->csv, run->csv_path, run->model, &options, error, sizeof error)) {
+    if (!recorder_open(&run->csv, run->csv_path, run->model, error, sizeof error)) {
         fprintf(stderr, "sinew: --out: %s\n", error);
         return EXIT_FAILURE;
     }
@@ -584,7 +625,7 @@ int cmd_run(int argc, char **argv)
     }
     switch (parse_arguments(argc, argv, &opts)) {
     case PARSE_HELP:
-        fputs(usage_text, stdout);
+        cli_print_help(&command, stdout);
         free(opts.controls);
         free(opts.recruits);
         return EXIT_SUCCESS;

@@ -6,10 +6,12 @@
 #ifndef SINEW_COMMANDS_H
 #define SINEW_COMMANDS_H
 
+#include "cli/options.h"
+
 /* Exit statuses: EXIT_SUCCESS (0); EXIT_FAILURE (1) when the engine, a
  * model or control file, or the file system failed; EXIT_USAGE for a bad
  * command line. */
-enum { EXIT_USAGE = 2 };
+enum { EXIT_USAGE = CLI_EXIT_USAGE };
 
 int cmd_scene(int argc, char **argv);      /* sinew scene NAME [options] */
 int cmd_models(int argc, char **argv);     /* sinew models */

@@ -7,53 +7,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/words.h"
 #include "control_file.h"
 
-/* Fields of a line: time, kind, name, value, and one more to catch a
- * line that goes on after its value. */
+/* Fields of a line: time, kind, name, value, and one more to name in the
+ * message for a line that goes on after its value. */
 enum { MAX_FIELDS = 5 };
-
-/* Splits `line` in place into fields at spaces and tabs, up to a '#'
- * outside quotes. A field that starts with '"' runs to the next '"' (which
- * is dropped), so a name may hold spaces or a '#'. Returns the number of
- * fields (at most MAX_FIELDS; more are not looked at), or -1 with `problem`
- * set for a quote left open or followed by other text. */
-static int split_fields(char *line, char **fields, const char **problem)
-{
-    int count = 0;
-    char *p = line;
-    while (count < MAX_FIELDS) {
-        p += strspn(p, " \t");
-        if (*p == '\0' || *p == '#') {
-            break;
-        }
-        if (*p == '"') {
-            char *close = strchr(p + 1, '"');
-            if (close == NULL) {
-                *problem = "a quote is not closed";
-                return -1;
-            }
-            if (close[1] != '\0' && close[1] != ' ' && close[1] != '\t' && close[1] != '#') {
-                *problem = "a closing quote is followed by other text; put a space after it";
-                return -1;
-            }
-            *close = '\0';
-            fields[count++] = p + 1;
-            p = close + 1;
-            continue;
-        }
-        fields[count++] = p;
-        p += strcspn(p, " \t#");
-        if (*p == '#') {
-            *p = '\0';
-            break;
-        }
-        if (*p != '\0') {
-            *p++ = '\0';
-        }
-    }
-    return count;
-}
 
 /* A whole field as a finite number. */
 static bool parse_number(const char *text, double *out)
@@ -86,7 +45,7 @@ static bool read_line(controls *schedule, char *line, char *message, size_t mess
 {
     char *fields[MAX_FIELDS];
     const char *problem = NULL;
-    int count = split_fields(line, fields, &problem);
+    int count = words_split(line, fields, MAX_FIELDS, &problem);
     if (count < 0) {
         snprintf(message, message_size, "%s", problem);
         return false;
@@ -120,7 +79,7 @@ static bool read_line(controls *schedule, char *line, char *message, size_t mess
                  fields[3], strchr(fields[2], ' ') == NULL ? " (a name with spaces goes in double quotes)" : "");
         return false;
     }
-    if (count == MAX_FIELDS) {
+    if (count >= MAX_FIELDS) {
         snprintf(message, message_size, "unexpected \"%s\" after the %s value%s", fields[4], control_kind_name(kind),
                  strchr(fields[2], ' ') == NULL ? " (a name with spaces goes in double quotes)" : "");
         return false;
@@ -148,7 +107,6 @@ bool control_file_read(const char *path, controls *schedule, char *error, size_t
             ok = false;
             break;
         }
-        line[strcspn(line, "\r\n")] = '\0'; /* "\r\n" too: files written on Windows */
         ok = read_line(schedule, line, message, sizeof message);
     }
     if (!ok) {

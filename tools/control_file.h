@@ -8,7 +8,8 @@
  *   TIME pulse NAME [VALUE]        activation VALUE (default 1) for one frame
  *
  * NAME is a muscle or a group of the model; one with spaces is written in
- * double quotes ("Biceps Short"). Fields are separated by spaces or tabs.
+ * double quotes ("Biceps Short"). Fields are words as cli/words.h splits
+ * them (spaces or tabs between them; the viewer's scripts quote alike).
  * Times are in seconds and must not decrease from one line to the next.
  */
 #ifndef SINEW_CONTROL_FILE_H

@@ -61,10 +61,10 @@ static gboolean run_pending_load(gpointer data)
     panel->pending_source = 0;
     panel->pending = PENDING_NONE;
     mu_model_options options = load == PENDING_REBUILD ? chosen_options(panel) : mu_default_model_options();
-    viewer_scene_kind kind;
+    scene_kind kind;
     if (load == PENDING_MODEL) {
         viewer_load_model(panel->app, panel->pending_name, &options);
-    } else if (load == PENDING_SCENE && viewer_scene_from_name(panel->pending_name, &kind)) {
+    } else if (load == PENDING_SCENE && scene_kind_from_name(panel->pending_name, &kind)) {
         viewer_load_scene(panel->app, kind);
     } else if (load == PENDING_REBUILD && panel->app->sim.kind == SIMULATION_MODEL) {
         viewer_reload_model(panel->app, &options);
@@ -100,8 +100,8 @@ static void on_scene_chosen(GObject *drop_down, GParamSpec *spec, gpointer data)
     (void)spec;
     controls_panel *panel = data;
     const char *name = selected_text(panel->scene);
-    viewer_scene_kind kind;
-    if (!panel->syncing && name != NULL && viewer_scene_from_name(name, &kind)) {
+    scene_kind kind;
+    if (!panel->syncing && name != NULL && scene_kind_from_name(name, &kind)) {
         defer_load(panel, PENDING_SCENE, name);
     }
 }
@@ -207,9 +207,9 @@ controls_panel *controls_panel_new(viewer *app)
     gtk_grid_set_column_spacing(GTK_GRID(grid), 8);
     int row = 0;
     panel->model = labelled(grid, row++, "Model", gtk_drop_down_new(NULL, NULL));
-    const char *scenes[VIEWER_SCENE_COUNT + 2] = {"(none)"};
-    for (int k = 0; k < VIEWER_SCENE_COUNT; ++k) {
-        scenes[k + 1] = viewer_scene_name((viewer_scene_kind)k);
+    const char *scenes[SCENE_KIND_COUNT + 2] = {"(none)"};
+    for (int k = 0; k < SCENE_KIND_COUNT; ++k) {
+        scenes[k + 1] = scene_registry[k].name;
     }
     panel->scene = labelled(grid, row++, "Scene", gtk_drop_down_new_from_strings(scenes));
     panel->variant = labelled(grid, row++, "Variant", gtk_drop_down_new(NULL, NULL));

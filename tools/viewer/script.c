@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/words.h"
 #include "screenshot.h"
 #include "script.h"
 #include "script_commands.h"
@@ -33,43 +34,6 @@ struct script {
     int settle_ticks;     /* left after a `wait-for` file appeared */
     gulong paint_handler; /* on the window's frame clock */
 };
-
-/* Splits `text` into words in place: spaces and tabs separate, double
- * quotes group, '#' outside quotes ends the line. Returns the count, or
- * -1 for an unclosed quote or too many words. */
-static int split_words(char *text, char **words)
-{
-    int count = 0;
-    char *at = text;
-    for (;;) {
-        while (*at == ' ' || *at == '\t' || *at == '\r' || *at == '\n') {
-            ++at;
-        }
-        if (*at == '\0' || *at == '#') {
-            return count;
-        }
-        if (count == SCRIPT_MAX_WORDS) {
-            return -1;
-        }
-        if (*at == '"') {
-            char *close = strchr(at + 1, '"');
-            if (close == NULL) {
-                return -1;
-            }
-            *close = '\0';
-            words[count++] = at + 1;
-            at = close + 1;
-            continue;
-        }
-        words[count++] = at;
-        while (*at != '\0' && *at != ' ' && *at != '\t' && *at != '\r' && *at != '\n') {
-            ++at;
-        }
-        if (*at != '\0') {
-            *at++ = '\0';
-        }
-    }
-}
 
 static bool add_line(script *commands, int number, char **words, int count, char *error, size_t error_size)
 {
@@ -123,10 +87,13 @@ script *script_load(const char *path, char *error, size_t error_size)
     bool ok = commands->path != NULL;
     for (int number = 1; ok && fgets(text, sizeof text, file) != NULL; ++number) {
         char *words[SCRIPT_MAX_WORDS];
-        int count = split_words(text, words);
+        const char *problem = NULL;
+        int count = words_split(text, words, SCRIPT_MAX_WORDS, &problem);
         if (count < 0) {
-            snprintf(error, error_size, "%s:%d: an unclosed quote, or more than %d words", path, number,
-                     SCRIPT_MAX_WORDS);
+            snprintf(error, error_size, "%s:%d: %s", path, number, problem);
+            ok = false;
+        } else if (count > SCRIPT_MAX_WORDS) {
+            snprintf(error, error_size, "%s:%d: more than %d words", path, number, SCRIPT_MAX_WORDS);
             ok = false;
         } else if (count > 0) {
             ok = add_line(commands, number, words, count, error, error_size);

@@ -2,8 +2,9 @@
 /* Scripted input (`sinew view --script FILE`): the viewer runs the
  * file's commands one after the other from its main loop, drawing between
  * frames as it does interactively, so a test (or a figure) can drive it
- * without a mouse. One command per line; words are separated by spaces or
- * tabs, a name with spaces goes in double quotes, `#` starts a comment.
+ * without a mouse. One command per line, split into words as control files
+ * are (cli/words.h): spaces or tabs between words, a name with spaces in
+ * double quotes, `#` starts a comment.
  *
  *   model MODEL             load a built-in model or a model file
  *   variant NAME|N          rebuild the model in that variant

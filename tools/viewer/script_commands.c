@@ -72,7 +72,7 @@ static bool run_status(script_run_state *state, char *const *arguments, char *er
                sim->model_argument, sim->options.variant, sim->options.weight_index, sim->options.level,
                mu_model_muscle_count(sim->model), sim->tension_mode, sim->activation, sim->tension);
     } else if (sim->kind == SIMULATION_SCENE) {
-        printf(" scene=%s", viewer_scene_name(sim->scene.kind));
+        printf(" scene=%s", scene_registry[sim->scene.kind].name);
     }
     rb_world *world = simulation_world(sim);
     if (world != NULL) {
@@ -186,9 +186,13 @@ static bool run_level(script_run_state *state, char *const *arguments, char *err
 
 static bool run_scene(script_run_state *state, char *const *arguments, char *error, size_t error_size)
 {
-    viewer_scene_kind kind;
-    if (!viewer_scene_from_name(arguments[0], &kind)) {
-        snprintf(error, error_size, "unknown scene \"%s\" (pyramid, chain, pendulum, balls, joint-grid)", arguments[0]);
+    scene_kind kind;
+    if (!scene_kind_from_name(arguments[0], &kind)) {
+        int length = snprintf(error, error_size, "unknown scene \"%s\"; the scenes are", arguments[0]);
+        for (int k = 0; k < SCENE_KIND_COUNT && length >= 0 && (size_t)length < error_size; ++k) {
+            length += snprintf(error + length, error_size - (size_t)length, "%s %s", k == 0 ? "" : ",",
+                               scene_registry[k].name);
+        }
         return false;
     }
     if (!viewer_load_scene(state->app, kind)) {

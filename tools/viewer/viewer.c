@@ -95,7 +95,7 @@ bool viewer_reload_model(viewer *app, const mu_model_options *options)
     return finish_model_load(app, simulation_reload(&app->sim, options, error, sizeof error), error);
 }
 
-bool viewer_load_scene(viewer *app, viewer_scene_kind kind)
+bool viewer_load_scene(viewer *app, scene_kind kind)
 {
     char error[SIMULATION_ERROR_SIZE];
     if (!simulation_load_scene(&app->sim, kind, error, sizeof error)) {

@@ -50,7 +50,7 @@ void viewer_place_view(viewer *app);
  * error is shown. */
 bool viewer_load_model(viewer *app, const char *argument, const mu_model_options *options);
 bool viewer_reload_model(viewer *app, const mu_model_options *options);
-bool viewer_load_scene(viewer *app, viewer_scene_kind kind);
+bool viewer_load_scene(viewer *app, scene_kind kind);
 
 /* One frame of the simulation, its sample recorded and the view redrawn;
  * an error pauses the simulation and is shown. */

@@ -99,13 +99,10 @@ static void build_window(viewer *app)
  * to start with; an error is shown in the window, which still opens. */
 static void load_first(viewer *app, const viewer_options *options)
 {
-    viewer_scene_kind kind;
-    if (options->scene != NULL) {
-        if (viewer_scene_from_name(options->scene, &kind)) {
-            viewer_load_scene(app, kind);
-        } else {
-            viewer_show_error(app, "unknown scene (pyramid, chain, pendulum, balls, joint-grid)");
-        }
+    scene_kind kind;
+    /* viewer_options_parse has refused a name that is not a scene. */
+    if (options->scene != NULL && scene_kind_from_name(options->scene, &kind)) {
+        viewer_load_scene(app, kind);
         return;
     }
     mu_model_options build = mu_default_model_options();
@@ -137,7 +134,7 @@ int main(int argc, char **argv)
     viewer_options options;
     switch (viewer_options_parse(argc - 1, argv + 1, &options)) {
     case VIEWER_PARSE_HELP:
-        fputs(viewer_usage_text, stdout);
+        viewer_print_usage(stdout);
         return EXIT_SUCCESS;
     case VIEWER_PARSE_ERROR:
         return EXIT_USAGE;

@@ -1,72 +1,117 @@
 /* SPDX-License-Identifier: MIT */
+#include <stdlib.h>
 #include <string.h>
 
-#include "cli/option_value.h"
+#include "cli/options.h"
+#include "scenes/registry.h"
 #include "viewer_options.h"
 
-const char viewer_usage_text[] =
-    "usage: sinew view [MODEL] [options]\n"
-    "\n"
-    "Opens the interactive viewer (GTK 4) on a muscle model or an engine scene.\n"
-    "MODEL is a built-in model (sample, arm, leg, worm; default arm) or a model file.\n"
-    "\n"
-    "options:\n"
-    "  --variant NAME|N   the model's variant, by name or index (default 0)\n"
-    "  --weight KG        the weight choice of that mass (default the first)\n"
-    "  --level N          0 nothing, 1 bones, 2 + joints, 3 + muscles, 4 + the weight (default 4)\n"
-    "  --scene NAME       open an engine scene instead: pyramid, chain, pendulum, balls, joint-grid\n"
-    "  --play             start playing\n"
-    "  --script FILE      run scripted commands (tools/viewer/script.h lists them)\n"
-    "  --help             print this text\n"
-    "\n"
-    "Keys: space pulses the selected muscle or group (one frame at activation 1), P plays or\n"
-    "pauses, S steps, Up/Down recruit 20 neurons more or fewer (worm). Mouse: the wheel zooms\n"
-    "about the cursor, a right click resets the view, dragging the background pans, dragging a\n"
-    "body pulls it.\n";
+enum { OPT_VARIANT, OPT_WEIGHT, OPT_LEVEL, OPT_SCENE, OPT_PLAY, OPT_SCRIPT };
+
+static const cli_option options_table[] = {
+    {.name = "variant",
+     .id = OPT_VARIANT,
+     .kind = CLI_TEXT,
+     .value_name = "NAME|N",
+     .help = "the model's variant, by name or index",
+     .fallback = "0"},
+    {.name = "weight",
+     .id = OPT_WEIGHT,
+     .kind = CLI_NUMBER,
+     .value_name = "KG",
+     .help = "the weight choice of that mass",
+     .min = 0.0,
+     .max = 1e9,
+     .fallback = "the first"},
+    {.name = "level",
+     .id = OPT_LEVEL,
+     .kind = CLI_INT,
+     .value_name = "N",
+     .help = "0 nothing, 1 bones, 2 + joints, 3 + muscles, 4 + the weight",
+     .min = 0,
+     .max = 4,
+     .fallback = "4"},
+    {.name = "scene",
+     .id = OPT_SCENE,
+     .kind = CLI_TEXT,
+     .value_name = "NAME",
+     .help = "open an engine scene instead (listed below)"},
+    {.name = "play", .id = OPT_PLAY, .kind = CLI_FLAG, .value_name = NULL, .help = "start playing"},
+    {.name = "script",
+     .id = OPT_SCRIPT,
+     .kind = CLI_PATH,
+     .value_name = "FILE",
+     .help = "run scripted commands (tools/viewer/script.h lists them)"},
+};
+
+static const cli_command command = {
+    .name = "sinew view",
+    .operands = "[MODEL] [options]",
+    .max_operands = 1,
+    .operand = "model",
+    .about = "Opens the interactive viewer (GTK 4) on a muscle model or an engine scene.\n"
+             "MODEL is a built-in model (sample, arm, leg, worm; default arm) or a model file.\n",
+    .options = options_table,
+    .option_count = sizeof options_table / sizeof options_table[0],
+    .notes = "Keys: space pulses the selected muscle or group (one frame at activation 1), P plays or\n"
+             "pauses, S steps, Up/Down recruit 20 neurons more or fewer (worm). Mouse: the wheel zooms\n"
+             "about the cursor, a right click resets the view, dragging the background pans, dragging a\n"
+             "body pulls it.\n",
+};
+
+void viewer_print_usage(FILE *stream)
+{
+    cli_print_help(&command, stream);
+    fputs("\nscenes (`sinew scene --help` runs them without a window, with their options):\n", stream);
+    for (int k = 0; k < SCENE_KIND_COUNT; ++k) {
+        fprintf(stream, "  %-12s %s\n", scene_registry[k].name, scene_registry[k].summary);
+    }
+}
 
 viewer_parse_result viewer_options_parse(int argc, char **argv, viewer_options *options)
 {
-    static const char *const known[] = {"--variant", "--weight", "--level", "--scene", "--script"};
     *options = (viewer_options){.model = "arm"};
-    bool model_given = false;
-    char error[OPTION_ERROR_SIZE];
-    for (int i = 0; i < argc; ++i) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            return VIEWER_PARSE_HELP;
-        }
-        if (strcmp(argv[i], "--play") == 0) {
-            options->play = true;
-            continue;
-        }
-        if (strncmp(argv[i], "--", 2) != 0) {
-            if (model_given) {
-                fprintf(stderr, "sinew view: one model only, got \"%s\" after \"%s\"\n", argv[i], options->model);
-                return VIEWER_PARSE_ERROR;
-            }
-            options->model = argv[i];
-            model_given = true;
-            continue;
-        }
-        const char *option, *value;
-        bool ok =
-            option_split(argc, argv, &i, known, sizeof known / sizeof known[0], &option, &value, error, sizeof error);
-        if (ok && strcmp(option, "--variant") == 0) {
-            options->variant = value;
-        } else if (ok && strcmp(option, "--weight") == 0) {
-            ok = option_parse_double(option, value, 0.0, false, 1e9, &options->weight, error, sizeof error);
+    cli_parser parser;
+    cli_parser_start(&parser, &command, argc, argv);
+    cli_value value;
+    int id;
+    scene_kind kind;
+    while ((id = cli_next(&parser, &value)) >= 0) {
+        switch (id) {
+        case OPT_VARIANT:
+            options->variant = value.text;
+            break;
+        case OPT_WEIGHT:
+            options->weight = value.number;
             options->has_weight = true;
-        } else if (ok && strcmp(option, "--level") == 0) {
-            ok = option_parse_int(option, value, 0, 4, &options->level, error, sizeof error);
+            break;
+        case OPT_LEVEL:
+            options->level = (int)value.integer;
             options->has_level = true;
-        } else if (ok && strcmp(option, "--scene") == 0) {
-            options->scene = value;
-        } else if (ok) {
-            options->script = value;
+            break;
+        case OPT_SCENE:
+            if (!scene_kind_from_name(value.text, &kind)) {
+                cli_usage_error(&command, "unknown scene \"%s\" (see the list at the end of the help)", value.text);
+                id = CLI_ERROR;
+            }
+            options->scene = value.text;
+            break;
+        case OPT_PLAY:
+            options->play = true;
+            break;
+        case OPT_SCRIPT:
+            options->script = value.text;
+            break;
+        default:
+            break;
         }
-        if (!ok) {
-            fprintf(stderr, "sinew view: %s\n(run `sinew view --help` for the options)\n", error);
-            return VIEWER_PARSE_ERROR;
+        if (id == CLI_ERROR) {
+            break;
         }
     }
-    return VIEWER_PARSE_OK;
+    if (id == CLI_END && parser.operand_count == 1) {
+        options->model = parser.operands[0];
+    }
+    cli_parser_finish(&parser);
+    return id == CLI_HELP ? VIEWER_PARSE_HELP : id == CLI_END ? VIEWER_PARSE_OK : VIEWER_PARSE_ERROR;
 }

@@ -21,12 +21,13 @@ typedef struct viewer_options {
     bool play;          /* start playing */
 } viewer_options;
 
-extern const char viewer_usage_text[];
+/* The help of `sinew view`: its options and the engine scenes. */
+void viewer_print_usage(FILE *stream);
 
 typedef enum viewer_parse_result { VIEWER_PARSE_OK, VIEWER_PARSE_HELP, VIEWER_PARSE_ERROR } viewer_parse_result;
 
-/* Parses the arguments after the program's name; an error is one line on
- * stderr. */
+/* Parses the arguments after the program's name (cli/options.h); an
+ * error, an unknown scene among them, is one line on stderr. */
 viewer_parse_result viewer_options_parse(int argc, char **argv, viewer_options *options);
 
 #endif

@@ -29,7 +29,7 @@ static void unload(simulation *sim)
 {
     mu_model_destroy(sim->model);
     mu_model_desc_destroy(sim->desc);
-    viewer_scene_destroy(&sim->scene);
+    scene_instance_destroy(&sim->scene);
     sim->model = NULL;
     sim->desc = NULL;
     sim->kind = SIMULATION_NONE;
@@ -185,10 +185,13 @@ bool simulation_choose_level(const simulation *sim, int level, mu_model_options 
     return true;
 }
 
-bool simulation_load_scene(simulation *sim, viewer_scene_kind kind, char *error, size_t error_size)
+bool simulation_load_scene(simulation *sim, scene_kind kind, char *error, size_t error_size)
 {
-    viewer_scene scene;
-    if (viewer_scene_create(kind, &scene) != RB_OK) {
+    scene_value values[SCENE_MAX_PARAMETERS];
+    scene_default_values(kind, values);
+    rb_world_def def = scene_world_def(kind);
+    scene_instance scene;
+    if (scene_instance_create(kind, values, &def, &scene) != RB_OK) {
         return fail_engine(error, error_size);
     }
     unload(sim);
@@ -213,12 +216,12 @@ rb_world *simulation_world(const simulation *sim)
 
 double simulation_frame_duration(const simulation *sim)
 {
-    return sim->kind == SIMULATION_MODEL ? mu_model_frame_duration(sim->model) : VIEWER_SCENE_DT;
+    return sim->kind == SIMULATION_MODEL ? mu_model_frame_duration(sim->model) : SIMULATION_SCENE_DT;
 }
 
 double simulation_time(const simulation *sim)
 {
-    return sim->kind == SIMULATION_MODEL ? mu_model_time(sim->model) : (double)sim->frame * VIEWER_SCENE_DT;
+    return sim->kind == SIMULATION_MODEL ? mu_model_time(sim->model) : (double)sim->frame * SIMULATION_SCENE_DT;
 }
 
 bool simulation_step(simulation *sim, char *error, size_t error_size)
@@ -228,7 +231,10 @@ bool simulation_step(simulation *sim, char *error, size_t error_size)
     case SIMULATION_NONE:
         return true;
     case SIMULATION_SCENE:
-        status = viewer_scene_step(&sim->scene);
+        status = scene_instance_before_step(&sim->scene);
+        if (status == RB_OK) {
+            status = rb_world_step(sim->scene.world, SIMULATION_SCENE_DT);
+        }
         break;
     case SIMULATION_MODEL: {
         bool pulse = sim->pulse_pending && sim->target[0] != '\0';

@@ -17,14 +17,18 @@
 
 #include "mu/model.h"
 #include "rb/rb.h"
-#include "viewer_scenes.h"
+#include "scenes/registry.h"
 
 /* Bytes of an error message of this module. */
 #define SIMULATION_ERROR_SIZE 2048
 /* Bytes of a model argument or a muscle-or-group name. */
 #define SIMULATION_NAME_SIZE 1024
-/* Neurons one press of the recruitment keys adds or removes (the seed's). */
+/* Neurons one press of the recruitment keys adds or removes, as in
+ * McIntyre's worm demo ("Simulated Muscles"). */
 #define SIMULATION_RECRUITMENT_STEP 20
+/* The step of an engine scene (scenes/registry.h), s: 60 Hz, as a model's
+ * frames. */
+#define SIMULATION_SCENE_DT (1.0 / 60.0)
 
 typedef enum simulation_kind { SIMULATION_NONE, SIMULATION_MODEL, SIMULATION_SCENE } simulation_kind;
 
@@ -36,7 +40,7 @@ typedef struct simulation {
     mu_model_desc *desc;
     mu_model_options options;
     mu_model *model;
-    viewer_scene scene;
+    scene_instance scene;
     long frame; /* frames stepped since the load */
     /* The controlled muscle or group ("" for none) and its command. */
     char target[SIMULATION_NAME_SIZE];
@@ -68,7 +72,7 @@ bool simulation_choose_weight(const simulation *sim, double kilograms, mu_model_
                               size_t error_size);
 bool simulation_choose_level(const simulation *sim, int level, mu_model_options *options, char *error,
                              size_t error_size);
-bool simulation_load_scene(simulation *sim, viewer_scene_kind kind, char *error, size_t error_size);
+bool simulation_load_scene(simulation *sim, scene_kind kind, char *error, size_t error_size);
 
 /* The world being simulated; NULL when nothing is loaded. */
 rb_world *simulation_world(const simulation *sim);

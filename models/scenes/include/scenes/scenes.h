@@ -185,6 +185,19 @@ typedef struct scene_cantilever {
 } scene_cantilever;
 rb_status scene_cantilever_create(rb_world *world, scene_cantilever *out);
 
+/* A pendulum: a static pivot (no shape) at the origin and a bob, a
+ * circle of radius 0.05 m and density 1, `length` m (> 0, <= 100) to its
+ * right, pinned to the pivot by a revolute joint at the origin. Released
+ * at rest, it swings down through the vertical and back up to the
+ * horizontal on the other side. */
+typedef struct scene_pendulum {
+    rb_body_id pivot;
+    rb_body_id bob;
+    rb_joint_id joint;
+    double radius; /* m, of the bob: 0.05 */
+} scene_pendulum;
+rb_status scene_pendulum_create(rb_world *world, double length, scene_pendulum *out);
+
 /* The joint grid of shared/peers/README.md: n × n (2 .. 1000) circles of
  * radius 0.4 m, density 1 kg/m², friction 0.6, at (k, -i) m for column k
  * and row i (0-based); each body (but the top row's) is joined to the body
