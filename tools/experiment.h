@@ -1,7 +1,10 @@
 /* SPDX-License-Identifier: MIT */
-/* `sinew experiment NAME`: the seed's experiments (experiments.md), each
- * a scripted run or computation that writes a CSV, a figure (PNG and SVG,
- * chart/chart.h) and a few lines of figures on stdout.
+/* `sinew experiment NAME`: the experiments of docs/experiments.md, most
+ * of them those of the original report (Castanyer, "Implementació d'un
+ * model computacional de sistemes musculoesquelètics", 2023-2024; see
+ * docs/README.md, "Sources"), each a scripted run or computation that
+ * writes a CSV, a figure (PNG and SVG, chart/chart.h) and a few lines of
+ * figures on stdout.
  *
  * An experiment is one entry of experiment_list (experiment_list.c): a
  * name, the stem of its files and a function. Adding one is one more
@@ -19,7 +22,7 @@ typedef struct experiment_options {
     const char *out_dir; /* an existing directory */
     /* Width of an activation pulse, s, rounded to whole substeps (at
      * least one); 0 when not given, for each experiment's own: one frame
-     * of the model for E1 and E4 (the seed's space bar), 2 ms for P1. */
+     * of the model for E1 and E4 (the original program's space bar), 2 ms for P1. */
     double pulse_width;
 } experiment_options;
 

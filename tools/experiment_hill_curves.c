@@ -1,14 +1,17 @@
 /* SPDX-License-Identifier: MIT */
-/* C1 the Hill curves (experiments.md; report §5.4.2 figures 5.14-5.16;
- * seed 003, framework.md §9): the seed's tables (Ross et al. 2018) as
- * the muscle reads them, with linear interpolation (the seed's) and
- * Steffen's monotone cubic, beside seed 003's analytic curves; and seed
- * 003's total force against length for its family of constant shortening
- * velocities V = (i/10)·Vmax, i = 0, 0.1, ..., 1.5.
+/* C1 the Hill curves (docs/experiments.md; the original report's figures
+ * 5.14-5.16): the original report's tables (digitised from Ross et al.,
+ * 2018) as the muscle reads them, with linear interpolation (the original
+ * program's) and Steffen's monotone cubic, beside the analytic curves of
+ * the MATLAB worksheet "1D Muscle Model based on the Hill 2-Element
+ * Model"; and the worksheet's total force against length for its family
+ * of constant shortening velocities V = (i/10)·Vmax, i = 0, 0.1, ..., 1.5.
+ * docs/README.md ("Sources") cites both sources in full.
  *
  * One table of SAMPLES rows holds four grids side by side: normalized
- * length over [0, 1.5], normalized velocity over [-1.2, 1.2], and seed
- * 003's length in mm over [0, 1.5·L_rest].
+ * length over [0, 1.5], normalized velocity over [-1.2, 1.2], and the
+ * worksheet's length in mm over [0, 1.5·L_rest]. The CSV's columns of
+ * the worksheet's set keep the prefix "seed003." that scripts read.
  */
 #include <math.h>
 #include <stdio.h>
@@ -21,13 +24,13 @@
 #define SAMPLES 601
 #define MAX_NORMALIZED_LENGTH 1.5
 #define MAX_NORMALIZED_VELOCITY 1.2
-/* Seed 003's constants. */
-#define SEED003_REST_LENGTH_MM 0.5
-#define SEED003_MAX_FORCE_N 5.0
+/* The worksheet's constants. */
+#define WORKSHEET_REST_LENGTH_MM 0.5
+#define WORKSHEET_MAX_FORCE_N 5.0
 #define FAMILY_SIZE 16 /* i = 0, 0.1, ..., 1.5 */
 
 enum { SET_LINEAR, SET_STEFFEN, SET_ANALYTIC, SETS };
-static const char *const set_labels[SETS] = {"table, linear (the seed)", "table, Steffen", "seed 003, analytic"};
+static const char *const set_labels[SETS] = {"table, linear (original)", "table, Steffen", "worksheet, analytic"};
 static const char *const set_suffixes[SETS] = {"table_linear", "table_steffen", "seed003"};
 
 /* Column indices. */
@@ -37,7 +40,7 @@ enum {
     COL_PASSIVE = COL_ACTIVE + SETS,    /* + set */
     COL_VELOCITY = COL_PASSIVE + SETS,  /* normalized velocity */
     COL_FV = COL_VELOCITY + 1,          /* + set */
-    COL_LENGTH_MM = COL_FV + SETS,      /* seed 003's length */
+    COL_LENGTH_MM = COL_FV + SETS,      /* the worksheet's length */
     COL_FAMILY = COL_LENGTH_MM + 1,     /* + i */
     COLUMNS = COL_FAMILY + FAMILY_SIZE, /* */
 };
@@ -89,19 +92,19 @@ static int tabulate(mu_curves *const sets[SETS], csv_table *table)
         double row[COLUMNS];
         row[COL_LENGTH] = MAX_NORMALIZED_LENGTH * u;
         row[COL_VELOCITY] = MAX_NORMALIZED_VELOCITY * (2.0 * u - 1.0);
-        row[COL_LENGTH_MM] = MAX_NORMALIZED_LENGTH * SEED003_REST_LENGTH_MM * u;
+        row[COL_LENGTH_MM] = MAX_NORMALIZED_LENGTH * WORKSHEET_REST_LENGTH_MM * u;
         for (int s = 0; s < SETS; ++s) {
             row[COL_ACTIVE + s] = mu_curve_active_length(sets[s], row[COL_LENGTH]);
             row[COL_PASSIVE + s] = mu_curve_passive_length(sets[s], row[COL_LENGTH]);
             row[COL_FV + s] = mu_curve_velocity(sets[s], row[COL_VELOCITY]);
         }
-        /* F = F_MAX·(a·f_L·f_V + f_P) with a = 1; seed 003's velocity is a
+        /* F = F_MAX·(a·f_L·f_V + f_P) with a = 1; the worksheet's velocity is a
          * shortening speed, ours a lengthening one: ṽ = -V/Vmax. */
-        double length = row[COL_LENGTH_MM] / SEED003_REST_LENGTH_MM;
+        double length = row[COL_LENGTH_MM] / WORKSHEET_REST_LENGTH_MM;
         const mu_curves *analytic = sets[SET_ANALYTIC];
         for (int k = 0; k < FAMILY_SIZE; ++k) {
             double shortening = k / 100.0;
-            row[COL_FAMILY + k] = SEED003_MAX_FORCE_N *
+            row[COL_FAMILY + k] = WORKSHEET_MAX_FORCE_N *
                                   (mu_curve_active_length(analytic, length) * mu_curve_velocity(analytic, -shortening) +
                                    mu_curve_passive_length(analytic, length));
         }
@@ -142,7 +145,7 @@ static int draw(const experiment *self, const experiment_options *options, const
          .y_label = "f_V",
          .series = velocity,
          .series_count = SETS},
-        {.title = "seed 003: total force at constant shortening speeds",
+        {.title = "worksheet: total force at constant shortening speeds",
          .x_label = "length (mm)",
          .y_label = "force (N)",
          .series = family,
@@ -163,9 +166,9 @@ static void print_figures(mu_curves *const sets[SETS])
                mu_curve_velocity(c, -0.5), mu_curve_velocity(c, 1.0), mu_curve_velocity_slope(c, 0.0));
     }
     const mu_curves *analytic = sets[SET_ANALYTIC];
-    printf("seed 003     isometric peak %.2f N at L_rest; at V = 0.15 Vmax %.2f N (f_V %.3f)\n",
-           SEED003_MAX_FORCE_N * (1.0 + mu_curve_passive_length(analytic, 1.0)),
-           SEED003_MAX_FORCE_N * mu_curve_velocity(analytic, -0.15), mu_curve_velocity(analytic, -0.15));
+    printf("worksheet    isometric peak %.2f N at L_rest; at V = 0.15 Vmax %.2f N (f_V %.3f)\n",
+           WORKSHEET_MAX_FORCE_N * (1.0 + mu_curve_passive_length(analytic, 1.0)),
+           WORKSHEET_MAX_FORCE_N * mu_curve_velocity(analytic, -0.15), mu_curve_velocity(analytic, -0.15));
 }
 
 int experiment_c1_hill_curves(const experiment *self, const experiment_options *options)

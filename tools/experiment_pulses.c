@@ -1,11 +1,11 @@
 /* SPDX-License-Identifier: MIT */
-/* E1 twitch and E4 summation and tetanus (experiments.md; report §6.4.2,
- * §6.4.5): the arm, variant "All Muscles", hangs until it is at rest,
- * then both biceps get activation pulses of 1, each one frame long as
- * the seed's space bar gave them (or --pulse-width, at substep
- * resolution), with activation 0 between them. The trace is Biceps
- * Long's normalized contraction (the muscle the report plots), sampled at
- * the end of every substep.
+/* E1 twitch and E4 summation and tetanus (docs/experiments.md; the
+ * original report's sections 6.4.2 and 6.4.5): the arm, variant "All
+ * Muscles", hangs until it is at rest, then both biceps get activation
+ * pulses of 1, each one frame long as the original program's space bar
+ * gave them (or --pulse-width, at substep resolution), with activation 0
+ * between them. The trace is Biceps Long's normalized contraction (the
+ * muscle the report plots), sampled at the end of every substep.
  */
 #include <math.h>
 #include <stdio.h>
@@ -19,7 +19,7 @@
 /* The arm starts horizontal and swings down; from 2.5 s to 3 s its
  * elbow angle moves by less than 0.01 degree with 1, 5 or 100 kg. */
 #define SETTLE_TIME 3.0 /* s */
-/* Recorded after the first pulse: the seed saw the arm back at rest about
+/* Recorded after the first pulse: the original report saw the arm back at rest about
  * half a second after a twitch; a train of 9 at 8 Hz lasts 1 s. */
 #define RECORD_AFTER 2.5 /* s */
 /* The figure starts this long before the first pulse. */

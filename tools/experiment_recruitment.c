@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* R1 recruitment (experiments.md R1; seed 001, framework.md §8): the
- * worm's torque muscle, its motor pool recruited from 0 to every neuron,
+/* R1 recruitment (docs/experiments.md; McIntyre, "Simulated Muscles",
+ * cited in docs/README.md): the worm's torque muscle, its motor pool recruited from 0 to every neuron,
  * weakest first (Henneman's size principle, mu/motor_pool.h). For each
  * count n: the share of the pool, the strength of the n-th neuron, the
  * exertion e(n) (the pool's cumulative strength over its total) and the

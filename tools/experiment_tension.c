@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* E3.1 isometric and E3.2 isotonic contraction (experiments.md; report
- * §6.4.4): the arm, variant "All Muscles", hangs until at rest; then
+/* E3.1 isometric and E3.2 isotonic contraction (docs/experiments.md;
+ * the original report's section 6.4.4): the arm, variant "All Muscles", hangs until at rest; then
  * Biceps Short's tension target ramps up, holds and ramps down to 0, and
  * its controller (each substep activation += gain·(target − active
  * force)/Fmax) follows it. With 100 kg the biceps cannot lift the load
@@ -189,8 +189,8 @@ int experiment_e3_isotonic(const experiment *self, const experiment_options *opt
         .target = 350.0,
         /* A ramp of 0.2 s overshoots: the active force reaches 390 N
          * (+11 %) as the muscle's shortening slows and f_V rises faster
-         * than the seed's controller follows. Over 1 s it stays within
-         * 5 % (README, "Experiments"). */
+         * than the original program's controller follows. Over 1 s it
+         * stays within 5 % (docs/experiments.md). */
         .ramp_time = 1.0,
         .hold_time = 0.7,
         .after = 1.5,

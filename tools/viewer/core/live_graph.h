@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The four live graphs of a model (framework.md §6): what each shows
+/* The four live graphs of a model (docs/viewer.md): what each shows
  * (its channels: a muscle's quantity from the history), drawn as a chart
  * of the last seconds (chart/chart.h) and exported as CSV (time plus one
  * column per channel, written atomically: io/csv_table.h).
