@@ -605,7 +605,7 @@ static int prepare(run_state *run)
         run->angle_min[h] = NAN;
         run->angle_max[h] = NAN;
     }
-    if (!recorder_open(&run->csv, run->csv_path, run->model, error, sizeof error)) {
+    if (!recorder_open(&run->csv, run->csv_path, run->model, &options, error, sizeof error)) {
         fprintf(stderr, "sinew: --out: %s\n", error);
         return EXIT_FAILURE;
     }
