@@ -7,6 +7,8 @@
 #      engine/ models/ tests/ bench/ tools/ musculo/
 #   3. for the presets release and asan: configure with -DSINEW_WERROR=ON,
 #      build, run ctest (output shown for failing tests)
+#   4. the release build installed, built shared, moved, and used by the
+#      examples of docs/examples with gcc and clang (tools/check_install.sh)
 #
 # Every stage runs even when an earlier one failed, so one run reports
 # everything; the last line sums up, and the exit status is non-zero when
@@ -112,6 +114,33 @@ for p in "${presets[@]}"; do
         step "$p" test run_ctest "$p" "${env_prefix[@]}" &&
         summary+=("$p ok")
 done
+
+# ---- The installed library, as other programs use it ------------------------
+# On the release build: installed, built as shared libraries too, moved, and
+# built on by the examples of docs/examples (tools/check_install.sh).
+if [[ " ${summary[*]} " == *" release ok"* ]]; then
+    banner "install: consumers, relocation, exported symbols, headers"
+    install_log=$(mktemp)
+    if tools/check_install.sh build/release 2>&1 | tee "$install_log"; then
+        summary+=("install ok")
+    else
+        summary+=("install FAIL")
+        failed=1
+    fi
+    # Its checks join the closing count ("install: N passed, N failed").
+    install_counts=$(sed -n 's/^install: \([0-9]*\) passed, \([0-9]*\) failed$/\1 \2/p' "$install_log")
+    rm -f "$install_log"
+    if [[ -n "$install_counts" ]]; then
+        read -r install_passed install_failed <<<"$install_counts"
+        tests_passed=$((tests_passed + install_passed))
+        tests_failed=$((tests_failed + install_failed))
+    else
+        tests_failed=$((tests_failed + 1))
+    fi
+else
+    summary+=("install skipped (release failed)")
+    failed=1
+fi
 
 banner "summary"
 summary_line=$(printf '%s, ' "${summary[@]}")

@@ -26,11 +26,13 @@ packages=(
     clang-format     # formatting check in tools/check.sh
     valgrind         # memory and cache profiling
     doxygen          # the API reference from the headers (cmake --build ... --target docs)
+    g++              # the C++ example built against the installed library (tools/check_install.sh)
+    clang            # clang and clang++: the examples and headers checked with a second compiler
+    binutils         # nm and readelf: what the shared libraries export
     locales          # de_DE.UTF-8, a decimal-comma locale the locale test runs under (generated below)
 )
 # ---- Only with --peers: the peer engines' benchmark harnesses. ------------
 peer_packages=(
-    g++             # box2d24_bench is C++
     libbox2d-dev    # Box2D 2.4.1
     libchipmunk-dev # Chipmunk2D 7.0.3
 )

@@ -1,0 +1,186 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# sinew as other people's programs get it: installed, moved, and built on.
+#
+#   tools/check_install.sh STATIC_BUILD_DIR
+#
+# STATIC_BUILD_DIR is a configured and built tree with the default static
+# libraries (tools/check.sh passes build/release). The script, in a
+# temporary folder that it removes at the end:
+#
+#   1. installs STATIC_BUILD_DIR to a prefix;
+#   2. copies the source tree, builds it with BUILD_SHARED_LIBS=ON (libraries
+#      and the sinew program) and installs it to another prefix;
+#   3. deletes that copy of the sources and its build tree, moves the shared
+#      install to a third prefix, and checks that nothing installed names
+#      the deleted folders; then runs, from the moved prefix, `sinew
+#      --version`, `sinew run arm` and `sinew experiment c1`;
+#   4. checks that the shared libraries export only the public API: every
+#      dynamic symbol of librb.so starts with rb_, of libmu.so with mu_, and
+#      each is declared RB_API/MU_API in an installed header (and the other
+#      way round);
+#   5. compiles every installed public header alone as C17 and as C++17, with
+#      gcc, g++, clang and clang++, warnings as errors;
+#   6. builds the examples of docs/examples against both prefixes with gcc
+#      and with clang, through find_package (CMake, the C++ example too) and
+#      through pkg-config (make), and runs each one: each checks its own
+#      result (a rebound height, a pendulum's period, a muscle flexing an
+#      elbow, the arm model flexing) and exits non-zero when it is wrong.
+#
+# Prints one line per check and a closing "N passed, N failed"; exits 1 if
+# anything failed, 2 on bad usage.
+set -uo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+source_dir=$PWD
+
+if (($# != 1)) || [[ ! -f "$1/CMakeCache.txt" ]]; then
+    echo "usage: tools/check_install.sh STATIC_BUILD_DIR (a configured and built tree)" >&2
+    exit 2
+fi
+static_build=$(cd "$1" && pwd)
+# The version, as rb/version.h gives it ("0.2.0").
+version=$(sed -n 's/^#define RB_VERSION_\(MAJOR\|MINOR\|PATCH\) \([0-9]*\)$/\2/p' engine/include/rb/version.h | paste -sd.)
+
+work=$(mktemp -d /tmp/sinew-install-XXXXXX)
+trap 'rm -rf "$work"' EXIT
+passed=0
+failed=0
+log=$work/log.txt
+
+# Runs a check: its name, then the command; on failure shows the command's
+# output (kept in $log).
+check()
+{
+    local name=$1
+    shift
+    if "$@" >"$log" 2>&1; then
+        echo "ok   $name"
+        passed=$((passed + 1))
+    else
+        echo "FAIL $name"
+        sed 's/^/     | /' "$log" | tail -n 40
+        failed=$((failed + 1))
+    fi
+}
+
+# ---- 1. The static install -------------------------------------------------
+static_prefix=$work/static
+check "install the static build" cmake --install "$static_build" --prefix "$static_prefix"
+
+# ---- 2. A shared build from a copy of the sources --------------------------
+copy=$work/source-copy
+shared_build=$work/build-shared
+shared_first=$work/shared-first
+build_shared()
+{
+    mkdir -p "$copy" &&
+        git ls-files -z --cached --others --exclude-standard | xargs -0 tar -cf - | tar -xf - -C "$copy" &&
+        cmake -S "$copy" -B "$shared_build" -DBUILD_SHARED_LIBS=ON -DCMAKE_BUILD_TYPE=Release \
+            "-DCMAKE_C_FLAGS_RELEASE=-O2 -DNDEBUG" -DCMAKE_INTERPROCEDURAL_OPTIMIZATION=ON -DSINEW_WERROR=ON \
+            -DSINEW_BUILD_TESTS=OFF -DSINEW_BUILD_BENCHMARKS=OFF -DSINEW_BUILD_VIEWER=OFF -DSINEW_BUILD_DOCS=OFF &&
+        cmake --build "$shared_build" -j2 &&
+        cmake --install "$shared_build" --prefix "$shared_first"
+}
+check "build and install a copy of the sources with BUILD_SHARED_LIBS=ON" build_shared
+
+# ---- 3. Moved, with its sources and build tree gone ------------------------
+shared_prefix=$work/shared
+relocate()
+{
+    rm -rf "$copy" "$shared_build" && mv "$shared_first" "$shared_prefix" &&
+        if grep -rl -e "$copy" -e "$shared_build" -e "$shared_first" "$shared_prefix"; then
+            echo "the files above name the deleted source, build or install folder"
+            return 1
+        fi
+}
+check "delete the copy's sources and build tree, move the install" relocate
+run_moved()
+(
+    out=$work/moved-run
+    mkdir -p "$out" && cd "$out" &&
+        env -u SINEW_DATA_DIR "$shared_prefix/bin/sinew" --version | grep -qx "sinew $version" &&
+        env -u SINEW_DATA_DIR "$shared_prefix/bin/sinew" run arm --duration 1 --out "$out" &&
+        test -s "$out/arm.csv" &&
+        env -u SINEW_DATA_DIR "$shared_prefix/bin/sinew" experiment c1 --out "$out" &&
+        test -s "$out/c1_hill_curves.csv" && test -s "$out/c1_hill_curves.png"
+)
+check "the moved install runs sinew --version, run arm and experiment c1" run_moved
+
+# ---- 4. Only the public API leaves the shared libraries --------------------
+exports_match()
+{
+    local library=$1 prefix=$2 macro=$3 headers=$4
+    local exported declared
+    exported=$(nm -D --defined-only "$shared_prefix/lib/lib$library.so" | awk '{print $3}' | sort -u)
+    declared=$(grep -ho "^$macro [^(]*[ *]\($prefix[a-z0-9_]*\)(" "$shared_prefix/include/$headers"/*.h |
+        sed 's/.*[ *]\([a-z0-9_]*\)($/\1/' | sort -u)
+    if grep -v "^$prefix" <<<"$exported"; then
+        echo "lib$library.so exports the symbols above, which are not $prefix*"
+        return 1
+    fi
+    if ! diff <(echo "$exported") <(echo "$declared"); then
+        echo "lib$library.so's exports (<) differ from the $macro declarations of include/$headers (>)"
+        return 1
+    fi
+    echo "$(wc -l <<<"$exported") symbols, all declared with $macro"
+}
+check "librb.so exports exactly the RB_API functions" exports_match rb rb_ RB_API rb
+check "libmu.so exports exactly the MU_API functions" exports_match mu mu_ MU_API mu
+check "librb.so and libmu.so carry their soname" \
+    bash -c "readelf -d '$shared_prefix/lib/librb.so' | grep -q 'SONAME.*librb.so.0.2' &&
+             readelf -d '$shared_prefix/lib/libmu.so' | grep -q 'SONAME.*libmu.so.0.2'"
+
+# ---- 5. Each public header compiles alone as C17 and C++17 -----------------
+headers_compile()
+{
+    local header source status=0
+    for header in "$static_prefix"/include/rb/*.h "$static_prefix"/include/mu/*.h; do
+        source=${header#"$static_prefix/include/"}
+        printf '#include "%s"\ntypedef int header_compiles_alone;\n' "$source" >"$work/header.c"
+        cp "$work/header.c" "$work/header.cpp"
+        for compiler in "gcc -std=c17" "clang -std=c17"; do
+            $compiler -Wall -Wextra -Wpedantic -Werror -I"$static_prefix/include" -c "$work/header.c" \
+                -o /dev/null || { echo "$source: $compiler"; status=1; }
+        done
+        for compiler in "g++ -std=c++17" "clang++ -std=c++17"; do
+            $compiler -Wall -Wextra -Wpedantic -Werror -I"$static_prefix/include" -c "$work/header.cpp" \
+                -o /dev/null || { echo "$source: $compiler"; status=1; }
+        done
+    done
+    return "$status"
+}
+check "every public header compiles alone as C17 and C++17 (gcc, g++, clang, clang++)" headers_compile
+
+# ---- 6. The examples, built on each install with each compiler -------------
+examples_cmake()
+{
+    local prefix=$1 cc=$2 cxx=$3 build=$work/examples-cmake-$4-$2
+    cmake -S docs/examples -B "$build" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_C_COMPILER="$cc" \
+        -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=Release &&
+        cmake --build "$build" -j2 &&
+        "$build/bouncing_ball" && "$build/pendulum" && "$build/muscle_bone" && "$build/arm_model"
+}
+examples_pkg_config()
+{
+    local prefix=$1 cc=$2 kind=$3 build=$work/examples-make-$3-$2 flags=
+    if [[ "$kind" == static ]]; then
+        flags=--static
+    fi
+    mkdir -p "$build" &&
+        PKG_CONFIG_PATH="$prefix/lib/pkgconfig" make -C "$build" -f "$source_dir/docs/examples/Makefile" \
+            CC="$cc" CFLAGS="-O2 -Wall -Wextra -Werror" PKG_CONFIG_FLAGS="$flags" &&
+        LD_LIBRARY_PATH="$prefix/lib" "$build/bouncing_ball" &&
+        LD_LIBRARY_PATH="$prefix/lib" "$build/pendulum" &&
+        LD_LIBRARY_PATH="$prefix/lib" "$build/muscle_bone"
+}
+for kind in static shared; do
+    prefix=$work/$kind
+    for compilers in "gcc g++" "clang clang++"; do
+        read -r cc cxx <<<"$compilers"
+        check "examples on the $kind install, find_package, $cc and $cxx" examples_cmake "$prefix" "$cc" "$cxx" "$kind"
+        check "examples on the $kind install, pkg-config, $cc" examples_pkg_config "$prefix" "$cc" "$kind"
+    done
+done
+
+echo "install: ${passed} passed, ${failed} failed"
+((failed == 0))
