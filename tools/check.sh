@@ -3,8 +3,8 @@
 # The project's test command: everything CI checks, in one run.
 #
 #   1. tools/setup.sh (installs missing packages; does nothing when all present)
-#   2. formatting: clang-format --dry-run --Werror over every *.c and *.h of
-#      engine/ models/ tests/ bench/ tools/ musculo/
+#   2. formatting: clang-format --dry-run --Werror over every *.c, *.h and *.cpp of
+#      engine/ models/ tests/ bench/ tools/ musculo/ docs/examples/
 #   3. for the presets release and asan: configure with -DSINEW_WERROR=ON,
 #      build, run ctest (output shown for failing tests)
 #   4. the release build installed, built shared, moved, and used by the
@@ -32,14 +32,14 @@ tools/setup.sh
 # ---- Formatting -------------------------------------------------------------
 banner "format ($("$clang_format" --version | sed 's/.*version \([0-9.]*\).*/clang-format \1/'))"
 dirs=()
-for d in engine models tests bench tools musculo; do
+for d in engine models tests bench tools musculo docs/examples; do
     if [[ -d "$d" ]]; then
         dirs+=("$d")
     fi
 done
 sources=()
 if ((${#dirs[@]})); then
-    mapfile -d '' -t sources < <(find "${dirs[@]}" -type f \( -name '*.c' -o -name '*.h' \) -print0 | sort -z)
+    mapfile -d '' -t sources < <(find "${dirs[@]}" -type f \( -name '*.c' -o -name '*.h' -o -name '*.cpp' \) -print0 | sort -z)
 fi
 unformatted=()
 for f in "${sources[@]}"; do

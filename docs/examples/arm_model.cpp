@@ -16,7 +16,8 @@
 
 #include "mu/mu.h"
 
-namespace {
+namespace
+{
 
 // Throws the layer's message when a call fails.
 void check(rb_status status)

@@ -41,8 +41,7 @@ typedef struct arm {
 static void update_muscle(rb_world *world, int substep, double h, void *context)
 {
     arm *a = context;
-    rb_status status =
-        substep == 0 ? mu_muscle_prepare(a->muscle, world, h) : mu_muscle_advance(a->muscle, world, h);
+    rb_status status = substep == 0 ? mu_muscle_prepare(a->muscle, world, h) : mu_muscle_advance(a->muscle, world, h);
     if (a->status == RB_OK) {
         a->status = status;
     }
