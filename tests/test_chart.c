@@ -365,8 +365,8 @@ Test(csv_table, errors_name_the_file_and_the_line)
     } cases[] = {
         {"", "empty file"},
         {"a,b\n1,2\n3\n", "bad.csv:3: 1 fields, the header has 2"},
-        {"a,b\n1,2,3\n", "bad.csv:2: more fields than the header"},
-        {"a,\"b\n1,2\n", "bad.csv:1: header: a quoted field is not closed"},
+        {"a,b\n1,2,3\n", "bad.csv:2: 3 fields, the header has 2"},
+        {"a,\"b\n1,2\n", "bad.csv:1: field 2: a quoted field is not closed on its line"},
         {"a,,c\n", "column 2 has no name"},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
