@@ -47,33 +47,95 @@
 #include <string.h>
 #include <time.h>
 
-#include "cli/option_value.h"
+#include "cli/options.h"
 #include "io/atomic_file.h"
 #include "rb/rb.h"
 #include "scenes/scenes.h"
 
-enum { EXIT_USAGE = 2 };
+enum { OPT_SCENE, OPT_SOLVER, OPT_RUNS, OPT_STEPS, OPT_WARMUP, OPT_VEL, OPT_POS, OPT_SUBSTEPS, OPT_CSV, OPT_QUICK };
 
-static const char usage_text[] =
-    "usage: bench_engine [options]\n"
-    "\n"
-    "Times rb_world_step on the peer benchmark scenes (docs/benchmarks.md) and a scaling sweep.\n"
-    "\n"
-    "  --scene NAME    pyramid20, pyramid100, many_pyramids, joint_grid, chain_hang, chain_swing,\n"
-    "                  balls, rain, sweep (pyramids of 105 .. 10,011 boxes), peers (the peers' five\n"
-    "                  scenes), all but the sweep (default), or everything\n"
-    "  --solver NAME   soft_step, ngs, baumgarte or all (default: the engine's)\n"
-    "  --runs N        repetitions of the whole run, 1 .. 1000 (default 5)\n"
-    "  --steps N       timed steps per run, 1 .. 1000000 (default 300)\n"
-    "  --warmup N      untimed steps before them, 0 .. 1000000 (default 60)\n"
-    "  --vel N         velocity iterations, 1 .. 1000 (default: engine's)\n"
-    "  --pos N         position iterations (NGS) or relax passes (soft step), 0 .. 1000\n"
-    "                  (default: engine's)\n"
-    "  --substeps N    substeps per step, 1 .. 1000 (default: engine's)\n"
-    "  --csv FILE      results (default bench_engine.csv)\n"
-    "  --quick         smoke test: 1 run, 10 warm-up and 20 timed steps\n"
-    "                  (explicit --runs, --warmup, --steps still win)\n"
-    "  --help          print this text\n";
+static const cli_option options_table[] = {
+    {.name = "scene",
+     .id = OPT_SCENE,
+     .kind = CLI_TEXT,
+     .value_name = "NAME",
+     .help = "pyramid20, pyramid100, many_pyramids, joint_grid, chain_hang, chain_swing,\n"
+             "balls, rain, sweep (pyramids of 105 .. 10,011 boxes), peers (the peers' five\n"
+             "scenes), all (all but the sweep), or everything",
+     .fallback = "all"},
+    {.name = "solver",
+     .id = OPT_SOLVER,
+     .kind = CLI_TEXT,
+     .value_name = "NAME",
+     .help = "soft_step, ngs, baumgarte or all",
+     .fallback = "the engine's"},
+    {.name = "runs",
+     .id = OPT_RUNS,
+     .kind = CLI_INT,
+     .value_name = "N",
+     .help = "repetitions of the whole run",
+     .min = 1,
+     .max = 1000,
+     .fallback = "5"},
+    {.name = "steps",
+     .id = OPT_STEPS,
+     .kind = CLI_INT,
+     .value_name = "N",
+     .help = "timed steps per run",
+     .min = 1,
+     .max = 1000000,
+     .fallback = "300"},
+    {.name = "warmup",
+     .id = OPT_WARMUP,
+     .kind = CLI_INT,
+     .value_name = "N",
+     .help = "untimed steps before them",
+     .min = 0,
+     .max = 1000000,
+     .fallback = "60"},
+    {.name = "vel",
+     .id = OPT_VEL,
+     .kind = CLI_INT,
+     .value_name = "N",
+     .help = "velocity iterations",
+     .min = 1,
+     .max = 1000,
+     .fallback = "the engine's"},
+    {.name = "pos",
+     .id = OPT_POS,
+     .kind = CLI_INT,
+     .value_name = "N",
+     .help = "position iterations (NGS) or relax passes (soft step)",
+     .min = 0,
+     .max = 1000,
+     .fallback = "the engine's"},
+    {.name = "substeps",
+     .id = OPT_SUBSTEPS,
+     .kind = CLI_INT,
+     .value_name = "N",
+     .help = "substeps per step",
+     .min = 1,
+     .max = 1000,
+     .fallback = "the engine's"},
+    {.name = "csv",
+     .id = OPT_CSV,
+     .kind = CLI_PATH,
+     .value_name = "FILE",
+     .help = "results",
+     .fallback = "bench_engine.csv"},
+    {.name = "quick",
+     .id = OPT_QUICK,
+     .kind = CLI_FLAG,
+     .help = "smoke test: 1 run, 10 warm-up and 20 timed steps\n(explicit --runs, --warmup, --steps still win)"},
+};
+
+static const cli_command command = {
+    .name = "bench_engine",
+    .operands = "[options]",
+    .about = "Times rb_world_step on the peer benchmark scenes (docs/benchmarks.md) and a scaling sweep.\n",
+    .options = options_table,
+    .option_count = sizeof options_table / sizeof options_table[0],
+};
 
 #define BENCH_DT (1.0 / 60.0)       /* s, the peers' step */
 #define BENCH_PEER_GRAVITY (-10.0)  /* m/s², the peers' */
@@ -187,47 +249,47 @@ static parse_result parse_options(int argc, char **argv, bench_options *opts)
     bool quick = false;
     const char *scene = "all";
     const char *solver = NULL;
-    for (int i = 1; i < argc; ++i) {
-        const char *option = argv[i];
-        if (strcmp(option, "--help") == 0 || strcmp(option, "-h") == 0) {
-            return PARSE_HELP;
-        }
-        if (strcmp(option, "--quick") == 0) {
+    cli_parser parser;
+    cli_parser_start(&parser, &command, argc - 1, argv + 1);
+    cli_value value;
+    int id;
+    while ((id = cli_next(&parser, &value)) >= 0) {
+        switch (id) {
+        case OPT_SCENE:
+            scene = value.text;
+            break;
+        case OPT_SOLVER:
+            solver = value.text;
+            break;
+        case OPT_RUNS:
+            opts->runs = (int)value.integer;
+            break;
+        case OPT_STEPS:
+            opts->steps = (int)value.integer;
+            break;
+        case OPT_WARMUP:
+            opts->warmup = (int)value.integer;
+            break;
+        case OPT_VEL:
+            opts->velocity_iterations = (int)value.integer;
+            break;
+        case OPT_POS:
+            opts->position_iterations = (int)value.integer;
+            break;
+        case OPT_SUBSTEPS:
+            opts->substeps = (int)value.integer;
+            break;
+        case OPT_CSV:
+            opts->csv_path = value.text;
+            break;
+        default:
             quick = true;
-            continue;
+            break;
         }
-        static const char *const with_value[] = {"--scene", "--solver", "--runs",     "--steps", "--warmup",
-                                                 "--vel",   "--pos",    "--substeps", "--csv"};
-        const char *value = option_take_value(argc, argv, &i, "bench_engine", with_value,
-                                              sizeof with_value / sizeof with_value[0], usage_text);
-        if (value == NULL) {
-            return PARSE_ERROR;
-        }
-        char error[OPTION_ERROR_SIZE];
-        bool ok = true;
-        if (strcmp(option, "--scene") == 0) {
-            scene = value;
-        } else if (strcmp(option, "--solver") == 0) {
-            solver = value;
-        } else if (strcmp(option, "--runs") == 0) {
-            ok = option_parse_int(option, value, 1, 1000, &opts->runs, error, sizeof error);
-        } else if (strcmp(option, "--steps") == 0) {
-            ok = option_parse_int(option, value, 1, 1000000, &opts->steps, error, sizeof error);
-        } else if (strcmp(option, "--warmup") == 0) {
-            ok = option_parse_int(option, value, 0, 1000000, &opts->warmup, error, sizeof error);
-        } else if (strcmp(option, "--vel") == 0) {
-            ok = option_parse_int(option, value, 1, 1000, &opts->velocity_iterations, error, sizeof error);
-        } else if (strcmp(option, "--pos") == 0) {
-            ok = option_parse_int(option, value, 0, 1000, &opts->position_iterations, error, sizeof error);
-        } else if (strcmp(option, "--substeps") == 0) {
-            ok = option_parse_int(option, value, 1, 1000, &opts->substeps, error, sizeof error);
-        } else {
-            ok = option_parse_path(option, value, &opts->csv_path, error, sizeof error);
-        }
-        if (!ok) {
-            fprintf(stderr, "bench_engine: %s\n", error);
-            return PARSE_ERROR;
-        }
+    }
+    cli_parser_finish(&parser);
+    if (id != CLI_END) {
+        return id == CLI_HELP ? PARSE_HELP : PARSE_ERROR;
     }
     if (!select_scenes(scene, opts) || !select_solvers(solver, opts)) {
         return PARSE_ERROR;
@@ -646,10 +708,10 @@ int main(int argc, char **argv)
     bench_options opts;
     switch (parse_options(argc, argv, &opts)) {
     case PARSE_HELP:
-        fputs(usage_text, stdout);
+        cli_print_help(&command, stdout);
         return EXIT_SUCCESS;
     case PARSE_ERROR:
-        return EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     case PARSE_OK:
         break;
     }

@@ -25,22 +25,55 @@
 #include <string.h>
 #include <time.h>
 
-#include "cli/option_value.h"
+#include "cli/options.h"
 #include "io/atomic_file.h"
 #include "mu/model.h"
 
-enum { EXIT_USAGE = 2 };
+enum { OPT_MODEL, OPT_RUNS, OPT_SECONDS, OPT_CSV, OPT_QUICK };
 
-static const char usage_text[] = "usage: bench_models [options]\n"
-                                 "\n"
-                                 "Real-time factor of the built-in muscle models, every muscle active.\n"
-                                 "\n"
-                                 "  --model NAME    sample, arm, leg or all (default all)\n"
-                                 "  --runs N        repetitions, each on a fresh model, 1 .. 1000 (default 5)\n"
-                                 "  --seconds S     simulated time per run, > 0 .. 1e5 s (default 20)\n"
-                                 "  --csv FILE      results (default bench_models.csv)\n"
-                                 "  --quick         smoke test: 1 run of 1 s (explicit --runs, --seconds win)\n"
-                                 "  --help          print this text\n";
+static const cli_option options_table[] = {
+    {.name = "model",
+     .id = OPT_MODEL,
+     .kind = CLI_TEXT,
+     .value_name = "NAME",
+     .help = "sample, arm, leg or all",
+     .fallback = "all"},
+    {.name = "runs",
+     .id = OPT_RUNS,
+     .kind = CLI_INT,
+     .value_name = "N",
+     .help = "repetitions, each on a fresh model",
+     .min = 1,
+     .max = 1000,
+     .fallback = "5"},
+    {.name = "seconds",
+     .id = OPT_SECONDS,
+     .kind = CLI_NUMBER,
+     .value_name = "S",
+     .help = "simulated time per run",
+     .min = 0.0,
+     .min_open = true,
+     .max = 1e5,
+     .fallback = "20"},
+    {.name = "csv",
+     .id = OPT_CSV,
+     .kind = CLI_PATH,
+     .value_name = "FILE",
+     .help = "results",
+     .fallback = "bench_models.csv"},
+    {.name = "quick",
+     .id = OPT_QUICK,
+     .kind = CLI_FLAG,
+     .help = "smoke test: 1 run of 1 s (explicit --runs, --seconds win)"},
+};
+
+static const cli_command command = {
+    .name = "bench_models",
+    .operands = "[options]",
+    .about = "Real-time factor of the built-in muscle models, every muscle active.\n",
+    .options = options_table,
+    .option_count = sizeof options_table / sizeof options_table[0],
+};
 
 #define TARGET_FACTOR 1000.0 /* the real-time factor asked for */
 
@@ -68,36 +101,32 @@ static parse_result parse_options(int argc, char **argv, bench_options *opts)
     *opts = (bench_options){.runs = -1, .seconds = -1.0, .csv_path = "bench_models.csv"};
     bool quick = false;
     const char *model = "all";
-    for (int i = 1; i < argc; ++i) {
-        const char *option = argv[i];
-        if (strcmp(option, "--help") == 0 || strcmp(option, "-h") == 0) {
-            return PARSE_HELP;
-        }
-        if (strcmp(option, "--quick") == 0) {
+    cli_parser parser;
+    cli_parser_start(&parser, &command, argc - 1, argv + 1);
+    cli_value value;
+    int id;
+    while ((id = cli_next(&parser, &value)) >= 0) {
+        switch (id) {
+        case OPT_MODEL:
+            model = value.text;
+            break;
+        case OPT_RUNS:
+            opts->runs = (int)value.integer;
+            break;
+        case OPT_SECONDS:
+            opts->seconds = value.number;
+            break;
+        case OPT_CSV:
+            opts->csv_path = value.text;
+            break;
+        default:
             quick = true;
-            continue;
+            break;
         }
-        static const char *const with_value[] = {"--model", "--runs", "--seconds", "--csv"};
-        const char *value = option_take_value(argc, argv, &i, "bench_models", with_value,
-                                              sizeof with_value / sizeof with_value[0], usage_text);
-        if (value == NULL) {
-            return PARSE_ERROR;
-        }
-        char error[OPTION_ERROR_SIZE];
-        bool ok = true;
-        if (strcmp(option, "--model") == 0) {
-            model = value;
-        } else if (strcmp(option, "--runs") == 0) {
-            ok = option_parse_int(option, value, 1, 1000, &opts->runs, error, sizeof error);
-        } else if (strcmp(option, "--seconds") == 0) {
-            ok = option_parse_double(option, value, 0.0, true, 1e5, &opts->seconds, error, sizeof error);
-        } else {
-            ok = option_parse_path(option, value, &opts->csv_path, error, sizeof error);
-        }
-        if (!ok) {
-            fprintf(stderr, "bench_models: %s\n", error);
-            return PARSE_ERROR;
-        }
+    }
+    cli_parser_finish(&parser);
+    if (id != CLI_END) {
+        return id == CLI_HELP ? PARSE_HELP : PARSE_ERROR;
     }
     bool all = strcmp(model, "all") == 0;
     bool any = all;
@@ -271,10 +300,10 @@ int main(int argc, char **argv)
     bench_options opts;
     switch (parse_options(argc, argv, &opts)) {
     case PARSE_HELP:
-        fputs(usage_text, stdout);
+        cli_print_help(&command, stdout);
         return EXIT_SUCCESS;
     case PARSE_ERROR:
-        return EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     case PARSE_OK:
         break;
     }

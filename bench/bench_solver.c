@@ -70,33 +70,80 @@
 #include <string.h>
 #include <time.h>
 
-#include "cli/option_value.h"
+#include "cli/options.h"
 #include "io/atomic_file.h"
 #include "rb/rb.h"
 #include "scenes/scenes.h"
 
-enum { EXIT_USAGE = 2 };
+enum { OPT_SCENE, OPT_METHOD, OPT_RUNS, OPT_CSV, OPT_QUICK, OPT_SINGLE, OPT_VEL, OPT_POS, OPT_SUBSTEPS };
 
-static const char usage_text[] =
-    "usage: bench_solver [options]\n"
-    "\n"
-    "Sweeps the solver's velocity iterations, position iterations and substeps on the chain\n"
-    "(hanging, swinging), a pendulum, the joint grid, a 10-link chain and a welded cantilever;\n"
-    "reports time per step, joint gaps, the pendulum's energy drift and the cantilever's sag.\n"
-    "\n"
-    "  --scene NAME    chain_hang, chain_swing, pendulum, joint_grid, chain10, cantilever or all\n"
-    "                  (default all)\n"
-    "  --method NAME   solver: soft_step, ngs, baumgarte or all (default: all for the sweep,\n"
-    "                  the engine's for --single)\n"
-    "  --runs N        repetitions of each setting, 1 .. 1000 (default 3)\n"
-    "  --csv FILE      results (default bench_solver.csv)\n"
-    "  --quick         smoke test: 1 run, joint grid 10 warm-up + 10 timed steps\n"
-    "                  (an explicit --runs still wins)\n"
-    "  --single        one setting instead of the sweep: the engine's default solver settings\n"
-    "  --vel N         velocity iterations, 1 .. 1000 (implies --single)\n"
-    "  --pos N         position iterations, 0 .. 1000 (implies --single)\n"
-    "  --substeps N    substeps per step, 1 .. 1000 (implies --single)\n"
-    "  --help          print this text\n";
+static const cli_option options_table[] = {
+    {.name = "scene",
+     .id = OPT_SCENE,
+     .kind = CLI_TEXT,
+     .value_name = "NAME",
+     .help = "chain_hang, chain_swing, pendulum, joint_grid, chain10, cantilever or all",
+     .fallback = "all"},
+    {.name = "method",
+     .id = OPT_METHOD,
+     .kind = CLI_TEXT,
+     .value_name = "NAME",
+     .help = "solver: soft_step, ngs, baumgarte or all",
+     .fallback = "all for the sweep,\nthe engine's for --single"},
+    {.name = "runs",
+     .id = OPT_RUNS,
+     .kind = CLI_INT,
+     .value_name = "N",
+     .help = "repetitions of each setting",
+     .min = 1,
+     .max = 1000,
+     .fallback = "3"},
+    {.name = "csv",
+     .id = OPT_CSV,
+     .kind = CLI_PATH,
+     .value_name = "FILE",
+     .help = "results",
+     .fallback = "bench_solver.csv"},
+    {.name = "quick",
+     .id = OPT_QUICK,
+     .kind = CLI_FLAG,
+     .help = "smoke test: 1 run, joint grid 10 warm-up + 10 timed steps\n(an explicit --runs still wins)"},
+    {.name = "single",
+     .id = OPT_SINGLE,
+     .kind = CLI_FLAG,
+     .help = "one setting instead of the sweep: the engine's default solver settings"},
+    {.name = "vel",
+     .id = OPT_VEL,
+     .kind = CLI_INT,
+     .value_name = "N",
+     .help = "velocity iterations (implies --single)",
+     .min = 1,
+     .max = 1000},
+    {.name = "pos",
+     .id = OPT_POS,
+     .kind = CLI_INT,
+     .value_name = "N",
+     .help = "position iterations (implies --single)",
+     .min = 0,
+     .max = 1000},
+    {.name = "substeps",
+     .id = OPT_SUBSTEPS,
+     .kind = CLI_INT,
+     .value_name = "N",
+     .help = "substeps per step (implies --single)",
+     .min = 1,
+     .max = 1000},
+};
+
+static const cli_command command = {
+    .name = "bench_solver",
+    .operands = "[options]",
+    .about = "Sweeps the solver's velocity iterations, position iterations and substeps on the chain\n"
+             "(hanging, swinging), a pendulum, the joint grid, a 10-link chain and a welded cantilever;\n"
+             "reports time per step, joint gaps, the pendulum's energy drift and the cantilever's sag.\n",
+    .options = options_table,
+    .option_count = sizeof options_table / sizeof options_table[0],
+};
 
 #define BENCH_DT (1.0 / 60.0) /* s, the peers' step */
 #define BENCH_GRAVITY (-10.0) /* m/s², the peers' */
@@ -206,50 +253,47 @@ static parse_result parse_options(int argc, char **argv, bench_options *opts)
     bool quick = false;
     const char *scene = "all";
     const char *method = NULL;
-    for (int i = 1; i < argc; ++i) {
-        const char *option = argv[i];
-        if (strcmp(option, "--help") == 0 || strcmp(option, "-h") == 0) {
-            return PARSE_HELP;
-        }
-        if (strcmp(option, "--quick") == 0) {
+    cli_parser parser;
+    cli_parser_start(&parser, &command, argc - 1, argv + 1);
+    cli_value value;
+    int id;
+    while ((id = cli_next(&parser, &value)) >= 0) {
+        switch (id) {
+        case OPT_SCENE:
+            scene = value.text;
+            break;
+        case OPT_METHOD:
+            method = value.text;
+            break;
+        case OPT_RUNS:
+            opts->runs = (int)value.integer;
+            break;
+        case OPT_CSV:
+            opts->csv_path = value.text;
+            break;
+        case OPT_QUICK:
             quick = true;
-            continue;
-        }
-        if (strcmp(option, "--single") == 0) {
+            break;
+        case OPT_SINGLE:
             opts->single = true;
-            continue;
-        }
-        static const char *const with_value[] = {"--scene", "--method", "--runs",    "--csv",
-                                                 "--vel",   "--pos",    "--substeps"};
-        const char *value = option_take_value(argc, argv, &i, "bench_solver", with_value,
-                                              sizeof with_value / sizeof with_value[0], usage_text);
-        if (value == NULL) {
-            return PARSE_ERROR;
-        }
-        char error[OPTION_ERROR_SIZE];
-        bool ok = true;
-        if (strcmp(option, "--scene") == 0) {
-            scene = value;
-        } else if (strcmp(option, "--method") == 0) {
-            method = value;
-        } else if (strcmp(option, "--runs") == 0) {
-            ok = option_parse_int(option, value, 1, 1000, &opts->runs, error, sizeof error);
-        } else if (strcmp(option, "--csv") == 0) {
-            ok = option_parse_path(option, value, &opts->csv_path, error, sizeof error);
-        } else {
+            break;
+        case OPT_VEL:
+            opts->velocity_iterations = (int)value.integer;
             opts->single = true;
-            if (strcmp(option, "--vel") == 0) {
-                ok = option_parse_int(option, value, 1, 1000, &opts->velocity_iterations, error, sizeof error);
-            } else if (strcmp(option, "--pos") == 0) {
-                ok = option_parse_int(option, value, 0, 1000, &opts->position_iterations, error, sizeof error);
-            } else {
-                ok = option_parse_int(option, value, 1, 1000, &opts->substeps, error, sizeof error);
-            }
+            break;
+        case OPT_POS:
+            opts->position_iterations = (int)value.integer;
+            opts->single = true;
+            break;
+        default:
+            opts->substeps = (int)value.integer;
+            opts->single = true;
+            break;
         }
-        if (!ok) {
-            fprintf(stderr, "bench_solver: %s\n", error);
-            return PARSE_ERROR;
-        }
+    }
+    cli_parser_finish(&parser);
+    if (id != CLI_END) {
+        return id == CLI_HELP ? PARSE_HELP : PARSE_ERROR;
     }
     if (!parse_names(scene, method, opts)) {
         return PARSE_ERROR;
@@ -694,10 +738,10 @@ int main(int argc, char **argv)
     bench_options opts;
     switch (parse_options(argc, argv, &opts)) {
     case PARSE_HELP:
-        fputs(usage_text, stdout);
+        cli_print_help(&command, stdout);
         return EXIT_SUCCESS;
     case PARSE_ERROR:
-        return EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     case PARSE_OK:
         break;
     }

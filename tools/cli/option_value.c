@@ -3,7 +3,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "cli/option_value.h"
 
@@ -65,54 +64,5 @@ bool option_parse_path(const char *option, const char *text, const char **out, c
         return false;
     }
     *out = text;
-    return true;
-}
-
-const char *option_take_value(int argc, char **argv, int *i, const char *program, const char *const *known,
-                              size_t count, const char *usage)
-{
-    const char *option = argv[*i];
-    bool is_known = false;
-    for (size_t k = 0; k < count && !is_known; ++k) {
-        is_known = strcmp(option, known[k]) == 0;
-    }
-    if (!is_known) {
-        fprintf(stderr, "%s: unknown option \"%s\"\n%s", program, option, usage);
-        return NULL;
-    }
-    if (*i + 1 >= argc) {
-        fprintf(stderr, "%s: %s needs a value\n", program, option);
-        return NULL;
-    }
-    *i += 1;
-    return argv[*i];
-}
-
-bool option_split(int argc, char **argv, int *i, const char *const *known, size_t count, const char **option,
-                  const char **value, char *error, size_t error_size)
-{
-    const char *argument = argv[*i];
-    const char *equals = strchr(argument, '=');
-    size_t name_length = equals != NULL ? (size_t)(equals - argument) : strlen(argument);
-    *option = NULL;
-    for (size_t k = 0; k < count && *option == NULL; ++k) {
-        if (strlen(known[k]) == name_length && strncmp(argument, known[k], name_length) == 0) {
-            *option = known[k];
-        }
-    }
-    if (*option == NULL) {
-        snprintf(error, error_size, "unknown option \"%s\"", argument);
-        return false;
-    }
-    if (equals != NULL) {
-        *value = equals + 1;
-        return true;
-    }
-    if (*i + 1 >= argc || strncmp(argv[*i + 1], "--", 2) == 0) {
-        snprintf(error, error_size, "%s needs a value", *option);
-        return false;
-    }
-    *i += 1;
-    *value = argv[*i];
     return true;
 }

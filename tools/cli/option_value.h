@@ -3,9 +3,11 @@
  * share: the whole text must be the value (no trailing characters), and a
  * number must lie in its range.
  *
- * Each function takes the option's name (only for the message) and the
- * value's text. On success it stores the value in *out and returns true.
- * On failure *out is unchanged, `error` receives a message naming the
+ * The option parser (cli/options.h) checks every option's value with
+ * them; the tools use them too for values inside a value (`--recruit
+ * NAME=N`) and for a scene's parameters. Each function takes the option's
+ * name (only for the message) and the value's text. On success it stores
+ * the value in *out and returns true. On failure *out is unchanged, `error` receives a message naming the
  * option, what it expects and the text given (truncated to error_size
  * bytes), and the function returns false; the caller prefixes its program
  * name and prints it.
@@ -36,22 +38,5 @@ bool option_parse_u64(const char *option, const char *text, uint64_t *out, char 
 
 /* A file name: any non-empty text. *out points into `text`. */
 bool option_parse_path(const char *option, const char *text, const char **out, char *error, size_t error_size);
-
-/* For `option`, the value that follows it on the command line: checks
- * that the option is one of the `count` names in `known` and that a value
- * follows at argv[*i + 1]. On success advances *i past the value and
- * returns it; otherwise prints one line to stderr, prefixed by `program`
- * (for an unknown option followed by `usage`), and returns NULL. */
-const char *option_take_value(int argc, char **argv, int *i, const char *program, const char *const *known,
-                              size_t count, const char *usage);
-
-/* Reads the option at argv[*i], written `--name value` or `--name=value`,
- * where --name must be one of the `count` names in `known`. On success
- * sets *option to the matching entry of `known` and *value to its text,
- * advances *i past a separate value, and returns true. Otherwise `error`
- * says what is wrong (an unknown option, or no value after it; a value
- * may not start with "--") and the function returns false. */
-bool option_split(int argc, char **argv, int *i, const char *const *known, size_t count, const char **option,
-                  const char **value, char *error, size_t error_size);
 
 #endif
