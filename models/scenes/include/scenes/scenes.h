@@ -38,7 +38,7 @@ typedef struct scene_stack {
 } scene_stack;
 rb_status scene_stack_create(rb_world *world, int count, scene_stack *out);
 
-/* The pyramid of shared/peers/README.md: ground box of half-extents
+/* The pyramid of the peer benchmarks (docs/benchmarks.md): ground box of half-extents
  * (100, 1) at (0, -1); square boxes of half-extent 0.5, density 1,
  * friction 0.6, restitution 0; row i (0-based) has base - i boxes at
  * y = (2i + 1)·0.5 and x = (i + 1)·0.5 + 2(j - i)·0.5 - 0.5·base for
@@ -79,7 +79,8 @@ typedef struct scene_rain {
 } scene_rain;
 rb_status scene_rain_create(rb_world *world, int base, int ball_count, uint64_t seed, scene_rain *out);
 
-/* The seed's balls box (shared/spec/models.md, "balls"): a closed box
+/* The balls box of the first engine in Castanyer's report ("Implementació
+ * d'un model computacional de sistemes musculoesquelètics", 2023-24): a closed box
  * 2.44 m × 1.22 m of static walls (one body, four boxes 1 m thick so that
  * no ball can cross one in a step) with its lower-left inner corner at the
  * origin, `count` circles (1 .. SCENE_BALLS_MAX) of radius U(0.01, 0.1) m at
@@ -97,14 +98,14 @@ rb_status scene_rain_create(rb_world *world, int base, int ball_count, uint64_t 
 #define SCENE_BALLS_WIDTH 2.44  /* m, inner */
 #define SCENE_BALLS_HEIGHT 1.22 /* m, inner */
 #define SCENE_BALLS_PLACEMENT_TRIES 10000
-#define SCENE_BALLS_DRAG 0.05 /* N·s/m: the seed's linear drag F = -0.05·v */
+#define SCENE_BALLS_DRAG 0.05 /* N·s/m: the original's linear drag F = -0.05·v */
 typedef struct scene_balls {
     rb_body_id walls;
     rb_body_id balls[SCENE_BALLS_MAX];
     int count;
 } scene_balls;
 rb_status scene_balls_create(rb_world *world, int count, uint64_t seed, scene_balls *out);
-/* Applies the seed's drag force -0.05·v to every ball. */
+/* Applies the original's drag force -0.05·v to every ball. */
 rb_status scene_balls_apply_drag(rb_world *world, const scene_balls *balls);
 
 /* A static plank 20 m long and 0.2 m thick, tilted by `angle` (rad,
@@ -133,7 +134,7 @@ typedef struct scene_drop {
 } scene_drop;
 rb_status scene_drop_create(rb_world *world, double height, double restitution, scene_drop *out);
 
-/* The chain of shared/peers/README.md: `links` (1 .. 1000) boxes of
+/* The chain of the peer benchmarks (docs/benchmarks.md): `links` (1 .. 1000) boxes of
  * half-extents 0.25 × 0.05 m and density 1 kg/m² (0.05 kg), joined end to
  * end by revolute joints, the first pinned to a static body (no shape) at
  * the origin, and a heavy box of half-extent 0.25 m and density
@@ -198,7 +199,7 @@ typedef struct scene_pendulum {
 } scene_pendulum;
 rb_status scene_pendulum_create(rb_world *world, double length, scene_pendulum *out);
 
-/* The joint grid of shared/peers/README.md: n × n (2 .. 1000) circles of
+/* The joint grid of the peer benchmarks (docs/benchmarks.md): n × n (2 .. 1000) circles of
  * radius 0.4 m, density 1 kg/m², friction 0.6, at (k, -i) m for column k
  * and row i (0-based); each body (but the top row's) is joined to the body
  * above it by a revolute joint whose body A is the one above (local
