@@ -201,14 +201,14 @@ Test(cli_options, the_help_lists_every_option_with_its_value_range_and_default)
     cr_expect(strstr(text, "how many, 1 .. 5\n") != NULL, "%s", text);
     cr_expect(strstr(text, "a seed, 0 .. 2^64-1\n") != NULL, "%s", text);
     /* A help of two lines: the second aligned under the first. */
-    const char *where = strstr(text, "where\n");
+    const char *where = strstr(text, "where (default .)\n");
     cr_assert_not_null(where, "%s", text);
     const char *line = where;
     while (line > text && line[-1] != '\n') {
         --line;
     }
     char continued[64];
-    snprintf(continued, sizeof continued, "where\n%*sand more (default .)\n", (int)(where - line), "");
+    snprintf(continued, sizeof continued, "where (default .)\n%*sand more\n", (int)(where - line), "");
     cr_expect(strstr(text, continued) != NULL, "%s", text);
     cr_expect(strstr(text, "\n  --help ") != NULL, "%s", text);
     cr_expect(strstr(text, "\n\nNotes.\n") != NULL, "%s", text);

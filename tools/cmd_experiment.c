@@ -25,9 +25,10 @@ static const cli_option options_table[] = {
      .id = OPT_PULSE_WIDTH,
      .kind = CLI_NUMBER,
      .value_name = "S",
-     .help = "width of the pulses in s, rounded to whole substeps, for the experiments\n"
-             "that give pulses (each one's longest is listed below); by default one\n"
-             "frame for e1 and e4, as the original program's space bar, and 2 ms for p1",
+     .help = "width of the pulses in s\n"
+             "rounded to whole substeps, for the experiments that give pulses\n"
+             "(each one's longest is listed below); by default one frame for e1\n"
+             "and e4, as the original program's space bar, and 2 ms for p1",
      .min = 0.0,
      .max = EXPERIMENT_MAX_PULSE_WIDTH,
      .min_open = true},

@@ -24,7 +24,7 @@ static const cli_command check_command = {
     .operands = "FILE",
     .max_operands = 1,
     .operand = "model file",
-    .about = "Validates the model file FILE (format: models/README.md) and builds it in each\n"
+    .about = "Validates the model file FILE (format: docs/model-format.md) and builds it in each\n"
              "of its variants. Prints a one-line summary and exits 0, or prints what is wrong\n"
              "and where (file:line:column, the JSON path, what was expected) and exits 1.\n",
 };

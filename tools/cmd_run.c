@@ -129,7 +129,7 @@ static const cli_command command = {
              "NAME.contraction_m, NAME.normalized_contraction, NAME.active_force_N,\n"
              "NAME.passive_force_N, NAME.total_force_N, NAME.excitation, NAME.fibre_length_m,\n"
              "NAME.tendon_length_m, NAME.pennation_angle_deg; per hinge NAME.angle_deg; per part\n"
-             "NAME.x_m, NAME.y_m, NAME.angle_deg (README.md, \"Running models\").\n",
+             "NAME.x_m, NAME.y_m, NAME.angle_deg (docs/cli.md, \"The CSV\").\n",
 };
 
 /* Most frames a run may have: beyond any useful run, and a bound on the

@@ -89,7 +89,8 @@ static const cli_option common_options[COMMON_OPTION_COUNT] = {
      .id = OPT_OUT,
      .kind = CLI_PATH,
      .value_name = "DIR",
-     .help = "write a trace DIR/NAME.csv, one row per step per dynamic body:\n"
+     .help = "write a trace DIR/NAME.csv\n"
+             "one row per step per dynamic body:\n"
              "time_s,body,x_m,y_m,angle_deg,vx_m_s,vy_m_s,omega_deg_s",
      .fallback = "no trace"},
 };

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* The control file of `sinew run --control FILE`: a schedule of controls
- * as text, one per line (README.md, "Running models"):
+ * as text, one per line (docs/cli.md, "Control files"):
  *
  *   # a comment, from '#' to the end of the line; blank lines are skipped
  *   TIME activation NAME VALUE     activation 0 .. 1 from TIME s on

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* Where a model comes from: the MODEL argument of `sinew run` names a
- * built-in model (the models/ directory of the source tree, read through
- * mu_model_desc_load_builtin) or a model file.
+/* Where a model comes from: the MODEL argument of `sinew run` and `sinew
+ * view` names a built-in model (read through mu_model_desc_load_builtin)
+ * or a model file.
  */
 #ifndef SINEW_MODEL_SOURCE_H
 #define SINEW_MODEL_SOURCE_H

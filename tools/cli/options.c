@@ -182,19 +182,10 @@ static int option_label(const char *name, const char *value_name, char *label, s
     return snprintf(label, size, "--%s%s%s", name, value_name != NULL ? " " : "", value_name != NULL ? value_name : "");
 }
 
-/* The help of one option: its text, each '\n' continued at `column`,
- * then its range and default. */
-static void print_option_help(const cli_option *option, int column, FILE *stream)
+/* The range and default of an option, after its help's first line,
+ * where a reader looks for them. */
+static void print_range_and_default(const cli_option *option, FILE *stream)
 {
-    for (const char *text = option->help; *text != '\0';) {
-        size_t length = strcspn(text, "\n");
-        fprintf(stream, "%.*s", (int)length, text);
-        text += length;
-        if (*text == '\n') {
-            fprintf(stream, "\n%*s", column, "");
-            ++text;
-        }
-    }
     switch (option->kind) {
     case CLI_INT:
         fprintf(stream, ", %g .. %g", option->min, option->max);
@@ -213,12 +204,28 @@ static void print_option_help(const cli_option *option, int column, FILE *stream
     if (option->fallback != NULL) {
         fprintf(stream, " (default %s)", option->fallback);
     }
+}
+
+/* The help of one option: its first line with the range and default,
+ * then any further lines aligned at `column`. */
+static void print_option_help(const cli_option *option, int column, FILE *stream)
+{
+    const char *text = option->help;
+    size_t length = strcspn(text, "\n");
+    fprintf(stream, "%.*s", (int)length, text);
+    print_range_and_default(option, stream);
+    for (text += length; *text == '\n'; text += length) {
+        ++text;
+        length = strcspn(text, "\n");
+        fprintf(stream, "\n%*s%.*s", column, "", (int)length, text);
+    }
     fputc('\n', stream);
 }
 
 void cli_print_help(const cli_command *command, FILE *stream)
 {
-    fprintf(stream, "usage: %s %s\n\n%s", command->name, command->operands, command->about);
+    fprintf(stream, "usage: %s%s%s\n\n%s", command->name, command->operands[0] != '\0' ? " " : "", command->operands,
+            command->about);
     /* The help texts start in one column, past the longest label. */
     char label[128];
     int column = option_label("help", NULL, label, sizeof label);
