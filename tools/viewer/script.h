@@ -10,7 +10,7 @@
  *   variant NAME|N          rebuild the model in that variant
  *   weight KG               rebuild it with that weight choice
  *   level N                 rebuild it at that level (0 .. 4)
- *   scene NAME              load an engine scene (pyramid, chain, pendulum, balls, joint-grid)
+ *   scene NAME              load an engine scene of scenes/registry.h (`sinew scene --help`)
  *   play N                  step N frames, drawing after each
  *   activation NAME A       activation A (0 .. 1) of a muscle or group
  *   tension NAME N          tension target N (newtons) of a muscle or group
