@@ -165,6 +165,39 @@ Test(provenance, a_rerun_writes_the_same_sidecar, .init = make_dir, .fini = remo
     free(second);
 }
 
+Test(provenance, a_scene_s_trace_names_the_scene_its_parameters_and_the_solver, .init = make_dir, .fini = remove_dir,
+     .timeout = 60)
+{
+    char arguments[256];
+    snprintf(arguments, sizeof arguments, "scene incline --duration 0.5 --angle 20 --substeps 3 --out %s", dir);
+    run_sinew(arguments);
+    expect_plain_csv("incline.csv", "time_s,body,");
+    json_t *root = load_sidecar("incline.csv");
+    const char *command[] = {"sinew", "scene",      "incline", "--duration", "0.5", "--angle",
+                             "20",    "--substeps", "3",       "--out",      dir};
+    json_t *settings = expect_sidecar_head(root, "incline.csv", command, sizeof command / sizeof command[0]);
+    cr_expect_str_eq(json_string_value(json_object_get(settings, "scene")), "incline");
+    json_t *parameters = json_object_get(settings, "parameters");
+    cr_expect_eq(json_real_value(json_object_get(parameters, "angle")), 20.0);
+    cr_expect(json_is_real(json_object_get(parameters, "friction")), "the default friction is named too");
+    cr_expect_eq(json_integer_value(json_object_get(json_object_get(settings, "solver"), "substeps")), 3);
+    cr_expect_eq(json_real_value(json_object_get(settings, "frame_rate_hz")), 60.0);
+    cr_expect_eq(json_integer_value(json_object_get(settings, "steps")), 30);
+    json_decref(root);
+
+    /* A seed beyond a double's 53 bits is kept whole, as text; a count is
+     * an integer. */
+    snprintf(arguments, sizeof arguments, "scene balls --duration 0.05 --count 3 --seed 18446744073709551615 --out %s",
+             dir);
+    run_sinew(arguments);
+    root = load_sidecar("balls.csv");
+    parameters = json_object_get(json_object_get(json_object_get(root, "sinew"), "settings"), "parameters");
+    cr_expect_str_eq(json_string_value(json_object_get(parameters, "seed")), "18446744073709551615");
+    cr_expect(json_is_integer(json_object_get(parameters, "count")));
+    cr_expect_eq(json_integer_value(json_object_get(parameters, "count")), 3);
+    json_decref(root);
+}
+
 /* CRC-32 as PNG defines it, written here independently of the program's
  * and checked against the standard check value before use. */
 static uint32_t crc32_of(const unsigned char *bytes, size_t length)

@@ -23,6 +23,7 @@
 #include "cli/option_value.h"
 #include "commands.h"
 #include "io/atomic_file.h"
+#include "io/provenance.h"
 #include "rb/rb.h"
 #include "scenes/registry.h"
 
@@ -442,13 +443,28 @@ static bool trace_write_step(atomic_file *trace, const simulation *sim, double t
     return true;
 }
 
-static bool trace_commit(atomic_file *trace)
+/* Renames the trace into place, then writes its sidecar
+ * (io/provenance.h): the scene as built, its step rate and steps. */
+static bool trace_commit(atomic_file *trace, const simulation *sim, const options *opts, long steps)
 {
     if (trace->stream == NULL) {
         return true;
     }
     char error[ATOMIC_FILE_ERROR_SIZE];
-    if (!atomic_file_commit(trace, error, sizeof error)) {
+    json_t *settings = provenance_scene_settings(&sim->scene);
+    if (settings == NULL || json_object_set_new(settings, "frame_rate_hz", json_real(opts->hz)) != 0 ||
+        json_object_set_new(settings, "steps", json_integer(steps)) != 0 ||
+        json_object_set_new(settings, "duration_s", json_real((double)steps / opts->hz)) != 0) {
+        json_decref(settings);
+        atomic_file_abandon(trace);
+        fputs("sinew scene: out of memory\n", stderr);
+        return false;
+    }
+    const bool committed = atomic_file_commit(trace, error, sizeof error);
+    if (!committed) {
+        json_decref(settings);
+    }
+    if (!committed || !provenance_write_sidecar(opts->trace_path, settings, error, sizeof error)) {
         fprintf(stderr, "sinew scene: --out: %s\n", error);
         return false;
     }
@@ -522,7 +538,7 @@ static int run(const options *opts, simulation *sim, run_result *result)
             return EXIT_FAILURE;
         }
     }
-    if (!trace_commit(&trace)) {
+    if (!trace_commit(&trace, sim, opts, result->steps)) {
         return EXIT_FAILURE;
     }
     result->wall_seconds = now_seconds() - loop_start;

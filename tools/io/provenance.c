@@ -89,6 +89,28 @@ json_t *provenance_model_settings(mu_model *model, const mu_model_options *optio
                      provenance_solver_settings(&solver));
 }
 
+json_t *provenance_scene_settings(const scene_instance *scene)
+{
+    const scene_entry *entry = &scene_registry[scene->kind];
+    json_t *parameters = json_object();
+    for (int p = 0; parameters != NULL && p < entry->parameter_count; ++p) {
+        char seed[24];
+        snprintf(seed, sizeof seed, "%llu", (unsigned long long)scene->values[p].seed);
+        const scene_parameter_kind kind = entry->parameters[p].kind;
+        json_t *value = kind == SCENE_SEED      ? json_string(seed)
+                        : kind == SCENE_INTEGER ? json_integer((json_int_t)scene->values[p].number)
+                                                : json_real(scene->values[p].number);
+        if (json_object_set_new(parameters, entry->parameters[p].name, value) != 0) {
+            json_decref(parameters);
+            parameters = NULL;
+        }
+    }
+    const rb_vec2 gravity = rb_world_gravity(scene->world);
+    const rb_solver_settings solver = rb_world_solver_settings(scene->world);
+    return json_pack("{s:s, s:o, s:[f, f], s:o}", "scene", entry->name, "parameters", parameters, "gravity_m_s2",
+                     gravity.x, gravity.y, "solver", provenance_solver_settings(&solver));
+}
+
 /* The sidecar's document; NULL when out of memory. */
 static json_t *sidecar(const char *csv_path, json_t *settings)
 {

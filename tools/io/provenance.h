@@ -43,6 +43,7 @@
 
 #include "mu/model.h"
 #include "rb/world.h"
+#include "scenes/registry.h"
 
 /* Remembers the program's command line for every file written after;
  * main() calls it first. argv must live as long as the program (main's
@@ -67,6 +68,12 @@ json_t *provenance_solver_settings(const rb_solver_settings *solver);
  * "weld_glues", "frame_rate_hz", "substeps_per_frame", "gravity_m_s2" and
  * "solver". NULL when out of memory. */
 json_t *provenance_model_settings(mu_model *model, const mu_model_options *options);
+
+/* The settings of an engine scene as built: "scene" (its name),
+ * "parameters" (each of its parameters by name, a seed as a decimal
+ * string, since a JSON number read as a double keeps only 53 bits),
+ * "gravity_m_s2" and "solver". NULL when out of memory. */
+json_t *provenance_scene_settings(const scene_instance *scene);
 
 /* Writes CSV_PATH-metadata.json for the CSV file `csv_path`, with
  * `settings` (a JSON object, or NULL for none), which it takes over. On

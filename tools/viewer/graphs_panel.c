@@ -31,8 +31,9 @@ static void draw_graph(GtkDrawingArea *area, cairo_t *cr, int width, int height,
     }
 }
 
-/* The sidecar's settings (io/provenance.h): the graph, and the model as
- * built or the scene's engine settings. NULL when out of memory. */
+/* The sidecar's settings (io/provenance.h): the graph and the model as
+ * built (only a model's muscles give a graph data to export). NULL when
+ * out of memory. */
 static json_t *export_settings(simulation *sim, live_graph_kind kind)
 {
     json_t *settings = json_pack("{s:s, s:f}", "graph", live_graph_file_stem(kind), "frame_rate_hz",
@@ -45,12 +46,6 @@ static json_t *export_settings(simulation *sim, live_graph_kind kind)
             settings = NULL;
         }
         json_decref(model);
-    } else if (settings != NULL && simulation_world(sim) != NULL) {
-        const rb_solver_settings solver = rb_world_solver_settings(simulation_world(sim));
-        if (json_object_set_new(settings, "solver", provenance_solver_settings(&solver)) != 0) {
-            json_decref(settings);
-            settings = NULL;
-        }
     }
     return settings;
 }
