@@ -10,7 +10,7 @@
 #                                       and the control files (libmu has its own
 #                                       copies compiled in; these are to read,
 #                                       copy and change, with SINEW_DATA_DIR)
-#   P/share/doc/sinew/                  README, LICENSE, CHANGELOG, docs, examples
+#   P/share/doc/sinew/                  README, LICENSE, CHANGELOG, docs/ (examples included)
 include(CMakePackageConfigHelpers)
 
 set(sinew_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/sinew)
@@ -68,8 +68,11 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/models/controls
 install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/LICENSE ${PROJECT_SOURCE_DIR}/CHANGELOG.md
         DESTINATION ${CMAKE_INSTALL_DOCDIR}
         COMPONENT documentation)
+# docs/ keeps its name, so the README's links (docs/cli.md, ...) work in the
+# installed copy too, and docs/README.md does not replace the README. The
+# examples' CMakeLists.txt is installed with them; docs/CMakeLists.txt is not.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/
-        DESTINATION ${CMAKE_INSTALL_DOCDIR}
+        DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs
         COMPONENT documentation
-        PATTERN "CMakeLists.txt" EXCLUDE
+        REGEX "/docs/CMakeLists\\.txt$" EXCLUDE
         PATTERN "*.in" EXCLUDE)
