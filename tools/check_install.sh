@@ -21,11 +21,13 @@
 #      way round);
 #   5. compiles every installed public header alone as C17 and as C++17, with
 #      gcc, g++, clang and clang++, warnings as errors;
-#   6. builds the examples of docs/examples against both prefixes with gcc
-#      and with clang, through find_package (CMake, the C++ example too) and
-#      through pkg-config (make), and runs each one: each checks its own
-#      result (a rebound height, a pendulum's period, a muscle flexing an
-#      elbow, the arm model flexing) and exits non-zero when it is wrong.
+#   6. builds the examples of docs/examples with sinew as a subproject
+#      (add_subdirectory: the libraries only, no Criterion or GTK looked
+#      for), and against both prefixes with gcc and with clang, through
+#      find_package (CMake, the C++ example too) and through pkg-config
+#      (make), and runs each one: each checks its own result (a rebound
+#      height, a pendulum's period, a muscle flexing an elbow, the arm model
+#      flexing) and exits non-zero when it is wrong.
 #
 # Prints one line per check and a closing "N passed, N failed"; exits 1 if
 # anything failed, 2 on bad usage.
@@ -173,6 +175,25 @@ examples_pkg_config()
         LD_LIBRARY_PATH="$prefix/lib" "$build/pendulum" &&
         LD_LIBRARY_PATH="$prefix/lib" "$build/muscle_bone"
 }
+# As a subproject: only the two libraries are built, and nothing looks for
+# Criterion, GTK or Doxygen.
+examples_subproject()
+{
+    local build=$work/examples-subproject
+    cmake -S docs/examples -B "$build" -DSINEW_SOURCE_DIR="$source_dir" -DCMAKE_BUILD_TYPE=Release &&
+        if grep -iE "^(CRITERION|GTK4|DOXYGEN)" "$build/CMakeCache.txt"; then
+            echo "the subproject looked for the above"
+            return 1
+        fi &&
+        cmake --build "$build" -j2 &&
+        if [[ -e "$build/sinew/tools" || -e "$build/sinew/tests" || -e "$build/sinew/bench" ]]; then
+            echo "the subproject built its tools, tests or benchmarks"
+            return 1
+        fi &&
+        "$build/bouncing_ball" && "$build/pendulum" && "$build/muscle_bone" && "$build/arm_model"
+}
+check "examples with sinew as a subproject (add_subdirectory): the libraries alone" examples_subproject
+
 for kind in static shared; do
     prefix=$work/$kind
     for compilers in "gcc g++" "clang clang++"; do
