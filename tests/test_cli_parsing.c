@@ -144,6 +144,18 @@ Test(cli_options, values_come_checked_in_either_spelling_and_operands_anywhere)
     cr_expect(strstr(o.errors, "--duration expects a number > 0") != NULL, "%s", o.errors);
 }
 
+/* POSIXLY_CORRECT makes getopt stop at the first operand; the commands'
+ * options may follow their operand all the same. */
+Test(cli_options, options_may_follow_the_operand_under_posixly_correct)
+{
+    setenv("POSIXLY_CORRECT", "1", 1);
+    parse_outcome o = parse("thing --count 2");
+    unsetenv("POSIXLY_CORRECT");
+    cr_assert_eq(o.end, CLI_END, "%s", o.errors);
+    cr_expect_str_eq(o.operand, "thing");
+    cr_expect_eq(o.count, 2);
+}
+
 Test(cli_options, help_comes_first_wherever_it_is)
 {
     cr_expect_eq(parse("thing --count 2 --help").end, CLI_HELP);

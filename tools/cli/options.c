@@ -27,12 +27,13 @@ int cli_usage_error(const cli_command *command, const char *format, ...)
 void cli_parser_start(cli_parser *parser, const cli_command *command, int argc, char **argv)
 {
     *parser = (cli_parser){.command = command, .argc = argc + 1};
-    /* getopt_long reorders the arguments it is given and reads argv[0] as
-     * the program: it gets a copy behind the command's name. */
+    /* getopt_long may reorder the arguments it is given and reads argv[0]
+     * as the program: it gets a copy behind the command's name. */
     parser->argv = calloc((size_t)argc + 2, sizeof *parser->argv);
+    parser->operands = calloc((size_t)argc + 1, sizeof *parser->operands);
     struct option *options = calloc((size_t)command->option_count + 2, sizeof *options);
     parser->long_options = options;
-    if (parser->argv == NULL || options == NULL) {
+    if (parser->argv == NULL || parser->operands == NULL || options == NULL) {
         return; /* cli_next reports it */
     }
     parser->argv[0] = (char *)command->name;
@@ -58,6 +59,7 @@ void cli_parser_start(cli_parser *parser, const cli_command *command, int argc, 
 void cli_parser_finish(cli_parser *parser)
 {
     free(parser->argv);
+    free(parser->operands);
     free(parser->long_options);
     *parser = (cli_parser){.command = parser->command};
 }
@@ -139,11 +141,17 @@ int cli_next(cli_parser *parser, cli_value *value)
 {
     const cli_command *command = parser->command;
     *value = (cli_value){.text = NULL};
-    if (parser->argv == NULL || parser->long_options == NULL) {
+    if (parser->argv == NULL || parser->operands == NULL || parser->long_options == NULL) {
         fprintf(stderr, "%s: out of memory\n", command->name);
         return CLI_ERROR;
     }
-    int found = getopt_long(parser->argc, parser->argv, ":h", parser->long_options, NULL);
+    /* "-": operands come back in order as 1, so that options may follow
+     * them even when POSIXLY_CORRECT is set; ":": a missing value is ':'
+     * rather than '?'. */
+    int found;
+    while ((found = getopt_long(parser->argc, parser->argv, "-:h", parser->long_options, NULL)) == 1) {
+        parser->operands[parser->operand_count++] = optarg;
+    }
     if (found == 'h') {
         return CLI_HELP;
     }
@@ -161,9 +169,10 @@ int cli_next(cli_parser *parser, cli_value *value)
         }
         return check_value(command, k, optarg, value) ? command->options[k].id : CLI_ERROR;
     }
-    /* The end: getopt_long has moved the operands behind the options. */
-    parser->operands = parser->argv + optind;
-    parser->operand_count = parser->argc - optind;
+    /* The end: after "--", the rest are operands. */
+    for (int k = optind; k < parser->argc; ++k) {
+        parser->operands[parser->operand_count++] = parser->argv[k];
+    }
     if (parser->operand_count > command->max_operands) {
         const char *extra = parser->operands[command->max_operands];
         if (command->max_operands == 0) {

@@ -5,8 +5,9 @@
  *
  * Parsing is glibc's getopt_long: options are `--name value` or
  * `--name=value`, in any order among the operands (the model, the scene,
- * the file); a unique prefix of a name is accepted (`--dur 2`); `--`
- * ends the options; `--help` and `-h` are always there. Every value is
+ * the file), POSIXLY_CORRECT or not; a unique prefix of a name is
+ * accepted (`--dur 2`); `--` ends the options; `--help` and `-h` are
+ * always there. Every value is
  * checked against its option's kind and range before the command sees
  * it. Each error is one line on stderr naming the option and what it
  * expects, ending with where to look: "(see `sinew run --help`)".
