@@ -3,8 +3,8 @@
  *
  * The library: a program that calls setlocale(LC_ALL, "de_DE.UTF-8")
  * (decimal comma) still reads the curve tables and motor-pool profiles to
- * the same values as under the C locale, and gets its own locale back
- * after. The programs: `sinew run`, `sinew experiment` and `sinew plot`
+ * the same values as under the C locale, gets messages whose numbers have
+ * a '.', and gets its own locale back after. The programs: `sinew run`, `sinew experiment` and `sinew plot`
  * write byte for byte the same files and output under LC_ALL=de_DE.UTF-8
  * as under LC_ALL=C (the viewer's twin is in tests/gui/test_viewer_gui.c).
  *
@@ -94,6 +94,24 @@ Test(locale, curve_tables_read_the_same_under_a_decimal_comma)
     cr_expect_eq(mu_curve_velocity(curves, 0.5), 1.375);
     mu_curves_destroy(curves);
     cr_expect_str_eq(localeconv()->decimal_point, ",", "reading a table changed the program's locale");
+    remove(path);
+    remove(dir);
+}
+
+Test(locale, messages_quote_numbers_with_a_point_under_a_decimal_comma)
+{
+    /* rb_report_error formats in the C locale: the message quotes the
+     * knots as the file spells them. */
+    char dir[64], path[128];
+    make_temp_dir(dir, sizeof dir);
+    snprintf(path, sizeof path, "%s/curves.csv", dir);
+    write_file(path, "curve,x,y\nforce_velocity,0.5,1\nforce_velocity,0.25,1\n");
+    use_comma_locale();
+    mu_curves *curves = NULL;
+    cr_assert_eq(mu_curves_create_tabulated(path, MU_INTERPOLATION_LINEAR, &curves), RB_ERR_INVALID_ARGUMENT);
+    cr_expect_not_null(strstr(rb_last_error(), "x = 0.25 of force_velocity is not above its previous knot's x = 0.5"),
+                       "%s", rb_last_error());
+    cr_expect_str_eq(localeconv()->decimal_point, ",", "reporting an error changed the program's locale");
     remove(path);
     remove(dir);
 }

@@ -1,4 +1,7 @@
 /* SPDX-License-Identifier: MIT */
+#define _POSIX_C_SOURCE 200809L /* newlocale, uselocale */
+
+#include <locale.h>
 #include <stdarg.h>
 #include <stdio.h>
 
@@ -44,10 +47,25 @@ void rb_clear_error(void)
 
 rb_status rb_report_error(rb_status status, const char *format, ...)
 {
+    /* A message quotes numbers as files and code spell them, with a '.',
+     * even in a program that chose a decimal-comma LC_NUMERIC: the
+     * calling thread formats in the "C" locale (uselocale, POSIX 2008)
+     * and gets its own back. The muscle layer's parsing does the same
+     * through its c_locale.h; the engine, which it reaches only through
+     * the public API, makes its own locale here, on the error path only.
+     * Should newlocale fail, the message is formatted as before. */
+    locale_t c_locale = newlocale(LC_ALL_MASK, "C", (locale_t)0);
+    locale_t previous = c_locale != (locale_t)0 ? uselocale(c_locale) : (locale_t)0;
     va_list args;
     va_start(args, format);
     vsnprintf(last_message, sizeof last_message, format, args);
     va_end(args);
+    if (previous != (locale_t)0) {
+        uselocale(previous);
+    }
+    if (c_locale != (locale_t)0) {
+        freelocale(c_locale);
+    }
     last_status = status;
     return status;
 }
