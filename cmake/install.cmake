@@ -47,6 +47,7 @@ install(FILES ${PROJECT_BINARY_DIR}/sinewConfig.cmake ${PROJECT_BINARY_DIR}/sine
 # The prefix is found from the .pc file's own folder (pkg-config's
 # ${pcfiledir}), so a moved install still points at itself.
 file(RELATIVE_PATH SINEW_PC_PREFIX_FROM_PCFILEDIR ${CMAKE_INSTALL_FULL_LIBDIR}/pkgconfig ${CMAKE_INSTALL_PREFIX})
+string(REGEX REPLACE "/$" "" SINEW_PC_PREFIX_FROM_PCFILEDIR "${SINEW_PC_PREFIX_FROM_PCFILEDIR}")
 foreach(library rb mu)
     configure_file(${PROJECT_SOURCE_DIR}/cmake/sinew-${library}.pc.in
                    ${PROJECT_BINARY_DIR}/sinew-${library}.pc @ONLY)

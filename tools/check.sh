@@ -5,9 +5,10 @@
 #   1. tools/setup.sh (installs missing packages; does nothing when all present)
 #   2. formatting: clang-format --dry-run --Werror over every *.c, *.h and *.cpp of
 #      engine/ models/ tests/ bench/ tools/ musculo/ docs/examples/
-#   3. for the presets release and asan: configure with -DSINEW_WERROR=ON,
+#   3. licence: an SPDX line in every source, script and build file
+#   4. for the presets release and asan: configure with -DSINEW_WERROR=ON,
 #      build, run ctest (output shown for failing tests)
-#   4. the release build installed, built shared, moved, and used by the
+#   5. the release build installed, built shared, moved, and used by the
 #      examples of docs/examples with gcc and clang (tools/check_install.sh)
 #
 # Every stage runs even when an earlier one failed, so one run reports
@@ -56,6 +57,27 @@ if ((${#unformatted[@]})); then
 else
     echo "${#sources[@]} files formatted"
     summary+=("format ok")
+fi
+
+# ---- Licence lines ----------------------------------------------------------
+# Every source, header, script and build file says its licence (LICENSE: MIT)
+# in an SPDX line.
+banner "licence lines"
+unlicensed=()
+while IFS= read -r -d '' f; do
+    if ! grep -q 'SPDX-License-Identifier: MIT' "$f"; then
+        unlicensed+=("$f")
+    fi
+done < <(git ls-files -z --cached --others --exclude-standard -- '*.c' '*.h' '*.cpp' '*.sh' '*.cmake' '*.in' \
+    '*CMakeLists.txt' '*Makefile' .ci/run)
+if ((${#unlicensed[@]})); then
+    echo "no 'SPDX-License-Identifier: MIT' line in:"
+    printf '  %s\n' "${unlicensed[@]}"
+    summary+=("licence FAIL (${#unlicensed[@]} files)")
+    failed=1
+else
+    echo "every source, script and build file has its SPDX line"
+    summary+=("licence ok")
 fi
 
 # ---- Build and test each preset ---------------------------------------------
