@@ -89,10 +89,12 @@ RB_API rb_vec2 rb_body_local_point(const rb_world *world, rb_body_id body, rb_ve
 RB_API rb_vec2 rb_body_world_vector(const rb_world *world, rb_body_id body, rb_vec2 local_vector);
 RB_API rb_vec2 rb_body_local_vector(const rb_world *world, rb_body_id body, rb_vec2 world_vector);
 
-/* Forces and impulses. Forces and torques accumulate until the end of
+/** @name Forces and impulses
+ * Forces and torques accumulate until the end of
  * the next rb_world_step and act during all of its substeps. They are
  * ignored (RB_OK) on static and kinematic bodies. Applying one wakes the
  * body. */
+/** @{ */
 /** A force (N) at a world point: also a torque r × F about the centre of mass. */
 RB_API rb_status rb_body_apply_force(rb_world *world, rb_body_id body, rb_vec2 force, rb_vec2 world_point);
 RB_API rb_status rb_body_apply_force_to_center(rb_world *world, rb_body_id body, rb_vec2 force);
@@ -104,6 +106,7 @@ RB_API rb_status rb_body_apply_angular_impulse(rb_world *world, rb_body_id body,
 /** The force and torque accumulated so far for the next step. */
 RB_API rb_vec2 rb_body_force(const rb_world *world, rb_body_id body);
 RB_API double rb_body_torque(const rb_world *world, rb_body_id body);
+/** @} */
 
 /** Mass. A dynamic body's mass comes from its shapes' densities; until it
  * has a shape with mass, or after rb_body_set_mass_data, it has the
