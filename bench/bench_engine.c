@@ -147,7 +147,7 @@ static const cli_command command = {
 #define BENCH_RAIN_SEED 1
 #define BENCH_MOVED_THRESHOLD 0.25 /* m, the peers' collapse indicator */
 #define BENCH_GRID_MAX_GAP 0.5     /* m: a wider gap is a torn net */
-#define BENCH_CHAIN_MAX_GAP 0.05   /* m, issue 5's bar for the swinging chain */
+#define BENCH_CHAIN_MAX_GAP 0.05   /* m, the bar for the swinging chain */
 #define BENCH_CHAIN_LINKS 40
 #define BENCH_CHAIN_HEAVY_DENSITY 20.0 /* kg/m², 100 x a link */
 #define BENCH_GRID_SIZE 100

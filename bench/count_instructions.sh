@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Instructions per step of one bench_engine scene, counted by callgrind:
-# repeatable where times are not, and the figure issue 5 sets a target on
-# (pyramid20 at the engine's defaults: 2.0 M; Box2D 2.4.1 4.12 M and
-# Chipmunk 3.41 M per the peers' README).
+# repeatable where times are not (pyramid20 at the engine's defaults; the
+# peer harnesses count Box2D 2.4.1 at 4.12 M and Chipmunk at 3.41 M, see
+# docs/benchmarks.md).
 #
 # Method: bench_engine runs the scene twice under
 # `valgrind --tool=callgrind`, once for SHORT_STEPS and once for

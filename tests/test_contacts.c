@@ -43,7 +43,7 @@ static double gravity_magnitude(const rb_world *world) { return rb_length(rb_wor
 
 /* Conservation: the momenta are sums of a few products of values of order
  * 1 .. 10, updated by 63 steps of roundoff, so their drift is below 1e-13
- * of the size of their terms; 1e-9 (the issue's figure) is far above it
+ * of the size of their terms; 1e-9 (the required figure) is far above it
  * and far below any real impulse imbalance. */
 #define MOMENTUM_REL 1e-9
 
@@ -164,7 +164,7 @@ Test(contacts, elastic_head_on_collision_reverses_the_normal_velocity)
     pair p = make_pair(0.0, 4.0, 1.0, 0.0);
     collide_conserving_momentum(&p);
     /* Newton's law of restitution with e = 1: v_rel,n after = -v_rel,n
-     * before, to the issue's 1 %. */
+     * before, to the required 1 %. */
     expect_near(normal_speed(&p), -p.approach, 0.01 * fabs(p.approach), "e = 1: normal velocity reversed");
     destroy_world_and_expect_no_leak(p.world);
 }
@@ -209,7 +209,7 @@ Test(contacts, impact_slower_than_the_restitution_threshold_does_not_bounce)
  * apex by at most v·dt·(1 - e²) = 4.4 m/s · (1/480 s) · 0.75 = 0.7 cm, 2.8 %
  * of e²·h for e = 0.5 and h = 1 m, and (b) the energy semi-implicit Euler
  * loses, ½·g²·dt² a step, under 0.5 % over the fall and the rise. Both stay
- * well inside the issue's 5 %. */
+ * well inside the required 5 %. */
 #define DROP_DT (1.0 / 480.0)
 #define DROP_HEIGHT 1.0
 #define DROP_TOLERANCE 0.05
@@ -297,7 +297,7 @@ static double slope_acceleration(rb_world *world, const scene_incline *incline)
     return (v2 - v1) / (30 * TEST_DT);
 }
 
-/* The issue's 3 %: an iterative solver's friction and the speculative
+/* The required 3 %: an iterative solver's friction and the speculative
  * contact leave small errors; a wrong mixing rule or friction law is off by
  * 20 % or more in the cases below. */
 static void expect_slide(double angle, double plank_friction, double box_friction, double mixed_friction)

@@ -546,7 +546,7 @@ Test(experiment, p1_rigid_tendon_ripple_is_first_order_activations)
 
 Test(experiment, p1_trains_fuse_by_200_Hz_at_over_twice_the_twitch_with_a_compliant_tendon)
 {
-    /* The issue's demands: some train up to 200 Hz with a ripple under
+    /* The demands: some train up to 200 Hz with a ripple under
      * 5 %, and tetanic force (the largest mean up to 200 Hz) at least
      * twice the twitch's peak. The rigid tendon gives the ratio but
      * fuses only above 200 Hz (its ripple is the activation's, checked

@@ -67,7 +67,7 @@ static double worst_gap_over(rb_world *world, const rb_joint_id *joints, int cou
  * +x from a static pin at the origin (the peers' chain without its heavy
  * box, models/scenes), released from horizontal and stepped for 60 s at
  * 60 Hz with the default settings: every anchor gap stays below 5 mm (the
- * issue's bound, the linear slop). */
+ * required bound, the linear slop). */
 Test(joints, chain_of_10_links_stays_together_for_60_s)
 {
     enum { LINKS = 10 };
@@ -334,7 +334,7 @@ Test(joints, motor_without_enough_torque_accelerates_at_max_torque_over_inertia)
  * horizontal distance from the anchor to the carried centre of mass
  * (equilibrium of the carried bodies about the anchor; the anchor force
  * has no moment there). Root weld: M = 0.6 kg, M·d = 0.2·0.5 + 0.4·1.5;
- * tip weld: M = 0.4 kg, d = 0.5 m. Within 1 % (the issue's bound) after
+ * tip weld: M = 0.4 kg, d = 0.5 m. Within 1 % (the required bound) after
  * 2 s at 60 Hz; plank 2 stays within the linear slop of where it started
  * at every step. */
 Test(joints, welded_cantilever_holds_with_static_reactions)
@@ -376,7 +376,7 @@ Test(joints, welded_cantilever_holds_with_static_reactions)
  * The anchor is at the centre, so the effective mass the spring acts on
  * is the ball's mass and it oscillates at 2 Hz along x. The soft
  * constraint integrates the spring implicitly, which slows it by about
- * (ω·h)²/3 = 0.1 % (and damps it); the issue's 2 % bound. The frequency
+ * (ω·h)²/3 = 0.1 % (and damps it); the required 2 % bound. The frequency
  * comes from the zero crossings of the stretch, interpolated linearly,
  * over 5 periods. */
 Test(joints, distance_spring_oscillates_at_its_frequency)

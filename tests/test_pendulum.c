@@ -25,9 +25,9 @@
  * with cos(Ω·h) = 1 - (ω·h)²/2, a relative period error of (ω·h)²/24: at
  * most (one substep a step, h = 1/240 s) 7e-6 for a 1 m pendulum and
  * 1.1e-5 for the rod below, 16 times less with 4 substeps. At small amplitude
- * the tests ask for 1e-4, ten times that and tighter than the issue's
+ * the tests ask for 1e-4, ten times that and tighter than the required
  * 0.1 %, which would let pass an inertia error as large as forgetting the
- * bob's own I_cm (0.06 % of the period here). At 90° and 150° the issue's
+ * bob's own I_cm (0.06 % of the period here). At 90° and 150° the required
  * 0.2 % stands: there a solver that loses energy each step shortens the
  * period as the amplitude shrinks, by several per cent for a plain
  * projection of the velocities (Box2D 2.4's).
@@ -161,7 +161,7 @@ Test(pendulum, compound_rod_at_30_degrees)
  * it conserves a nearby quadratic form, E_n = Ẽ + ½·h·ω²·I_p·θ_n·θ'_n, so E
  * oscillates about E0 (θ' = 0 at release) with relative amplitude ω·h/2
  * and no drift. With one substep a step (h = 1/240 s) a 1 m pendulum gives
- * 0.65 %, above the issue's 0.5 % bound however good the solver; with
+ * 0.65 %, above the required 0.5 % bound however good the solver; with
  * L = 4 m (ω = 1.57 rad/s) it is at most 0.33 %, which leaves room for the
  * joint solver whatever the number of substeps. The second check, the
  * mean of the last 10 periods against the mean of the first 10 within
@@ -269,7 +269,7 @@ static rb_body_id make_rod(rb_world *world, rb_vec2 top, double phi, double leng
  * second; the reference is GSL's rk8pd with absolute and relative
  * tolerances 1e-12, sampled at every step.
  *
- * Tolerances (the issue's): joint angles within 1°, energy (potential from
+ * Tolerances (required): joint angles within 1°, energy (potential from
  * each rod's lowest position, so E0 > 0) within 0.5 % of E0 at every step.
  * A first-order symplectic integrator with (sub)steps of h <= 1 ms lags
  * the true angles by about ½·h·|φ'| (φ' up to 5 rad/s here: at most 0.14°)

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Every solver variant (rb_solver_type: Baumgarte, NGS, soft step) at the
- * engine's default iterations and substeps, on the earlier issues' tests:
+ * engine's default iterations and substeps, on the stacking, pyramid and pendulum tests' scenes:
  * a 10-box stack and the base-20 pyramid stand, a pendulum keeps the
  * period of the elliptic integral, and two runs of a scene end in the
  * same bits.

@@ -2,7 +2,7 @@
 /* Stacking: the 10-box stack and the base-20 pyramid of the benchmarks stand
  * for 10 s at 60 Hz with the default solver settings.
  *
- * Limits: "standing" is the issue's figure, the top box less than 1 cm
+ * Limits: "standing" is the required figure, the top box less than 1 cm
  * sideways from where it started (a stack that starts to topple leaves it
  * within a second, a fallen one by metres). No pyramid box may move more than
  * 0.25 m, the peers' threshold (docs/benchmarks.md), half a box. The
