@@ -24,6 +24,8 @@
 #include <unistd.h>
 
 #include "mu/curves.h"
+#include "mu/model.h"
+#include "mu/model_desc.h"
 #include "mu/motor_pool.h"
 
 #define COMMA_LOCALE "de_DE.UTF-8"
@@ -114,6 +116,29 @@ Test(locale, messages_quote_numbers_with_a_point_under_a_decimal_comma)
     cr_expect_str_eq(localeconv()->decimal_point, ",", "reporting an error changed the program's locale");
     remove(path);
     remove(dir);
+}
+
+Test(locale, model_files_read_and_report_the_same_under_a_decimal_comma)
+{
+    /* jansson reads model files whatever the locale; the messages and
+     * warnings that quote their numbers keep the '.'. */
+    use_comma_locale();
+    mu_model_desc *desc = NULL;
+    cr_expect_eq(mu_model_desc_load(SINEW_SOURCE_DIR "/tests/data/bad_models/negative_size.json", &desc),
+                 RB_ERR_INVALID_ARGUMENT);
+    cr_expect_not_null(strstr(rb_last_error(), "bones[1].size[1]: -0.05 is out of range"), "%s", rb_last_error());
+    cr_expect_not_null(strstr(rb_last_error(), "(> 0)"), "%s", rb_last_error());
+
+    cr_assert_eq(mu_model_desc_load_builtin("arm", &desc), RB_OK, "%s", rb_last_error());
+    cr_expect_eq(desc->gravity.y, -9.8, "gravity read as %g", desc->gravity.y);
+    mu_model_options options = mu_default_model_options();
+    mu_model *model = NULL;
+    cr_assert_eq(mu_model_create(desc, &options, &model), RB_OK, "%s", rb_last_error());
+    /* The arm's Triceps Medial is built shorter than its rest length. */
+    cr_expect_not_null(strstr(mu_model_warnings(model), "(0.2087 m)"), "%s", mu_model_warnings(model));
+    mu_model_destroy(model);
+    mu_model_desc_destroy(desc);
+    cr_expect_str_eq(localeconv()->decimal_point, ",", "loading a model changed the program's locale");
 }
 
 Test(locale, the_built_in_curve_tables_are_the_same_under_a_decimal_comma)

@@ -1,11 +1,14 @@
 /* SPDX-License-Identifier: MIT */
 /* Building a model from its description, and stepping it. */
+#define _POSIX_C_SOURCE 200809L /* locale_t in c_locale.h */
+
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "c_locale.h"
 #include "mu/model.h"
 #include "mu/motor_pool.h"
 #include "mu/torque_actuator.h"
@@ -63,10 +66,13 @@ static int part_of(const mu_model_desc *desc, mu_model_ref ref)
 static void warn(mu_model *model, const char *format, ...)
 {
     size_t used = strlen(model->warnings);
+    /* Numbers with a '.' whatever the program's locale (c_locale.h). */
+    mu_c_locale_scope scope = mu_c_locale_begin();
     va_list args;
     va_start(args, format);
     vsnprintf(model->warnings + used, sizeof model->warnings - used, format, args);
     va_end(args);
+    mu_c_locale_end(scope);
     used = strlen(model->warnings);
     if (used + 1 < sizeof model->warnings) {
         model->warnings[used] = '\n';

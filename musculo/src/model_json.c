@@ -1,9 +1,12 @@
 /* SPDX-License-Identifier: MIT */
+#define _POSIX_C_SOURCE 200809L /* locale_t in c_locale.h */
+
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "c_locale.h"
 #include "model_json.h"
 
 const mu_json_bounds mu_json_any = {-INFINITY, INFINITY, false, false};
@@ -50,10 +53,13 @@ static void format_path(const mu_json_reader *reader, int depth, char *buffer, s
 rb_status mu_json_fail(const mu_json_reader *reader, mu_json_place place, const char *format, ...)
 {
     char problem[384];
+    /* Numbers in messages with a '.', as in the file (c_locale.h). */
+    mu_c_locale_scope scope = mu_c_locale_begin();
     va_list args;
     va_start(args, format);
     vsnprintf(problem, sizeof problem, format, args);
     va_end(args);
+    mu_c_locale_end(scope);
 
     /* A path deeper than the reader keeps is reported at its deepest kept step. */
     int depth = reader->depth < MU_JSON_MAX_DEPTH ? reader->depth : MU_JSON_MAX_DEPTH;
@@ -100,6 +106,7 @@ static bool within(double value, mu_json_bounds bounds)
 static void format_bounds(mu_json_bounds bounds, char *buffer, size_t size)
 {
     bool has_lower = isfinite(bounds.lower), has_upper = isfinite(bounds.upper);
+    mu_c_locale_scope scope = mu_c_locale_begin(); /* "0.5", as the file spells it */
     if (has_lower && has_upper) {
         snprintf(buffer, size, " (in %c%g, %g%c)", bounds.lower_open ? '(' : '[', bounds.lower, bounds.upper,
                  bounds.upper_open ? ')' : ']');
@@ -110,6 +117,7 @@ static void format_bounds(mu_json_bounds bounds, char *buffer, size_t size)
     } else {
         buffer[0] = '\0';
     }
+    mu_c_locale_end(scope);
 }
 
 rb_status mu_json_check_object(mu_json_reader *reader, const json_t *value, const char *const *allowed)
