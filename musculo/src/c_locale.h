@@ -5,8 +5,9 @@
  * strtod and printf follow LC_NUMERIC: a program that calls
  * setlocale(LC_ALL, "") under LANG=de_DE.UTF-8 makes strtod stop at the
  * '.' of "0.3422" and printf write "0,5". sinew's files always use '.',
- * so every number the library parses or formats for a file is done
- * inside a scope that switches the calling thread to the "C" locale:
+ * so every number the library parses (csv_reader.c), and every message or
+ * warning that quotes one (model_json.c, model.c), is handled inside a
+ * scope that switches the calling thread to the "C" locale:
  *
  *   mu_c_locale_scope scope = mu_c_locale_begin();
  *   double x = strtod(text, &end);
@@ -22,7 +23,11 @@
  * than misreading it.
  *
  * jansson (model files) needs none of this: it swaps '.' for the locale's
- * decimal point itself before strtod and after snprintf (its strconv.c).
+ * decimal point itself before strtod and after snprintf (its strconv.c;
+ * tests/test_locale.c loads a model under de_DE.UTF-8). The engine's
+ * rb_report_error makes its own "C" locale the same way (engine/src/
+ * error.c), since the muscle layer reaches the engine only through its
+ * public API.
  */
 #ifndef MU_C_LOCALE_H
 #define MU_C_LOCALE_H
