@@ -124,7 +124,7 @@ static long row_at(const csv_table *table, double time)
 }
 
 /* The arm hangs at rest by 3 s, when the experiments act
- * (tools/experiment_pulses.c, experiment_tension.c). */
+ * (tools/experiments/e1_e4_pulses.c, e3_tension.c). */
 #define ACTION_TIME 3.0
 
 Test(experiment, e1_the_twitch_rises_then_returns_to_rest)
@@ -395,7 +395,7 @@ Test(experiment, c1_curves_match_seed003s_closed_form_and_the_tables)
     csv_table_free(&table);
 }
 
-/* P1 (tools/experiment_p1_twitch_tetanus.c): the pulses' onset is at
+/* P1 (tools/experiments/p1_twitch_tetanus.c): the pulses' onset is at
  * time 0 of STEM.csv; substeps of 1/6000 s; Millard's time constants. */
 #define P1_SUBSTEP (1.0 / 6000.0)
 #define TAU_ACT 0.010

@@ -18,7 +18,7 @@ Test(model_substep, substeps_add_up_to_frames)
     cr_assert_eq(mu_model_create(desc, &options, &by_frame), RB_OK, "%s", rb_last_error());
     cr_assert_eq(mu_model_create(desc, &options, &by_substep), RB_OK, "%s", rb_last_error());
     /* Sleep is judged once per engine step, so it would tell the two
-     * apart; experiments run with it off (tools/experiment_model.c). */
+     * apart; experiments run with it off (tools/experiments/substep_model.c). */
     cr_assert_eq(rb_world_enable_sleep(mu_model_world(by_frame), false), RB_OK);
     cr_assert_eq(rb_world_enable_sleep(mu_model_world(by_substep), false), RB_OK);
     cr_assert_eq(mu_model_set_activation(by_frame, "Biceps Short", 0.7), RB_OK);

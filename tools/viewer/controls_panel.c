@@ -4,8 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/model_source.h"
 #include "controls_panel.h"
-#include "model_source.h"
 
 /* Largest tension target the spin button offers, N. */
 #define MAX_TENSION_TARGET 5000.0

@@ -20,7 +20,7 @@
 #include "viewer.h"
 #include "viewer_options.h"
 
-/* Exit status of a bad command line, as `sinew` (tools/commands.h). */
+/* Exit status of a bad command line, as `sinew` (tools/commands/commands.h). */
 #define EXIT_USAGE 2
 
 static gboolean on_close(GtkWindow *window, gpointer data)

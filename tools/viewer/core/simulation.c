@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "model_source.h"
+#include "cli/model_source.h"
 #include "simulation.h"
 
 /* The mouse joint's pull: this many times the dragged body's weight in

@@ -17,7 +17,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "commands.h"
 #include "experiment.h"
 #include "mu/curves.h"
 

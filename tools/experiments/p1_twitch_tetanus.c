@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* P1 isometric twitch and tetanus (docs/experiments.md, P1): the muscle of
- * experiment_p1_isometric.h, with a rigid and with a compliant tendon,
+ * p1_isometric.h, with a rigid and with a compliant tendon,
  * given one pulse of excitation (2 ms by default, --pulse-width) and
  * trains of such pulses at 1 ... 400 Hz.
  *
@@ -23,9 +23,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "commands.h"
 #include "experiment.h"
-#include "experiment_p1_isometric.h"
+#include "p1_isometric.h"
 
 #define DEFAULT_PULSE_WIDTH 0.002 /* s */
 #define LEAD_TIME 0.01            /* s at rest before the first pulse */

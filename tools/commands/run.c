@@ -16,12 +16,12 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "cli/model_source.h"
 #include "cli/option_value.h"
 #include "cli/options.h"
 #include "commands.h"
 #include "control_file.h"
 #include "controls.h"
-#include "model_source.h"
 #include "progress.h"
 #include "recorder.h"
 

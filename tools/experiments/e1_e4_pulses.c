@@ -12,9 +12,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "commands.h"
 #include "experiment.h"
-#include "experiment_model.h"
+#include "substep_model.h"
 
 /* The arm starts horizontal and swings down; from 2.5 s to 3 s its
  * elbow angle moves by less than 0.01 degree with 1, 5 or 100 kg. */

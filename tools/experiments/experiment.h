@@ -6,7 +6,7 @@
  * writes a CSV, a figure (PNG and SVG, chart/chart.h) and a few lines of
  * figures on stdout.
  *
- * An experiment is one entry of experiment_list (experiment_list.c): a
+ * An experiment is one entry of experiment_list (list.c): a
  * name, the stem of its files and a function. Adding one is one more
  * function and one more entry.
  */

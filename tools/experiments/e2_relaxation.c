@@ -10,9 +10,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "commands.h"
 #include "experiment.h"
-#include "experiment_model.h"
+#include "substep_model.h"
 
 #define HOLD_TIME 2.0  /* s at activation 1 first: the weight comes to rest */
 #define RAMP_TIME 3.0  /* s from activation 1 to 0 */

@@ -12,9 +12,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "commands.h"
 #include "experiment.h"
-#include "experiment_model.h"
+#include "substep_model.h"
 
 #define TORQUE_MUSCLE 0 /* the worm's only one */
 

@@ -4,8 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "commands.h"
-#include "model_source.h"
+#include "cli/model_source.h"
+#include "cli/options.h"
 
 const char *const model_builtin_names[MODEL_BUILTIN_COUNT] = {"sample", "arm", "leg", "worm"};
 
@@ -62,7 +62,7 @@ int model_source_load(const char *argument, mu_model_desc **out)
         return 0;
     }
     fprintf(stderr, "sinew: %s\n", error);
-    return result == MODEL_SOURCE_UNKNOWN ? EXIT_USAGE : EXIT_FAILURE;
+    return result == MODEL_SOURCE_UNKNOWN ? CLI_EXIT_USAGE : EXIT_FAILURE;
 }
 
 void model_source_stem(const char *argument, char *stem, size_t stem_size)

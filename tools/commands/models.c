@@ -7,8 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/model_source.h"
 #include "commands.h"
-#include "model_source.h"
 #include "mu/model.h"
 
 static const cli_command models_command = {

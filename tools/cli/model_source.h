@@ -3,8 +3,8 @@
  * view` names a built-in model (read through mu_model_desc_load_builtin)
  * or a model file.
  */
-#ifndef SINEW_MODEL_SOURCE_H
-#define SINEW_MODEL_SOURCE_H
+#ifndef CLI_MODEL_SOURCE_H
+#define CLI_MODEL_SOURCE_H
 
 #include <stdbool.h>
 #include <stddef.h>
@@ -37,7 +37,7 @@ typedef enum model_source_result {
 model_source_result model_source_open(const char *argument, mu_model_desc **out, char *error, size_t error_size);
 
 /* model_source_open for the command line: returns 0 with
- * *out set, or an exit status after one line on stderr: EXIT_USAGE for a
+ * *out set, or an exit status after one line on stderr: CLI_EXIT_USAGE for a
  * name that is neither, EXIT_FAILURE when the file cannot be read or is
  * invalid. */
 int model_source_load(const char *argument, mu_model_desc **out);

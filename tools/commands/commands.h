@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The subcommands of `sinew`, one per file (cmd_*.c), and the exit
+/* The subcommands of `sinew`, one per file of tools/commands/, and the exit
  * statuses they share. Each takes the arguments after its own name and
  * returns the program's exit status; every error is one line on stderr.
  */

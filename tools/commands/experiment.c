@@ -10,7 +10,7 @@
 
 #include "cli/options.h"
 #include "commands.h"
-#include "experiment.h"
+#include "experiments/experiment.h"
 
 enum { OPT_OUT, OPT_PULSE_WIDTH };
 

@@ -4,9 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "commands.h"
-#include "experiment_model.h"
-#include "model_source.h"
+#include "cli/model_source.h"
+#include "substep_model.h"
 
 static int engine_failure(const char *what)
 {

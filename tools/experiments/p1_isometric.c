@@ -3,9 +3,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "experiment_model.h"
-#include "experiment_p1_isometric.h"
 #include "mu/muscle.h"
+#include "p1_isometric.h"
+#include "substep_model.h"
 
 #define P1_MUSCLE "Biceps Long"
 

@@ -5,7 +5,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "commands.h"
 #include "experiment.h"
 #include "io/atomic_file.h"
 #include "io/provenance.h"

@@ -13,11 +13,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "commands.h"
 #include "experiment.h"
-#include "experiment_model.h"
+#include "substep_model.h"
 
-#define SETTLE_TIME 3.0 /* s: the arm hangs at rest (experiment_pulses.c) */
+#define SETTLE_TIME 3.0 /* s: the arm hangs at rest (e1_e4_pulses.c) */
 
 typedef struct tension_plan {
     const char *title;
