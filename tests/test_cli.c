@@ -159,7 +159,15 @@ static int count_lines(const char *text)
 
 /* The commands that take options, with an operand each accepts. */
 static const char *const commands[] = {"models",     "check",         "run arm", "scene pyramid",
-                                       "plot x.csv", "experiment e1", "version"};
+                                       "plot x.csv", "experiment e1", "version", "view arm"};
+
+/* Whether `sinew COMMAND` can be tried here: `view` only where the viewer
+ * was built (GTK 4 found); its bad command lines fail before any window. */
+static bool available(const char *command)
+{
+    char output[16384];
+    return strncmp(command, "view", 4) != 0 || run_sinew_output("view --help", output, sizeof output) == 0;
+}
 
 Test(cli, the_version_is_the_library_version)
 {
@@ -187,6 +195,9 @@ Test(cli, the_version_is_the_library_version)
 Test(cli, every_command_accepts_each_option_its_help_lists)
 {
     for (size_t c = 0; c < sizeof commands / sizeof commands[0]; ++c) {
+        if (!available(commands[c])) {
+            continue;
+        }
         char args[256], help[16384];
         snprintf(args, sizeof args, "%.*s --help", (int)strcspn(commands[c], " "), commands[c]);
         cr_assert_eq(run_sinew_output(args, help, sizeof help), 0, "'sinew %s' failed: %s", args, help);
@@ -215,6 +226,9 @@ Test(cli, every_command_accepts_each_option_its_help_lists)
 Test(cli, every_command_refuses_an_unknown_option_in_one_line)
 {
     for (size_t c = 0; c < sizeof commands / sizeof commands[0]; ++c) {
+        if (!available(commands[c])) {
+            continue;
+        }
         char args[256], output[4096];
         snprintf(args, sizeof args, "%s --frobnicate 1", commands[c]);
         cr_expect_eq(run_sinew_output(args, output, sizeof output), 2, "'sinew %s': %s", args, output);

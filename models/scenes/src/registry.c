@@ -30,7 +30,7 @@ static const rb_vec2 balls_gravity = {0.0, -9.81};
 
 const scene_entry scene_registry[SCENE_KIND_COUNT] = {
     [SCENE_PYRAMID] = {"pyramid",
-                       "the peers' pyramid of boxes",
+                       "a pyramid of boxes, as in the Box2D and Chipmunk benchmarks",
                        {INTEGER("base", "N", "boxes in the bottom row", 1, 1000, 20)},
                        1,
                        &peers_gravity},
@@ -59,7 +59,7 @@ const scene_entry scene_registry[SCENE_KIND_COUNT] = {
                     2,
                     NULL},
     [SCENE_CHAIN] = {"chain",
-                     "the peers' chain of links and a heavy box, released horizontally",
+                     "a chain of links and a heavy box released horizontally, as in the benchmarks",
                      {INTEGER("links", "N", "links", 1, SCENE_CHAIN_MAX_LINKS, 30)},
                      1,
                      &peers_gravity},
@@ -69,7 +69,7 @@ const scene_entry scene_registry[SCENE_KIND_COUNT] = {
                         1,
                         NULL},
     [SCENE_JOINT_GRID] = {"joint-grid",
-                          "the peers' grid of circles held by revolute joints",
+                          "a grid of circles held by revolute joints, as in the benchmarks",
                           {INTEGER("size", "N", "circles along each side", 2, 1000, 20)},
                           1,
                           &peers_gravity},

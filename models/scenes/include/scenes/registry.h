@@ -16,14 +16,14 @@
 #include "scenes/scenes.h"
 
 typedef enum scene_kind {
-    SCENE_PYRAMID,    /* the peers' pyramid of boxes */
+    SCENE_PYRAMID,    /* the Box2D and Chipmunk benchmarks' pyramid of boxes */
     SCENE_STACK,      /* a vertical stack of boxes */
     SCENE_BALLS,      /* balls in a closed box, with linear drag */
     SCENE_INCLINE,    /* a box on a tilted plank: sliding or held by friction */
     SCENE_DROP,       /* a ball dropped on the ground: restitution */
-    SCENE_CHAIN,      /* the peers' chain with a heavy box, released horizontally */
+    SCENE_CHAIN,      /* the benchmarks' chain with a heavy box, released horizontally */
     SCENE_PENDULUM,   /* a pendulum released horizontally */
-    SCENE_JOINT_GRID, /* the peers' grid of circles held by revolute joints */
+    SCENE_JOINT_GRID, /* the benchmarks' grid of circles held by revolute joints */
     SCENE_KIND_COUNT
 } scene_kind;
 
