@@ -4,9 +4,10 @@
  *
  * The file reads top to bottom: the options, made from the registry's
  * scene parameters (every value is checked and a bad one exits with
- * status 2 and a message naming the option); scene setup; the CSV trace writer (rows go to a temporary
- * file renamed over the target at the end, so an interrupted run never
- * leaves a half-written trace); the run loop; the summary.
+ * status 2 and a message naming the option); scene setup; the CSV trace
+ * writer (rows go to a temporary file renamed over the target at the
+ * end, so an interrupted run never leaves a half-written trace); the run
+ * loop; the summary.
  */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 
