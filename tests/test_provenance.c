@@ -283,11 +283,15 @@ Test(provenance, an_experiment_s_files_name_the_version_and_the_command, .init =
 
 Test(provenance, the_command_line_reads_back_in_a_shell)
 {
-    char *argv[] = {"/some/build/tools/sinew", "plot", "my data.csv", "it's", "--x", "a", "", NULL};
-    provenance_set_command_line(7, argv);
+    char *argv[] = {"/some/build/tools/sinew", "plot", "my data.csv", "it's", "--x", "a", "", "#1", NULL};
+    provenance_set_command_line(8, argv);
     char text[256];
     provenance_command_text(text, sizeof text);
-    cr_expect_str_eq(text, "sinew plot 'my data.csv' 'it'\\''s' --x a ''");
+    cr_expect_str_eq(text, "sinew plot 'my data.csv' 'it'\\''s' --x a '' '#1'");
+    /* The shell reads it back to the same words. */
+    char command[512];
+    snprintf(command, sizeof command, "set -- %s; test \"$#|$3|$4|$6|$7\" = \"7|it's|--x||#1\"", text + 6);
+    cr_expect_eq(system(command), 0, "the shell read back other words from: %s", text);
     provenance_command_text(text, 12);
     cr_expect_str_eq(text, "sinew plot ", "truncated to the buffer");
 }

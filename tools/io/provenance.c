@@ -37,7 +37,7 @@ void provenance_command_text(char *text, size_t size)
         const char *argument = k == 0 ? program_name() : command_argv[k];
         const char *separator = k > 0 ? " " : "";
         int written;
-        if (argument[0] != '\0' && strpbrk(argument, " \t\n'\"\\$`*?;&|<>()") == NULL) {
+        if (argument[0] != '\0' && strpbrk(argument, " \t\n'\"\\$`*?;&|<>()#~![]{}") == NULL) {
             written = snprintf(text + used, size - used, "%s%s", separator, argument);
         } else {
             /* In single quotes, as a POSIX shell reads them back; a quote

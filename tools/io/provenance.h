@@ -54,9 +54,10 @@ void provenance_set_command_line(int argc, char *const *argv);
 /* "sinew VERSION", the creator named in every file. */
 const char *provenance_creator(void);
 
-/* The command line as one line of text, an argument holding a space, a
- * quote or nothing in single quotes ("sinew plot 'my data.csv'"); "" when
- * none was set. Truncated to `size`. */
+/* The command line as one line of text that a POSIX shell reads back: an
+ * argument that is empty or holds a space or a character the shell would
+ * interpret is in single quotes ("sinew plot 'my data.csv'"); "" when none
+ * was set. Truncated to `size`. */
 void provenance_command_text(char *text, size_t size);
 
 /* The solver settings as a JSON object, one member per field of
