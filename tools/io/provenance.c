@@ -60,7 +60,8 @@ void provenance_command_text(char *text, size_t size)
     }
 }
 
-json_t *provenance_solver_settings(const rb_solver_settings *solver)
+/* Every field of the solver settings, "type" by name. */
+static json_t *solver_settings(const rb_solver_settings *solver)
 {
     return json_pack("{s:s, s:i, s:i, s:i, s:i, s:b, s:b, s:f, s:f, s:f, s:f, s:f, s:f, s:f, s:f, s:f}", "type",
                      rb_solver_type_name(solver->type), "velocity_iterations", solver->velocity_iterations,
@@ -86,7 +87,7 @@ json_t *provenance_model_settings(mu_model *model, const mu_model_options *optio
                      "index", options->variant, "name", desc->variants[options->variant].name, "weight_kg", weight,
                      "level", options->level, "weld_glues", options->weld_glues, "frame_rate_hz", desc->frame_rate,
                      "substeps_per_frame", desc->substeps, "gravity_m_s2", gravity.x, gravity.y, "solver",
-                     provenance_solver_settings(&solver));
+                     solver_settings(&solver));
 }
 
 json_t *provenance_scene_settings(const scene_instance *scene)
@@ -108,7 +109,7 @@ json_t *provenance_scene_settings(const scene_instance *scene)
     const rb_vec2 gravity = rb_world_gravity(scene->world);
     const rb_solver_settings solver = rb_world_solver_settings(scene->world);
     return json_pack("{s:s, s:o, s:[f, f], s:o}", "scene", entry->name, "parameters", parameters, "gravity_m_s2",
-                     gravity.x, gravity.y, "solver", provenance_solver_settings(&solver));
+                     gravity.x, gravity.y, "solver", solver_settings(&solver));
 }
 
 /* The sidecar's document; NULL when out of memory. */

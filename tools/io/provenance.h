@@ -60,14 +60,11 @@ const char *provenance_creator(void);
  * was set. Truncated to `size`. */
 void provenance_command_text(char *text, size_t size);
 
-/* The solver settings as a JSON object, one member per field of
- * rb_solver_settings ("type" by name). NULL when out of memory. */
-json_t *provenance_solver_settings(const rb_solver_settings *solver);
-
 /* The settings of a muscle model as built: "model" (its name), "variant"
  * (index and name), "weight_kg" (or null without a weight), "level",
  * "weld_glues", "frame_rate_hz", "substeps_per_frame", "gravity_m_s2" and
- * "solver". NULL when out of memory. */
+ * "solver" (every field of rb_solver_settings, "type" by name). NULL when
+ * out of memory. */
 json_t *provenance_model_settings(mu_model *model, const mu_model_options *options);
 
 /* The settings of an engine scene as built: "scene" (its name),
