@@ -46,9 +46,9 @@ static cairo_status_t write_to_stream(void *closure, const unsigned char *data, 
 
 /* The CRC of PNG chunks (PNG 1.2 §3.4, ISO 3309): reflected polynomial
  * 0xEDB88320, bit by bit; the chunks hashed here are a few dozen bytes. */
-static uint32_t png_crc(uint32_t crc, const unsigned char *bytes, size_t length)
+static uint32_t png_crc(const unsigned char *bytes, size_t length)
 {
-    crc = ~crc;
+    uint32_t crc = 0xFFFFFFFFu;
     for (size_t i = 0; i < length; ++i) {
         crc ^= bytes[i];
         for (int bit = 0; bit < 8; ++bit) {
@@ -87,7 +87,7 @@ static void write_png_text(FILE *stream, const char *keyword, const char *text)
     put_u32(word, (uint32_t)(length - 4));
     fwrite(word, 1, 4, stream);
     fwrite(chunk, 1, length, stream);
-    put_u32(word, png_crc(0, chunk, length));
+    put_u32(word, png_crc(chunk, length));
     fwrite(word, 1, 4, stream);
 }
 
