@@ -122,10 +122,14 @@ static json_t *sidecar(const char *csv_path, json_t *settings)
             command = NULL;
         }
     }
+    if (command == NULL) {
+        json_decref(settings);
+        return NULL;
+    }
     const char *slash = strrchr(csv_path, '/');
-    /* "o*" takes over each value, and NULL (out of memory) fails the pack,
-     * which still releases the others. */
-    return json_pack("{s:s, s:s, s:s, s:{s:s, s:o*, s:o*}}", "@context", "http://www.w3.org/ns/csvw", "url",
+    /* "o" takes over a value (released too if the pack fails); "o*" leaves
+     * out settings that are NULL. */
+    return json_pack("{s:s, s:s, s:s, s:{s:s, s:o, s:o*}}", "@context", "http://www.w3.org/ns/csvw", "url",
                      slash != NULL ? slash + 1 : csv_path, "dc:creator", provenance_creator(), "sinew", "version",
                      RB_VERSION_STRING, "command", command, "settings", settings);
 }
