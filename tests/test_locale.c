@@ -2,11 +2,13 @@
 /* Numbers are read and written with a '.' whatever the locale.
  *
  * The library: a program that calls setlocale(LC_ALL, "de_DE.UTF-8")
- * (decimal comma) still reads the curve tables and motor-pool profiles to
- * the same values as under the C locale, gets messages whose numbers have
- * a '.', and gets its own locale back after. The programs: `sinew run`, `sinew experiment` and `sinew plot`
- * write byte for byte the same files and output under LC_ALL=de_DE.UTF-8
- * as under LC_ALL=C (the viewer's twin is in tests/gui/test_viewer_gui.c).
+ * (decimal comma) still reads the curve tables, motor-pool profiles and
+ * model files to the same values as under the C locale, gets messages and
+ * warnings whose numbers have a '.', and gets its own locale back after.
+ * The programs: `sinew run`, `sinew scene`, `sinew experiment` and `sinew
+ * plot` write byte for byte the same files (sidecars included) and output
+ * under LC_ALL=de_DE.UTF-8 as under LC_ALL=C (the viewer's twin is in
+ * tests/gui/test_viewer_gui.c).
  *
  * de_DE.UTF-8 must exist: tools/setup.sh generates it. A missing locale
  * fails the test rather than skipping it, so CI cannot pass without
@@ -274,7 +276,7 @@ static void twin_remove(const twin_run *twin)
     cr_expect_eq(system(command), 0);
 }
 
-Test(locale, sinew_run_writes_the_same_bytes_under_a_decimal_comma, .timeout = 120)
+Test(locale, sinew_run_and_scene_write_the_same_bytes_under_a_decimal_comma, .timeout = 120)
 {
     twin_run twin;
     twin_start(&twin);
@@ -283,6 +285,10 @@ Test(locale, sinew_run_writes_the_same_bytes_under_a_decimal_comma, .timeout = 1
     twin_run_sinew(&twin, "run arm --duration 1 --weight 1 --activation 'Biceps Short=0.25' --control controls.txt "
                           "--out .");
     expect_same_file(twin.plain, twin.comma, "arm.csv");
+    expect_same_file(twin.plain, twin.comma, "arm.csv-metadata.json");
+    twin_run_sinew(&twin, "scene incline --duration 0.5 --angle 20.5 --friction 0.25 --out .");
+    expect_same_file(twin.plain, twin.comma, "incline.csv");
+    expect_same_file(twin.plain, twin.comma, "incline.csv-metadata.json");
     twin_remove(&twin);
 }
 
@@ -292,6 +298,7 @@ Test(locale, sinew_experiment_and_plot_write_the_same_bytes_under_a_decimal_comm
     twin_start(&twin);
     twin_run_sinew(&twin, "experiment c1 --out .");
     expect_same_file(twin.plain, twin.comma, "c1_hill_curves.csv");
+    expect_same_file(twin.plain, twin.comma, "c1_hill_curves.csv-metadata.json");
     expect_same_file(twin.plain, twin.comma, "c1_hill_curves.svg");
     expect_same_file(twin.plain, twin.comma, "c1_hill_curves.png");
     twin_write(&twin, "data.csv", "time_s,force_N\n0,0.5\n0.25,1.75\n0.5,2.125\n");
