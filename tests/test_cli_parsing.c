@@ -180,6 +180,7 @@ Test(cli_options, each_bad_command_line_is_one_line_naming_the_option)
         {"--out=", "--out expects a file name"},
         {"--name=", "--name needs a non-empty value"},
         {"--quiet=yes", "--quiet takes no value"},
+        {"--help=yes", "--help takes no value"},
         {"one two", "unexpected argument \"two\": give one thing"},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {

@@ -64,8 +64,8 @@ void cli_parser_finish(cli_parser *parser)
     *parser = (cli_parser){.command = parser->command};
 }
 
-/* The option written in `argument` ("--na=1" -> "na"), and how many
- * options of the table it is a prefix of, so that an ambiguous prefix is
+/* How many options (--help among them) begin with the name written in
+ * `argument` ("--na=1" -> "na"): more than one makes an ambiguous prefix,
  * told apart from a name that matches none. */
 static int count_prefix_matches(const cli_command *command, const char *argument)
 {
@@ -125,9 +125,9 @@ static void report_bad_option(const cli_command *command, int found, const char 
      * an unknown long one. */
     if (found == ':') {
         cli_usage_error(command, "--%s needs a value", command->options[optopt - LONG_BASE].name);
-    } else if (optopt >= LONG_BASE) {
-        cli_usage_error(command, "--%s takes no value, got \"%s\"", command->options[optopt - LONG_BASE].name,
-                        argument);
+    } else if (optopt >= LONG_BASE || (optopt == 'h' && strncmp(argument, "--", 2) == 0)) {
+        cli_usage_error(command, "--%s takes no value, got \"%s\"",
+                        optopt == 'h' ? "help" : command->options[optopt - LONG_BASE].name, argument);
     } else if (optopt != 0) {
         cli_usage_error(command, "unknown option \"-%c\"", optopt);
     } else if (count_prefix_matches(command, argument) > 1) {
