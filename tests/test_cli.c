@@ -314,3 +314,37 @@ Test(cli, scene_refuses_bad_parameters_in_one_line)
         cr_expect(strstr(output, cases[k].message) != NULL, "'sinew %s': %s", cases[k].args, output);
     }
 }
+
+/* Control files and viewer scripts split their lines alike (cli/words.h):
+ * the same mistake gets the same message from both, with file and line. */
+Test(cli, control_files_and_viewer_scripts_quote_alike)
+{
+    char dir[] = "/tmp/sinew-cli-XXXXXX";
+    cr_assert_not_null(mkdtemp(dir));
+    char control[600], script[600], args[1400], output[4096];
+    snprintf(control, sizeof control, "%s/controls.txt", dir);
+    snprintf(script, sizeof script, "%s/script.txt", dir);
+    FILE *f = fopen(control, "w");
+    cr_assert_not_null(f);
+    fputs("# a name in quotes, then one quote too few\n0 activation \"Biceps Short\" 0.5\n1 pulse \"Biceps Long\n", f);
+    fclose(f);
+    f = fopen(script, "w");
+    cr_assert_not_null(f);
+    fputs("# the same mistake\nset muscle \"Biceps Long\n", f);
+    fclose(f);
+
+    snprintf(args, sizeof args, "run arm --duration 0.1 --control '%s' --out '%s'", control, dir);
+    cr_expect_eq(run_sinew_output(args, output, sizeof output), 1, "%s", output);
+    char expected[700];
+    snprintf(expected, sizeof expected, "%s:3: a quote is not closed", control);
+    cr_expect(strstr(output, expected) != NULL, "%s", output);
+    if (available("view")) {
+        snprintf(args, sizeof args, "view arm --script '%s'", script);
+        cr_expect_eq(run_sinew_output(args, output, sizeof output), 1, "%s", output);
+        snprintf(expected, sizeof expected, "%s:2: a quote is not closed", script);
+        cr_expect(strstr(output, expected) != NULL, "%s", output);
+    }
+    remove(control);
+    remove(script);
+    rmdir(dir);
+}
