@@ -3,7 +3,7 @@
 # Installs the Debian packages sinew needs to build, test and check itself.
 #
 #   tools/setup.sh           the project's packages
-#   tools/setup.sh --peers   also what ../shared/peers needs (Box2D, Chipmunk2D, C++)
+#   tools/setup.sh --peers   also what bench/compare_peers.sh needs (Box2D, Chipmunk2D, C++)
 #
 # Idempotent: when every package is installed and the test locale exists it
 # does nothing (no apt-get update) and says so. Needs root, or sudo for a
