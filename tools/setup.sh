@@ -19,6 +19,7 @@ packages=(
     libcriterion-dev # unit tests (tests/)
     libjansson-dev   # model files (musculo/)
     libcairo2-dev    # motor-pool profile images (musculo/), charts: PNG and SVG figures (tools/chart/)
+    zlib1g-dev       # crc32 for the text chunks of PNG figures (tools/chart/)
     libgtk-4-dev     # the interactive viewer, `sinew view` (tools/viewer/): built only when present
     xvfb             # xvfb-run: the viewer's test runs it on a virtual X display
     xauth            # xvfb-run needs it for the display's authority file
