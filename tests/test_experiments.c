@@ -637,6 +637,8 @@ Test(experiment, bad_arguments_fail_and_an_unknown_name_lists_the_experiments)
     read_log(log, sizeof log);
     cr_expect(strstr(log, "unknown experiment \"nosuch\"") != NULL && strstr(log, "e3.2") != NULL, "%s", log);
     const char *one_line[] = {
+        "experiment",
+        "experiment nosuch",
         "experiment e1 --pulse-width 0",
         "experiment e1 --pulse-width 2",
         "experiment e1 --pulse-width abc",

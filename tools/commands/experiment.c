@@ -69,18 +69,20 @@ static const experiment *find_experiment(const char *name)
     return NULL;
 }
 
-/* An unknown or missing name: the list, on stderr, and EXIT_USAGE. */
-static int list_experiments(const char *name)
+/* An unknown or missing name: one line naming the experiments, and
+ * EXIT_USAGE. */
+static int name_experiments(const char *name)
 {
+    char names[256] = "";
+    size_t used = 0;
+    for (int k = 0; k < experiment_count && used < sizeof names; ++k) {
+        used +=
+            (size_t)snprintf(names + used, sizeof names - used, "%s%s", k == 0 ? "" : ", ", experiment_list[k].name);
+    }
     if (name != NULL) {
-        fprintf(stderr, "sinew: unknown experiment \"%s\"; the experiments are:\n", name);
-    } else {
-        fputs("sinew: missing the experiment's name; the experiments are:\n", stderr);
+        return cli_usage_error(&command, "unknown experiment \"%s\" (%s)", name, names);
     }
-    for (int k = 0; k < experiment_count; ++k) {
-        fprintf(stderr, "  %-6s %s\n", experiment_list[k].name, experiment_list[k].summary);
-    }
-    return EXIT_USAGE;
+    return cli_usage_error(&command, "missing the experiment's name (%s)", names);
 }
 
 int cmd_experiment(int argc, char **argv)
@@ -108,7 +110,7 @@ int cmd_experiment(int argc, char **argv)
     }
     const experiment *chosen = name != NULL ? find_experiment(name) : NULL;
     if (chosen == NULL) {
-        return list_experiments(name);
+        return name_experiments(name);
     }
     if (options.pulse_width > chosen->max_pulse_width) {
         if (chosen->max_pulse_width > 0.0) {

@@ -320,7 +320,9 @@ static parse_result parse_scene_arguments(const scene_command *command, int argc
         cli_usage_error(&command->command, "missing the scene's name");
         result = PARSE_ERROR;
     } else if (result == PARSE_OK && !scene_kind_from_name(name, &opts->scene)) {
-        cli_usage_error(&command->command, "unknown scene \"%s\"", name);
+        char names[256];
+        scene_list_names(names, sizeof names);
+        cli_usage_error(&command->command, "unknown scene \"%s\" (%s)", name, names);
         result = PARSE_ERROR;
     }
     if (result == PARSE_OK && !apply_parameters(command, opts, given, given_count)) {

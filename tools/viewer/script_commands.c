@@ -188,11 +188,9 @@ static bool run_scene(script_run_state *state, char *const *arguments, char *err
 {
     scene_kind kind;
     if (!scene_kind_from_name(arguments[0], &kind)) {
-        int length = snprintf(error, error_size, "unknown scene \"%s\"; the scenes are", arguments[0]);
-        for (int k = 0; k < SCENE_KIND_COUNT && length >= 0 && (size_t)length < error_size; ++k) {
-            length += snprintf(error + length, error_size - (size_t)length, "%s %s", k == 0 ? "" : ",",
-                               scene_registry[k].name);
-        }
+        char names[256];
+        scene_list_names(names, sizeof names);
+        snprintf(error, error_size, "unknown scene \"%s\" (%s)", arguments[0], names);
         return false;
     }
     if (!viewer_load_scene(state->app, kind)) {

@@ -91,7 +91,9 @@ viewer_parse_result viewer_options_parse(int argc, char **argv, viewer_options *
             break;
         case OPT_SCENE:
             if (!scene_kind_from_name(value.text, &kind)) {
-                cli_usage_error(&command, "unknown scene \"%s\" (see the list at the end of the help)", value.text);
+                char names[256];
+                scene_list_names(names, sizeof names);
+                cli_usage_error(&command, "unknown scene \"%s\" (%s)", value.text, names);
                 id = CLI_ERROR;
             }
             options->scene = value.text;

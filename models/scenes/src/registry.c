@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: MIT */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -74,6 +75,15 @@ const scene_entry scene_registry[SCENE_KIND_COUNT] = {
                           1,
                           &peers_gravity},
 };
+
+void scene_list_names(char *text, size_t size)
+{
+    size_t used = 0;
+    text[0] = '\0';
+    for (int k = 0; k < SCENE_KIND_COUNT && used < size; ++k) {
+        used += (size_t)snprintf(text + used, size - used, "%s%s", k == 0 ? "" : ", ", scene_registry[k].name);
+    }
+}
 
 bool scene_kind_from_name(const char *name, scene_kind *kind)
 {

@@ -10,6 +10,7 @@
 #define SCENES_REGISTRY_H
 
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 
 #include "rb/rb.h"
@@ -62,6 +63,10 @@ typedef struct scene_entry {
 
 /* The scenes, indexed by scene_kind. */
 extern const scene_entry scene_registry[SCENE_KIND_COUNT];
+
+/* The scenes' names as a list for a message, "pyramid, stack, ...",
+ * truncated to `size` bytes. */
+void scene_list_names(char *text, size_t size);
 
 /* The kind named `name`: false when there is none. */
 bool scene_kind_from_name(const char *name, scene_kind *kind);
