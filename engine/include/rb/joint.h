@@ -37,7 +37,8 @@ typedef enum rb_joint_type {
     RB_JOINT_PULLEY,    /**< a rope over two fixed pulleys: length_a + ratio·length_b at most a constant */
 } rb_joint_type;
 
-/* ---- revolute ------------------------------------------------------------ */
+/** @name Revolute joints */
+/** @{ */
 
 typedef struct rb_revolute_joint_def {
     rb_body_id body_a, body_b;
@@ -80,8 +81,10 @@ RB_API rb_status rb_revolute_joint_set_limits(rb_world *world, rb_joint_id joint
                                               bool enable_upper, double upper);
 RB_API rb_status rb_revolute_joint_set_spring(rb_world *world, rb_joint_id joint, bool enable, double hertz,
                                               double damping_ratio);
+/** @} */
 
-/* ---- weld ---------------------------------------------------------------- */
+/** @name Weld joints */
+/** @{ */
 
 typedef struct rb_weld_joint_def {
     rb_body_id body_a, body_b;
@@ -102,8 +105,10 @@ RB_API rb_status rb_weld_joint_def_at(rb_weld_joint_def *def, const rb_world *wo
                                       rb_body_id body_b, rb_vec2 world_anchor);
 
 RB_API rb_status rb_weld_joint_create(rb_world *world, const rb_weld_joint_def *def, rb_joint_id *out);
+/** @} */
 
-/* ---- distance -------------------------------------------------------------- */
+/** @name Distance joints */
+/** @{ */
 
 typedef struct rb_distance_joint_def {
     rb_body_id body_a, body_b;
@@ -133,8 +138,10 @@ RB_API rb_status rb_distance_joint_def_between(rb_distance_joint_def *def, const
 RB_API rb_status rb_distance_joint_create(rb_world *world, const rb_distance_joint_def *def, rb_joint_id *out);
 
 RB_API double rb_distance_joint_current_length(const rb_world *world, rb_joint_id joint); /**< m */
+/** @} */
 
-/* ---- mouse --------------------------------------------------------------- */
+/** @name Mouse joints */
+/** @{ */
 
 typedef struct rb_mouse_joint_def {
     rb_body_id body;      /**< the dragged body (dynamic) */
@@ -149,8 +156,10 @@ typedef struct rb_mouse_joint_def {
 RB_API rb_mouse_joint_def rb_default_mouse_joint_def(void);
 RB_API rb_status rb_mouse_joint_create(rb_world *world, const rb_mouse_joint_def *def, rb_joint_id *out);
 RB_API rb_status rb_mouse_joint_set_target(rb_world *world, rb_joint_id joint, rb_vec2 target);
+/** @} */
 
-/* ---- prismatic ------------------------------------------------------------ */
+/** @name Prismatic joints */
+/** @{ */
 
 /** Body B slides along an axis fixed in body A through anchor A; the
  * relative angle is held at the reference angle. The joint translation
@@ -198,8 +207,10 @@ RB_API rb_status rb_prismatic_joint_set_limits(rb_world *world, rb_joint_id join
                                                bool enable_upper, double upper);
 RB_API rb_status rb_prismatic_joint_set_spring(rb_world *world, rb_joint_id joint, bool enable, double hertz,
                                                double damping_ratio);
+/** @} */
 
-/* ---- pulley ------------------------------------------------------------------ */
+/** @name Pulley joints */
+/** @{ */
 
 /** A rope from anchor A over a pulley at ground_anchor_a, then over one at
  * ground_anchor_b down to anchor B (the pulleys are fixed world points):
@@ -236,8 +247,10 @@ RB_API rb_status rb_pulley_joint_create(rb_world *world, const rb_pulley_joint_d
 /** The rope's two sides now: |anchor - ground anchor| (m). */
 RB_API double rb_pulley_joint_length_a(const rb_world *world, rb_joint_id joint);
 RB_API double rb_pulley_joint_length_b(const rb_world *world, rb_joint_id joint);
+/** @} */
 
-/* ---- every joint ----------------------------------------------------------- */
+/** @name Every joint */
+/** @{ */
 
 RB_API rb_status rb_joint_destroy(rb_world *world, rb_joint_id joint);
 RB_API bool rb_joint_is_valid(const rb_world *world, rb_joint_id joint);
@@ -255,6 +268,7 @@ RB_API rb_vec2 rb_joint_reaction_force(const rb_world *world, rb_joint_id joint)
 RB_API double rb_joint_reaction_torque(const rb_world *world, rb_joint_id joint);
 RB_API void *rb_joint_user_data(const rb_world *world, rb_joint_id joint);
 RB_API rb_status rb_joint_set_user_data(rb_world *world, rb_joint_id joint, void *user_data);
+/** @} */
 
 #ifdef __cplusplus
 }
