@@ -7,8 +7,6 @@
 #include "cli/model_source.h"
 #include "cli/options.h"
 
-const char *const model_builtin_names[MODEL_BUILTIN_COUNT] = {"sample", "arm", "leg", "worm"};
-
 static bool ends_with(const char *text, const char *suffix)
 {
     size_t length = strlen(text);
@@ -18,8 +16,8 @@ static bool ends_with(const char *text, const char *suffix)
 
 bool model_source_is_builtin(const char *argument)
 {
-    for (int k = 0; k < MODEL_BUILTIN_COUNT; ++k) {
-        if (strcmp(argument, model_builtin_names[k]) == 0) {
+    for (int k = 0; k < mu_builtin_model_count(); ++k) {
+        if (strcmp(argument, mu_builtin_model_name(k)) == 0) {
             return true;
         }
     }
@@ -38,9 +36,9 @@ model_source_result model_source_open(const char *argument, mu_model_desc **out,
         /* A bare word that is not a built-in is more likely a misspelt
          * name than a file in the current directory; ./NAME reads one. */
         int written = snprintf(error, error_size, "unknown model \"%s\" (built-in:", argument);
-        for (int k = 0; k < MODEL_BUILTIN_COUNT && written >= 0 && (size_t)written < error_size; ++k) {
+        for (int k = 0; k < mu_builtin_model_count() && written >= 0 && (size_t)written < error_size; ++k) {
             written += snprintf(error + written, error_size - (size_t)written, "%s %s", k == 0 ? "" : ",",
-                                model_builtin_names[k]);
+                                mu_builtin_model_name(k));
         }
         if (written >= 0 && (size_t)written < error_size) {
             snprintf(error + written, error_size - (size_t)written, "; or a path to a .json file)");

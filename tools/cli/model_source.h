@@ -11,13 +11,11 @@
 
 #include "mu/model_desc.h"
 
-enum { MODEL_BUILTIN_COUNT = 4 };
-extern const char *const model_builtin_names[MODEL_BUILTIN_COUNT]; /* "sample", "arm", "leg", "worm" */
-
 /* Bytes of a model's stem (model_source_stem), its NUL included. */
 #define MODEL_STEM_SIZE 256
 
-/* Whether `argument` is the name of a built-in model. */
+/* Whether `argument` is the name of a built-in model (the library lists
+ * them: mu_builtin_model_count, mu_builtin_model_name). */
 bool model_source_is_builtin(const char *argument);
 
 /* Bytes of model_source_open's message, its NUL included. */

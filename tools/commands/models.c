@@ -76,14 +76,14 @@ int cmd_models(int argc, char **argv)
     if (id != CLI_END) {
         return id == CLI_HELP ? EXIT_SUCCESS : EXIT_USAGE;
     }
-    for (int k = 0; k < MODEL_BUILTIN_COUNT; ++k) {
+    for (int k = 0; k < mu_builtin_model_count(); ++k) {
         mu_model_desc *desc;
-        int code = model_source_load(model_builtin_names[k], &desc);
+        int code = model_source_load(mu_builtin_model_name(k), &desc);
         if (code != 0) {
             return code;
         }
         printf("%s", k == 0 ? "" : "\n");
-        print_builtin(model_builtin_names[k], desc);
+        print_builtin(mu_builtin_model_name(k), desc);
         mu_model_desc_destroy(desc);
     }
     printf("\nRun one with `sinew run MODEL [--variant NAME|N] [--weight KG]` (see `sinew run --help`).\n");

@@ -273,14 +273,15 @@ GtkWidget *controls_panel_widget(const controls_panel *panel) { return panel->bo
  * when it is not one of them. */
 static void sync_model_picker(controls_panel *panel, const simulation *sim)
 {
-    const char *choices[MODEL_BUILTIN_COUNT + 2];
+    int builtins = mu_builtin_model_count();
+    const char **choices = g_new(const char *, (gsize)builtins + 2);
     guint selected = GTK_INVALID_LIST_POSITION;
     int count = 0;
-    for (int k = 0; k < MODEL_BUILTIN_COUNT; ++k) {
-        if (sim->kind == SIMULATION_MODEL && strcmp(sim->model_argument, model_builtin_names[k]) == 0) {
+    for (int k = 0; k < builtins; ++k) {
+        if (sim->kind == SIMULATION_MODEL && strcmp(sim->model_argument, mu_builtin_model_name(k)) == 0) {
             selected = (guint)k;
         }
-        choices[count++] = model_builtin_names[k];
+        choices[count++] = mu_builtin_model_name(k);
     }
     if (sim->model_argument[0] != '\0' && !model_source_is_builtin(sim->model_argument)) {
         if (sim->kind == SIMULATION_MODEL) {
@@ -290,6 +291,7 @@ static void sync_model_picker(controls_panel *panel, const simulation *sim)
     }
     choices[count] = NULL;
     set_choices(panel->model, choices, selected);
+    g_free(choices);
 }
 
 /* Variant, weight and muscle pickers of the loaded model. */
