@@ -7,9 +7,10 @@
  * Rigid tendon (as in Castanyer's, "Implementació d'un model computacional
  * de sistemes musculoesquelètics", 2023-24): the fibre follows the path. The
  * force-velocity term makes F depend on the lengthening speed v with
- * slope c = Fmax·a·f_L·f_V'(ṽ)/Vmax, a damper stiff enough (about 86 kN·s/m
- * for the biceps) that an explicit force diverges at 600 Hz
- * as an explicit force. So the muscle does not apply F itself: it linearizes
+ * slope c = Fmax·a·f_L·f_V'(ṽ)/Vmax, a damper stiff enough that an
+ * explicit force diverges at 600 Hz: the arm's Biceps Long (Fmax 712.9 N,
+ * Vmax 0.25 m/s, the tables' f_V' of 12 at ṽ = 0) gives 34 kN·s/m at full
+ * activation and optimal length. So the muscle does not apply F itself: it linearizes
  * F about the present velocity, F(v') ≈ F(v) + c·(v' - v), and hands the
  * cable the law T = T0 + c·v' with T0 = F(v) - c·v, which the solver
  * takes implicitly with the bodies' motion. With pennation the fibre
