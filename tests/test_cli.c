@@ -289,7 +289,7 @@ Test(cli, scene_runs_every_scene_of_the_registry_with_the_shared_flags)
     }
 }
 
-Test(cli, scene_refuses_bad_parameters_in_one_line)
+Test(cli, scene_and_view_refuse_bad_scenes_and_parameters_in_one_line)
 {
     static const struct {
         const char *args;
@@ -305,14 +305,24 @@ Test(cli, scene_refuses_bad_parameters_in_one_line)
         {"scene drop --seconds 1", "unknown option \"--seconds\""},
         {"scene drop --csv x.csv", "unknown option \"--csv\""},
         {"scene drop pyramid", "unexpected argument \"pyramid\": give one scene"},
+        {"view --scene nosuch", "unknown scene \"nosuch\""},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        if (!available(cases[k].args)) {
+            continue;
+        }
         char output[4096];
         cr_expect_eq(run_sinew_output(cases[k].args, output, sizeof output), 2, "'sinew %s': %s", cases[k].args,
                      output);
         cr_expect_eq(count_lines(output), 1, "'sinew %s': %s", cases[k].args, output);
         cr_expect(strstr(output, cases[k].message) != NULL, "'sinew %s': %s", cases[k].args, output);
     }
+    /* An unknown scene's line names the registry's scenes. */
+    char names[256], expected[320], output[4096];
+    scene_list_names(names, sizeof names);
+    snprintf(expected, sizeof expected, "unknown scene \"nosuch\" (%s)", names);
+    run_sinew_output("scene nosuch", output, sizeof output);
+    cr_expect(strstr(output, expected) != NULL, "%s", output);
 }
 
 /* Control files and viewer scripts split their lines alike (cli/words.h):
