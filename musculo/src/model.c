@@ -54,6 +54,7 @@ struct mu_model {
     long substeps_taken;      /* since creation; the time is counted, not summed, so it does not drift */
     rb_status substep_status; /* the first error of the muscles' updates in this step */
     char warnings[WARNINGS_SIZE];
+    char failure[512]; /* mu_model_failure: the first sign the run has failed, "" until then */
 };
 
 mu_model_options mu_default_model_options(void) { return (mu_model_options){.level = 4}; }
@@ -601,6 +602,59 @@ double mu_model_substep_duration(const mu_model *model)
     return 1.0 / (model->desc->frame_rate * model->desc->substeps);
 }
 
+/* The name of body `b`: that of its first part (a body merged from glued
+ * parts carries several). */
+static const char *body_name(const mu_model *model, int b)
+{
+    for (int p = 0; p < model->part_count; ++p) {
+        if (model->parts[p].built && model->parts[p].body == b) {
+            return mu_model_part_name(model, p);
+        }
+    }
+    return "(a body)";
+}
+
+/* Keeps in model->failure the first sign, after a step, that the run no
+ * longer describes a body: a non-finite or runaway pose or speed, or a
+ * hinge torn open (MU_MODEL_MAX_HINGE_GAP and the others, in mu/model.h).
+ * The engine's solver answers forces it cannot hold (a huge weight, a
+ * huge Fmax) with joints that stretch rather than with an error, so this
+ * is where a run is told it has left physics. */
+static void watch(mu_model *model)
+{
+    if (model->failure[0] != '\0') {
+        return;
+    }
+    double t = mu_model_time(model);
+    mu_c_locale_scope scope = mu_c_locale_begin();
+    for (int h = 0; h < model->joint_count && model->failure[0] == '\0'; ++h) {
+        if (rb_joint_id_is_null(model->hinges[h])) {
+            continue;
+        }
+        double gap = rb_distance(rb_joint_world_anchor_a(model->world, model->hinges[h]),
+                                 rb_joint_world_anchor_b(model->world, model->hinges[h]));
+        if (!(gap <= MU_MODEL_MAX_HINGE_GAP)) {
+            snprintf(model->failure, sizeof model->failure,
+                     "t = %.4f s: hinge \"%s\" opened by %.3g m (more than %g m): the joints cannot hold the "
+                     "forces",
+                     t, model->desc->hinges[h].name, gap, MU_MODEL_MAX_HINGE_GAP);
+        }
+    }
+    for (int b = 0; b < model->body_count && model->failure[0] == '\0'; ++b) {
+        double speed = rb_length(rb_body_linear_velocity(model->world, model->bodies[b]));
+        double spin = fabs(rb_body_angular_velocity(model->world, model->bodies[b]));
+        if (!(speed <= MU_MODEL_MAX_SPEED)) {
+            snprintf(model->failure, sizeof model->failure, "t = %.4f s: \"%s\" moves at %.3g m/s (more than %g m/s)",
+                     t, body_name(model, b), speed, MU_MODEL_MAX_SPEED);
+        } else if (!(spin <= MU_MODEL_MAX_ANGULAR_SPEED)) {
+            snprintf(model->failure, sizeof model->failure,
+                     "t = %.4f s: \"%s\" turns at %.3g rad/s (more than %g rad/s)", t, body_name(model, b), spin,
+                     MU_MODEL_MAX_ANGULAR_SPEED);
+        }
+    }
+    mu_c_locale_end(scope);
+}
+
 /* Steps the world by `substeps` of the model's substeps, as one engine
  * step (the muscles update from the substep callback), then reads the
  * muscles. */
@@ -623,6 +677,7 @@ static rb_status advance(mu_model *model, int substeps)
     }
     if (status == RB_OK) {
         model->substeps_taken += substeps;
+        watch(model);
     }
     return status;
 }
@@ -746,6 +801,7 @@ const mu_muscle *mu_model_built_muscle(const mu_model *model, int index)
 {
     return model->muscles[model->built_muscles[index]];
 }
+const char *mu_model_failure(const mu_model *model) { return model->failure[0] != '\0' ? model->failure : NULL; }
 const char *mu_model_warnings(const mu_model *model) { return model->warnings; }
 
 int mu_model_hinge_count(const mu_model *model) { return model->desc->hinge_count; }

@@ -1,0 +1,113 @@
+/* SPDX-License-Identifier: MIT */
+/* A run that has left physics says so (mu_model_failure): a weight, a
+ * muscle or a torque far beyond what the joints' solver can hold within a
+ * frame tears the hinges open or flings the bones, and the model reports
+ * it with the time and the hinge or bone, while every built-in model, in
+ * every variant, with every weight and at rest or fully active, stays
+ * inside the limits.
+ */
+#include <criterion/criterion.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "mu/model.h"
+#include "mu/model_desc.h"
+
+/* Builds `desc` at `variant` and `weight`, holds every muscle at
+ * `activation` (and every torque muscle at full recruitment when
+ * activation is 1) for `seconds`, and returns the model for inspection. */
+static mu_model *run(const mu_model_desc *desc, int variant, int weight, double activation, double seconds)
+{
+    mu_model_options options = mu_default_model_options();
+    options.variant = variant;
+    options.weight_index = weight;
+    mu_model *model = NULL;
+    cr_assert_eq(mu_model_create(desc, &options, &model), RB_OK, "%s", rb_last_error());
+    for (int m = 0; m < mu_model_muscle_count(model); ++m) {
+        cr_assert_eq(mu_model_set_activation_at(model, m, activation), RB_OK, "%s", rb_last_error());
+    }
+    if (activation > 0.0) {
+        for (int t = 0; t < desc->torque_muscle_count; ++t) {
+            mu_model_recruit(model, desc->torque_muscles[t].name, desc->torque_muscles[t].neurons);
+        }
+    }
+    int frames = (int)lround(seconds * desc->frame_rate);
+    for (int f = 0; f < frames; ++f) {
+        cr_assert_eq(mu_model_step(model), RB_OK, "%s", rb_last_error());
+    }
+    return model;
+}
+
+Test(model_failure, built_in_models_stay_inside_the_limits)
+{
+    for (int k = 0; k < mu_builtin_model_count(); ++k) {
+        mu_model_desc *desc = NULL;
+        cr_assert_eq(mu_model_desc_load_builtin(mu_builtin_model_name(k), &desc), RB_OK, "%s", rb_last_error());
+        int weights = desc->has_weight ? desc->weight.mass_count : 1;
+        for (int v = 0; v < desc->variant_count; ++v) {
+            for (int w = 0; w < weights; ++w) {
+                for (int a = 0; a <= 1; ++a) {
+                    mu_model *model = run(desc, v, w, (double)a, 3.0);
+                    cr_expect_null(mu_model_failure(model), "%s, variant %d, weight %d, activation %d: %s",
+                                   mu_builtin_model_name(k), v, w, a,
+                                   mu_model_failure(model) != NULL ? mu_model_failure(model) : "");
+                    mu_model_destroy(model);
+                }
+            }
+        }
+        mu_model_desc_destroy(desc);
+    }
+}
+
+/* The index of the object named `name` in `desc`. */
+static int find_index(const mu_model_desc *desc, const char *name)
+{
+    mu_model_ref ref;
+    cr_assert(mu_model_desc_find(desc, name, &ref), "no %s", name);
+    return ref.index;
+}
+
+Test(model_failure, a_million_kilograms_on_the_arm_tears_a_hinge_open)
+{
+    mu_model_desc *desc = NULL;
+    cr_assert_eq(mu_model_desc_load_builtin("arm", &desc), RB_OK, "%s", rb_last_error());
+    desc->weight.masses[1] = 1e6;
+    mu_model *model = run(desc, 0, 1, 0.0, 1.0);
+    const char *failure = mu_model_failure(model);
+    cr_assert_not_null(failure, "a 1e6 kg weight on the arm raised no failure");
+    cr_expect(strstr(failure, "hinge \"") != NULL || strstr(failure, "moves at") != NULL ||
+                  strstr(failure, "turns at") != NULL,
+              "%s", failure);
+    cr_expect(strncmp(failure, "t = ", 4) == 0, "%s", failure);
+    /* The first failure is kept, and stepping goes on. */
+    char first[512];
+    snprintf(first, sizeof first, "%s", failure);
+    cr_expect_eq(mu_model_step(model), RB_OK, "%s", rb_last_error());
+    cr_expect_str_eq(mu_model_failure(model), first);
+    mu_model_destroy(model);
+    mu_model_desc_destroy(desc);
+}
+
+Test(model_failure, a_billion_newton_biceps_flings_the_arm)
+{
+    mu_model_desc *desc = NULL;
+    cr_assert_eq(mu_model_desc_load_builtin("arm", &desc), RB_OK, "%s", rb_last_error());
+    desc->muscles[find_index(desc, "Biceps Long")].max_force = 1e9;
+    mu_model *model = run(desc, 0, 0, 1.0, 1.0);
+    cr_expect_not_null(mu_model_failure(model), "Fmax 1e9 N raised no failure");
+    mu_model_destroy(model);
+    mu_model_desc_destroy(desc);
+}
+
+Test(model_failure, a_megatorque_worm_reports_its_hinges)
+{
+    mu_model_desc *desc = NULL;
+    cr_assert_eq(mu_model_desc_load_builtin("worm", &desc), RB_OK, "%s", rb_last_error());
+    cr_assert_gt(desc->torque_muscle_count, 0);
+    desc->torque_muscles[0].peak_torque = 1e6;
+    mu_model *model = run(desc, 0, 0, 1.0, 1.0);
+    cr_expect_not_null(mu_model_failure(model), "a 1e6 N·m torque raised no failure");
+    mu_model_destroy(model);
+    mu_model_desc_destroy(desc);
+}
