@@ -11,6 +11,7 @@
 
 #include <cairo.h>
 #include <criterion/criterion.h>
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -98,8 +99,61 @@ Test(chart_ticks, refuse_non_finite_or_reversed_ranges)
     cr_expect_not(chart_nice_ticks(0.0, INFINITY, 5, &ticks, NULL, 0));
     cr_expect_not(chart_nice_ticks(2.0, 1.0, 5, &ticks, NULL, 0));
     cr_expect_not(chart_nice_ticks(0.0, 1.0, 0, &ticks, NULL, 0));
-    cr_expect_not(chart_nice_ticks(-1e308, 1e308, 5, &ticks, NULL, 0));
     cr_expect_not(chart_nice_ticks(0.0, 1.0, 5, NULL, NULL, 0));
+}
+
+/* Ranges at the ends of what a double holds: denormal values, a width
+ * that overflows, constants, one sign only. Each must get finite,
+ * increasing ticks of a 1-2-5 step whose labels read back as their values;
+ * they cover the range but where the next tick out would not be finite
+ * (no multiple of a 1-2-5 step reaches -DBL_MAX). */
+Test(chart_ticks, any_finite_range_gets_finite_ordered_ticks)
+{
+    const double ranges[][2] = {
+        {0.0, 5e-324},      {5e-324, 5e-324},     {-5e-324, 0.0},  {1e-320, 1e308},    {-DBL_MAX, DBL_MAX},
+        {DBL_MAX, DBL_MAX}, {-DBL_MAX, -DBL_MAX}, {-1e308, 1e308}, {-3e-310, -1e-320}, {1e-310, 2e-310},
+        {-5.0, -5.0},       {-DBL_MAX, -1e300},   {0.0, DBL_MIN},  {-DBL_MIN, 0.0},    {1e300, 1e308},
+        {-1e-300, 1e-300},  {1e-300, 1e-300},     {0.0, 1e-305},   {1e307, DBL_MAX},   {-2e-308, 2e-308},
+    };
+    const int interval_counts[] = {1, 2, 5, 9, CHART_MAX_TICK_INTERVALS};
+    for (size_t k = 0; k < sizeof ranges / sizeof ranges[0]; ++k) {
+        for (size_t n = 0; n < sizeof interval_counts / sizeof interval_counts[0]; ++n) {
+            const double min = ranges[k][0], max = ranges[k][1];
+            const int intervals = interval_counts[n];
+            chart_ticks ticks;
+            char error[256] = "";
+            cr_assert(chart_nice_ticks(min, max, intervals, &ticks, error, sizeof error), "[%g, %g] / %d: %s", min, max,
+                      intervals, error);
+            cr_assert(isfinite(ticks.step) && ticks.step > 0.0 && is_nice(ticks.step), "[%g, %g] / %d: step %g", min,
+                      max, intervals, ticks.step);
+            cr_assert(ticks.count >= 2 && ticks.count <= 2 * CHART_MAX_TICK_INTERVALS + 3, "[%g, %g] / %d: %d ticks",
+                      min, max, intervals, ticks.count);
+            double previous = -INFINITY;
+            char label[64], previous_label[64] = "";
+            for (int i = 0; i < ticks.count; ++i) {
+                const double value = chart_tick_value(&ticks, i);
+                cr_assert(isfinite(value) && value > previous, "[%g, %g] / %d: tick %d is %g after %g", min, max,
+                          intervals, i, value, previous);
+                chart_tick_label(&ticks, i, label, sizeof label);
+                char *end = NULL;
+                const double read = strtod(label, &end);
+                cr_expect(end != label && *end == '\0' && fabs(read - value) <= 0.5 * ticks.step,
+                          "[%g, %g] / %d: tick %d (%g) is labelled \"%s\"", min, max, intervals, i, value, label);
+                cr_expect(strcmp(label, previous_label) != 0, "[%g, %g] / %d: two ticks read \"%s\"", min, max,
+                          intervals, label);
+                snprintf(previous_label, sizeof previous_label, "%s", label);
+                previous = value;
+            }
+            const double first = chart_tick_value(&ticks, 0), last = chart_tick_value(&ticks, ticks.count - 1);
+            const double below = (double)(ticks.first_index - 1) * ticks.step;
+            const double above = (double)(ticks.first_index + ticks.count) * ticks.step;
+            const double slack = 1e-9 * ticks.step; /* a tick's rounding (chart_ticks.h) */
+            cr_expect(first <= min + slack || !isfinite(below), "[%g, %g] / %d: the first tick %g is above the minimum",
+                      min, max, intervals, first);
+            cr_expect(last >= max - slack || !isfinite(above), "[%g, %g] / %d: the last tick %g is below the maximum",
+                      min, max, intervals, last);
+        }
+    }
 }
 
 Test(chart_ticks, labels_have_the_decimals_of_the_step)
@@ -250,6 +304,8 @@ Test(chart_draw, degenerate_data_is_drawn)
     double holes_x[6] = {0.0, 1.0, NAN, 3.0, INFINITY, 5.0}, holes_y[6] = {1.0, NAN, 2.0, 3.0, 4.0, -INFINITY};
     double nan_y[3] = {NAN, NAN, NAN};
     double same_x[3] = {1.0, 1.0, 1.0}, huge_y[3] = {1e300, -1e300, 0.0};
+    double denormal_y[2] = {0.0, 5e-324};
+    double extreme_x[3] = {1e-320, 1.0, 1e308}, extreme_y[3] = {-DBL_MAX, 0.0, DBL_MAX};
     const chart_series cases[][2] = {
         {{.label = "empty", .count = 0}, {.label = NULL, .count = 0}},
         {{.label = "one point", .x = one_x, .y = one_y, .count = 1}, {.count = 0}},
@@ -258,6 +314,8 @@ Test(chart_draw, degenerate_data_is_drawn)
         {{.label = "all NaN", .x = flat_x, .y = nan_y, .count = 3}, {.label = "", .x = one_x, .y = one_y, .count = 1}},
         {{.label = "vertical", .x = same_x, .y = flat_y, .count = 3}, {.count = 0}},
         {{.label = "too wide", .x = flat_x, .y = huge_y, .count = 3}, {.count = 0}},
+        {{.label = "denormal", .x = flat_x, .y = denormal_y, .count = 2}, {.count = 0}},
+        {{.label = "widest", .x = extreme_x, .y = extreme_y, .count = 3}, {.count = 0}},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
         chart plot = {

@@ -114,3 +114,23 @@ Test(cli_plot, bad_arguments_fail_with_one_line_and_no_figure)
     remove(path);
     rmdir(dir);
 }
+
+/* Values at the ends of what a double holds (a denormal, the widest
+ * range) are plotted like any others: a figure and status 0. */
+Test(cli_plot, denormal_and_extreme_values_are_plotted)
+{
+    cr_assert_not_null(mkdtemp(dir));
+    const char *tables[] = {"t,y\n0,5e-324\n", "t,y\n0,0\n1,5e-324\n",
+                            "t,y\n1e-320,-1.7976931348623157e308\n1e308,1.7976931348623157e308\n", "t,y\n0,-3\n1,-3\n"};
+    char log[4096], path[600];
+    snprintf(path, sizeof path, "%s/data.png", dir);
+    for (size_t k = 0; k < sizeof tables / sizeof tables[0]; ++k) {
+        write_file("data.csv", tables[k]);
+        cr_expect_eq(run_sinew("plot data.csv", log, sizeof log), 0, "table %zu: %s", k, log);
+        cr_expect_eq(access(path, F_OK), 0, "table %zu: no figure", k);
+        remove(path);
+    }
+    snprintf(path, sizeof path, "%s/data.csv", dir);
+    remove(path);
+    rmdir(dir);
+}

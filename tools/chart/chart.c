@@ -115,26 +115,23 @@ static void fit_axis(const chart *chart, bool use_x, const chart_range *range, i
             high = 1.0;
         }
     }
-    /* Both ends are finite and ordered here, so this cannot fail but for
-     * a range wider than 1e300, which then gets the empty chart's axis. */
-    if (!chart_nice_ticks(low, high, intervals, &out->ticks, NULL, 0)) {
-        low = 0.0;
-        high = 1.0;
-        chart_nice_ticks(low, high, intervals, &out->ticks, NULL, 0);
-    }
+    /* Both ends are finite and ordered here, so this cannot fail. */
+    chart_nice_ticks(low, high, intervals, &out->ticks, NULL, 0);
     if (range->fixed) {
         out->min = low;
         out->max = high;
     } else {
-        out->min = chart_tick_value(&out->ticks, 0);
-        out->max = chart_tick_value(&out->ticks, out->ticks.count - 1);
+        /* The end ticks, or the data's end where no finite tick lies
+         * beyond it (near ±DBL_MAX). */
+        out->min = fmin(chart_tick_value(&out->ticks, 0), low);
+        out->max = fmax(chart_tick_value(&out->ticks, out->ticks.count - 1), high);
     }
 }
 
 static bool tick_inside(const axis *a, int i)
 {
     double v = chart_tick_value(&a->ticks, i);
-    double slack = 1e-9 * (a->max - a->min);
+    double slack = 2e-9 * (a->max / 2.0 - a->min / 2.0);
     return v >= a->min - slack && v <= a->max + slack;
 }
 
@@ -170,15 +167,16 @@ typedef struct plot_area {
     axis x, y;
 } plot_area;
 
-static double map_x(const plot_area *p, double v)
+/* Where v lies between the axis's ends, 0 .. 1, in halves: the width of
+ * an axis from -DBL_MAX to DBL_MAX overflows. */
+static double axis_fraction(const axis *a, double v)
 {
-    return p->left + (v - p->x.min) / (p->x.max - p->x.min) * p->width;
+    return (v / 2.0 - a->min / 2.0) / (a->max / 2.0 - a->min / 2.0);
 }
 
-static double map_y(const plot_area *p, double v)
-{
-    return p->top + p->height - (v - p->y.min) / (p->y.max - p->y.min) * p->height;
-}
+static double map_x(const plot_area *p, double v) { return p->left + axis_fraction(&p->x, v) * p->width; }
+
+static double map_y(const plot_area *p, double v) { return p->top + p->height - axis_fraction(&p->y, v) * p->height; }
 
 static void draw_grid_and_ticks(cairo_t *cr, const plot_area *p, double font_size)
 {

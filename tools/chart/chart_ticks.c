@@ -1,8 +1,16 @@
 /* SPDX-License-Identifier: MIT */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 
 #include "chart/chart_ticks.h"
+
+/* The smallest and largest steps: 1-2-5 numbers whose powers of ten are
+ * normal doubles. The tick indices stay far within a long: a range is
+ * widened to at least 1e-12 of its magnitude, so |min|/step < 1e15, and
+ * below MIN_STEP the values are less than a step. */
+#define MIN_STEP 1e-307
+#define MAX_STEP 1e308
 
 /* The 1-2-5 number nearest `raw` (> 0) on a log scale: the cut-offs
  * sqrt(2), sqrt(10) and sqrt(50) are the geometric means between 1, 2, 5
@@ -37,30 +45,40 @@ bool chart_nice_ticks(double min, double max, int intervals, chart_ticks *ticks,
         }
         return false;
     }
-    double span = max - min;
+    /* Halves, so that the width of any finite range is finite
+     * (DBL_MAX - -DBL_MAX is not). */
+    double half_span = max / 2.0 - min / 2.0;
     double magnitude = fmax(fabs(min), fabs(max));
-    if (span <= 1e-12 * magnitude || span == 0.0) {
+    if (half_span <= 0.5e-12 * magnitude || half_span == 0.0) {
         double half = magnitude > 0.0 ? 0.05 * magnitude : 1.0;
-        min -= half;
-        max += half;
-        span = max - min;
+        min = fmax(min - half, -DBL_MAX);
+        max = fmin(max + half, DBL_MAX);
+        half_span = max / 2.0 - min / 2.0;
     }
-    /* The step must keep the tick indices within a long and the ticks
-     * themselves finite. */
-    if (!isfinite(span) || span > 1e300) {
-        if (error != NULL) {
-            snprintf(error, error_size, "chart_nice_ticks: the range [%g, %g] is too wide to divide", min, max);
-        }
-        return false;
-    }
-    double step = nice_step(span / intervals);
+    /* A step below MIN_STEP would be denormal (too few bits for its ticks
+     * to be 1-2-5 multiples, and 10^k underflows): values that close to 0
+     * share the ticks 0 and MIN_STEP. Above MAX_STEP no multiple but 0
+     * and ±1 is finite. */
+    double step = nice_step(fmin(fmax(half_span / intervals * 2.0, MIN_STEP), MAX_STEP));
     /* min/step is rounded (0.3/0.1 is 2.9999999999999996): an end within
      * 1e-9 of a step of a tick counts as on it, so that 0.3 gets the tick
      * 0.3 rather than a spare one at 0.2. */
     double first = floor(min / step + 1e-9);
     double last = ceil(max / step - 1e-9);
+    /* A tick beyond ±DBL_MAX is not drawn: the outermost finite one is the
+     * end tick (the range's end lies past it). */
+    if (!isfinite(first * step)) {
+        first += 1.0;
+    }
+    if (!isfinite(last * step)) {
+        last -= 1.0;
+    }
     if (last <= first) {
-        last = first + 1.0;
+        if (isfinite((first + 1.0) * step)) {
+            last = first + 1.0;
+        } else {
+            first = last - 1.0;
+        }
     }
     *ticks = (chart_ticks){.first_index = (long)first, .step = step, .count = (int)(last - first) + 1};
     return true;

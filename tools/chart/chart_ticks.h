@@ -25,8 +25,12 @@ typedef struct chart_ticks {
  * nearest (max - min)/intervals, so there may be up to about twice as
  * many or half as many). Ends equal to within 1e-12 of their magnitude
  * get a range around their value: ±5 %
- * of it, or ±1 about 0. Fails, with `error` saying why, on a NaN or an
- * infinite end, min > max, or a range so wide its width overflows. */
+ * of it, or ±1 about 0. Every finite range gets finite ticks: the step is
+ * at least 1e-307 (denormal values share the ticks 0 and 1e-307) and at
+ * most 1e308, and near ±DBL_MAX, where the next multiple of the step
+ * would overflow, the end tick is the last finite one, short of the end.
+ * Fails, with `error` saying why, on a NaN or an infinite end, or
+ * min > max. */
 bool chart_nice_ticks(double min, double max, int intervals, chart_ticks *ticks, char *error, size_t error_size);
 
 /* The value of tick i (0 .. count - 1), computed from its index so that
