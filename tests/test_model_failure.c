@@ -6,10 +6,15 @@
  * every variant, with every weight and at rest or fully active, stays
  * inside the limits.
  */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp */
+
 #include <criterion/criterion.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "mu/model.h"
 #include "mu/model_desc.h"
@@ -110,4 +115,79 @@ Test(model_failure, a_megatorque_worm_reports_its_hinges)
     cr_expect_not_null(mu_model_failure(model), "a 1e6 N·m torque raised no failure");
     mu_model_destroy(model);
     mu_model_desc_destroy(desc);
+}
+
+/* Runs `sinew ARGS` with stdout and stderr in `output`; returns its exit
+ * status. */
+static int run_sinew(const char *args, char *output, size_t size)
+{
+    char log[] = "/tmp/sinew-failure-log-XXXXXX";
+    int fd = mkstemp(log);
+    cr_assert(fd >= 0);
+    close(fd);
+    char command[2048];
+    snprintf(command, sizeof command, "'%s' %s > '%s' 2>&1", SINEW_TOOL, args, log);
+    int status = system(command);
+    cr_assert(status != -1 && WIFEXITED(status), "could not run: %s", command);
+    FILE *f = fopen(log, "r");
+    cr_assert_not_null(f);
+    output[fread(output, 1, size - 1, f)] = '\0';
+    fclose(f);
+    remove(log);
+    return WEXITSTATUS(status);
+}
+
+Test(model_failure, sinew_run_warns_once_and_strict_makes_it_an_error)
+{
+    char dir[] = "/tmp/sinew-failure-XXXXXX";
+    cr_assert_not_null(mkdtemp(dir));
+    /* The arm with its 1 kg choice made a million kilograms. */
+    char model[256];
+    snprintf(model, sizeof model, "%s/heavy_arm.json", dir);
+    FILE *in = fopen(SINEW_SOURCE_DIR "/models/arm.json", "rb");
+    cr_assert_not_null(in);
+    static char text[1 << 16];
+    text[fread(text, 1, sizeof text - 1, in)] = '\0';
+    fclose(in);
+    char *masses = strstr(text, "[0, 1, 5");
+    cr_assert_not_null(masses, "arm.json's weight choices moved");
+    FILE *out = fopen(model, "wb");
+    cr_assert_not_null(out);
+    fwrite(text, 1, (size_t)(masses - text), out);
+    fputs("[0, 1e6, 5", out);
+    fputs(masses + strlen("[0, 1, 5"), out);
+    fclose(out);
+
+    char args[512];
+    char output[16384];
+    snprintf(args, sizeof args, "run '%s' --weight-index 1 --duration 1 --out '%s'", model, dir);
+    cr_expect_eq(run_sinew(args, output, sizeof output), 0, "%s", output);
+    const char *warning = strstr(output, "sinew: warning: the run failed: t = ");
+    cr_expect_not_null(warning, "%s", output);
+    cr_expect(warning == NULL || strstr(warning + 1, "sinew: warning: the run failed") == NULL, "warned twice: %s",
+              output);
+    cr_expect_not_null(strstr(output, "\nfailure      t = "), "the summary says nothing: %s", output);
+    char csv[512];
+    snprintf(csv, sizeof csv, "%s/heavy_arm.csv", dir);
+    cr_expect_eq(access(csv, F_OK), 0, "without --strict the CSV is written");
+    remove(csv);
+    char sidecar[600];
+    snprintf(sidecar, sizeof sidecar, "%s-metadata.json", csv);
+    remove(sidecar);
+
+    snprintf(args, sizeof args, "run '%s' --weight-index 1 --duration 1 --out '%s' --strict", model, dir);
+    cr_expect_eq(run_sinew(args, output, sizeof output), 1, "%s", output);
+    cr_expect_not_null(strstr(output, "sinew: the run failed (--strict): t = "), "%s", output);
+    cr_expect_neq(access(csv, F_OK), 0, "--strict leaves no CSV");
+
+    /* A run that holds says so too. */
+    snprintf(args, sizeof args, "run arm --duration 1 --out '%s' --strict", dir);
+    cr_expect_eq(run_sinew(args, output, sizeof output), 0, "%s", output);
+    cr_expect_not_null(strstr(output, "failure      none"), "%s", output);
+    snprintf(csv, sizeof csv, "%s/arm.csv", dir);
+    remove(csv);
+    snprintf(sidecar, sizeof sidecar, "%s-metadata.json", csv);
+    remove(sidecar);
+    remove(model);
+    cr_expect_eq(rmdir(dir), 0, "files left in %s", dir);
 }

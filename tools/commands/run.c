@@ -37,6 +37,7 @@ enum {
     OPT_CONTROL,
     OPT_OUT,
     OPT_WELD_GLUES,
+    OPT_STRICT,
 };
 
 static const cli_option options_table[] = {
@@ -111,6 +112,11 @@ static const cli_option options_table[] = {
      .kind = CLI_FLAG,
      .value_name = NULL,
      .help = "keep glues as weld joints instead of merged bodies"},
+    {.name = "strict",
+     .id = OPT_STRICT,
+     .kind = CLI_FLAG,
+     .value_name = NULL,
+     .help = "stop with an error (exit 1, no CSV) when the run fails: a hinge torn open, a runaway speed"},
 };
 
 static const cli_command command = {
@@ -158,6 +164,7 @@ typedef struct run_options {
     const char *control_path; /* NULL: none */
     const char *out_dir;
     bool weld_glues;
+    bool strict; /* a failed run (mu_model_failure) is an error, not a warning */
 } run_options;
 
 typedef enum parse_result { PARSE_OK, PARSE_HELP, PARSE_ERROR } parse_result;
@@ -206,6 +213,9 @@ static parse_result parse_arguments(int argc, char **argv, run_options *opts)
             break;
         case OPT_WELD_GLUES:
             opts->weld_glues = true;
+            break;
+        case OPT_STRICT:
+            opts->strict = true;
             break;
         default:
             break;
@@ -397,6 +407,7 @@ typedef struct run_state {
     double *angle_min;  /* deg, by hinge; NaN for a hinge not built */
     double *angle_max;
     double wall_seconds, step_seconds;
+    bool failure_reported; /* mu_model_failure said on stderr */
 } run_state;
 
 static int engine_failure(const char *what)
@@ -445,6 +456,22 @@ static int run_frames(run_state *run)
             progress_finish(&bar);
             recorder_abandon(&run->csv);
             return engine_failure("mu_model_step");
+        }
+        /* The first sign that the run has left physics: said at once on
+         * stderr (and again in the summary), or, with --strict, the end. */
+        const char *failure = mu_model_failure(run->model);
+        if (failure != NULL && !run->failure_reported) {
+            run->failure_reported = true;
+            if (run->opts->strict) {
+                progress_finish(&bar);
+                recorder_abandon(&run->csv);
+                fprintf(stderr, "sinew: the run failed (--strict): %s\n", failure);
+                return EXIT_FAILURE;
+            }
+            fprintf(stderr,
+                    "sinew: warning: the run failed: %s; its results past that time describe no body "
+                    "(--strict makes this an error)\n",
+                    failure);
         }
         /* (frame + 1)/rate rather than a running sum, which would drift. */
         const double time = (double)(frame + 1) / frame_rate;
@@ -512,6 +539,8 @@ static void print_summary(const run_state *run)
            1e6 * run->step_seconds / (double)substeps);
     printf("real time    %.1fx (stepping alone %.1fx)\n", simulated / run->wall_seconds, simulated / run->step_seconds);
     print_lines("warnings", mu_model_warnings(run->model));
+    const char *failure = mu_model_failure(run->model);
+    printf("failure      %s\n", failure != NULL ? failure : "none (hinges held, speeds physical)");
     int pending = controls_pending(&run->schedule);
     printf("controls     %d applied", run->schedule.event_count - pending);
     printf(pending > 0 ? ", %d after the end of the run not applied\n" : "\n", pending);
