@@ -725,3 +725,69 @@ Test(model_desc, max_velocity_in_rest_lengths_per_second)
     cr_expect_eq(desc->muscles[0].max_velocity, 3.0, "Vmax %g m/s, expected 3", desc->muscles[0].max_velocity);
     mu_model_desc_destroy(desc);
 }
+
+/* ---- any bytes end in bounded time ------------------------------------------- */
+
+/* Writes `length` bytes to the temporary file `path` and loads it; the
+ * result may be a description or an error, but it must come back. */
+static void load_bytes(const char *path, const char *bytes, size_t length)
+{
+    FILE *file = fopen(path, "wb");
+    cr_assert_not_null(file);
+    cr_assert_eq(fwrite(bytes, 1, length, file), length);
+    fclose(file);
+    mu_model_desc *desc = NULL;
+    rb_status status = mu_model_desc_load(path, &desc);
+    cr_expect(status == RB_OK ? desc != NULL : desc == NULL, "a description comes back exactly on success");
+    mu_model_desc_destroy(desc);
+}
+
+/* The 39 bytes of the issue: jansson passes over the NUL, and the error
+ * about "zz" is then located by a scan that used to stop at the NUL. */
+Test(model_desc, a_nul_byte_inside_an_array_ends_in_an_error, .timeout = 10)
+{
+    static const char bytes[] = "{\"name\":\"x\",\"gravity\":[0,-9.8\0],\"zz\":1}";
+    char path[] = "/tmp/sinew-model-XXXXXX";
+    int fd = mkstemp(path);
+    cr_assert_geq(fd, 0);
+    close(fd);
+    load_bytes(path, bytes, sizeof bytes - 1);
+    remove(path);
+    cr_expect(strstr(rb_last_error(), "zz") != NULL, "%s", rb_last_error());
+}
+
+/* A NUL written over, or inserted before, every byte of a small model, and
+ * every prefix of it: each load ends (the test's timeout is the bound).
+ * jansson passes over a NUL between tokens, so most of these files parse;
+ * an unknown key at the end then makes the loader locate an error past
+ * every value of the file. */
+Test(model_desc, a_nul_at_every_position_and_every_truncation_end, .timeout = 60)
+{
+    FILE *source = fopen(SINEW_SOURCE_DIR "/models/sample.json", "rb");
+    cr_assert_not_null(source);
+    static char text[4096], changed[4097];
+    size_t length = fread(text, 1, sizeof text, source);
+    fclose(source);
+    cr_assert_lt(length + 16, sizeof text);
+    char *last_brace = strrchr(text, '}');
+    cr_assert_not_null(last_brace);
+    length = (size_t)(last_brace - text);
+    length += (size_t)sprintf(last_brace, ", \"zz\": 1}\n");
+    char path[] = "/tmp/sinew-model-XXXXXX";
+    int fd = mkstemp(path);
+    cr_assert_geq(fd, 0);
+    close(fd);
+    load_bytes(path, text, length);
+    cr_expect(strstr(rb_last_error(), ": zz: unknown key") != NULL, "%s", rb_last_error());
+    for (size_t at = 0; at < length; ++at) {
+        memcpy(changed, text, length);
+        changed[at] = '\0';
+        load_bytes(path, changed, length);
+        memcpy(changed, text, at);
+        changed[at] = '\0';
+        memcpy(changed + at + 1, text + at, length - at);
+        load_bytes(path, changed, length + 1);
+        load_bytes(path, text, at);
+    }
+    remove(path);
+}

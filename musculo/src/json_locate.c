@@ -1,8 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /* A scanner over a document jansson already accepted: it only has to
  * skip values and compare keys, never to reject anything. Every read
- * stops at the end of the buffer all the same, so a text the scanner
- * misjudges can at worst give no position. */
+ * stops at the end of the buffer all the same, and every loop moves the
+ * cursor on, so a text the scanner misjudges can at worst give no
+ * position or a wrong one, never a scan that does not end. jansson
+ * accepts more than JSON: it passes over a NUL byte anywhere outside a
+ * string ("[0,-9.8\0]" is an array of two numbers). */
 #include <stdint.h>
 
 #include "json_locate.h"
@@ -149,6 +152,7 @@ static void skip_container(cursor *c, char close)
     advance(c);
     skip_space(c);
     while (c->at < c->end && peek(c) != close) {
+        const char *start = c->at;
         if (close == '}') {
             read_string(c, "");
             skip_space(c);
@@ -160,6 +164,11 @@ static void skip_container(cursor *c, char close)
         if (peek(c) == ',') {
             advance(c);
             skip_space(c);
+        }
+        if (c->at == start) {
+            /* A byte no value starts with, such as a NUL jansson passed
+             * over: step past it as jansson did. */
+            advance(c);
         }
     }
     advance(c);
