@@ -18,6 +18,7 @@
 
 #include "mu/model.h"
 #include "mu/model_desc.h"
+#include "simulation.h"
 
 /* Builds `desc` at `variant` and `weight`, holds every muscle at
  * `activation` (and every torque muscle at full recruitment when
@@ -137,13 +138,11 @@ static int run_sinew(const char *args, char *output, size_t size)
     return WEXITSTATUS(status);
 }
 
-Test(model_failure, sinew_run_warns_once_and_strict_makes_it_an_error)
+/* Writes DIR/heavy_arm.json, the arm with its 1 kg weight choice (index 1)
+ * made a million kilograms, and puts its path in `path`. */
+static void write_heavy_arm(const char *dir, char *path, size_t size)
 {
-    char dir[] = "/tmp/sinew-failure-XXXXXX";
-    cr_assert_not_null(mkdtemp(dir));
-    /* The arm with its 1 kg choice made a million kilograms. */
-    char model[256];
-    snprintf(model, sizeof model, "%s/heavy_arm.json", dir);
+    snprintf(path, size, "%s/heavy_arm.json", dir);
     FILE *in = fopen(SINEW_SOURCE_DIR "/models/arm.json", "rb");
     cr_assert_not_null(in);
     static char text[1 << 16];
@@ -151,12 +150,20 @@ Test(model_failure, sinew_run_warns_once_and_strict_makes_it_an_error)
     fclose(in);
     char *masses = strstr(text, "[0, 1, 5");
     cr_assert_not_null(masses, "arm.json's weight choices moved");
-    FILE *out = fopen(model, "wb");
+    FILE *out = fopen(path, "wb");
     cr_assert_not_null(out);
     fwrite(text, 1, (size_t)(masses - text), out);
     fputs("[0, 1e6, 5", out);
     fputs(masses + strlen("[0, 1, 5"), out);
     fclose(out);
+}
+
+Test(model_failure, sinew_run_warns_once_and_strict_makes_it_an_error)
+{
+    char dir[] = "/tmp/sinew-failure-XXXXXX";
+    cr_assert_not_null(mkdtemp(dir));
+    char model[256];
+    write_heavy_arm(dir, model, sizeof model);
 
     char args[512];
     char output[16384];
@@ -190,4 +197,33 @@ Test(model_failure, sinew_run_warns_once_and_strict_makes_it_an_error)
     remove(sidecar);
     remove(model);
     cr_expect_eq(rmdir(dir), 0, "files left in %s", dir);
+}
+
+Test(model_failure, the_viewer_is_told_once_per_built_model)
+{
+    char dir[] = "/tmp/sinew-failure-XXXXXX";
+    cr_assert_not_null(mkdtemp(dir));
+    char model[256];
+    write_heavy_arm(dir, model, sizeof model);
+    simulation sim;
+    simulation_init(&sim);
+    mu_model_options options = mu_default_model_options();
+    options.weight_index = 1;
+    char error[SIMULATION_ERROR_SIZE];
+    for (int load = 0; load < 2; ++load) {
+        cr_assert(load == 0 ? simulation_load_model(&sim, model, &options, error, sizeof error)
+                            : simulation_reload(&sim, &options, error, sizeof error),
+                  "%s", error);
+        int told = 0;
+        for (int frame = 0; frame < 60; ++frame) {
+            cr_assert(simulation_step(&sim, error, sizeof error), "%s", error);
+            const char *failure = simulation_new_failure(&sim);
+            told += failure != NULL;
+            cr_expect(failure == NULL || strstr(failure, "hinge \"") != NULL, "%s", failure);
+        }
+        cr_expect_eq(told, 1, "load %d: told %d times, expected once", load, told);
+    }
+    simulation_free(&sim);
+    remove(model);
+    rmdir(dir);
 }

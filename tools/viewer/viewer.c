@@ -127,6 +127,14 @@ bool viewer_step(viewer *app)
         viewer_show_error(app, error);
         return false;
     }
+    const char *failure = simulation_new_failure(&app->sim);
+    if (failure != NULL) {
+        /* Said once, in the message bar and on stderr; the run goes on. */
+        char message[SIMULATION_ERROR_SIZE];
+        snprintf(message, sizeof message, "the run failed: %s", failure);
+        viewer_show_error(app, message);
+        fprintf(stderr, "sinew view: warning: %s\n", message);
+    }
     record_sample(app);
     return true;
 }

@@ -89,6 +89,7 @@ static bool install_model(simulation *sim, const char *argument, mu_model_desc *
     sim->kind = SIMULATION_MODEL;
     sim->desc = desc;
     sim->model = model;
+    sim->failure_reported = false;
     sim->options = *options;
     sim->tension_mode = false;
     sim->activation = 0.0;
@@ -254,6 +255,16 @@ bool simulation_step(simulation *sim, char *error, size_t error_size)
     }
     ++sim->frame;
     return true;
+}
+
+const char *simulation_new_failure(simulation *sim)
+{
+    const char *failure = sim->kind == SIMULATION_MODEL ? mu_model_failure(sim->model) : NULL;
+    if (failure == NULL || sim->failure_reported) {
+        return NULL;
+    }
+    sim->failure_reported = true;
+    return failure;
 }
 
 bool simulation_select(simulation *sim, const char *name, char *error, size_t error_size)

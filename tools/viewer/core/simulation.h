@@ -51,10 +51,16 @@ typedef struct simulation {
     /* The mouse joint dragging a body, when `dragging`. */
     bool dragging;
     rb_joint_id drag_joint;
+    bool failure_reported; /* the model's failure (mu_model_failure) was handed out */
 } simulation;
 
 void simulation_init(simulation *sim);
 void simulation_free(simulation *sim);
+
+/* The model's failure (mu_model_failure: a hinge torn open, a runaway
+ * speed) the first time it is asked for after it happened, else NULL: a
+ * viewer says it once per built model. */
+const char *simulation_new_failure(simulation *sim);
 
 /* Loads the model `argument` (a built-in name, or a path: one with a '/'
  * or ending in ".json") built with `options`. The first muscle or group
