@@ -791,3 +791,34 @@ Test(model_desc, a_nul_at_every_position_and_every_truncation_end, .timeout = 60
     }
     remove(path);
 }
+
+/* ---- what a file may hold -------------------------------------------------------- */
+
+/* A file that never ends, or a huge one, is refused after
+ * MU_MODEL_MAX_FILE_BYTES, with the limit in the message. */
+Test(model_desc, endless_and_huge_files_are_refused_at_the_limit, .timeout = 30)
+{
+    static const char *const endless[] = {"/dev/zero", "/dev/urandom"};
+    for (size_t i = 0; i < sizeof endless / sizeof endless[0]; ++i) {
+        mu_model_desc *desc = NULL;
+        cr_expect_eq(mu_model_desc_load(endless[i], &desc), RB_ERR_INVALID_ARGUMENT, "%s", endless[i]);
+        cr_expect_null(desc);
+        cr_expect(strstr(rb_last_error(), "longer than 16777216 bytes, expected a model file of at most 16777216 "
+                                          "bytes") != NULL,
+                  "%s: %s", endless[i], rb_last_error());
+    }
+    /* Sparse files of zeros: one byte over is refused for its size, the
+     * limit itself is read (and then is no JSON). */
+    char path[] = "/tmp/sinew-model-XXXXXX";
+    int fd = mkstemp(path);
+    cr_assert_geq(fd, 0);
+    cr_assert_eq(ftruncate(fd, MU_MODEL_MAX_FILE_BYTES + 1), 0);
+    mu_model_desc *desc = NULL;
+    cr_expect_eq(mu_model_desc_load(path, &desc), RB_ERR_INVALID_ARGUMENT);
+    cr_expect(strstr(rb_last_error(), "longer than 16777216 bytes") != NULL, "%s", rb_last_error());
+    cr_assert_eq(ftruncate(fd, MU_MODEL_MAX_FILE_BYTES), 0);
+    close(fd);
+    cr_expect_eq(mu_model_desc_load(path, &desc), RB_ERR_INVALID_ARGUMENT);
+    cr_expect(strstr(rb_last_error(), "invalid JSON") != NULL, "%s", rb_last_error());
+    remove(path);
+}

@@ -9,7 +9,10 @@
 #include "model_schema.h"
 #include "mu/model_desc.h"
 
-/* Reads the whole file into *text (not terminated; jansson takes a length). */
+/* Reads the whole file into *text (not terminated; jansson takes a
+ * length), refusing it past MU_MODEL_MAX_FILE_BYTES: a file that never
+ * ends (/dev/zero, a FIFO) or a huge one stops there rather than when
+ * memory runs out. */
 static rb_status read_file(const char *path, char **text, size_t *length)
 {
     FILE *file = fopen(path, "rb");
@@ -19,12 +22,13 @@ static rb_status read_file(const char *path, char **text, size_t *length)
     }
     size_t capacity = 4096, used = 0;
     char *buffer = malloc(capacity);
-    while (buffer != NULL) {
+    while (buffer != NULL && used <= MU_MODEL_MAX_FILE_BYTES) {
         used += fread(buffer + used, 1, capacity - used, file);
         if (used < capacity) {
             break;
         }
-        capacity *= 2;
+        /* One byte past the limit is enough to know the file is too long. */
+        capacity = capacity * 2 <= MU_MODEL_MAX_FILE_BYTES ? capacity * 2 : MU_MODEL_MAX_FILE_BYTES + 1;
         char *grown = realloc(buffer, capacity);
         if (grown == NULL) {
             free(buffer);
@@ -40,6 +44,12 @@ static rb_status read_file(const char *path, char **text, size_t *length)
         free(buffer);
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: cannot read: %s, expected a readable model file", path,
                                strerror(read_error));
+    }
+    if (used > MU_MODEL_MAX_FILE_BYTES) {
+        free(buffer);
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                               "%s: longer than %d bytes, expected a model file of at most %d bytes (16 MiB)", path,
+                               MU_MODEL_MAX_FILE_BYTES, MU_MODEL_MAX_FILE_BYTES);
     }
     *text = buffer;
     *length = used;

@@ -29,6 +29,11 @@
 extern "C" {
 #endif
 
+/** Most bytes a model file may have (16 MiB, some 3,000 times the
+ * largest built-in model): mu_model_desc_load refuses a longer file, or
+ * one that never ends such as /dev/zero, after reading this much. */
+#define MU_MODEL_MAX_FILE_BYTES 16777216
+
 /** Most objects one list of a model file may hold. */
 #define MU_MODEL_MAX_OBJECTS 65535
 
