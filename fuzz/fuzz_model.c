@@ -1,0 +1,42 @@
+/* SPDX-License-Identifier: MIT */
+/* Fuzz target: a model file's bytes, loaded as `sinew check` and `sinew run`
+ * load them (mu_model_desc_load), built at the default options and stepped
+ * a few frames with every muscle fully active. Any byte sequence must end in
+ * a model or an error, in bounded time, without a sanitizer's report; what
+ * the steps compute is not judged here. */
+#include <stddef.h>
+#include <stdint.h>
+
+#include "memory_file.h"
+#include "mu/model.h"
+#include "mu/model_desc.h"
+
+/* Frames stepped: enough to run the muscles' tension laws and the solver
+ * on the built model, few enough to keep an input well under a millisecond. */
+enum { FRAMES = 3 };
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    memory_file file;
+    memory_file_open(&file, data, size);
+    mu_model_desc *desc = NULL;
+    rb_status status = mu_model_desc_load(file.path, &desc);
+    memory_file_close(&file);
+    if (status != RB_OK) {
+        return 0;
+    }
+    mu_model_options options = mu_default_model_options();
+    mu_model *model = NULL;
+    if (mu_model_create(desc, &options, &model) == RB_OK) {
+        for (int m = 0; m < mu_model_muscle_count(model); ++m) {
+            mu_model_set_activation_at(model, m, 1.0);
+        }
+        for (int frame = 0; frame < FRAMES && mu_model_step(model) == RB_OK; ++frame) {
+        }
+        mu_model_destroy(model);
+    }
+    mu_model_desc_destroy(desc);
+    return 0;
+}
