@@ -67,8 +67,9 @@ Test(motor_pool, exertion_is_the_running_sum_share)
         expect_near(mu_motor_pool_exertion(pool), cumsum[n] / 20.0, 1e-15, "e(n) = cumsum[n]/cumsum[all]");
     }
     expect_near(mu_motor_pool_exertion(pool), 1.0, 0.0, "all recruited");
-    /* Clamped to the pool, and one at a time. */
-    cr_assert_eq(mu_motor_pool_recruit(pool, 99), RB_OK);
+    /* Beyond the pool refused, leaving the recruitment as it was; one at a
+     * time clamped to the pool. */
+    cr_expect_eq(mu_motor_pool_recruit(pool, 99), RB_ERR_INVALID_ARGUMENT);
     cr_expect_eq(mu_motor_pool_recruited(pool), 5);
     cr_assert_eq(mu_motor_pool_recruit_more(pool, -1), RB_OK);
     expect_near(mu_motor_pool_exertion(pool), 0.5, 1e-15, "one fewer: 10/20");
@@ -76,8 +77,8 @@ Test(motor_pool, exertion_is_the_running_sum_share)
     cr_expect_eq(mu_motor_pool_recruited(pool), 0);
     cr_assert_eq(mu_motor_pool_recruit_more(pool, 1), RB_OK);
     expect_near(mu_motor_pool_exertion(pool), 0.05, 1e-15, "one more: 1/20");
-    cr_assert_eq(mu_motor_pool_recruit(pool, -3), RB_OK);
-    cr_expect_eq(mu_motor_pool_recruited(pool), 0, "negative clamps to 0");
+    cr_expect_eq(mu_motor_pool_recruit(pool, -3), RB_ERR_INVALID_ARGUMENT);
+    cr_expect_eq(mu_motor_pool_recruited(pool), 1, "a refused count recruits nothing");
     mu_motor_pool_destroy(pool);
 }
 

@@ -56,8 +56,9 @@ double mu_activation_time_constant(double activation, const mu_activation_params
     if (check_params(params, "mu_activation_time_constant") != RB_OK) {
         return NAN;
     }
-    if (isnan(activation)) {
-        rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_activation_time_constant: activation is NaN");
+    if (!isfinite(activation)) {
+        rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                        "mu_activation_time_constant: activation is %g, expected a finite number", activation);
         return NAN;
     }
     return time_constant(activation, params);
@@ -73,6 +74,10 @@ int mu_activation_derivative(double t, const double y[], double dydt[], void *pa
     }
     if (y == NULL || dydt == NULL) {
         return (int)rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_activation_derivative: y and dydt must not be NULL");
+    }
+    if (!isfinite(y[0])) {
+        return (int)rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                                    "mu_activation_derivative: y[0] is %g, expected a finite activation", y[0]);
     }
     dydt[0] = (p->excitation - y[0]) / time_constant(y[0], p);
     return RB_OK;

@@ -57,9 +57,10 @@ mu_analytic_curves mu_default_analytic_curves(void)
 
 /* The tabulated curves of the table read from `file`, named `path` in
  * messages. */
-static rb_status create_tabulated(const char *path, FILE *file, mu_interpolation interpolation, mu_curves **out)
+/* `f` is the API function called, for its messages. */
+static rb_status create_tabulated(const char *f, const char *path, FILE *file, mu_interpolation interpolation,
+                                  mu_curves **out)
 {
-    const char *f = "mu_curves_create_tabulated";
     const gsl_interp_type *type = NULL;
     const char *type_name = NULL;
     switch (interpolation) {
@@ -118,7 +119,7 @@ rb_status mu_curves_create_tabulated(const char *path, mu_interpolation interpol
     if (file == NULL) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s: cannot open the file: %s", f, path, strerror(errno));
     }
-    rb_status status = create_tabulated(path, file, interpolation, out);
+    rb_status status = create_tabulated(f, path, file, interpolation, out);
     fclose(file);
     return status;
 }
@@ -134,7 +135,7 @@ rb_status mu_curves_create_seed_tables(mu_interpolation interpolation, mu_curves
     if (status != RB_OK) {
         return status;
     }
-    status = create_tabulated(data.label, data.stream, interpolation, out);
+    status = create_tabulated("mu_curves_create_seed_tables", data.label, data.stream, interpolation, out);
     mu_data_file_close(&data);
     return status;
 }
@@ -310,11 +311,23 @@ static double analytic_velocity_slope(const mu_curves *curves, double v)
     return curves->isometric_slope * exp(-curves->isometric_slope * v / rise);
 }
 
-double mu_curve_active_length_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_length)
+/* NULL curves or a NaN input gives NaN (visible, rather than a plausible
+ * force), with the error recorded in the name of the function called. */
+static bool refuse_lookup(const char *function, const mu_curves *curves, const char *name, double x)
 {
-    if (curves == NULL || isnan(normalized_length)) {
-        return NAN;
+    if (curves == NULL) {
+        rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: curves is NULL", function);
+        return true;
     }
+    if (isnan(x)) {
+        rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s is NaN, expected a number", function, name);
+        return true;
+    }
+    return false;
+}
+
+static double active_length(const mu_curves *curves, mu_curve_hint *hint, double normalized_length)
+{
     if (curves->tabulated) {
         return tabulated_value(curves, MU_CURVE_ACTIVE_LENGTH, hint, normalized_length);
     }
@@ -324,11 +337,8 @@ double mu_curve_active_length_hinted(const mu_curves *curves, mu_curve_hint *hin
     return exp(-z * z);
 }
 
-double mu_curve_passive_length_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_length)
+static double passive_length(const mu_curves *curves, mu_curve_hint *hint, double normalized_length)
 {
-    if (curves == NULL || isnan(normalized_length)) {
-        return NAN;
-    }
     if (curves->tabulated) {
         return tabulated_value(curves, MU_CURVE_PASSIVE_LENGTH, hint, normalized_length);
     }
@@ -340,44 +350,74 @@ double mu_curve_passive_length_hinted(const mu_curves *curves, mu_curve_hint *hi
     return curves->analytic.passive_scale * expm1(curves->analytic.passive_rate * (normalized_length - 1.0));
 }
 
-double mu_curve_velocity_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity)
+static double velocity(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity)
 {
-    if (curves == NULL || isnan(normalized_velocity)) {
-        return NAN;
-    }
     if (curves->tabulated) {
         return tabulated_value(curves, MU_CURVE_VELOCITY, hint, normalized_velocity);
     }
     return analytic_velocity(curves, normalized_velocity);
 }
 
-double mu_curve_velocity_slope_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity)
+static double velocity_slope(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity)
 {
-    if (curves == NULL || isnan(normalized_velocity)) {
-        return NAN;
-    }
     if (curves->tabulated) {
         return tabulated_slope(curves, MU_CURVE_VELOCITY, hint, normalized_velocity);
     }
     return analytic_velocity_slope(curves, normalized_velocity);
 }
 
+double mu_curve_active_length_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_length)
+{
+    return refuse_lookup("mu_curve_active_length_hinted", curves, "normalized_length", normalized_length)
+               ? NAN
+               : active_length(curves, hint, normalized_length);
+}
+
 double mu_curve_active_length(const mu_curves *curves, double normalized_length)
 {
-    return mu_curve_active_length_hinted(curves, NULL, normalized_length);
+    return refuse_lookup("mu_curve_active_length", curves, "normalized_length", normalized_length)
+               ? NAN
+               : active_length(curves, NULL, normalized_length);
+}
+
+double mu_curve_passive_length_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_length)
+{
+    return refuse_lookup("mu_curve_passive_length_hinted", curves, "normalized_length", normalized_length)
+               ? NAN
+               : passive_length(curves, hint, normalized_length);
 }
 
 double mu_curve_passive_length(const mu_curves *curves, double normalized_length)
 {
-    return mu_curve_passive_length_hinted(curves, NULL, normalized_length);
+    return refuse_lookup("mu_curve_passive_length", curves, "normalized_length", normalized_length)
+               ? NAN
+               : passive_length(curves, NULL, normalized_length);
+}
+
+double mu_curve_velocity_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity)
+{
+    return refuse_lookup("mu_curve_velocity_hinted", curves, "normalized_velocity", normalized_velocity)
+               ? NAN
+               : velocity(curves, hint, normalized_velocity);
 }
 
 double mu_curve_velocity(const mu_curves *curves, double normalized_velocity)
 {
-    return mu_curve_velocity_hinted(curves, NULL, normalized_velocity);
+    return refuse_lookup("mu_curve_velocity", curves, "normalized_velocity", normalized_velocity)
+               ? NAN
+               : velocity(curves, NULL, normalized_velocity);
+}
+
+double mu_curve_velocity_slope_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity)
+{
+    return refuse_lookup("mu_curve_velocity_slope_hinted", curves, "normalized_velocity", normalized_velocity)
+               ? NAN
+               : velocity_slope(curves, hint, normalized_velocity);
 }
 
 double mu_curve_velocity_slope(const mu_curves *curves, double normalized_velocity)
 {
-    return mu_curve_velocity_slope_hinted(curves, NULL, normalized_velocity);
+    return refuse_lookup("mu_curve_velocity_slope", curves, "normalized_velocity", normalized_velocity)
+               ? NAN
+               : velocity_slope(curves, NULL, normalized_velocity);
 }

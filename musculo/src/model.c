@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "arguments.h"
 #include "c_locale.h"
 #include "mu/model.h"
 #include "mu/motor_pool.h"
@@ -525,6 +526,10 @@ rb_status mu_model_create(const mu_model_desc *desc, const mu_model_options *opt
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_create: variant %d, expected 0 .. %d",
                                options->variant, desc->variant_count - 1);
     }
+    if (desc->has_weight &&
+        mu_refuse_index("mu_model_create", "weight_index", options->weight_index, desc->weight.mass_count)) {
+        return RB_ERR_INVALID_ARGUMENT;
+    }
     mu_model *model = calloc(1, sizeof *model);
     if (model == NULL) {
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "mu_model_create: out of memory");
@@ -555,8 +560,12 @@ rb_status mu_model_create(const mu_model_desc *desc, const mu_model_options *opt
         status = build_weight(model, merge);
     }
     if (status != RB_OK) {
+        /* Destroying the world clears the engine's last error: the
+         * message of the failed build is kept across it. */
+        char message[512];
+        snprintf(message, sizeof message, "%s", rb_last_error());
         mu_model_destroy(model);
-        return status;
+        return rb_report_error(status, "%s", message);
     }
     *out = model;
     return RB_OK;
@@ -590,15 +599,30 @@ void mu_model_destroy(mu_model *model)
 
 /* ---- running ------------------------------------------------------------------------- */
 
-rb_world *mu_model_world(mu_model *model) { return model->world; }
-const mu_model_desc *mu_model_description(const mu_model *model) { return model->desc; }
+rb_world *mu_model_world(mu_model *model)
+{
+    return mu_refuse_null("mu_model_world", "model", model) ? NULL : model->world;
+}
+const mu_model_desc *mu_model_description(const mu_model *model)
+{
+    return mu_refuse_null("mu_model_description", "model", model) ? NULL : model->desc;
+}
 double mu_model_time(const mu_model *model)
 {
+    if (mu_refuse_null("mu_model_time", "model", model)) {
+        return NAN;
+    }
     return (double)model->substeps_taken / (model->desc->frame_rate * model->desc->substeps);
 }
-double mu_model_frame_duration(const mu_model *model) { return 1.0 / model->desc->frame_rate; }
+double mu_model_frame_duration(const mu_model *model)
+{
+    return mu_refuse_null("mu_model_frame_duration", "model", model) ? NAN : 1.0 / model->desc->frame_rate;
+}
 double mu_model_substep_duration(const mu_model *model)
 {
+    if (mu_refuse_null("mu_model_substep_duration", "model", model)) {
+        return NAN;
+    }
     return 1.0 / (model->desc->frame_rate * model->desc->substeps);
 }
 
@@ -713,11 +737,13 @@ rb_status mu_model_step(mu_model *model)
 static rb_status for_each_muscle(mu_model *model, const char *name, const char *function,
                                  rb_status (*set)(mu_muscle *, double), double value)
 {
+    if (mu_refuse_null(function, "model", model) || mu_refuse_null(function, "name", name) ||
+        mu_refuse_non_finite(function, set == mu_muscle_set_activation ? "activation" : "newtons", value)) {
+        return RB_ERR_INVALID_ARGUMENT;
+    }
     mu_model_ref ref;
-    if (name == NULL || !mu_model_desc_find(model->desc, name, &ref) ||
-        (ref.kind != MU_MODEL_MUSCLE && ref.kind != MU_MODEL_GROUP)) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: no muscle or group named '%s'", function,
-                               name != NULL ? name : "(null)");
+    if (!mu_model_desc_find(model->desc, name, &ref) || (ref.kind != MU_MODEL_MUSCLE && ref.kind != MU_MODEL_GROUP)) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: no muscle or group named '%s'", function, name);
     }
     int count = ref.kind == MU_MODEL_MUSCLE ? 1 : model->desc->groups[ref.index].muscle_count;
     for (int i = 0; i < count; ++i) {
@@ -742,35 +768,40 @@ rb_status mu_model_set_tension(mu_model *model, const char *name, double newtons
     return for_each_muscle(model, name, "mu_model_set_tension", mu_muscle_set_target_tension, newtons);
 }
 
-static rb_status find_built(const mu_model *model, int index, const char *function)
+/* Whether `index` is refused as a built muscle's (NULL model included). */
+static bool refuse_built(const mu_model *model, int index, const char *function)
 {
-    if (model == NULL || index < 0 || index >= model->built_muscle_count) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: muscle index %d, expected 0 .. %d", function, index,
-                               model != NULL ? model->built_muscle_count - 1 : -1);
-    }
-    return RB_OK;
+    return mu_refuse_null(function, "model", model) ||
+           mu_refuse_index(function, "index", index, model->built_muscle_count);
 }
 
 rb_status mu_model_set_activation_at(mu_model *model, int index, double activation)
 {
-    rb_status status = find_built(model, index, "mu_model_set_activation_at");
-    return status != RB_OK ? status : mu_muscle_set_activation(model->muscles[model->built_muscles[index]], activation);
+    const char *f = "mu_model_set_activation_at";
+    if (refuse_built(model, index, f) || mu_refuse_non_finite(f, "activation", activation)) {
+        return RB_ERR_INVALID_ARGUMENT;
+    }
+    return mu_muscle_set_activation(model->muscles[model->built_muscles[index]], activation);
 }
 
 rb_status mu_model_set_tension_at(mu_model *model, int index, double newtons)
 {
-    rb_status status = find_built(model, index, "mu_model_set_tension_at");
-    return status != RB_OK ? status
-                           : mu_muscle_set_target_tension(model->muscles[model->built_muscles[index]], newtons);
+    const char *f = "mu_model_set_tension_at";
+    if (refuse_built(model, index, f) || mu_refuse_non_finite(f, "newtons", newtons)) {
+        return RB_ERR_INVALID_ARGUMENT;
+    }
+    return mu_muscle_set_target_tension(model->muscles[model->built_muscles[index]], newtons);
 }
 
 double mu_model_group_activation(const mu_model *model, const char *name)
 {
+    const char *f = "mu_model_group_activation";
+    if (mu_refuse_null(f, "model", model) || mu_refuse_null(f, "name", name)) {
+        return NAN;
+    }
     mu_model_ref ref;
-    if (name == NULL || !mu_model_desc_find(model->desc, name, &ref) ||
-        (ref.kind != MU_MODEL_MUSCLE && ref.kind != MU_MODEL_GROUP)) {
-        rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_group_activation: no muscle or group named '%s'",
-                        name != NULL ? name : "(null)");
+    if (!mu_model_desc_find(model->desc, name, &ref) || (ref.kind != MU_MODEL_MUSCLE && ref.kind != MU_MODEL_GROUP)) {
+        rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: no muscle or group named '%s'", f, name);
         return NAN;
     }
     int count = ref.kind == MU_MODEL_MUSCLE ? 1 : model->desc->groups[ref.index].muscle_count;
@@ -786,29 +817,64 @@ double mu_model_group_activation(const mu_model *model, const char *name)
     return built > 0 ? sum / built : 0.0;
 }
 
-rb_status mu_model_set_gravity(mu_model *model, rb_vec2 gravity) { return rb_world_set_gravity(model->world, gravity); }
+rb_status mu_model_set_gravity(mu_model *model, rb_vec2 gravity)
+{
+    const char *f = "mu_model_set_gravity";
+    if (mu_refuse_null(f, "model", model) || mu_refuse_non_finite(f, "gravity.x", gravity.x) ||
+        mu_refuse_non_finite(f, "gravity.y", gravity.y)) {
+        return RB_ERR_INVALID_ARGUMENT;
+    }
+    return rb_world_set_gravity(model->world, gravity);
+}
 
-int mu_model_muscle_count(const mu_model *model) { return model->built_muscle_count; }
+int mu_model_muscle_count(const mu_model *model)
+{
+    return mu_refuse_null("mu_model_muscle_count", "model", model) ? 0 : model->built_muscle_count;
+}
 const char *mu_model_muscle_name(const mu_model *model, int index)
 {
-    return model->desc->muscles[model->built_muscles[index]].name;
+    return refuse_built(model, index, "mu_model_muscle_name") ? NULL
+                                                              : model->desc->muscles[model->built_muscles[index]].name;
 }
 mu_muscle_readout mu_model_muscle_readout(const mu_model *model, int index)
 {
-    return mu_muscle_read(model->muscles[model->built_muscles[index]]);
+    return refuse_built(model, index, "mu_model_muscle_readout")
+               ? mu_nan_readout()
+               : mu_muscle_read(model->muscles[model->built_muscles[index]]);
 }
 const mu_muscle *mu_model_built_muscle(const mu_model *model, int index)
 {
-    return model->muscles[model->built_muscles[index]];
+    return refuse_built(model, index, "mu_model_built_muscle") ? NULL : model->muscles[model->built_muscles[index]];
 }
-const char *mu_model_failure(const mu_model *model) { return model->failure[0] != '\0' ? model->failure : NULL; }
-const char *mu_model_warnings(const mu_model *model) { return model->warnings; }
+const char *mu_model_failure(const mu_model *model)
+{
+    if (mu_refuse_null("mu_model_failure", "model", model)) {
+        return NULL;
+    }
+    return model->failure[0] != '\0' ? model->failure : NULL;
+}
+const char *mu_model_warnings(const mu_model *model)
+{
+    return mu_refuse_null("mu_model_warnings", "model", model) ? NULL : model->warnings;
+}
 
-int mu_model_hinge_count(const mu_model *model) { return model->desc->hinge_count; }
-const char *mu_model_hinge_name(const mu_model *model, int index) { return model->desc->hinges[index].name; }
+int mu_model_hinge_count(const mu_model *model)
+{
+    return mu_refuse_null("mu_model_hinge_count", "model", model) ? 0 : model->desc->hinge_count;
+}
+/* Whether `index` is refused as a hinge's (NULL model included). */
+static bool refuse_hinge(const mu_model *model, int index, const char *function)
+{
+    return mu_refuse_null(function, "model", model) ||
+           mu_refuse_index(function, "index", index, model->desc->hinge_count);
+}
+const char *mu_model_hinge_name(const mu_model *model, int index)
+{
+    return refuse_hinge(model, index, "mu_model_hinge_name") ? NULL : model->desc->hinges[index].name;
+}
 double mu_model_hinge_angle(const mu_model *model, int index)
 {
-    if (rb_joint_id_is_null(model->hinges[index])) {
+    if (refuse_hinge(model, index, "mu_model_hinge_angle") || rb_joint_id_is_null(model->hinges[index])) {
         return NAN;
     }
     /* The engine's reference angle holds the bones' offsets in their
@@ -816,9 +882,20 @@ double mu_model_hinge_angle(const mu_model *model, int index)
     return rb_revolute_joint_angle(model->world, model->hinges[index]) * DEGREES;
 }
 
-int mu_model_part_count(const mu_model *model) { return model->part_count; }
+int mu_model_part_count(const mu_model *model)
+{
+    return mu_refuse_null("mu_model_part_count", "model", model) ? 0 : model->part_count;
+}
+/* Whether `index` is refused as a part's (NULL model included). */
+static bool refuse_part(const mu_model *model, int index, const char *function)
+{
+    return mu_refuse_null(function, "model", model) || mu_refuse_index(function, "index", index, model->part_count);
+}
 const char *mu_model_part_name(const mu_model *model, int index)
 {
+    if (refuse_part(model, index, "mu_model_part_name")) {
+        return NULL;
+    }
     const mu_model_desc *desc = model->desc;
     return index < desc->nail_count ? desc->nails[index].name : desc->bones[index - desc->nail_count].name;
 }
@@ -831,41 +908,55 @@ static rb_transform part_world_pose(const mu_model *model, int index)
 
 rb_vec2 mu_model_part_centre(const mu_model *model, int index)
 {
+    if (refuse_part(model, index, "mu_model_part_centre")) {
+        return rb_v2(NAN, NAN);
+    }
     return model->parts[index].built ? part_world_pose(model, index).p : rb_v2(NAN, NAN);
 }
 
 double mu_model_part_angle(const mu_model *model, int index)
 {
+    if (refuse_part(model, index, "mu_model_part_angle")) {
+        return NAN;
+    }
     return model->parts[index].built ? rb_rot_angle(part_world_pose(model, index).q) * DEGREES : NAN;
 }
 
-int mu_model_body_count(const mu_model *model) { return model->body_count; }
-int mu_model_joint_count(const mu_model *model) { return model->joint_count; }
+int mu_model_body_count(const mu_model *model)
+{
+    return mu_refuse_null("mu_model_body_count", "model", model) ? 0 : model->body_count;
+}
+int mu_model_joint_count(const mu_model *model)
+{
+    return mu_refuse_null("mu_model_joint_count", "model", model) ? 0 : model->joint_count;
+}
 
 /* ---- torque muscles ------------------------------------------------------------------ */
 
-int mu_model_torque_muscle_count(const mu_model *model) { return model->built_torque_muscle_count; }
+int mu_model_torque_muscle_count(const mu_model *model)
+{
+    return mu_refuse_null("mu_model_torque_muscle_count", "model", model) ? 0 : model->built_torque_muscle_count;
+}
 
 static int find_torque_muscle(const mu_model *model, const char *name, const char *function)
 {
-    for (int t = 0; name != NULL && t < model->built_torque_muscle_count; ++t) {
+    if (mu_refuse_null(function, "name", name)) {
+        return -1;
+    }
+    for (int t = 0; t < model->built_torque_muscle_count; ++t) {
         if (strcmp(model->desc->torque_muscles[model->built_torque_muscles[t]].name, name) == 0) {
             return t;
         }
     }
     rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: no torque muscle named \"%s\" is built in this model", function,
-                    name != NULL ? name : "(null)");
+                    name);
     return -1;
 }
 
 static bool torque_index_ok(const mu_model *model, int index, const char *function)
 {
-    if (model == NULL || index < 0 || index >= model->built_torque_muscle_count) {
-        rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: index %d, expected 0 .. %d", function, index,
-                        model != NULL ? model->built_torque_muscle_count - 1 : -1);
-        return false;
-    }
-    return true;
+    return !mu_refuse_null(function, "model", model) &&
+           !mu_refuse_index(function, "index", index, model->built_torque_muscle_count);
 }
 
 const char *mu_model_torque_muscle_name(const mu_model *model, int index)
@@ -876,22 +967,31 @@ const char *mu_model_torque_muscle_name(const mu_model *model, int index)
     return model->desc->torque_muscles[model->built_torque_muscles[index]].name;
 }
 
-rb_status mu_model_recruit_at(mu_model *model, int index, int neurons)
+/* Recruits `neurons` of torque muscle `index` (checked), refusing a count
+ * outside its pool rather than clamping it. */
+static rb_status recruit(mu_model *model, int index, int neurons, const char *function)
 {
-    if (!torque_index_ok(model, index, "mu_model_recruit_at")) {
+    if (mu_refuse_index(function, "neurons", neurons, mu_motor_pool_neuron_count(model->pools[index]) + 1)) {
         return RB_ERR_INVALID_ARGUMENT;
     }
     mu_motor_pool_recruit(model->pools[index], neurons);
     return mu_motor_pool_drive_torque(model->pools[index], model->actuators[index]);
 }
 
+rb_status mu_model_recruit_at(mu_model *model, int index, int neurons)
+{
+    const char *f = "mu_model_recruit_at";
+    return torque_index_ok(model, index, f) ? recruit(model, index, neurons, f) : RB_ERR_INVALID_ARGUMENT;
+}
+
 rb_status mu_model_recruit(mu_model *model, const char *name, int neurons)
 {
-    if (model == NULL) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_model_recruit: model is NULL");
+    const char *f = "mu_model_recruit";
+    if (mu_refuse_null(f, "model", model)) {
+        return RB_ERR_INVALID_ARGUMENT;
     }
-    const int index = find_torque_muscle(model, name, "mu_model_recruit");
-    return index < 0 ? RB_ERR_INVALID_ARGUMENT : mu_model_recruit_at(model, index, neurons);
+    const int index = find_torque_muscle(model, name, f);
+    return index < 0 ? RB_ERR_INVALID_ARGUMENT : recruit(model, index, neurons, f);
 }
 
 const mu_motor_pool *mu_model_motor_pool(const mu_model *model, int index)

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "arguments.h"
 #include "data_file.h"
 #include "model_schema.h"
 #include "mu/model_desc.h"
@@ -239,7 +240,15 @@ static int object_count(const mu_model_desc *desc, mu_model_kind kind)
 
 const char *mu_model_desc_name_of(const mu_model_desc *desc, mu_model_ref ref)
 {
-    if (desc == NULL || ref.index < 0 || ref.index >= object_count(desc, ref.kind)) {
+    const char *f = "mu_model_desc_name_of";
+    if (mu_refuse_null(f, "desc", desc)) {
+        return NULL;
+    }
+    if ((int)ref.kind < (int)MU_MODEL_NAIL || (int)ref.kind > (int)MU_MODEL_TORQUE_MUSCLE) {
+        rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: ref.kind is %d, expected a mu_model_kind", f, (int)ref.kind);
+        return NULL;
+    }
+    if (mu_refuse_index(f, "ref.index", ref.index, object_count(desc, ref.kind))) {
         return NULL;
     }
     switch (ref.kind) {
@@ -265,7 +274,8 @@ const char *mu_model_desc_name_of(const mu_model_desc *desc, mu_model_ref ref)
 
 bool mu_model_desc_find(const mu_model_desc *desc, const char *name, mu_model_ref *out)
 {
-    if (desc == NULL || name == NULL || out == NULL) {
+    const char *f = "mu_model_desc_find";
+    if (mu_refuse_null(f, "desc", desc) || mu_refuse_null(f, "name", name) || mu_refuse_null(f, "out", out)) {
         return false;
     }
     static const mu_model_kind kinds[] = {MU_MODEL_NAIL,   MU_MODEL_BONE,   MU_MODEL_HINGE, MU_MODEL_GLUE,
@@ -286,7 +296,8 @@ bool mu_model_desc_find(const mu_model_desc *desc, const char *name, mu_model_re
 
 int mu_model_desc_find_variant(const mu_model_desc *desc, const char *name)
 {
-    if (desc == NULL || name == NULL) {
+    const char *f = "mu_model_desc_find_variant";
+    if (mu_refuse_null(f, "desc", desc) || mu_refuse_null(f, "name", name)) {
         return -1;
     }
     for (int i = 0; i < desc->variant_count; ++i) {
@@ -309,10 +320,12 @@ static bool contains(const int *indices, int count, int index)
 
 bool mu_model_variant_has_muscle(const mu_model_variant *variant, int index)
 {
-    return variant != NULL && contains(variant->muscles, variant->muscle_count, index);
+    return !mu_refuse_null("mu_model_variant_has_muscle", "variant", variant) &&
+           contains(variant->muscles, variant->muscle_count, index);
 }
 
 bool mu_model_variant_has_bone(const mu_model_variant *variant, int index)
 {
-    return variant != NULL && contains(variant->bones, variant->bone_count, index);
+    return !mu_refuse_null("mu_model_variant_has_bone", "variant", variant) &&
+           contains(variant->bones, variant->bone_count, index);
 }

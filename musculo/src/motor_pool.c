@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "arguments.h"
 #include "csv_reader.h"
 #include "mu/motor_pool.h"
 
@@ -293,13 +294,15 @@ void mu_motor_pool_destroy(mu_motor_pool *pool)
     }
 }
 
-int mu_motor_pool_neuron_count(const mu_motor_pool *pool) { return pool != NULL ? pool->count : 0; }
+int mu_motor_pool_neuron_count(const mu_motor_pool *pool)
+{
+    return mu_refuse_null("mu_motor_pool_neuron_count", "pool", pool) ? 0 : pool->count;
+}
 
 double mu_motor_pool_strength(const mu_motor_pool *pool, int index)
 {
-    if (pool == NULL || index < 0 || index >= pool->count) {
-        rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_motor_pool_strength: index %d of a pool of %d neurons", index,
-                        pool != NULL ? pool->count : 0);
+    const char *f = "mu_motor_pool_strength";
+    if (mu_refuse_null(f, "pool", pool) || mu_refuse_index(f, "index", index, pool->count)) {
         return NAN;
     }
     return pool->strengths[index];
@@ -307,17 +310,18 @@ double mu_motor_pool_strength(const mu_motor_pool *pool, int index)
 
 double mu_motor_pool_total_strength(const mu_motor_pool *pool)
 {
-    return pool != NULL ? pool->cumulative[pool->count] : NAN;
+    return mu_refuse_null("mu_motor_pool_total_strength", "pool", pool) ? NAN : pool->cumulative[pool->count];
 }
 
 static int clamp_count(const mu_motor_pool *pool, long n) { return n < 0 ? 0 : n > pool->count ? pool->count : (int)n; }
 
 rb_status mu_motor_pool_recruit(mu_motor_pool *pool, int n)
 {
-    if (pool == NULL) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_motor_pool_recruit: pool is NULL");
+    const char *f = "mu_motor_pool_recruit";
+    if (mu_refuse_null(f, "pool", pool) || mu_refuse_index(f, "n", n, pool->count + 1)) {
+        return RB_ERR_INVALID_ARGUMENT;
     }
-    pool->recruited = clamp_count(pool, n);
+    pool->recruited = n;
     return RB_OK;
 }
 
@@ -330,11 +334,14 @@ rb_status mu_motor_pool_recruit_more(mu_motor_pool *pool, int delta)
     return RB_OK;
 }
 
-int mu_motor_pool_recruited(const mu_motor_pool *pool) { return pool != NULL ? pool->recruited : -1; }
+int mu_motor_pool_recruited(const mu_motor_pool *pool)
+{
+    return mu_refuse_null("mu_motor_pool_recruited", "pool", pool) ? -1 : pool->recruited;
+}
 
 double mu_motor_pool_exertion_at(const mu_motor_pool *pool, int n)
 {
-    if (pool == NULL) {
+    if (mu_refuse_null("mu_motor_pool_exertion_at", "pool", pool)) {
         return NAN;
     }
     return pool->cumulative[clamp_count(pool, n)] / pool->cumulative[pool->count];
@@ -342,7 +349,8 @@ double mu_motor_pool_exertion_at(const mu_motor_pool *pool, int n)
 
 double mu_motor_pool_exertion(const mu_motor_pool *pool)
 {
-    return pool != NULL ? mu_motor_pool_exertion_at(pool, pool->recruited) : NAN;
+    return mu_refuse_null("mu_motor_pool_exertion", "pool", pool) ? NAN
+                                                                  : mu_motor_pool_exertion_at(pool, pool->recruited);
 }
 
 rb_status mu_motor_pool_drive_muscle(const mu_motor_pool *pool, mu_muscle *muscle)

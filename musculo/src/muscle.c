@@ -31,6 +31,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "arguments.h"
 #include "fibre_tendon.h"
 #include "mu/muscle.h"
 
@@ -83,6 +84,16 @@ static rb_status check_def(const mu_muscle_def *def)
     }
     if (def->curves == NULL) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: curves is NULL", f);
+    }
+    if (!(def->point_count >= 2 && def->point_count <= RB_MAX_CABLE_POINTS)) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: point_count is %d, expected 2 .. %d", f, def->point_count,
+                               RB_MAX_CABLE_POINTS);
+    }
+    for (int i = 0; i < def->point_count; ++i) {
+        if (!isfinite(def->local_points[i].x) || !isfinite(def->local_points[i].y)) {
+            return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: local_points[%d] is (%g, %g), expected finite", f, i,
+                                   def->local_points[i].x, def->local_points[i].y);
+        }
     }
     if (!(def->rest_length > 0.0 && isfinite(def->rest_length))) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: rest_length is %g m, expected > 0", f, def->rest_length);
@@ -220,6 +231,9 @@ rb_status mu_muscle_create(rb_world *world, const mu_muscle_def *def, mu_muscle 
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_muscle_create: out is NULL");
     }
     *out = NULL;
+    if (mu_refuse_null("mu_muscle_create", "world", world)) {
+        return RB_ERR_INVALID_ARGUMENT;
+    }
     rb_status status = check_def(def);
     if (status != RB_OK) {
         return status;
@@ -285,10 +299,9 @@ void mu_muscle_destroy(mu_muscle *muscle, rb_world *world)
 
 rb_status mu_muscle_set_activation(mu_muscle *muscle, double activation)
 {
-    if (muscle == NULL || !isfinite(activation)) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT,
-                               "mu_muscle_set_activation: expected a muscle and a finite activation, got %g",
-                               activation);
+    const char *f = "mu_muscle_set_activation";
+    if (mu_refuse_null(f, "muscle", muscle) || mu_refuse_non_finite(f, "activation", activation)) {
+        return RB_ERR_INVALID_ARGUMENT;
     }
     const double clamped = fmin(fmax(activation, 0.0), 1.0);
     if (muscle->activation_dynamics) {
@@ -303,17 +316,30 @@ rb_status mu_muscle_set_activation(mu_muscle *muscle, double activation)
 
 rb_status mu_muscle_set_target_tension(mu_muscle *muscle, double target)
 {
-    if (muscle == NULL || !(target >= 0.0 && isfinite(target))) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT,
-                               "mu_muscle_set_target_tension: expected a muscle and a tension >= 0 N, got %g", target);
+    const char *f = "mu_muscle_set_target_tension";
+    if (mu_refuse_null(f, "muscle", muscle)) {
+        return RB_ERR_INVALID_ARGUMENT;
+    }
+    if (!(target >= 0.0 && isfinite(target))) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: target is %g N, expected a finite tension >= 0", f,
+                               target);
     }
     muscle->target_tension = target;
     return RB_OK;
 }
 
-double mu_muscle_max_force(const mu_muscle *muscle) { return muscle->max_force; }
-double mu_muscle_tendon_length(const mu_muscle *muscle) { return muscle->tendon_length; }
-rb_cable_id mu_muscle_cable(const mu_muscle *muscle) { return muscle->cable; }
+double mu_muscle_max_force(const mu_muscle *muscle)
+{
+    return mu_refuse_null("mu_muscle_max_force", "muscle", muscle) ? NAN : muscle->max_force;
+}
+double mu_muscle_tendon_length(const mu_muscle *muscle)
+{
+    return mu_refuse_null("mu_muscle_tendon_length", "muscle", muscle) ? NAN : muscle->tendon_length;
+}
+rb_cable_id mu_muscle_cable(const mu_muscle *muscle)
+{
+    return mu_refuse_null("mu_muscle_cable", "muscle", muscle) ? (rb_cable_id){0} : muscle->cable;
+}
 
 /* Castanyer's proportional controller on the active force, once per
  * substep, on the excitation when there is one. */
@@ -413,18 +439,20 @@ static void measure_at(mu_muscle *muscle, const rb_world *world, double path, do
     fill_readout(muscle, path, fibre_length, speed * cosine, fmax(total - passive, 0.0), passive, total);
 }
 
-static rb_status check_prepare(const mu_muscle *muscle, double h, const char *function)
+static rb_status check_prepare(const mu_muscle *muscle, const rb_world *world, double h, const char *function)
 {
-    if (muscle == NULL || !(h > 0.0 && isfinite(h))) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: expected a muscle and a substep h > 0, got %g s", function,
-                               h);
+    if (mu_refuse_null(function, "muscle", muscle) || mu_refuse_null(function, "world", world)) {
+        return RB_ERR_INVALID_ARGUMENT;
+    }
+    if (!(h > 0.0 && isfinite(h))) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: h is %g s, expected a finite substep > 0", function, h);
     }
     return RB_OK;
 }
 
 rb_status mu_muscle_prepare(mu_muscle *muscle, rb_world *world, double h)
 {
-    rb_status status = check_prepare(muscle, h, "mu_muscle_prepare");
+    rb_status status = check_prepare(muscle, world, h, "mu_muscle_prepare");
     double path = 0.0;
     double speed = 0.0;
     if (status == RB_OK) {
@@ -435,8 +463,8 @@ rb_status mu_muscle_prepare(mu_muscle *muscle, rb_world *world, double h)
 
 rb_status mu_muscle_measure(mu_muscle *muscle, const rb_world *world)
 {
-    if (muscle == NULL) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_muscle_measure: muscle is NULL");
+    if (mu_refuse_null("mu_muscle_measure", "muscle", muscle) || mu_refuse_null("mu_muscle_measure", "world", world)) {
+        return RB_ERR_INVALID_ARGUMENT;
     }
     double path = 0.0;
     double speed = 0.0;
@@ -449,7 +477,7 @@ rb_status mu_muscle_measure(mu_muscle *muscle, const rb_world *world)
 
 rb_status mu_muscle_advance(mu_muscle *muscle, rb_world *world, double h)
 {
-    rb_status status = check_prepare(muscle, h, "mu_muscle_advance");
+    rb_status status = check_prepare(muscle, world, h, "mu_muscle_advance");
     double path = 0.0;
     double speed = 0.0;
     if (status == RB_OK) {
@@ -464,8 +492,9 @@ rb_status mu_muscle_advance(mu_muscle *muscle, rb_world *world, double h)
 
 rb_status mu_muscle_solve_equilibrium(mu_muscle *muscle, const rb_world *world)
 {
-    if (muscle == NULL) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_muscle_solve_equilibrium: muscle is NULL");
+    const char *f = "mu_muscle_solve_equilibrium";
+    if (mu_refuse_null(f, "muscle", muscle) || mu_refuse_null(f, "world", world)) {
+        return RB_ERR_INVALID_ARGUMENT;
     }
     double path = 0.0;
     double speed = 0.0;
@@ -490,4 +519,7 @@ rb_status mu_muscle_solve_equilibrium(mu_muscle *muscle, const rb_world *world)
     return RB_OK;
 }
 
-mu_muscle_readout mu_muscle_read(const mu_muscle *muscle) { return muscle->readout; }
+mu_muscle_readout mu_muscle_read(const mu_muscle *muscle)
+{
+    return mu_refuse_null("mu_muscle_read", "muscle", muscle) ? mu_nan_readout() : muscle->readout;
+}

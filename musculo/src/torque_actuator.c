@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "arguments.h"
 #include "mu/torque_actuator.h"
 
 struct mu_torque_actuator {
@@ -75,17 +76,19 @@ rb_status mu_torque_actuator_set_exertion(mu_torque_actuator *actuator, double e
 
 double mu_torque_actuator_exertion(const mu_torque_actuator *actuator)
 {
-    return actuator != NULL ? actuator->exertion : NAN;
+    return mu_refuse_null("mu_torque_actuator_exertion", "actuator", actuator) ? NAN : actuator->exertion;
 }
 
 double mu_torque_actuator_torque(const mu_torque_actuator *actuator)
 {
-    return actuator != NULL ? actuator->exertion * actuator->peak_torque : NAN;
+    return mu_refuse_null("mu_torque_actuator_torque", "actuator", actuator)
+               ? NAN
+               : actuator->exertion * actuator->peak_torque;
 }
 
 double mu_torque_actuator_peak_torque(const mu_torque_actuator *actuator)
 {
-    return actuator != NULL ? actuator->peak_torque : NAN;
+    return mu_refuse_null("mu_torque_actuator_peak_torque", "actuator", actuator) ? NAN : actuator->peak_torque;
 }
 
 rb_status mu_torque_actuator_apply(const mu_torque_actuator *actuator, rb_world *world)

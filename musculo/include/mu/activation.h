@@ -35,8 +35,9 @@ typedef struct mu_activation_params {
 /** Excitation 0 and the default time constants. */
 MU_API mu_activation_params mu_default_activation_params(void);
 
-/** τ(a, u) in s for activation a in [0, 1] (clamped to it) under the
- * params' excitation. NaN (and an error) for NULL or invalid params. */
+/** τ(a, u) in s for activation a in [0, 1] (a finite value is clamped to
+ * it) under the params' excitation. NaN (and an error) for a non-finite
+ * activation, NULL or invalid params. */
 MU_API double mu_activation_time_constant(double activation, const mu_activation_params *params);
 
 /** The derivative function, in the shape of GSL's gsl_odeiv2_system
@@ -44,7 +45,8 @@ MU_API double mu_activation_time_constant(double activation, const mu_activation
  * dydt[0] = (u - a)/τ(a, u); params is a const mu_activation_params *.
  * t is unused (the system is autonomous while u is held). Returns 0
  * (GSL_SUCCESS), or a non-zero status (RB_ERR_INVALID_ARGUMENT, which GSL
- * reports as a failed step) for NULL pointers or invalid params. */
+ * reports as a failed step) for NULL pointers, a non-finite y[0] or invalid
+ * params. */
 MU_API int mu_activation_derivative(double t, const double y[], double dydt[], void *params);
 
 /** One step of h s from activation a (in [0, 1]) under the params'

@@ -65,7 +65,7 @@ MU_API void mu_curves_destroy(mu_curves *curves);
 
 /** The curves at a normalized length or velocity. Read-only: one set may
  * serve many muscles and threads. A NaN input, or NULL curves, gives NaN
- * (visible, rather than a plausible force). */
+ * (visible, rather than a plausible force) and records the error. */
 MU_API double mu_curve_active_length(const mu_curves *curves, double normalized_length);
 MU_API double mu_curve_passive_length(const mu_curves *curves, double normalized_length);
 MU_API double mu_curve_velocity(const mu_curves *curves, double normalized_velocity);

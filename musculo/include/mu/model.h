@@ -16,6 +16,13 @@
  * every muscle reads what the previous substep did and sets its tension
  * law from its state (the engine's substep callback). Collision runs
  * once per frame.
+ *
+ * Arguments are checked as the engine's are (rb/base.h): a NULL model or
+ * name, an index out of its list, or a non-finite number is refused with
+ * RB_ERR_INVALID_ARGUMENT and a message (rb_last_error()) naming the
+ * function, the argument and what was expected. A function returning a
+ * status returns that; a getter returns its error value, given with each
+ * below, and records the same error.
  */
 #ifndef MU_MODEL_H
 #define MU_MODEL_H
@@ -50,7 +57,9 @@ MU_API rb_status mu_model_create(const mu_model_desc *desc, const mu_model_optio
 /** Frees the model and its world. Accepts NULL. */
 MU_API void mu_model_destroy(mu_model *model);
 
+/** The model's world; NULL for a NULL model. */
 MU_API rb_world *mu_model_world(mu_model *model);
+/** The description it was built from; NULL for a NULL model. */
 MU_API const mu_model_desc *mu_model_description(const mu_model *model);
 
 /** Advances one frame: the model's substeps, one after the other. */
@@ -61,9 +70,9 @@ MU_API rb_status mu_model_step(mu_model *model);
  * before each substep instead of once per frame, which a model whose
  * parts never touch (the built-in ones: bones are sensors) does not feel. */
 MU_API rb_status mu_model_substep(mu_model *model);
-MU_API double mu_model_time(const mu_model *model);             /**< s since creation */
-MU_API double mu_model_frame_duration(const mu_model *model);   /**< s */
-MU_API double mu_model_substep_duration(const mu_model *model); /**< s */
+MU_API double mu_model_time(const mu_model *model);             /**< s since creation; NaN for a NULL model */
+MU_API double mu_model_frame_duration(const mu_model *model);   /**< s; NaN for a NULL model */
+MU_API double mu_model_substep_duration(const mu_model *model); /**< s; NaN for a NULL model */
 
 /** Controls, by muscle or group name (each muscle is also its own group):
  * every muscle of the group that exists in the built variant. */
@@ -77,13 +86,16 @@ MU_API rb_status mu_model_set_tension_at(mu_model *model, int index, double newt
 MU_API double mu_model_group_activation(const mu_model *model, const char *name);
 MU_API rb_status mu_model_set_gravity(mu_model *model, rb_vec2 gravity);
 
-/** The built muscles, in the description's order. */
+/** The built muscles, in the description's order: their count (0 for a
+ * NULL model), and by index their name and muscle (NULL for a bad index)
+ * and readout (every field NaN for a bad index). */
 MU_API int mu_model_muscle_count(const mu_model *model);
 MU_API const char *mu_model_muscle_name(const mu_model *model, int index);
 MU_API mu_muscle_readout mu_model_muscle_readout(const mu_model *model, int index);
 MU_API const mu_muscle *mu_model_built_muscle(const mu_model *model, int index);
 /** The warnings of the build (e.g. a muscle whose path is shorter than its
- * rest length starts below the asked normalized length): one per line. */
+ * rest length starts below the asked normalized length): one per line;
+ * NULL for a NULL model. */
 MU_API const char *mu_model_warnings(const mu_model *model);
 
 /** Past these, after any step, a run is reported as failed by
@@ -110,14 +122,19 @@ MU_API const char *mu_model_warnings(const mu_model *model);
 MU_API const char *mu_model_failure(const mu_model *model);
 
 /** The built hinges, in the description's order, with their joint angle
- * (degrees, angle(bone B) - angle(bone A), as the file's limits). */
+ * (degrees, angle(bone B) - angle(bone A), as the file's limits): 0
+ * hinges for a NULL model, a NULL name and a NaN angle for a bad index
+ * (the angle is NaN, without an error, for a hinge the variant does not
+ * build). */
 MU_API int mu_model_hinge_count(const mu_model *model);
 MU_API const char *mu_model_hinge_name(const mu_model *model, int index);
 MU_API double mu_model_hinge_angle(const mu_model *model, int index);
 
 /** The built bones and nails, in the description's order (nails first),
  * with their pose: the centre (m) and angle (degrees) of the part itself,
- * also when merged into a compound body. */
+ * also when merged into a compound body: 0 parts for a NULL model, a
+ * NULL name and NaN poses for a bad index (NaN poses, without an error,
+ * for a part the variant does not build). */
 MU_API int mu_model_part_count(const mu_model *model);
 MU_API const char *mu_model_part_name(const mu_model *model, int index);
 MU_API rb_vec2 mu_model_part_centre(const mu_model *model, int index);
@@ -126,8 +143,10 @@ MU_API double mu_model_part_angle(const mu_model *model, int index);
 /** The built torque muscles (motor-pool muscles after McIntyre,
  * "Simulated Muscles"), in the description's order: each
  * a motor pool whose exertion drives a torque actuator, applied before
- * every step. Recruiting sets the number of neurons (clamped to the
- * pool), by name or by index (0 .. mu_model_torque_muscle_count - 1). */
+ * every step. Recruiting sets the number of neurons, 0 .. the pool's
+ * size (a count outside it is refused, and recruits nothing), by name or
+ * by index (0 .. mu_model_torque_muscle_count - 1; 0 of them for a NULL
+ * model). */
 MU_API int mu_model_torque_muscle_count(const mu_model *model);
 MU_API const char *mu_model_torque_muscle_name(const mu_model *model, int index); /**< NULL for a bad index */
 MU_API rb_status mu_model_recruit(mu_model *model, const char *name, int neurons);
@@ -136,7 +155,7 @@ MU_API rb_status mu_model_recruit_at(mu_model *model, int index, int neurons);
 MU_API const mu_motor_pool *mu_model_motor_pool(const mu_model *model, int index);
 MU_API const mu_torque_actuator *mu_model_torque_actuator(const mu_model *model, int index);
 
-/** Counts of the engine objects made: bodies, joints. */
+/** Counts of the engine objects made: bodies, joints; 0 for a NULL model. */
 MU_API int mu_model_body_count(const mu_model *model);
 MU_API int mu_model_joint_count(const mu_model *model);
 

@@ -209,7 +209,8 @@ typedef struct mu_model_desc {
 
 /** Reads and validates the model file `path`. On success *out owns a new
  * description (free it with mu_model_desc_destroy); on failure *out is
- * NULL and rb_last_error() says what is wrong and where. */
+ * NULL and rb_last_error() says what is wrong and where. NULL arguments
+ * are refused with RB_ERR_INVALID_ARGUMENT. */
 MU_API rb_status mu_model_desc_load(const char *path, mu_model_desc **out);
 
 /** Reads the built-in model `name` ("sample", "arm", "leg", "worm"), which is
@@ -228,16 +229,19 @@ MU_API const char *mu_builtin_model_name(int index);
 MU_API void mu_model_desc_destroy(mu_model_desc *desc);
 
 /** Finds the object named `name` (any kind but variants): true and *out
- * filled, or false. */
+ * filled, or false. False, with the error recorded, for a NULL argument. */
 MU_API bool mu_model_desc_find(const mu_model_desc *desc, const char *name, mu_model_ref *out);
 
-/** Index of the variant named `name`, or -1. */
+/** Index of the variant named `name`, or -1 (and, for a NULL argument,
+ * the error recorded). */
 MU_API int mu_model_desc_find_variant(const mu_model_desc *desc, const char *name);
 
-/** The name of an object. */
+/** The name of an object; NULL, with the error recorded, for a NULL
+ * description or a reference to no object of it. */
 MU_API const char *mu_model_desc_name_of(const mu_model_desc *desc, mu_model_ref ref);
 
-/** Whether muscle (or bone) `index` exists in variant `variant`. */
+/** Whether muscle (or bone) `index` exists in variant `variant`; false,
+ * with the error recorded, for a NULL variant. */
 MU_API bool mu_model_variant_has_muscle(const mu_model_variant *variant, int index);
 MU_API bool mu_model_variant_has_bone(const mu_model_variant *variant, int index);
 

@@ -62,23 +62,27 @@ MU_API rb_status mu_motor_pool_load_csv(const char *path, mu_motor_pool **out);
 /** Accepts NULL. */
 MU_API void mu_motor_pool_destroy(mu_motor_pool *pool);
 
+/** The pool's size; 0, with the error recorded, for NULL. */
 MU_API int mu_motor_pool_neuron_count(const mu_motor_pool *pool);
 /** The strength of neuron `index`; NaN (and an error) for a bad index. */
 MU_API double mu_motor_pool_strength(const mu_motor_pool *pool, int index);
-/** The sum of every strength, > 0. NaN for NULL. */
+/** The sum of every strength, > 0. NaN (and an error) for NULL. */
 MU_API double mu_motor_pool_total_strength(const mu_motor_pool *pool);
 
-/** Recruits the first n neurons; n is clamped to 0 .. count, as the
- * McIntyre's code clamps it. */
+/** Recruits the first n neurons, n in 0 .. count. Unlike McIntyre's code,
+ * which clamps it, an n outside the pool is refused
+ * (RB_ERR_INVALID_ARGUMENT) and recruits nothing: a count that cannot be
+ * recruited is a mistake to report, not a request for the whole pool. */
 MU_API rb_status mu_motor_pool_recruit(mu_motor_pool *pool, int n);
 /** Recruits `delta` more neurons (fewer when negative), clamped to
  * 0 .. count: ±1 for one neuron, ±20 for the worm's keys. */
 MU_API rb_status mu_motor_pool_recruit_more(mu_motor_pool *pool, int delta);
-/** How many neurons are recruited, 0 .. count; -1 for NULL. */
+/** How many neurons are recruited, 0 .. count; -1 (and an error) for NULL. */
 MU_API int mu_motor_pool_recruited(const mu_motor_pool *pool);
-/** e(recruited), in [0, 1]; NaN for NULL. */
+/** e(recruited), in [0, 1]; NaN (and an error) for NULL. */
 MU_API double mu_motor_pool_exertion(const mu_motor_pool *pool);
-/** e(n) for n clamped to 0 .. count, without recruiting; NaN for NULL. */
+/** e(n) for n clamped to 0 .. count, without recruiting; NaN (and an
+ * error) for NULL. */
 MU_API double mu_motor_pool_exertion_at(const mu_motor_pool *pool, int n);
 
 /** Sets the muscle's activation (mu_muscle_set_activation) to the exertion. */

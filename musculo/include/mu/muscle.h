@@ -28,6 +28,11 @@
  * tendon's stiffness over h. Called from the engine's substep callback
  * (the models), both happen at the start of each substep
  * (mu_muscle_advance), and the last substep is measured after the step.
+ *
+ * A NULL muscle or world, or a non-finite number, is refused with
+ * RB_ERR_INVALID_ARGUMENT and a message (rb_last_error()) naming the
+ * function and the argument; a getter then returns NaN (a readout of NaN
+ * fields, the null cable id) and records the same error.
  */
 #ifndef MU_MUSCLE_H
 #define MU_MUSCLE_H

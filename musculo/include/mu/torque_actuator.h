@@ -44,10 +44,13 @@ MU_API void mu_torque_actuator_destroy(mu_torque_actuator *actuator);
 
 /** The share of the peak torque, in [0, 1]. */
 MU_API rb_status mu_torque_actuator_set_exertion(mu_torque_actuator *actuator, double exertion);
-MU_API double mu_torque_actuator_exertion(const mu_torque_actuator *actuator); /**< NaN for NULL */
-/** N·m: exertion · peak_torque, on the body (its reaction on the other). NaN for NULL. */
+/** The share set; NaN (and an error) for NULL. */
+MU_API double mu_torque_actuator_exertion(const mu_torque_actuator *actuator);
+/** N·m: exertion · peak_torque, on the body (its reaction on the other).
+ * NaN (and an error) for NULL. */
 MU_API double mu_torque_actuator_torque(const mu_torque_actuator *actuator);
-MU_API double mu_torque_actuator_peak_torque(const mu_torque_actuator *actuator); /**< N·m; NaN for NULL */
+/** N·m; NaN (and an error) for NULL. */
+MU_API double mu_torque_actuator_peak_torque(const mu_torque_actuator *actuator);
 
 /** Adds the torque to the body and its opposite to the reaction body for
  * the next step. A static or kinematic body takes none (the engine's rule). */
