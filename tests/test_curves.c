@@ -94,9 +94,11 @@ Test(curves, tables_are_exact_at_their_knots)
         for (size_t c = 0; c < 3; c++) {
             const knots k = read_seed_knots(curve_kinds[c].name);
             for (size_t j = 0; j < k.count; j++) {
+                /* The f_V knot at -1.0025 lies beyond Vmax, where f_V is 0 (next tests). */
+                const double expected = c == 2 && k.x[j] <= -1.0 ? 0.0 : k.y[j];
                 const double value = curve_kinds[c].evaluate(curves, k.x[j]);
-                cr_expect_eq(value, k.y[j], "%s (interpolation %zu) at knot x = %g: got %.17g, expected %.17g",
-                             curve_kinds[c].name, i, k.x[j], value, k.y[j]);
+                cr_expect_eq(value, expected, "%s (interpolation %zu) at knot x = %g: got %.17g, expected %.17g",
+                             curve_kinds[c].name, i, k.x[j], value, expected);
             }
         }
         mu_curves_destroy(curves);
@@ -121,7 +123,9 @@ Test(curves, linear_tables_are_straight_between_knots)
     mu_curves_destroy(curves);
 }
 
-Test(curves, tables_are_clamped_to_their_end_values_outside)
+/* Outside its table, f_P keeps its end values and f_V its eccentric
+ * plateau; f_L is 0, and f_V is 0 from ṽ = -1 down (the next test). */
+Test(curves, tables_keep_their_end_values_outside_but_active_length_is_zero)
 {
     for (size_t i = 0; i < 2; i++) {
         mu_curves *curves = seed_tables(interpolations[i]);
@@ -131,11 +135,12 @@ Test(curves, tables_are_clamped_to_their_end_values_outside)
             const double last = k.x[k.count - 1];
             const double below[] = {first - 1e-9, first - 0.1, -10.0};
             const double above[] = {last + 1e-9, last + 0.1, 10.0};
+            const bool active = c == 0, velocity = c == 2;
             for (size_t j = 0; j < 3; j++) {
-                cr_expect_eq(curve_kinds[c].evaluate(curves, below[j]), k.y[0], "%s below its table at %g",
-                             curve_kinds[c].name, below[j]);
-                cr_expect_eq(curve_kinds[c].evaluate(curves, above[j]), k.y[k.count - 1], "%s above its table at %g",
-                             curve_kinds[c].name, above[j]);
+                cr_expect_eq(curve_kinds[c].evaluate(curves, below[j]), active || velocity ? 0.0 : k.y[0],
+                             "%s below its table at %g", curve_kinds[c].name, below[j]);
+                cr_expect_eq(curve_kinds[c].evaluate(curves, above[j]), active ? 0.0 : k.y[k.count - 1],
+                             "%s above its table at %g", curve_kinds[c].name, above[j]);
             }
         }
         const knots v = read_seed_knots("force_velocity");
@@ -144,6 +149,50 @@ Test(curves, tables_are_clamped_to_their_end_values_outside)
         cr_expect_eq(mu_curve_velocity_slope(curves, -5.0), 0.0, "f_V slope far below the table");
         mu_curves_destroy(curves);
     }
+}
+
+/* A muscle shortening at Vmax or faster exerts no active force, in every
+ * set: f_V and its slope are 0 for ṽ <= -1 (the tables' first knot,
+ * (-1.0025, 0.0055), is digitisation, not a force beyond Vmax). */
+Test(curves, no_set_has_active_force_at_or_beyond_vmax)
+{
+    const mu_analytic_curves p = mu_default_analytic_curves();
+    mu_curves *sets[3] = {seed_tables(MU_INTERPOLATION_LINEAR), seed_tables(MU_INTERPOLATION_STEFFEN), analytic(&p)};
+    const double beyond[] = {-1.0, -1.0 - 1e-12, -1.001, -1.0025, -1.01, -2.0, -1e6, -1e300};
+    for (size_t s = 0; s < 3; s++) {
+        for (size_t j = 0; j < sizeof beyond / sizeof beyond[0]; j++) {
+            cr_expect_eq(mu_curve_velocity(sets[s], beyond[j]), 0.0, "set %zu: f_V(%g)", s, beyond[j]);
+            cr_expect_eq(mu_curve_velocity_slope(sets[s], beyond[j]), 0.0, "set %zu: f_V'(%g)", s, beyond[j]);
+        }
+        cr_expect_gt(mu_curve_velocity(sets[s], -0.99), 0.0, "set %zu: f_V just short of Vmax", s);
+        mu_curves_destroy(sets[s]);
+    }
+}
+
+/* The analytic f_P is the worksheet's exponential up to l̃ = 2, then the
+ * straight line that continues it with its slope: a finite force for any
+ * finite stretch (exp(10·(l̃ - 1)) overflows from l̃ = 72), C¹ at 2. */
+Test(curves, analytic_passive_force_is_finite_for_any_stretch)
+{
+    const mu_analytic_curves p = mu_default_analytic_curves();
+    mu_curves *curves = analytic(&p);
+    const double at_two = p.passive_scale * expm1(p.passive_rate);
+    const double slope = p.passive_scale * p.passive_rate * exp(p.passive_rate);
+    expect_near(mu_curve_passive_length(curves, 1.9), p.passive_scale * expm1(0.9 * p.passive_rate), 1e-12,
+                "the exponential below 2");
+    expect_near(mu_curve_passive_length(curves, 2.0), at_two, 1e-9, "f_P(2)");
+    const double far[] = {3.0, 72.0, 1e3, 1e6, 1e300};
+    for (size_t j = 0; j < sizeof far / sizeof far[0]; j++) {
+        const double value = mu_curve_passive_length(curves, far[j]);
+        cr_expect(isfinite(value), "f_P(%g) = %g", far[j], value);
+        expect_near(value, at_two + slope * (far[j] - 2.0), 1e-12 * (at_two + slope * far[j]), "the line past 2");
+    }
+    const double h = 1e-6;
+    expect_near((mu_curve_passive_length(curves, 2.0) - mu_curve_passive_length(curves, 2.0 - h)) / h, slope,
+                1e-4 * slope, "slope just below 2");
+    expect_near((mu_curve_passive_length(curves, 2.0 + h) - mu_curve_passive_length(curves, 2.0)) / h, slope,
+                1e-4 * slope, "slope just above 2");
+    mu_curves_destroy(curves);
 }
 
 Test(curves, steffen_is_monotone_between_monotone_knots)
@@ -157,7 +206,8 @@ Test(curves, steffen_is_monotone_between_monotone_knots)
         double overshoot = 0.0;
         double reversal = 0.0;
         double worst_x = 0.0;
-        for (size_t j = 0; j + 1 < k.count; j++) {
+        /* f_V's first interval straddles ṽ = -1, below which f_V is 0 by decision, not by interpolation. */
+        for (size_t j = c == 2 ? 1 : 0; j + 1 < k.count; j++) {
             const double low = fmin(k.y[j], k.y[j + 1]);
             const double high = fmax(k.y[j], k.y[j + 1]);
             const double direction = k.y[j + 1] >= k.y[j] ? 1.0 : -1.0;

@@ -7,8 +7,8 @@
  *   from Ross et al. 2018 (PLOS Comput Biol), interpolated by GSL,
  *   straight lines as Castanyer's or
  *   Steffen's monotone cubic (Steffen 1990, Astron. Astrophys. 239:443),
- *   which is smooth yet never overshoots its knots; clamped to the end
- *   values outside the table;
+ *   which is smooth yet never overshoots its knots; outside the table f_P
+ *   and f_V keep their end values and f_L is 0;
  * - analytic: the Gaussian force-length of the MATLAB worksheet "1D
  *   Muscle Model based on the Hill 2-Element Model" (anonymous), exponential passive curve
  *   and Hill's (1938) hyperbola for shortening, joined at ṽ = 0 to an
@@ -225,15 +225,23 @@ static void end_lookup(mu_curve_kind kind, mu_curve_hint *hint, const gsl_interp
     }
 }
 
-/* The interpolant at x, its end values outside the table, and never below
- * 0: a muscle only pulls, and a hand-edited table may dip below (the
- * original report's annex prints -0.001 for the first passive knots). */
+/* The interpolant at x, and never below 0: a muscle only pulls, and a
+ * hand-edited table may dip below (the original report's annex prints
+ * -0.001 for the first passive knots). Outside the table f_P and f_V keep
+ * their end values, but f_L is 0: the seed table ends at 0.3422 and
+ * 1.7033 with 0.0031 and 0.0020, the digitisation's floor rather than a
+ * force, and fibres stretched or shortened beyond where the measured curve
+ * ends no longer develop active force (Gordon, Huxley and Julian, "The
+ * variation in isometric tension with sarcomere length in vertebrate
+ * muscle fibres", 1966). */
 static double tabulated_value(const mu_curves *curves, mu_curve_kind kind, mu_curve_hint *hint, double x)
 {
     const mu_curve_table *table = &curves->tables[kind];
     const size_t last = table->count - 1;
     double y = 0.0;
-    if (x <= table->x[0]) {
+    if (kind == MU_CURVE_ACTIVE_LENGTH && (x < table->x[0] || x > table->x[last])) {
+        y = 0.0;
+    } else if (x <= table->x[0]) {
         y = table->y[0];
     } else if (x >= table->x[last]) {
         y = table->y[last];
@@ -268,7 +276,8 @@ static double tabulated_slope(const mu_curves *curves, mu_curve_kind kind, mu_cu
  *
  * Shortening (ṽ <= 0), the MATLAB worksheet's hyperbola (Hill 1938) in the shortening
  * speed s = -ṽ:
- *   f_V = (1 - s)/(1 + s/k) = k(1 - s)/(k + s)   for 0 <= s <= 1, 0 beyond.
+ *   f_V = (1 - s)/(1 + s/k) = k(1 - s)/(k + s)   for 0 <= s < 1 (0 from s = 1
+ *   on: velocity()).
  * Its slope: d f_V/ds = k·(-(k + s) - (1 - s))/(k + s)² = -k(1 + k)/(k + s)²,
  * so d f_V/dṽ = k(1 + k)/(k - ṽ)², which is s0 = (1 + k)/k at ṽ = 0 (21 for
  * k = 0.05).
@@ -286,9 +295,6 @@ static double tabulated_slope(const mu_curves *curves, mu_curve_kind kind, mu_cu
 static double analytic_velocity(const mu_curves *curves, double v)
 {
     const double k = curves->analytic.curvature;
-    if (v <= -1.0) {
-        return 0.0;
-    }
     if (v <= 0.0) {
         const double s = -v;
         return (1.0 - s) / (1.0 + s / k);
@@ -301,9 +307,6 @@ static double analytic_velocity(const mu_curves *curves, double v)
 static double analytic_velocity_slope(const mu_curves *curves, double v)
 {
     const double k = curves->analytic.curvature;
-    if (v <= -1.0) {
-        return 0.0;
-    }
     if (v <= 0.0) {
         return k * (1.0 + k) / ((k - v) * (k - v));
     }
@@ -343,15 +346,34 @@ static double passive_length(const mu_curves *curves, mu_curve_hint *hint, doubl
         return tabulated_value(curves, MU_CURVE_PASSIVE_LENGTH, hint, normalized_length);
     }
     /* The MATLAB worksheet's: c·(exp(d·(l̃ - 1)) - 1), counted only where positive, that
-     * is for l̃ > 1; expm1 keeps its digits just above l̃ = 1. */
+     * is for l̃ > 1; expm1 keeps its digits just above l̃ = 1. Past l̃ = 2
+     * (220 Fmax for the defaults, twice any fibre's working length) it
+     * goes on as the straight line with the exponential's slope there, so
+     * that a model that has come apart pulls with a large but finite force
+     * rather than exp's overflow to infinity from l̃ = 72. A steep d moves
+     * the join closer, to where d·(l̃ - 1) = 100. */
+    const double c = curves->analytic.passive_scale, d = curves->analytic.passive_rate;
     if (normalized_length <= 1.0) {
         return 0.0;
     }
-    return curves->analytic.passive_scale * expm1(curves->analytic.passive_rate * (normalized_length - 1.0));
+    const double join = 1.0 + fmin(1.0, 100.0 / d);
+    if (normalized_length <= join) {
+        return c * expm1(d * (normalized_length - 1.0));
+    }
+    return c * expm1(d * (join - 1.0)) + c * d * exp(d * (join - 1.0)) * (normalized_length - join);
 }
+
+/* A muscle shortening at Vmax or faster exerts no active force, in every
+ * set: the hyperbola reaches 0 at ṽ = -1 and would turn negative, and the
+ * seed table's first knot, (-1.0025, 0.0055), is the digitisation's floor.
+ * So the tabulated f_V steps down by 0.0055 at ṽ = -1. */
+#define VMAX_SHORTENING (-1.0)
 
 static double velocity(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity)
 {
+    if (normalized_velocity <= VMAX_SHORTENING) {
+        return 0.0;
+    }
     if (curves->tabulated) {
         return tabulated_value(curves, MU_CURVE_VELOCITY, hint, normalized_velocity);
     }
@@ -360,6 +382,9 @@ static double velocity(const mu_curves *curves, mu_curve_hint *hint, double norm
 
 static double velocity_slope(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity)
 {
+    if (normalized_velocity <= VMAX_SHORTENING) {
+        return 0.0;
+    }
     if (curves->tabulated) {
         return tabulated_slope(curves, MU_CURVE_VELOCITY, hint, normalized_velocity);
     }
