@@ -330,6 +330,33 @@ Test(chart_draw, degenerate_data_is_drawn)
     cr_expect(draw_to_image(&fixed, NULL, 0));
 }
 
+/* Names come from files: a CSV header in Latin-1 or cut inside a character
+ * is not UTF-8, which Cairo refuses, putting the whole cairo_t in error.
+ * Such text is drawn with U+FFFD for the bytes that start no character
+ * (found by fuzz/fuzz_csv_chart). */
+Test(chart_draw, text_that_is_not_utf8_is_drawn)
+{
+    double x[2] = {0.0, 1.0}, y[2] = {1.0, 2.0};
+    const char *texts[] = {
+        "temperature \xB0"
+        "C",                                /* Latin-1 degree sign */
+        "\xC3",                             /* a lead byte at the end */
+        "over\xC0\xAFlong",                 /* an overlong '/' */
+        "surrogate \xED\xA0\x80",           /* U+D800 */
+        "beyond \xF4\x90\x80\x80",          /* U+110000 */
+        "noncharacter \xEF\xBF\xBE",        /* U+FFFE, which Cairo refuses too */
+        "\xFF\xFE\x80 and \xE2\x82\xAC ok", /* stray bytes, then a valid euro sign */
+        "\xFF\xBB\xBF \xF8\x80\x80",        /* no lead byte past 0xF7, whatever follows */
+    };
+    for (size_t k = 0; k < sizeof texts / sizeof texts[0]; ++k) {
+        chart_series series = {.label = texts[k], .x = x, .y = y, .count = 2};
+        chart plot = {
+            .title = texts[k], .x_label = texts[k], .y_label = texts[k], .series = &series, .series_count = 1};
+        char error[CHART_ERROR_SIZE] = "";
+        cr_expect(draw_to_image(&plot, error, sizeof error), "text %zu: %s", k, error);
+    }
+}
+
 Test(chart_draw, bad_arguments_are_refused_with_a_message)
 {
     char error[CHART_ERROR_SIZE] = "";

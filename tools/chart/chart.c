@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "chart/chart.h"
@@ -135,11 +136,93 @@ static bool tick_inside(const axis *a, int i)
     return v >= a->min - slack && v <= a->max + slack;
 }
 
+/* Bytes of the character starting at `s` when it is one Cairo draws, else 0.
+ * Cairo takes UTF-8 of 1 to 4 bytes, not overlong, of a code point below
+ * U+110000 that is neither a surrogate nor a noncharacter (U+FDD0 ..
+ * U+FDEF, U+xxFFFE, U+xxFFFF): it refuses anything else. */
+static size_t drawable_char_length(const unsigned char *s)
+{
+    if (s[0] < 0x80) {
+        return 1;
+    }
+    size_t length;
+    if (s[0] >= 0xC0 && s[0] < 0xE0) {
+        length = 2;
+    } else if (s[0] >= 0xE0 && s[0] < 0xF0) {
+        length = 3;
+    } else if (s[0] >= 0xF0 && s[0] < 0xF8) {
+        length = 4;
+    } else {
+        return 0; /* a continuation byte, or the lead of a 5- or 6-byte form */
+    }
+    unsigned long code = s[0] & (0x7Fu >> length);
+    for (size_t k = 1; k < length; ++k) {
+        if ((s[k] & 0xC0) != 0x80) {
+            return 0; /* the terminating NUL included */
+        }
+        code = code << 6 | (s[k] & 0x3Fu);
+    }
+    static const unsigned long least[] = {0, 0, 0x80, 0x800, 0x10000};
+    bool valid = code >= least[length] && code < 0x110000 && (code & 0xFFFFF800) != 0xD800 &&
+                 (code < 0xFDD0 || code > 0xFDEF) && (code & 0xFFFE) != 0xFFFE;
+    return valid ? length : 0;
+}
+
+/* Text as Cairo can draw it. Names come from files (a CSV header), and
+ * text Cairo refuses puts the whole cairo_t in error, losing the figure:
+ * each byte that starts no drawable character is drawn as U+FFFD instead.
+ * Returns `text` itself when it is all drawable, else a copy in *copy for
+ * the caller to free ("" when out of memory: the text is left out). */
+static const char *drawable_text(const char *text, char **copy)
+{
+    *copy = NULL;
+    const unsigned char *s = (const unsigned char *)text;
+    size_t length = 0, bad = 0;
+    while (s[length] != '\0') {
+        size_t n = drawable_char_length(s + length);
+        bad += n == 0;
+        length += n > 0 ? n : 1;
+    }
+    if (bad == 0) {
+        return text;
+    }
+    static const char replacement[] = "\xEF\xBF\xBD"; /* U+FFFD in UTF-8 */
+    *copy = malloc(length + 2 * bad + 1);
+    if (*copy == NULL) {
+        return "";
+    }
+    char *out = *copy;
+    for (size_t k = 0; k < length;) {
+        size_t n = drawable_char_length(s + k);
+        if (n == 0) {
+            memcpy(out, replacement, 3);
+            out += 3;
+            k += 1;
+        } else {
+            memcpy(out, s + k, n);
+            out += n;
+            k += n;
+        }
+    }
+    *out = '\0';
+    return *copy;
+}
+
 static double text_width(cairo_t *cr, const char *text)
 {
+    char *copy;
     cairo_text_extents_t extents;
-    cairo_text_extents(cr, text, &extents);
+    cairo_text_extents(cr, drawable_text(text, &copy), &extents);
+    free(copy);
     return extents.x_advance;
+}
+
+/* cairo_show_text for any text: see drawable_text. */
+static void show_text(cairo_t *cr, const char *text)
+{
+    char *copy;
+    cairo_show_text(cr, drawable_text(text, &copy));
+    free(copy);
 }
 
 /* A legend label cut to LEGEND_MAX_CHARS characters (bytes of UTF-8 are
@@ -197,7 +280,7 @@ static void draw_grid_and_ticks(cairo_t *cr, const plot_area *p, double font_siz
         cairo_stroke(cr);
         chart_tick_label(&p->x.ticks, i, label, sizeof label);
         cairo_move_to(cr, px - 0.5 * text_width(cr, label), p->top + p->height + 1.5 * font_size);
-        cairo_show_text(cr, label);
+        show_text(cr, label);
     }
     for (int i = 0; i < p->y.ticks.count; ++i) {
         if (!tick_inside(&p->y, i)) {
@@ -214,7 +297,7 @@ static void draw_grid_and_ticks(cairo_t *cr, const plot_area *p, double font_siz
         cairo_stroke(cr);
         chart_tick_label(&p->y.ticks, i, label, sizeof label);
         cairo_move_to(cr, p->left - 0.6 * font_size - text_width(cr, label), py + 0.35 * font_size);
-        cairo_show_text(cr, label);
+        show_text(cr, label);
     }
     cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
     cairo_rectangle(cr, p->left, p->top, p->width, p->height);
@@ -300,7 +383,7 @@ static void draw_legend(cairo_t *cr, const chart *chart, double left, double top
             cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
             snprintf(text, sizeof text, "(%d more)", entries - shown);
             cairo_move_to(cr, left, y + 0.35 * font_size);
-            cairo_show_text(cr, text);
+            show_text(cr, text);
             return;
         }
         set_series_style(cr, s, 2.0);
@@ -311,7 +394,7 @@ static void draw_legend(cairo_t *cr, const chart *chart, double left, double top
         cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
         legend_text(chart->series[s].label, text, sizeof text);
         cairo_move_to(cr, left + sample + 0.5 * font_size, y + 0.35 * font_size);
-        cairo_show_text(cr, text);
+        show_text(cr, text);
         y += row;
         ++shown;
     }
@@ -390,19 +473,19 @@ bool chart_draw(const chart *chart, cairo_t *cr, double x, double y, double widt
         cairo_set_font_size(cr, 1.15 * font_size);
         cairo_move_to(cr, fmax(x + pad, p.left + 0.5 * p.width - 0.5 * text_width(cr, chart->title)),
                       y + pad + 1.1 * font_size);
-        cairo_show_text(cr, chart->title);
+        show_text(cr, chart->title);
         cairo_set_font_size(cr, font_size);
     }
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
     if (has_x_label) {
         cairo_move_to(cr, p.left + 0.5 * p.width - 0.5 * text_width(cr, chart->x_label), y + height - pad);
-        cairo_show_text(cr, chart->x_label);
+        show_text(cr, chart->x_label);
     }
     if (has_y_label) {
         cairo_save(cr);
         cairo_move_to(cr, x + pad + font_size, p.top + 0.5 * p.height + 0.5 * text_width(cr, chart->y_label));
         cairo_rotate(cr, -0.5 * PI);
-        cairo_show_text(cr, chart->y_label);
+        show_text(cr, chart->y_label);
         cairo_restore(cr);
     }
 

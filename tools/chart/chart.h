@@ -12,7 +12,10 @@
  * Degenerate data is drawn, not refused: an empty series draws nothing
  * (the axes of an empty chart span 0 .. 1), a single point is a dot,
  * constant data gets a range around its value, and a point with a NaN or
- * an infinite coordinate is skipped, breaking the line there.
+ * an infinite coordinate is skipped, breaking the line there. Text that is
+ * not UTF-8 (a title, label or series name read from a file in another
+ * encoding) is drawn with U+FFFD in place of each byte that starts no
+ * character.
  *
  * Errors: every function checks its arguments and returns false with a
  * message naming the function and the argument in `error` (truncated to
