@@ -267,7 +267,7 @@ Test(viewer, the_panels_controls_drive_the_simulation, .timeout = 240)
     snprintf(path, sizeof path, "%s/err.txt", dir);
     const char *errors = read_file(path);
     cr_expect_eq(status, 1, "the last command, a variant for a scene, fails the script");
-    cr_expect(strstr(errors, "script.txt:28: the control is not available now") != NULL, "stderr:\n%s", errors);
+    cr_expect(strstr(errors, "script.txt:28: variant: the control is not available now") != NULL, "stderr:\n%s", errors);
     snprintf(path, sizeof path, "%s/out.txt", dir);
     const char *output = read_file(path);
     expect_status(output, 0, (const char *const[]){"model=leg ", "variant=0 ", "level=4 ", "muscles=4 ", NULL});
@@ -335,6 +335,50 @@ Test(viewer, script_commands_rebuild_control_and_report_bad_values, .timeout = 2
     remove(script);
     remove(path);
     snprintf(path, sizeof path, "%s/err.txt", dir);
+    remove(path);
+    remove(dir);
+}
+
+/* Bad scripts fail with status 1 and one line naming FILE:LINE: a folder
+ * given as the script, a control set out of its range or to a fraction
+ * where it takes whole numbers (GTK would clamp or round it silently), a
+ * model that does not load; the message is in the user's words, without
+ * the libraries' function names. */
+Test(viewer, bad_scripts_fail_at_their_line, .timeout = 240)
+{
+    char dir[64], script[128], arguments[512], path[128];
+    make_temp_dir(dir, sizeof dir);
+    snprintf(script, sizeof script, "%s/script.txt", dir);
+    const struct {
+        const char *text;     /* the script, or NULL for the folder itself */
+        const char *expected; /* in stderr */
+    } cases[] = {
+        {NULL, "Is a directory"},
+        {"model arm\nset substeps 0\n", "script.txt:2: "},
+        {"model arm\nset velocity-iterations 1000000\n", "script.txt:2: "},
+        {"model arm\nset activation 7\n", "script.txt:2: "},
+        {"model arm\nset level 99\n", "script.txt:2: "},
+        {"model arm\nset substeps 2.5\n", "script.txt:2: "},
+        {"print start\nmodel nosuch\n", "script.txt:2: "},
+        {"print start\nmodel /nonexistent/model.json\n", "script.txt:2: "},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        if (cases[k].text != NULL) {
+            write_file(script, cases[k].text);
+        }
+        snprintf(arguments, sizeof arguments, "--scene balls --script '%s'", cases[k].text != NULL ? script : dir);
+        int status = run_viewer(dir, arguments);
+        snprintf(path, sizeof path, "%s/err.txt", dir);
+        const char *errors = read_file(path);
+        cr_expect_eq(status, 1, "case %zu: status %d, stderr:\n%s", k, status, errors);
+        cr_expect(strstr(errors, cases[k].expected) != NULL, "case %zu: expected \"%s\" in stderr:\n%s", k,
+                  cases[k].expected, errors);
+        cr_expect(strstr(errors, "mu_") == NULL && strstr(errors, "rb_") == NULL,
+                  "case %zu: a library function is named:\n%s", k, errors);
+    }
+    remove(script);
+    remove(path);
+    snprintf(path, sizeof path, "%s/out.txt", dir);
     remove(path);
     remove(dir);
 }

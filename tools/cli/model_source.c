@@ -6,6 +6,7 @@
 
 #include "cli/model_source.h"
 #include "cli/options.h"
+#include "cli/user_error.h"
 
 static bool ends_with(const char *text, const char *suffix)
 {
@@ -46,7 +47,7 @@ model_source_result model_source_open(const char *argument, mu_model_desc **out,
         return MODEL_SOURCE_UNKNOWN;
     }
     if (status != RB_OK) {
-        snprintf(error, error_size, "%s", rb_last_error());
+        snprintf(error, error_size, "%s", user_error());
         return MODEL_SOURCE_INVALID;
     }
     return MODEL_SOURCE_LOADED;

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "cli/model_source.h"
+#include "cli/user_error.h"
 #include "commands.h"
 #include "mu/model.h"
 
@@ -132,7 +133,7 @@ static int build_every_variant(const char *path, const mu_model_desc *desc)
         mu_model *model;
         if (mu_model_create(desc, &options, &model) != RB_OK) {
             fprintf(stderr, "sinew: %s: variant \"%s\" does not build: %s\n", path, desc->variants[v].name,
-                    rb_last_error());
+                    user_error());
             code = EXIT_FAILURE;
             break;
         }
@@ -158,7 +159,7 @@ int cmd_check(int argc, char **argv)
     }
     mu_model_desc *desc;
     if (mu_model_desc_load(path, &desc) != RB_OK) {
-        fprintf(stderr, "sinew: %s\n", rb_last_error());
+        fprintf(stderr, "sinew: %s\n", user_error());
         return EXIT_FAILURE;
     }
     int code = build_every_variant(path, desc);

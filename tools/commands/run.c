@@ -19,6 +19,7 @@
 #include "cli/model_source.h"
 #include "cli/option_value.h"
 #include "cli/options.h"
+#include "cli/user_error.h"
 #include "commands.h"
 #include "control_file.h"
 #include "controls.h"
@@ -358,7 +359,7 @@ static int apply_recruits(const run_options *opts, mu_model *model)
             return EXIT_USAGE;
         }
         if (mu_model_recruit(model, name, neurons) != RB_OK) {
-            fprintf(stderr, "sinew: --recruit \"%s\": %s\n", text, rb_last_error());
+            fprintf(stderr, "sinew: --recruit \"%s\": %s\n", text, user_error());
             return EXIT_USAGE;
         }
     }
@@ -412,7 +413,7 @@ typedef struct run_state {
 
 static int engine_failure(const char *what)
 {
-    fprintf(stderr, "sinew: %s failed: %s (%s)\n", what, rb_last_error(), rb_status_name(rb_last_status()));
+    fprintf(stderr, "sinew: %s failed: %s (%s)\n", what, user_error(), rb_status_name(rb_last_status()));
     return EXIT_FAILURE;
 }
 
@@ -455,7 +456,7 @@ static int run_frames(run_state *run)
         if (status != RB_OK) {
             progress_finish(&bar);
             recorder_abandon(&run->csv);
-            return engine_failure("mu_model_step");
+            return engine_failure("stepping the model");
         }
         /* The first sign that the run has left physics: said at once on
          * stderr (and again in the summary), or, with --strict, the end. */

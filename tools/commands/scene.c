@@ -22,6 +22,7 @@
 #include <time.h>
 
 #include "cli/option_value.h"
+#include "cli/user_error.h"
 #include "commands.h"
 #include "io/atomic_file.h"
 #include "io/provenance.h"
@@ -363,7 +364,7 @@ static void simulation_destroy(simulation *sim)
 static int engine_failure(const char *what)
 {
     rb_status status = rb_last_status();
-    fprintf(stderr, "sinew scene: %s failed: %s (%s)\n", what, rb_last_error(), rb_status_name(status));
+    fprintf(stderr, "sinew scene: %s failed: %s (%s)\n", what, user_error(), rb_status_name(status));
     return status == RB_ERR_INVALID_ARGUMENT ? EXIT_USAGE : EXIT_FAILURE;
 }
 
@@ -532,7 +533,7 @@ static int run(const options *opts, simulation *sim, run_result *result)
         result->step_seconds += now_seconds() - step_start;
         if (status != RB_OK) {
             atomic_file_abandon(&trace);
-            return engine_failure("rb_world_step");
+            return engine_failure("stepping the scene");
         }
         result->max_penetration = fmax(result->max_penetration, rb_world_statistics(sim->scene.world).max_penetration);
         /* step·dt rather than a running sum, which would drift by rounding. */

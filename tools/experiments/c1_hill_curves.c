@@ -17,6 +17,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "cli/user_error.h"
 #include "experiment.h"
 #include "mu/curves.h"
 
@@ -67,7 +68,7 @@ static int create_curves(mu_curves *sets[SETS])
     if (mu_curves_create_seed_tables(MU_INTERPOLATION_LINEAR, &sets[SET_LINEAR]) != RB_OK ||
         mu_curves_create_seed_tables(MU_INTERPOLATION_STEFFEN, &sets[SET_STEFFEN]) != RB_OK ||
         mu_curves_create_analytic(&analytic, &sets[SET_ANALYTIC]) != RB_OK) {
-        fprintf(stderr, "sinew: %s\n", rb_last_error());
+        fprintf(stderr, "sinew: %s\n", user_error());
         return EXIT_FAILURE;
     }
     return 0;

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/user_error.h"
 #include "experiment.h"
 #include "substep_model.h"
 
@@ -79,7 +80,7 @@ static int run_pulses(const experiment_options *options, const pulse_plan *plan,
             on = on || (k >= starts[p] && k < starts[p] + width);
         }
         if (mu_model_set_activation(run.model, BICEPS_GROUP, on ? 1.0 : 0.0) != RB_OK) {
-            fprintf(stderr, "sinew: %s\n", rb_last_error());
+            fprintf(stderr, "sinew: %s\n", user_error());
             code = EXIT_FAILURE;
             break;
         }

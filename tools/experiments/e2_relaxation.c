@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "cli/user_error.h"
 #include "experiment.h"
 #include "substep_model.h"
 
@@ -47,7 +48,7 @@ static int run(csv_table *table)
     long total = code == 0 ? experiment_model_substep_at(&model, HOLD_TIME + RAMP_TIME + AFTER_TIME) : 0;
     for (long k = 0; k < total && code == 0; ++k) {
         if (mu_model_set_activation_at(model.model, muscle, activation_at((double)k * model.h)) != RB_OK) {
-            fprintf(stderr, "sinew: %s\n", rb_last_error());
+            fprintf(stderr, "sinew: %s\n", user_error());
             code = EXIT_FAILURE;
             break;
         }

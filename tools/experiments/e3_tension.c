@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/user_error.h"
 #include "experiment.h"
 #include "substep_model.h"
 
@@ -72,7 +73,7 @@ static int run(const tension_plan *plan, csv_table *table)
         rb_status status = time < SETTLE_TIME ? mu_model_set_activation_at(model.model, muscle, 0.0)
                                               : mu_model_set_tension_at(model.model, muscle, target_at(plan, time));
         if (status != RB_OK) {
-            fprintf(stderr, "sinew: %s\n", rb_last_error());
+            fprintf(stderr, "sinew: %s\n", user_error());
             code = EXIT_FAILURE;
             break;
         }

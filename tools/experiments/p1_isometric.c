@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/user_error.h"
 #include "mu/muscle.h"
 #include "p1_isometric.h"
 #include "substep_model.h"
@@ -11,7 +12,7 @@
 
 static int engine_failure(const char *what)
 {
-    fprintf(stderr, "sinew: P1: %s failed: %s\n", what, rb_last_error());
+    fprintf(stderr, "sinew: P1: %s failed: %s\n", what, user_error());
     return EXIT_FAILURE;
 }
 

@@ -12,6 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "cli/user_error.h"
 #include "experiment.h"
 #include "substep_model.h"
 
@@ -35,7 +36,7 @@ static int tabulate(experiment_model *worm, csv_table *table)
     int count = mu_motor_pool_neuron_count(pool);
     for (int n = 0; n <= count; ++n) {
         if (mu_model_recruit_at(worm->model, TORQUE_MUSCLE, n) != RB_OK) {
-            fprintf(stderr, "sinew: %s\n", rb_last_error());
+            fprintf(stderr, "sinew: %s\n", user_error());
             return EXIT_FAILURE;
         }
         double row[COLUMNS] = {

@@ -5,11 +5,12 @@
 #include <string.h>
 
 #include "cli/model_source.h"
+#include "cli/user_error.h"
 #include "substep_model.h"
 
 static int engine_failure(const char *what)
 {
-    fprintf(stderr, "sinew: %s failed: %s (%s)\n", what, rb_last_error(), rb_status_name(rb_last_status()));
+    fprintf(stderr, "sinew: %s failed: %s (%s)\n", what, user_error(), rb_status_name(rb_last_status()));
     return EXIT_FAILURE;
 }
 
@@ -69,7 +70,7 @@ long experiment_model_pulse_substeps(const experiment_model *run, double width)
 int experiment_model_substep(experiment_model *run)
 {
     if (mu_model_substep(run->model) != RB_OK) {
-        return engine_failure("mu_model_substep");
+        return engine_failure("stepping the model by a substep");
     }
     run->taken += 1;
     return 0;

@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli/user_error.h"
 #include "engine_panel.h"
 
 /* Upper ends of the spin buttons: far beyond what a run needs, well
@@ -34,7 +35,7 @@ static void apply_settings(engine_panel *panel)
     settings.substeps = gtk_spin_button_get_value_as_int(GTK_SPIN_BUTTON(panel->substeps));
     settings.warm_starting = gtk_check_button_get_active(GTK_CHECK_BUTTON(panel->warm_starting));
     if (rb_world_set_solver_settings(world, &settings) != RB_OK) {
-        viewer_show_error(panel->app, rb_last_error());
+        viewer_show_error(panel->app, user_error());
         engine_panel_sync(panel);
     }
 }

@@ -29,10 +29,11 @@ struct script {
     int count, capacity;
     /* While running: */
     script_run_state state;
-    int next;             /* the line to run next */
-    int screenshot_line;  /* the line whose screenshot waits for a paint */
-    int settle_ticks;     /* left after a `wait-for` file appeared */
-    gulong paint_handler; /* on the window's frame clock */
+    int next;               /* the line to run next */
+    int screenshot_line;    /* the line whose screenshot waits for a paint */
+    int load_failures_seen; /* the viewer's load_failures when the last command ran */
+    int settle_ticks;       /* left after a `wait-for` file appeared */
+    gulong paint_handler;   /* on the window's frame clock */
 };
 
 static bool add_line(script *commands, int number, char **words, int count, char *error, size_t error_size)
@@ -98,6 +99,12 @@ script *script_load(const char *path, char *error, size_t error_size)
         } else if (count > 0) {
             ok = add_line(commands, number, words, count, error, error_size);
         }
+    }
+    /* fgets returns NULL on an error as at the end: a directory, or a
+     * read that failed, must not pass for an empty script. */
+    if (ok && ferror(file)) {
+        snprintf(error, error_size, "%s: cannot read the script: %s", path, strerror(errno));
+        ok = false;
     }
     fclose(file);
     if (!ok) {
@@ -185,6 +192,12 @@ static gboolean on_script_tick(gpointer data)
         commands->paint_handler = g_signal_connect(gtk_widget_get_frame_clock(app->window), "after-paint",
                                                    G_CALLBACK(on_after_paint), commands);
     }
+    /* A load the last command started (a control's, which runs from the
+     * main loop) failed: the script fails at that command's line. */
+    if (commands->next > 0 && app->load_failures != commands->load_failures_seen) {
+        fail_and_quit(commands, &commands->lines[commands->next - 1], app->load_error);
+        return G_SOURCE_REMOVE;
+    }
     if (commands->state.frames_left > 0) {
         --commands->state.frames_left;
         if (!viewer_step(app)) {
@@ -200,6 +213,7 @@ static gboolean on_script_tick(gpointer data)
     }
     int index = commands->next++;
     const script_line *line = &commands->lines[index];
+    commands->load_failures_seen = app->load_failures;
     char error[SIMULATION_ERROR_SIZE] = "";
     if (!line->command->run(&commands->state, line->words + 1, error, sizeof error)) {
         fail_and_quit(commands, line, error);
@@ -218,6 +232,9 @@ static gboolean on_script_tick(gpointer data)
 void script_start(script *commands, viewer *app)
 {
     commands->state = (script_run_state){.app = app};
+    /* A load that failed before the script (the command line's) is not
+     * the script's. */
+    commands->load_failures_seen = app->load_failures;
     commands->next = 0;
     commands->settle_ticks = 0;
     g_timeout_add(1, on_script_tick, commands);

@@ -40,7 +40,11 @@
  *   quit                    close the viewer
  *
  * A failing command prints "FILE:LINE: what went wrong" on stderr and
- * ends the viewer with status 1.
+ * ends the viewer with status 1: a number out of its range (a control's
+ * too, or a fraction where it takes whole numbers) is an error, as on the
+ * command line, never clamped; a model or scene that a command or a
+ * control (model, reload, ...) loads and that fails fails at that line.
+ * A script that cannot be read (a folder) fails before the window opens.
  */
 #ifndef VIEWER_SCRIPT_H
 #define VIEWER_SCRIPT_H

@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "cli/option_value.h"
+#include "cli/user_error.h"
 #include "controls_panel.h"
 #include "engine_panel.h"
 #include "graphs_panel.h"
@@ -139,7 +140,7 @@ static bool run_model(script_run_state *state, char *const *arguments, char *err
 {
     mu_model_options options = mu_default_model_options();
     if (!viewer_load_model(state->app, arguments[0], &options)) {
-        snprintf(error, error_size, "the model \"%s\" did not load (the message above says why)", arguments[0]);
+        snprintf(error, error_size, "%s", state->app->load_error);
         return false;
     }
     return true;
@@ -152,7 +153,7 @@ static bool rebuild(viewer *app, bool chosen, const mu_model_options *options, c
         return false;
     }
     if (!viewer_reload_model(app, options)) {
-        snprintf(error, error_size, "the model did not build (the message above says why)");
+        snprintf(error, error_size, "%s", app->load_error);
         return false;
     }
     return true;
@@ -194,7 +195,7 @@ static bool run_scene(script_run_state *state, char *const *arguments, char *err
         return false;
     }
     if (!viewer_load_scene(state->app, kind)) {
-        snprintf(error, error_size, "the scene \"%s\" did not load (the message above says why)", arguments[0]);
+        snprintf(error, error_size, "%s", state->app->load_error);
         return false;
     }
     return true;
@@ -275,7 +276,7 @@ static bool run_solver(script_run_state *state, char *const *arguments, char *er
     rb_solver_settings settings = rb_world_solver_settings(world);
     if (rb_solver_type_from_name(arguments[0], &settings.type) != RB_OK ||
         rb_world_set_solver_settings(world, &settings) != RB_OK) {
-        snprintf(error, error_size, "%s", rb_last_error());
+        snprintf(error, error_size, "%s", user_error());
         return false;
     }
     engine_panel_sync(state->app->engine);
@@ -307,7 +308,12 @@ static bool run_set(script_run_state *state, char *const *arguments, char *error
         snprintf(error, error_size, "no control named \"%s\" (tools/viewer/script.h lists them)", arguments[0]);
         return false;
     }
-    return widget_input_set(control, arguments[1], error, error_size);
+    char problem[SIMULATION_ERROR_SIZE];
+    if (!widget_input_set(control, arguments[1], problem, sizeof problem)) {
+        snprintf(error, error_size, "%s: %s", arguments[0], problem);
+        return false;
+    }
+    return true;
 }
 
 static bool run_wait_for(script_run_state *state, char *const *arguments, char *error, size_t error_size)

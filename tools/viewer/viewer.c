@@ -69,12 +69,20 @@ static void after_load(viewer *app)
     viewer_refresh(app);
 }
 
+/* Shows a load's error and counts it for a script. */
+static void note_load_failure(viewer *app, const char *error)
+{
+    viewer_show_error(app, error);
+    snprintf(app->load_error, sizeof app->load_error, "%s", error);
+    ++app->load_failures;
+}
+
 /* After a model load or reload: the error in the window and the panels
  * back to the model still loaded, or the new model shown. */
 static bool finish_model_load(viewer *app, bool loaded, const char *error)
 {
     if (!loaded) {
-        viewer_show_error(app, error);
+        note_load_failure(app, error);
         controls_panel_sync(app->controls);
         return false;
     }
@@ -99,7 +107,7 @@ bool viewer_load_scene(viewer *app, scene_kind kind)
 {
     char error[SIMULATION_ERROR_SIZE];
     if (!simulation_load_scene(&app->sim, kind, error, sizeof error)) {
-        viewer_show_error(app, error);
+        note_load_failure(app, error);
         return false;
     }
     viewer_show_error(app, NULL);

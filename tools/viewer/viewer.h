@@ -36,6 +36,10 @@ typedef struct viewer {
     engine_panel *engine;
     GMainLoop *loop; /* runs until the window closes or a script quits */
     int exit_status;
+    /* Model or scene loads that failed, and the last one's message: a
+     * script fails at the line whose load failed. */
+    int load_failures;
+    char load_error[SIMULATION_ERROR_SIZE];
 } viewer;
 
 /* Shows `message` in the window's message bar (and on stderr), or hides

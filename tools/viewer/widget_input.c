@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -57,7 +58,22 @@ bool widget_input_set(GtkWidget *widget, const char *value, char *error, size_t 
             snprintf(error, error_size, "expected a number, got \"%s\"", value);
             return false;
         }
+        /* Out of the control's range, or a fraction for a whole-number
+         * control, is an error as it is on the command line: GTK would
+         * clamp or round it without a word. */
+        GtkAdjustment *adjustment = GTK_IS_SPIN_BUTTON(widget) ? gtk_spin_button_get_adjustment(GTK_SPIN_BUTTON(widget))
+                                                               : gtk_range_get_adjustment(GTK_RANGE(widget));
+        double lower = gtk_adjustment_get_lower(adjustment);
+        double upper = gtk_adjustment_get_upper(adjustment) - gtk_adjustment_get_page_size(adjustment);
+        if (!(number >= lower && number <= upper)) {
+            snprintf(error, error_size, "%s is out of range, expected %g to %g", value, lower, upper);
+            return false;
+        }
         if (GTK_IS_SPIN_BUTTON(widget)) {
+            if (gtk_spin_button_get_digits(GTK_SPIN_BUTTON(widget)) == 0 && number != floor(number)) {
+                snprintf(error, error_size, "%s is not a whole number", value);
+                return false;
+            }
             gtk_spin_button_set_value(GTK_SPIN_BUTTON(widget), number);
         } else {
             gtk_range_set_value(GTK_RANGE(widget), number);

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cli/model_source.h"
+#include "cli/user_error.h"
 #include "simulation.h"
 
 /* The mouse joint's pull: this many times the dragged body's weight in
@@ -20,7 +21,7 @@ static bool fail(char *error, size_t error_size, const char *what)
     return false;
 }
 
-static bool fail_engine(char *error, size_t error_size) { return fail(error, error_size, rb_last_error()); }
+static bool fail_engine(char *error, size_t error_size) { return fail(error, error_size, user_error()); }
 
 void simulation_init(simulation *sim) { *sim = (simulation){.kind = SIMULATION_NONE}; }
 

@@ -1,0 +1,95 @@
+/* SPDX-License-Identifier: MIT */
+/* What sinew tells a user when their input is wrong: one line naming
+ * their argument, file or object, never the library function that failed
+ * (an rb_ or mu_ name, which they never called); and out-of-range values
+ * are refused, not clamped (--recruit beyond the worm's pool of 200).
+ */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp */
+
+#include <criterion/criterion.h>
+#include <ctype.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "cli/user_error.h"
+
+static char dir[] = "/tmp/sinew-messages-XXXXXX";
+
+/* Runs sinew with `args` in `dir`; its stderr in `log`. Returns the status. */
+static int run_sinew(const char *args, char *log, size_t log_size)
+{
+    char command[2048], path[600];
+    snprintf(path, sizeof path, "%s/err.txt", dir);
+    snprintf(command, sizeof command, "cd '%s' && '%s' %s > /dev/null 2> err.txt", dir, SINEW_TOOL, args);
+    const int status = system(command);
+    cr_assert(status != -1 && WIFEXITED(status), "could not run: %s", command);
+    FILE *f = fopen(path, "r");
+    cr_assert_not_null(f);
+    const size_t n = fread(log, 1, log_size - 1, f);
+    log[n] = '\0';
+    fclose(f);
+    remove(path);
+    return WEXITSTATUS(status);
+}
+
+/* Whether `text` holds a word that starts "rb_" or "mu_" and goes on in
+ * lower case: a library function's name. */
+static bool names_a_library_function(const char *text)
+{
+    for (const char *at = text; *at != '\0'; ++at) {
+        const bool word_start = at == text || !(isalnum((unsigned char)at[-1]) || at[-1] == '_');
+        if (word_start && (strncmp(at, "rb_", 3) == 0 || strncmp(at, "mu_", 3) == 0) && islower((unsigned char)at[3])) {
+            return true;
+        }
+    }
+    return false;
+}
+
+Test(cli_messages, bad_input_is_refused_in_the_users_words)
+{
+    cr_assert_not_null(mkdtemp(dir));
+    char path[600];
+    snprintf(path, sizeof path, "%s/bad.json", dir);
+    FILE *f = fopen(path, "w");
+    cr_assert_not_null(f);
+    fputs("{\"name\": \"bad\", \"bones\": [{\"name\": \"b\", \"size\": [0.1, 0.1], \"colour\": 1}]}\n", f);
+    fclose(f);
+    const struct {
+        const char *args;
+        const char *expected; /* a part of the message */
+    } cases[] = {
+        {"run worm --recruit \"Torque Muscle=300\" --duration 0.1", "300"},
+        {"run worm --recruit \"Torque Muscle=-1\" --duration 0.1", "-1"},
+        {"run worm --recruit \"Nobody=3\" --duration 0.1", "Nobody"},
+        {"run arm --weight 99 --duration 0.1", "99"},
+        {"run nosuch --duration 0.1", "nosuch"},
+        {"run bad.json --duration 0.1", "colour"},
+        {"check bad.json", "colour"},
+        {"check /nonexistent/model.json", "/nonexistent/model.json"},
+    };
+    char log[8192];
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        const int status = run_sinew(cases[k].args, log, sizeof log);
+        cr_expect_neq(status, 0, "sinew %s succeeded:\n%s", cases[k].args, log);
+        cr_expect(strstr(log, cases[k].expected) != NULL, "sinew %s: the message should name \"%s\":\n%s",
+                  cases[k].args, cases[k].expected, log);
+        cr_expect(!names_a_library_function(log), "sinew %s: the message names a library function:\n%s", cases[k].args,
+                  log);
+    }
+    remove(path);
+    rmdir(dir);
+}
+
+Test(cli_messages, library_function_names_are_taken_off)
+{
+    cr_expect_str_eq(user_error_text("mu_model_recruit: neurons is 300, expected 0 .. 200"),
+                     "neurons is 300, expected 0 .. 200");
+    cr_expect_str_eq(user_error_text("mu_model_desc_load: rb_world_create: gravity is nan"), "gravity is nan");
+    cr_expect_str_eq(user_error_text("arm.json:3:5: bones[0].size: expected two numbers"),
+                     "arm.json:3:5: bones[0].size: expected two numbers");
+    cr_expect_str_eq(user_error_text("mu_ is not a name: x"), "mu_ is not a name: x");
+    cr_expect_str_eq(user_error_text(""), "");
+}
