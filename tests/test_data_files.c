@@ -109,8 +109,8 @@ Test(data_files, sinew_data_dir_replaces_the_built_in_files)
     snprintf(arm, sizeof arm, "%s/arm.json", folder);
     snprintf(curves, sizeof curves, "%s/hill-curves.csv", folder);
     copy_file(SINEW_SOURCE_DIR "/models/arm.json", arm, "\"name\": \"arm\"", "\"name\": \"arm from elsewhere\"");
-    /* The active curve's first knot raised from 0.0031 to 0.5: f_L far
-     * left of the table (clamped to that knot) reads it. */
+    /* The active curve's first knot raised from 0.0031 to 0.5: f_L at that
+     * knot reads it (outside the table f_L is 0, docs/muscle.md). */
     copy_file(SINEW_SOURCE_DIR "/models/data/hill-curves.csv", curves, "active_force_length,0.3422,0.0031",
               "active_force_length,0.3422,0.5");
 
@@ -125,8 +125,8 @@ Test(data_files, sinew_data_dir_replaces_the_built_in_files)
 
     mu_curves *copied = NULL;
     cr_assert_eq(mu_curves_create_seed_tables(MU_INTERPOLATION_LINEAR, &copied), RB_OK, "%s", rb_last_error());
-    cr_expect_eq(mu_curve_active_length(original, 0.1), 0.0031);
-    cr_expect_eq(mu_curve_active_length(copied, 0.1), 0.5);
+    cr_expect_eq(mu_curve_active_length(original, 0.3422), 0.0031);
+    cr_expect_eq(mu_curve_active_length(copied, 0.3422), 0.5);
 
     /* A model missing from that folder is an error naming the path and the
      * variable, not a silent fall-back to the built-in copy. */
