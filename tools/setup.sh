@@ -29,6 +29,7 @@ packages=(
     doxygen          # the API reference from the headers (cmake --build ... --target docs)
     g++              # the C++ example built against the installed library (tools/check_install.sh)
     clang            # clang and clang++: the examples and headers checked with a second compiler
+    libclang-rt-14-dev # clang's libFuzzer and sanitizer runtimes: the fuzz targets (tools/fuzz.sh)
     binutils         # nm and readelf: what the shared libraries export
     locales          # de_DE.UTF-8, a decimal-comma locale the locale test runs under (generated below)
 )
