@@ -2,11 +2,13 @@
 /* Fuzz target: a model file's bytes, loaded as `sinew check` and `sinew run`
  * load them (mu_model_desc_load), built at the default options and stepped
  * a few frames with every muscle fully active. Any byte sequence must end in
- * a model or an error, in bounded time, without a sanitizer's report; what
- * the steps compute is not judged here. */
+ * a model or an error with a message, in bounded time, without a
+ * sanitizer's report; what the steps compute is not judged here. */
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "memory_file.h"
@@ -16,6 +18,16 @@
 /* Frames stepped: enough to run the muscles' tension laws and the solver
  * on the built model, few enough to keep an input well under a millisecond. */
 enum { FRAMES = 3 };
+
+/* A failure must say what failed (rb_last_error: the file, the JSON path,
+ * what was expected); an empty message is a defect as a crash is. */
+static void expect_message(const char *call)
+{
+    if (rb_last_error()[0] == '\0') {
+        fprintf(stderr, "fuzz_model: %s failed without a message\n", call);
+        abort();
+    }
+}
 
 /* Inputs that reach a defect a fuzzer found whose fix has not landed yet
  * are left out, so that CI's fuzzing stays green and goes on finding new
@@ -38,6 +50,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rb_status status = mu_model_desc_load(file.path, &desc);
     memory_file_close(&file);
     if (status != RB_OK) {
+        expect_message("mu_model_desc_load");
         return 0;
     }
     mu_model_options options = mu_default_model_options();
@@ -49,6 +62,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         for (int frame = 0; frame < FRAMES && mu_model_step(model) == RB_OK; ++frame) {
         }
         mu_model_destroy(model);
+    } else {
+        expect_message("mu_model_create");
     }
     mu_model_desc_destroy(desc);
     return 0;

@@ -4,12 +4,15 @@
 #
 #   1. tools/setup.sh (installs missing packages; does nothing when all present)
 #   2. formatting: clang-format --dry-run --Werror over every *.c, *.h and *.cpp of
-#      engine/ models/ tests/ bench/ tools/ musculo/ docs/examples/
+#      engine/ models/ tests/ bench/ tools/ musculo/ fuzz/ docs/examples/
 #   3. licence: an SPDX line in every source, script and build file
 #   4. for the presets release and asan: configure with -DSINEW_WERROR=ON,
 #      build, run ctest (output shown for failing tests)
 #   5. the release build installed, built shared, moved, and used by the
 #      examples of docs/examples with gcc and clang (tools/check_install.sh)
+#   6. fuzzing: the fuzz targets of fuzz/ built with clang's libFuzzer and the
+#      sanitizers, every input that ever failed replayed, then each target
+#      fuzzed for 60 s (tools/fuzz.sh, build/fuzz)
 #
 # Every stage runs even when an earlier one failed, so one run reports
 # everything; the last line sums up, and the exit status is non-zero when
@@ -33,7 +36,7 @@ tools/setup.sh
 # ---- Formatting -------------------------------------------------------------
 banner "format ($("$clang_format" --version | sed 's/.*version \([0-9.]*\).*/clang-format \1/'))"
 dirs=()
-for d in engine models tests bench tools musculo docs/examples; do
+for d in engine models tests bench tools musculo fuzz docs/examples; do
     if [[ -d "$d" ]]; then
         dirs+=("$d")
     fi
@@ -164,6 +167,27 @@ else
     failed=1
 fi
 
+# ---- Fuzzing ------------------------------------------------------------------
+# The regression corpora, then a fixed-seed session per target (tools/fuzz.sh).
+banner "fuzz: regressions, then 60 s per target"
+fuzz_log=$(mktemp)
+if tools/fuzz.sh --seconds 60 2>&1 | tee "$fuzz_log"; then
+    summary+=("fuzz ok")
+else
+    summary+=("fuzz FAIL")
+    failed=1
+fi
+# Its replays and sessions join the closing count ("fuzz: N passed, N failed").
+fuzz_counts=$(sed -n 's/^fuzz: \([0-9]*\) passed, \([0-9]*\) failed$/\1 \2/p' "$fuzz_log")
+rm -f "$fuzz_log"
+if [[ -n "$fuzz_counts" ]]; then
+    read -r fuzz_passed fuzz_failed <<<"$fuzz_counts"
+    tests_passed=$((tests_passed + fuzz_passed))
+    tests_failed=$((tests_failed + fuzz_failed))
+else
+    tests_failed=$((tests_failed + 1))
+fi
+
 banner "summary"
 summary_line=$(printf '%s, ' "${summary[@]}")
 if ((failed)); then
@@ -171,6 +195,7 @@ if ((failed)); then
 else
     echo "check.sh: all passed: ${summary_line%, }"
 fi
-# The closing line, counted over both presets' test programs.
+# The closing line, counted over both presets' test programs, the install
+# checks and the fuzzing.
 echo "tests: ${tests_passed} passed, ${tests_failed} failed"
 exit "$failed"

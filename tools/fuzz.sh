@@ -85,10 +85,14 @@ declare -A max_len=([fuzz_model]=32768 [fuzz_control_file]=4096 [fuzz_csv_chart]
 # ---- Build --------------------------------------------------------------------
 # Debug keeps the assertions; -O1 as the asan preset, for speed.
 printf '==== fuzz: building the targets in %s\n' "$build"
-cmake -S . -B "$build" -DCMAKE_C_COMPILER=clang -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_FLAGS_DEBUG="-O1 -g" \
+if ! cmake -S . -B "$build" -DCMAKE_C_COMPILER=clang -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_FLAGS_DEBUG="-O1 -g" \
     -DSINEW_BUILD_FUZZERS=ON -DSINEW_WERROR=ON -DSINEW_BUILD_TESTS=OFF -DSINEW_BUILD_BENCHMARKS=OFF \
-    -DSINEW_BUILD_VIEWER=OFF -DSINEW_BUILD_DOCS=OFF -DSINEW_INSTALL=OFF >/dev/null
-cmake --build "$build" -j2 --target "${targets[@]}"
+    -DSINEW_BUILD_VIEWER=OFF -DSINEW_BUILD_DOCS=OFF -DSINEW_INSTALL=OFF >/dev/null ||
+    ! cmake --build "$build" -j2 --target "${targets[@]}"; then
+    echo "fuzz: the build failed"
+    echo "fuzz: 0 passed, 1 failed"
+    exit 1
+fi
 
 # The sanitizers' settings of the asan preset; libFuzzer reports leaks itself.
 export ASAN_OPTIONS=abort_on_error=1
@@ -112,6 +116,10 @@ explain()
 for target in "${targets[@]}"; do
     binary=$build/fuzz/$target
     options=(-timeout="$timeout_s" -max_len="${max_len[$target]}" -rss_limit_mb=2048)
+    # A target's dictionary: the words of its format, for the mutations.
+    if [[ -f fuzz/$target.dict ]]; then
+        options+=(-dict="fuzz/$target.dict")
+    fi
 
     # ---- Replay every input that ever failed --------------------------------
     regressions=()
