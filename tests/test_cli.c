@@ -358,3 +358,29 @@ Test(cli, control_files_and_viewer_scripts_quote_alike)
     remove(script);
     rmdir(dir);
 }
+
+/* What a run may write is bounded: --duration times the model's frame rate
+ * is at most 10,000,000 frames (CSV rows); more is a usage error naming
+ * the limit, before any file is made. */
+Test(cli, a_run_longer_than_the_frame_limit_is_refused_naming_it)
+{
+    char dir[] = "/tmp/sinew-cli-XXXXXX";
+    cr_assert_not_null(mkdtemp(dir));
+    char log[600], args[700], csv[600];
+    snprintf(log, sizeof log, "%s/log.txt", dir);
+    snprintf(csv, sizeof csv, "%s/sample.csv", dir);
+    /* 200,000 s at 60 Hz: 12 million frames. */
+    snprintf(args, sizeof args, "run sample --duration 200000 --out '%s'", dir);
+    cr_expect_eq(run_sinew(args, log), 2);
+    FILE *f = fopen(log, "r");
+    cr_assert_not_null(f);
+    char text[1024] = "";
+    text[fread(text, 1, sizeof text - 1, f)] = '\0';
+    fclose(f);
+    cr_expect(strstr(text, "--duration 200000 s is 12000000 frames at 60 Hz, more than the 10000000 a run may "
+                           "write") != NULL,
+              "%s", text);
+    cr_expect_neq(access(csv, F_OK), 0, "a refused run left %s behind", csv);
+    remove(log);
+    rmdir(dir);
+}

@@ -139,9 +139,10 @@ static const cli_command command = {
              "NAME.x_m, NAME.y_m, NAME.angle_deg (docs/cli.md, \"The CSV\").\n",
 };
 
-/* Most frames a run may have: beyond any useful run, and a bound on the
- * CSV a typing mistake could start writing. */
-#define MAX_FRAMES 1e9
+/* Most frames a run may have: beyond any useful run (46 hours of
+ * simulated time at 60 Hz), and a bound on the CSV a typing mistake could
+ * start writing (one row a frame, about 1 kB a row for the arm). */
+#define MAX_FRAMES 1e7
 
 /* --------------------------------------------------------------- options */
 
@@ -586,9 +587,16 @@ static int prepare(run_state *run)
         return code;
     }
     double frames = nearbyint(opts->duration * run->desc->frame_rate);
-    if (frames < 1.0 || frames > MAX_FRAMES) {
-        fprintf(stderr, "sinew: --duration %g s is %.0f frames at %g Hz; a run has 1 .. %.0f\n", opts->duration, frames,
-                run->desc->frame_rate, MAX_FRAMES);
+    if (frames < 1.0) {
+        fprintf(stderr, "sinew: --duration %g s is %.0f frames at %g Hz, expected at least 1\n", opts->duration, frames,
+                run->desc->frame_rate);
+        return EXIT_USAGE;
+    }
+    if (frames > MAX_FRAMES) {
+        fprintf(stderr,
+                "sinew: --duration %g s is %.0f frames at %g Hz, more than the %.0f a run may write (one CSV "
+                "row each); give a shorter --duration\n",
+                opts->duration, frames, run->desc->frame_rate, MAX_FRAMES);
         return EXIT_USAGE;
     }
     run->frames = (long)frames;
