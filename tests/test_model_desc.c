@@ -501,7 +501,7 @@ static const bad_model bad_models[] = {
     {"mistyped_size.json",
      "mistyped_size.json:7:53: bones[0].size: found a string, expected the bone's x and y extents in m: [x, y]"},
     {"string_for_number.json", "string_for_number.json:20:22: muscles[0].rest_length: found a string, expected the "
-                               "fibres' rest (optimal) length in m (> 0)"},
+                               "fibres' rest (optimal) length in m (in [0.001, 10])"},
     {"mistyped_static.json", "mistyped_static.json:7:76: bones[0].static: found a string, expected whether the bone "
                              "is static (true or false)"},
     {"real_substeps.json", "real_substeps.json:3:15: substeps: found a real number, expected the substeps per frame "
@@ -517,15 +517,15 @@ static const bad_model bad_models[] = {
     {"unknown_top_level_key.json", "unknown_top_level_key.json:3:3: gravitation: unknown key \"gravitation\", "
                                    "expected one of name, gravity"},
     {"negative_size.json", "negative_size.json:8:62: bones[1].size[1]: -0.05 is out of range, expected the bone's x "
-                           "and y extents in m (> 0)"},
+                           "and y extents in m (in [0.001, 100])"},
     {"escaped_key_position.json", "escaped_key_position.json:5:68: bones[0].size[1]: -0.2 is out of range"},
-    {"zero_density.json",
-     "zero_density.json:7:77: bones[0].density: 0 is out of range, expected the bone's density in kg/m³ (> 0)"},
+    {"zero_density.json", "zero_density.json:7:77: bones[0].density: 0 is out of range, expected the bone's density in "
+                          "kg/m³ (in [1, 100000])"},
     {"empty_name.json", "empty_name.json:7:15: bones[0].name: found an empty string, expected the object's name"},
     {"zero_frame_rate.json",
-     "zero_frame_rate.json:3:17: frame_rate: 0 is out of range, expected the frame rate in Hz (> 0)"},
+     "zero_frame_rate.json:3:17: frame_rate: 0 is out of range, expected the frame rate in Hz (in [1, 1000])"},
     {"negative_weight_mass.json", "negative_weight_mass.json:16:92: weight.masses[2]: -5 is out of range, expected a "
-                                  "mass in kg, 0 for no weight (>= 0)"},
+                                  "mass in kg, 0 for no weight (in [0, 10000])"},
     {"empty_weight_list.json", "empty_weight_list.json:16:85: weight.masses: found 0 elements, expected 1 to 65535 "
                                "weight choices in kg"},
     {"unknown_body_in_hinge.json", "unknown_body_in_hinge.json:11:72: hinges[0].body_b: no nail or bone is named "
@@ -568,9 +568,9 @@ static const bad_model bad_models[] = {
     {"hinge_to_itself.json",
      "hinge_to_itself.json:11:72: hinges[0].body_b: \"Nail\" is body_a too, expected a different body"},
     {"negative_specific_tension.json", "negative_specific_tension.json:20:67: muscles[0].specific_tension: -1.5e+06 "
-                                       "is out of range, expected the specific tension in N/m² (> 0)"},
+                                       "is out of range, expected the specific tension in N/m² (in [1000, 1e+07])"},
     {"zero_max_velocity.json", "zero_max_velocity.json:20:63: muscles[0].max_velocity: 0 is out of range, expected "
-                               "the maximal shortening speed in m/s (> 0)"},
+                               "the maximal shortening speed in m/s (in [0.001, 100])"},
     {"start_length_out_of_range.json",
      "start_length_out_of_range.json:20:74: muscles[0].start_normalized_length: 2 is out of range, expected the "
      "belly's length at creation over its rest length (in [0.5, 1.5])"},
@@ -582,7 +582,7 @@ static const bad_model bad_models[] = {
     {"missing_rest_width.json", "missing_rest_width.json:18:5: muscles[0]: missing key \"rest_width\", expected the "
                                 "belly's width at rest in m, or max_force"},
     {"negative_rest_width.json", "negative_rest_width.json:20:41: muscles[0].rest_width: -0.05 is out of range, "
-                                 "expected the belly's width at rest in m (> 0)"},
+                                 "expected the belly's width at rest in m (in [0.0001, 1])"},
     {"symmetry_out_of_range.json", "symmetry_out_of_range.json:20:59: muscles[0].symmetry: 1.5 is out of range, "
                                    "expected where the belly sits between the path's ends (in [0, 1])"},
     {"tendon_fraction_and_rest_length.json",
@@ -590,7 +590,7 @@ static const bad_model bad_models[] = {
      "the two"},
     {"compliant_tendon_zero_strain.json",
      "compliant_tendon_zero_strain.json:20:92: muscles[0].compliant_tendon.strain_at_max_force: 0 is out of range, "
-     "expected the tendon's strain at the maximal isometric force (in (0, 1])"},
+     "expected the tendon's strain at the maximal isometric force (in [0.001, 1])"},
     {"activation_dynamics_unknown_key.json",
      "activation_dynamics_unknown_key.json:20:72: muscles[0].activation_dynamics.tau: unknown key \"tau\", expected "
      "one of activation_time, deactivation_time (or comment)"},
@@ -602,6 +602,43 @@ static const bad_model bad_models[] = {
      "-0.0027864 m (path 0.447214 m at the start pose), expected a compliant tendon longer than 0"},
     {"unknown_curve_set.json", "unknown_curve_set.json:20:57: muscles[0].curves: \"hill\" is no curve set, expected "
                                "the curve set, \"tabulated\" or \"analytic\""},
+    /* Numbers the simulation cannot take (issue 17, item 4): each key's
+     * range is tested in test_model_ranges.c; these are the issue's. */
+    {"placement_far.json", "placement_far.json:3:17: placement[0]: 1e+200 is out of range, expected the model's offset "
+                           "in m (in [-100, 100])"},
+    {"frame_rate_huge.json",
+     "frame_rate_huge.json:3:17: frame_rate: 1e+09 is out of range, expected the frame rate in Hz (in [1, 1000])"},
+    {"substep_rate_too_low.json", "substep_rate_too_low.json:3:32: substeps: frame_rate × substeps is 10 Hz, expected "
+                                  "a substep rate in [60, 100000] Hz (a substep of 1/60 s at most)"},
+    {"gravity_huge.json",
+     "gravity_huge.json:3:18: gravity[1]: -1e+308 is out of range, expected the gravity in m/s² (in [-1000, 1000])"},
+    {"centre_far.json", "centre_far.json:8:35: bones[1].centre[0]: -1e+308 is out of range, expected the bone's centre "
+                        "in m (in [-100, 100])"},
+    {"density_tiny.json", "density_tiny.json:7:77: bones[0].density: 1e-300 is out of range, expected the bone's "
+                          "density in kg/m³ (in [1, 100000])"},
+    {"weight_mass_huge.json", "weight_mass_huge.json:16:92: weight.masses[2]: 1e+308 is out of range, expected a mass "
+                              "in kg, 0 for no weight (in [0, 10000])"},
+    {"max_force_huge.json", "max_force_huge.json:20:40: muscles[0].max_force: 1e+308 is out of range, expected the "
+                            "maximal isometric force in N (in [0.001, 1e+06])"},
+    {"rest_width_huge.json", "rest_width_huge.json:20:41: muscles[0].rest_width: 1e+200 is out of range, expected the "
+                             "belly's width at rest in m (in [0.0001, 1])"},
+    {"specific_tension_huge.json", "specific_tension_huge.json:20:67: muscles[0].specific_tension: 1e+308 is out of "
+                                   "range, expected the specific tension in N/m² (in [1000, 1e+07])"},
+    {"strain_tiny.json", "strain_tiny.json:20:114: muscles[0].compliant_tendon.strain_at_max_force: 1e-300 is out of "
+                         "range, expected the tendon's strain at the maximal isometric force (in [0.001, 1])"},
+    {"path_point_far.json", "path_point_far.json:23:41: muscles[0].path[1].point[1]: 1e+308 is out of range, expected "
+                            "the point in the body's frame, in m (in [-100, 100])"},
+    {"force_from_width_too_small.json",
+     "force_from_width_too_small.json:20:41: muscles[0].rest_width: the maximal force π·rest_width²/4·specific_tension "
+     "in N is 7.85398e-06, expected a value in [0.001, 1e+06]"},
+    {"hinge_open.json", "hinge_open.json:11:93: hinges[0].anchor_b: the anchors are 0.1 m apart at the start pose, "
+                        "expected them to meet (within 0.01 m)"},
+    {"tendon_fraction_tiny_rest_length.json",
+     "tendon_fraction_tiny_rest_length.json:20:26: muscles[0].tendon_fraction: the rest length it derives from the "
+     "path at the start pose, in m, is 4.47214e-05, expected a value in [0.001, 10]"},
+    {"vmax_rest_lengths_too_slow.json",
+     "vmax_rest_lengths_too_slow.json:20:78: muscles[0].max_velocity_rest_lengths: the maximal shortening speed it "
+     "gives with the rest length, in m/s, is 0.0001, expected a value in [0.001, 100]"},
 };
 
 #define BAD_MODEL_COUNT (sizeof bad_models / sizeof bad_models[0])

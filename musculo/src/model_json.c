@@ -9,10 +9,6 @@
 #include "c_locale.h"
 #include "model_json.h"
 
-const mu_json_bounds mu_json_any = {-INFINITY, INFINITY, false, false};
-const mu_json_bounds mu_json_positive = {0.0, INFINITY, true, false};
-const mu_json_bounds mu_json_non_negative = {0.0, INFINITY, false, false};
-
 void mu_json_push_key(mu_json_reader *reader, const char *key)
 {
     if (reader->depth < MU_JSON_MAX_DEPTH) {
@@ -102,21 +98,12 @@ static bool within(double value, mu_json_bounds bounds)
     return above && below;
 }
 
-/* " (> 0)", " (in [0.5, 1.5])", or "" for any number. */
+/* " (in [0.5, 1.5])", " (in (0, 100])". */
 static void format_bounds(mu_json_bounds bounds, char *buffer, size_t size)
 {
-    bool has_lower = isfinite(bounds.lower), has_upper = isfinite(bounds.upper);
     mu_c_locale_scope scope = mu_c_locale_begin(); /* "0.5", as the file spells it */
-    if (has_lower && has_upper) {
-        snprintf(buffer, size, " (in %c%g, %g%c)", bounds.lower_open ? '(' : '[', bounds.lower, bounds.upper,
-                 bounds.upper_open ? ')' : ']');
-    } else if (has_lower) {
-        snprintf(buffer, size, " (%s %g)", bounds.lower_open ? ">" : ">=", bounds.lower);
-    } else if (has_upper) {
-        snprintf(buffer, size, " (%s %g)", bounds.upper_open ? "<" : "<=", bounds.upper);
-    } else {
-        buffer[0] = '\0';
-    }
+    snprintf(buffer, size, " (in %c%g, %g%c)", bounds.lower_open ? '(' : '[', bounds.lower, bounds.upper,
+             bounds.upper_open ? ')' : ']');
     mu_c_locale_end(scope);
 }
 

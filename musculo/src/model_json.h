@@ -72,15 +72,12 @@ typedef enum mu_json_need {
     MU_JSON_REQUIRED,
 } mu_json_need;
 
-/* Closed or open bounds of a number; an infinite bound is no bound. */
+/* Closed or open bounds of a number, both finite: every number a model
+ * file gives is bounded (model_schema.c says why). */
 typedef struct mu_json_bounds {
     double lower, upper;
     bool lower_open, upper_open; /* > instead of >=, < instead of <= */
 } mu_json_bounds;
-
-extern const mu_json_bounds mu_json_any;          /* every (finite) number */
-extern const mu_json_bounds mu_json_positive;     /* > 0 */
-extern const mu_json_bounds mu_json_non_negative; /* >= 0 */
 
 /* Each reader takes the member `key` of `object` (already checked with
  * mu_json_check_object) and fails when it is required and absent, of the

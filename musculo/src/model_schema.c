@@ -36,6 +36,72 @@
 #define MAX_LIMIT_DEGREES 360.0
 #define MAX_SUBSTEPS 1000
 
+/* The ranges of the numbers the simulation can take. JSON numbers are
+ * finite, but a finite 1e200 still overflows a force, a mass or a path
+ * length to infinity, and 1e-300 divides to it; within these ranges every
+ * product the model forms stays finite. Each is wide of what bodies and
+ * muscles have (a bone of 1 mm to 100 m, a muscle force of 1 mN to 1 MN),
+ * yet narrow enough that the solver still runs on what they give
+ * (tests/test_model_ranges.c runs every end of every range). */
+/* m: a model within 100 m of its origin, whose bones are at most 100 m long. */
+static const mu_json_bounds coordinate = {-100.0, 100.0, false, false};
+/* m/s²: 100 g. */
+static const mu_json_bounds gravity_component = {-1e3, 1e3, false, false};
+/* Hz: a frame is a row of the CSV. */
+static const mu_json_bounds frame_rate = {1.0, 1e3, false, false};
+/* m: a bone's extents and depth, a muscle's rest length. */
+static const mu_json_bounds extent = {1e-3, 100.0, false, false};
+static const mu_json_bounds angle_degrees = {-MAX_LIMIT_DEGREES, MAX_LIMIT_DEGREES, false, false};
+/* kg/m³: from cork (about 100) down to 1, up to 5 times osmium's 22,590. */
+static const mu_json_bounds density = {1.0, 1e5, false, false};
+/* m: drawn size only, but a huge circle stalls the drawing. */
+static const mu_json_bounds radius = {0.0, 100.0, true, false};
+/* kg: 0 for no weight. */
+static const mu_json_bounds weight_mass = {0.0, 1e4, false, false};
+static const mu_json_bounds rest_length = {1e-3, 10.0, false, false};
+static const mu_json_bounds rest_width = {1e-4, 1.0, false, false};
+/* N/m²: physiological values are 2e5 to 1e6. */
+static const mu_json_bounds specific_tension = {1e3, 1e7, false, false};
+static const mu_json_bounds max_force = {1e-3, 1e6, false, false};
+/* m/s, and rest lengths per second (physiology's about 10). */
+static const mu_json_bounds max_velocity = {1e-3, 100.0, false, false};
+static const mu_json_bounds max_velocity_rest_lengths = {0.1, 1e3, false, false};
+static const mu_json_bounds tendon_length = {0.0, 100.0, false, false};
+/* s: activation and deactivation time constants. */
+static const mu_json_bounds time_constant = {1e-4, 10.0, false, false};
+/* Tendon strain at Fmax: physiological values are 0.03 to 0.1. */
+static const mu_json_bounds tendon_strain = {1e-3, 1.0, false, false};
+static const mu_json_bounds fibre_damping = {1e-3, 10.0, false, false};
+/* N·m: three times the strongest human joint torque (knee extension,
+ * about 300 N·m); and a motor neuron's strength (any unit: only their
+ * ratios count). */
+static const mu_json_bounds peak_torque = {-1e3, 1e3, false, false};
+static const mu_json_bounds neuron_strength = {1e-6, 1e6, false, false};
+/* Hz, frame_rate × substeps: a substep of 1/60 s at most (every_field.json
+ * at 30 Hz opens its hinges by 9 cm; the built-in models take 600 Hz), and
+ * of 10 µs at least, which bounds the work a simulated second costs. */
+#define MIN_SUBSTEP_RATE 60.0
+/* m: a hinge pins its anchors together, so the solver snaps them together
+ * at the first step; a gap wider than rounding is a mistake in the file
+ * (every_field.json with one anchor 100 m off comes apart). */
+#define MAX_HINGE_GAP 0.01
+#define MAX_SUBSTEP_RATE 1e5
+
+/* Fails unless `value`, derived from the member `key` at the current
+ * path, lies within `bounds`, the range of the value it stands for. */
+static rb_status check_derived(mu_json_reader *reader, const char *key, double value, mu_json_bounds bounds,
+                               const char *what)
+{
+    bool above = bounds.lower_open ? value > bounds.lower : value >= bounds.lower;
+    bool below = bounds.upper_open ? value < bounds.upper : value <= bounds.upper;
+    if (above && below) {
+        return RB_OK;
+    }
+    mu_json_push_key(reader, key);
+    return mu_json_fail(reader, MU_JSON_AT_VALUE, "%s is %g, expected a value in [%g, %g]", what, value, bounds.lower,
+                        bounds.upper);
+}
+
 static const char *const kind_singular[] = {"nail",   "bone",   "hinge", "glue",
                                             "weight", "muscle", "group", "torque muscle"};
 static const char *const kind_list[] = {"nails",  "bones",   "hinges", "glues",
@@ -158,7 +224,7 @@ static rb_status parse_nail(mu_json_reader *reader, const json_t *object, mu_mod
     MU_JSON_TRY(mu_json_check_object(reader, object, keys));
     mu_model_nail *nail = &desc->nails[desc->nail_count++];
     MU_JSON_TRY(read_object_name(reader, object, desc, &nail->name));
-    return mu_json_read_vec2(reader, object, "position", MU_JSON_REQUIRED, mu_json_any, "the nail's position in m",
+    return mu_json_read_vec2(reader, object, "position", MU_JSON_REQUIRED, coordinate, "the nail's position in m",
                              &nail->position);
 }
 
@@ -168,20 +234,31 @@ static rb_status parse_bone(mu_json_reader *reader, const json_t *object, mu_mod
     MU_JSON_TRY(mu_json_check_object(reader, object, keys));
     mu_model_bone *bone = &desc->bones[desc->bone_count++];
     MU_JSON_TRY(read_object_name(reader, object, desc, &bone->name));
-    MU_JSON_TRY(mu_json_read_vec2(reader, object, "centre", MU_JSON_REQUIRED, mu_json_any, "the bone's centre in m",
+    MU_JSON_TRY(mu_json_read_vec2(reader, object, "centre", MU_JSON_REQUIRED, coordinate, "the bone's centre in m",
                                   &bone->centre));
-    MU_JSON_TRY(mu_json_read_vec2(reader, object, "size", MU_JSON_REQUIRED, mu_json_positive,
-                                  "the bone's x and y extents in m", &bone->size));
-    MU_JSON_TRY(mu_json_read_number(reader, object, "angle", MU_JSON_OPTIONAL, mu_json_any,
+    MU_JSON_TRY(mu_json_read_vec2(reader, object, "size", MU_JSON_REQUIRED, extent, "the bone's x and y extents in m",
+                                  &bone->size));
+    MU_JSON_TRY(mu_json_read_number(reader, object, "angle", MU_JSON_OPTIONAL, angle_degrees,
                                     "the bone's angle in degrees", &bone->angle));
     bone->depth = bone->size.x < bone->size.y ? bone->size.x : bone->size.y;
-    MU_JSON_TRY(mu_json_read_number(reader, object, "depth", MU_JSON_OPTIONAL, mu_json_positive,
-                                    "the bone's depth in m", &bone->depth));
+    MU_JSON_TRY(
+        mu_json_read_number(reader, object, "depth", MU_JSON_OPTIONAL, extent, "the bone's depth in m", &bone->depth));
     MU_JSON_TRY(
         mu_json_read_bool(reader, object, "static", MU_JSON_OPTIONAL, "whether the bone is static", &bone->is_static));
     bone->density = DEFAULT_BONE_DENSITY;
-    return mu_json_read_number(reader, object, "density", MU_JSON_OPTIONAL, mu_json_positive,
-                               "the bone's density in kg/m³", &bone->density);
+    return mu_json_read_number(reader, object, "density", MU_JSON_OPTIONAL, density, "the bone's density in kg/m³",
+                               &bone->density);
+}
+
+/* Where `point`, in the frame of the nail or bone `body`, is at the model's
+ * start pose (before placement, which moves every point alike). */
+static rb_vec2 start_point(const mu_model_desc *desc, mu_model_ref body, rb_vec2 point)
+{
+    if (body.kind == MU_MODEL_NAIL) {
+        return rb_add(desc->nails[body.index].position, point);
+    }
+    const mu_model_bone *bone = &desc->bones[body.index];
+    return rb_add(bone->centre, rb_rotate(rb_rot_from_angle(bone->angle / DEGREES), point));
 }
 
 static rb_status parse_hinge(mu_json_reader *reader, const json_t *object, mu_model_desc *desc)
@@ -194,12 +271,20 @@ static rb_status parse_hinge(mu_json_reader *reader, const json_t *object, mu_mo
     mu_model_hinge *hinge = &desc->hinges[desc->hinge_count++];
     MU_JSON_TRY(read_object_name(reader, object, desc, &hinge->name));
     MU_JSON_TRY(read_body_pair(reader, object, desc, &hinge->body_a, &hinge->body_b));
-    MU_JSON_TRY(mu_json_read_vec2(reader, object, "anchor_a", MU_JSON_REQUIRED, mu_json_any,
+    MU_JSON_TRY(mu_json_read_vec2(reader, object, "anchor_a", MU_JSON_REQUIRED, coordinate,
                                   "the pin in body A's frame, in m", &hinge->anchor_a));
-    MU_JSON_TRY(mu_json_read_vec2(reader, object, "anchor_b", MU_JSON_REQUIRED, mu_json_any,
+    MU_JSON_TRY(mu_json_read_vec2(reader, object, "anchor_b", MU_JSON_REQUIRED, coordinate,
                                   "the pin in body B's frame, in m", &hinge->anchor_b));
-    MU_JSON_TRY(mu_json_read_number(reader, object, "radius", MU_JSON_REQUIRED, mu_json_positive,
-                                    "the hinge's drawn radius in m", &hinge->radius));
+    const double gap = rb_distance(start_point(desc, hinge->body_a, hinge->anchor_a),
+                                   start_point(desc, hinge->body_b, hinge->anchor_b));
+    if (gap > MAX_HINGE_GAP) {
+        mu_json_push_key(reader, "anchor_b");
+        return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                            "the anchors are %g m apart at the start pose, expected them to meet (within %g m)", gap,
+                            MAX_HINGE_GAP);
+    }
+    MU_JSON_TRY(mu_json_read_number(reader, object, "radius", MU_JSON_REQUIRED, radius, "the hinge's drawn radius in m",
+                                    &hinge->radius));
     hinge->has_lower = json_object_get(object, "lower") != NULL;
     hinge->has_upper = json_object_get(object, "upper") != NULL;
     MU_JSON_TRY(mu_json_read_number(reader, object, "lower", MU_JSON_OPTIONAL, limit, limit_what, &hinge->lower));
@@ -227,31 +312,37 @@ static rb_status parse_path_point(mu_json_reader *reader, const json_t *object, 
     static const char *const keys[] = {"body", "point", NULL};
     MU_JSON_TRY(mu_json_check_object(reader, object, keys));
     MU_JSON_TRY(read_body(reader, object, "body", desc, &point->body));
-    return mu_json_read_vec2(reader, object, "point", MU_JSON_REQUIRED, mu_json_any,
+    return mu_json_read_vec2(reader, object, "point", MU_JSON_REQUIRED, coordinate,
                              "the point in the body's frame, in m", &point->point);
 }
 
 /* The muscle's force: max_force, or rest_width with specific_tension. */
 static rb_status parse_muscle_force(mu_json_reader *reader, const json_t *object, mu_model_muscle *muscle)
 {
-    MU_JSON_TRY(mu_json_read_number(reader, object, "max_force", MU_JSON_OPTIONAL, mu_json_positive,
+    MU_JSON_TRY(mu_json_read_number(reader, object, "max_force", MU_JSON_OPTIONAL, max_force,
                                     "the maximal isometric force in N", &muscle->max_force));
     bool has_max_force = muscle->max_force > 0.0;
-    MU_JSON_TRY(mu_json_read_number(reader, object, "rest_width", MU_JSON_OPTIONAL, mu_json_positive,
+    MU_JSON_TRY(mu_json_read_number(reader, object, "rest_width", MU_JSON_OPTIONAL, rest_width,
                                     "the belly's width at rest in m", &muscle->rest_width));
     if (!has_max_force && muscle->rest_width == 0.0) {
         return mu_json_fail(reader, MU_JSON_AT_VALUE,
                             "missing key \"rest_width\", expected the belly's width at rest in m, or max_force");
     }
     muscle->specific_tension = DEFAULT_SPECIFIC_TENSION;
-    MU_JSON_TRY(mu_json_read_number(reader, object, "specific_tension", MU_JSON_OPTIONAL, mu_json_positive,
+    MU_JSON_TRY(mu_json_read_number(reader, object, "specific_tension", MU_JSON_OPTIONAL, specific_tension,
                                     "the specific tension in N/m²", &muscle->specific_tension));
     if (has_max_force && json_object_get(object, "specific_tension") != NULL) {
         mu_json_push_key(reader, "specific_tension");
         return mu_json_fail(reader, MU_JSON_AT_VALUE,
                             "given with max_force, expected either max_force or rest_width with specific_tension");
     }
-    return RB_OK;
+    if (has_max_force) {
+        return RB_OK;
+    }
+    /* The force mu_muscle_def derives: the circular cross-section times the tension. */
+    const double force = RB_PI * muscle->rest_width * muscle->rest_width / 4.0 * muscle->specific_tension;
+    return check_derived(reader, "rest_width", force, max_force,
+                         "the maximal force π·rest_width²/4·specific_tension in N");
 }
 
 /* Vmax: max_velocity in m/s (the original's), or max_velocity_rest_lengths in
@@ -262,12 +353,12 @@ static rb_status parse_muscle_velocity(mu_json_reader *reader, const json_t *obj
                                        double *rest_lengths_per_second)
 {
     muscle->max_velocity = DEFAULT_MAX_VELOCITY;
-    MU_JSON_TRY(mu_json_read_number(reader, object, "max_velocity", MU_JSON_OPTIONAL, mu_json_positive,
+    MU_JSON_TRY(mu_json_read_number(reader, object, "max_velocity", MU_JSON_OPTIONAL, max_velocity,
                                     "the maximal shortening speed in m/s", &muscle->max_velocity));
     *rest_lengths_per_second = 0.0;
-    MU_JSON_TRY(mu_json_read_number(reader, object, "max_velocity_rest_lengths", MU_JSON_OPTIONAL, mu_json_positive,
-                                    "the maximal shortening speed in rest lengths per second",
-                                    rest_lengths_per_second));
+    MU_JSON_TRY(
+        mu_json_read_number(reader, object, "max_velocity_rest_lengths", MU_JSON_OPTIONAL, max_velocity_rest_lengths,
+                            "the maximal shortening speed in rest lengths per second", rest_lengths_per_second));
     if (*rest_lengths_per_second > 0.0 && json_object_get(object, "max_velocity") != NULL) {
         mu_json_push_key(reader, "max_velocity_rest_lengths");
         return mu_json_fail(reader, MU_JSON_AT_VALUE,
@@ -286,7 +377,7 @@ static rb_status parse_muscle_start(mu_json_reader *reader, const json_t *object
                                     "the belly's length at creation over its rest length",
                                     &muscle->start_normalized_length));
     muscle->tendon_length = -1.0;
-    MU_JSON_TRY(mu_json_read_number(reader, object, "tendon_length", MU_JSON_OPTIONAL, mu_json_non_negative,
+    MU_JSON_TRY(mu_json_read_number(reader, object, "tendon_length", MU_JSON_OPTIONAL, tendon_length,
                                     "the tendon's length in m", &muscle->tendon_length));
     if (muscle->tendon_length >= 0.0 && json_object_get(object, "start_normalized_length") != NULL) {
         mu_json_push_key(reader, "tendon_length");
@@ -319,7 +410,7 @@ static rb_status parse_muscle_size(mu_json_reader *reader, const json_t *object,
                             "share of the path that derives it)");
     }
     return mu_json_read_number(reader, object, "rest_length", derived ? MU_JSON_OPTIONAL : MU_JSON_REQUIRED,
-                               mu_json_positive, "the fibres' rest (optimal) length in m", &muscle->rest_length);
+                               rest_length, "the fibres' rest (optimal) length in m", &muscle->rest_length);
 }
 
 /* The options beyond the original muscle: pennation, activation dynamics
@@ -338,9 +429,9 @@ static rb_status parse_muscle_physiology(mu_json_reader *reader, const json_t *o
         static const char *const keys[] = {"activation_time", "deactivation_time", NULL};
         mu_json_push_key(reader, "activation_dynamics");
         MU_JSON_TRY(mu_json_check_object(reader, dynamics, keys));
-        MU_JSON_TRY(mu_json_read_number(reader, dynamics, "activation_time", MU_JSON_OPTIONAL, mu_json_positive,
+        MU_JSON_TRY(mu_json_read_number(reader, dynamics, "activation_time", MU_JSON_OPTIONAL, time_constant,
                                         "the activation time constant in s", &muscle->activation_time));
-        MU_JSON_TRY(mu_json_read_number(reader, dynamics, "deactivation_time", MU_JSON_OPTIONAL, mu_json_positive,
+        MU_JSON_TRY(mu_json_read_number(reader, dynamics, "deactivation_time", MU_JSON_OPTIONAL, time_constant,
                                         "the deactivation time constant in s", &muscle->deactivation_time));
         mu_json_pop(reader);
         muscle->activation_dynamics = true;
@@ -350,13 +441,12 @@ static rb_status parse_muscle_physiology(mu_json_reader *reader, const json_t *o
     const json_t *tendon = json_object_get(object, "compliant_tendon");
     if (tendon != NULL) {
         static const char *const keys[] = {"strain_at_max_force", "fibre_damping", NULL};
-        const mu_json_bounds strain = {0.0, 1.0, true, false};
         mu_json_push_key(reader, "compliant_tendon");
         MU_JSON_TRY(mu_json_check_object(reader, tendon, keys));
-        MU_JSON_TRY(mu_json_read_number(reader, tendon, "strain_at_max_force", MU_JSON_OPTIONAL, strain,
+        MU_JSON_TRY(mu_json_read_number(reader, tendon, "strain_at_max_force", MU_JSON_OPTIONAL, tendon_strain,
                                         "the tendon's strain at the maximal isometric force",
                                         &muscle->tendon_strain_at_max_force));
-        MU_JSON_TRY(mu_json_read_number(reader, tendon, "fibre_damping", MU_JSON_OPTIONAL, mu_json_positive,
+        MU_JSON_TRY(mu_json_read_number(reader, tendon, "fibre_damping", MU_JSON_OPTIONAL, fibre_damping,
                                         "the fibre's damping per unit normalized velocity over Fmax",
                                         &muscle->fibre_damping));
         mu_json_pop(reader);
@@ -365,22 +455,12 @@ static rb_status parse_muscle_physiology(mu_json_reader *reader, const json_t *o
     return RB_OK;
 }
 
-/* A path point's place at the model's start pose (before placement, which
- * moves every point alike). */
-static rb_vec2 start_point(const mu_model_desc *desc, const mu_model_path_point *point)
-{
-    if (point->body.kind == MU_MODEL_NAIL) {
-        return rb_add(desc->nails[point->body.index].position, point->point);
-    }
-    const mu_model_bone *bone = &desc->bones[point->body.index];
-    return rb_add(bone->centre, rb_rotate(rb_rot_from_angle(bone->angle / DEGREES), point->point));
-}
-
 static double start_path_length(const mu_model_desc *desc, const mu_model_muscle *muscle)
 {
     double length = 0.0;
     for (int i = 0; i + 1 < muscle->point_count; ++i) {
-        length += rb_distance(start_point(desc, &muscle->path[i]), start_point(desc, &muscle->path[i + 1]));
+        length += rb_distance(start_point(desc, muscle->path[i].body, muscle->path[i].point),
+                              start_point(desc, muscle->path[i + 1].body, muscle->path[i + 1].point));
     }
     return length;
 }
@@ -403,6 +483,10 @@ static rb_status derive_muscle_lengths(mu_json_reader *reader, const mu_model_de
         }
         muscle->rest_length = lengths.rest_length;
         muscle->tendon_length = lengths.tendon_length;
+        MU_JSON_TRY(check_derived(reader, "tendon_fraction", muscle->rest_length, rest_length,
+                                  "the rest length it derives from the path at the start pose, in m,"));
+        MU_JSON_TRY(check_derived(reader, "tendon_fraction", muscle->tendon_length, tendon_length,
+                                  "the tendon length it derives from the path at the start pose, in m,"));
     }
     if (muscle->compliant_tendon) {
         double slack = muscle->tendon_length;
@@ -488,6 +572,8 @@ static rb_status parse_muscle(mu_json_reader *reader, const json_t *object, mu_m
     MU_JSON_TRY(derive_muscle_lengths(reader, desc, muscle));
     if (rest_lengths_per_second > 0.0) {
         muscle->max_velocity = rest_lengths_per_second * muscle->rest_length;
+        return check_derived(reader, "max_velocity_rest_lengths", muscle->max_velocity, max_velocity,
+                             "the maximal shortening speed it gives with the rest length, in m/s,");
     }
     return RB_OK;
 }
@@ -505,9 +591,9 @@ static rb_status parse_motor_pool(mu_json_reader *reader, const json_t *object, 
     MU_JSON_TRY(mu_json_check_object(reader, pool, keys));
     MU_JSON_TRY(mu_json_read_int(reader, pool, "neurons", MU_JSON_REQUIRED, 1, MU_MAX_MOTOR_NEURONS,
                                  "the number of motor neurons", &muscle->neurons));
-    MU_JSON_TRY(mu_json_read_number(reader, pool, "weakest", MU_JSON_REQUIRED, mu_json_positive,
+    MU_JSON_TRY(mu_json_read_number(reader, pool, "weakest", MU_JSON_REQUIRED, neuron_strength,
                                     "the first (weakest) neuron's strength", &muscle->weakest));
-    MU_JSON_TRY(mu_json_read_number(reader, pool, "strongest", MU_JSON_REQUIRED, mu_json_positive,
+    MU_JSON_TRY(mu_json_read_number(reader, pool, "strongest", MU_JSON_REQUIRED, neuron_strength,
                                     "the last (strongest) neuron's strength", &muscle->strongest));
     if (muscle->strongest < muscle->weakest) {
         mu_json_push_key(reader, "strongest");
@@ -539,7 +625,7 @@ static rb_status parse_torque_muscle(mu_json_reader *reader, const json_t *objec
                                 mu_model_desc_name_of(desc, muscle->body));
         }
     }
-    MU_JSON_TRY(mu_json_read_number(reader, object, "peak_torque", MU_JSON_REQUIRED, mu_json_any,
+    MU_JSON_TRY(mu_json_read_number(reader, object, "peak_torque", MU_JSON_REQUIRED, peak_torque,
                                     "the torque at full recruitment in N·m", &muscle->peak_torque));
     MU_JSON_TRY(parse_motor_pool(reader, object, muscle));
     return mu_json_read_int(reader, object, "recruited", MU_JSON_OPTIONAL, 0, muscle->neurons,
@@ -577,7 +663,7 @@ static rb_status parse_weight(mu_json_reader *reader, const json_t *object, mu_m
     mu_model_weight *weight = &desc->weight;
     MU_JSON_TRY(read_object_name(reader, object, desc, &weight->name));
     MU_JSON_TRY(read_body(reader, object, "body", desc, &weight->body));
-    MU_JSON_TRY(mu_json_read_vec2(reader, object, "position", MU_JSON_REQUIRED, mu_json_any, "the weight's centre in m",
+    MU_JSON_TRY(mu_json_read_vec2(reader, object, "position", MU_JSON_REQUIRED, coordinate, "the weight's centre in m",
                                   &weight->position));
     const json_t *masses;
     MU_JSON_TRY(mu_json_read_array(reader, object, "masses", MU_JSON_REQUIRED, 1, MU_MODEL_MAX_OBJECTS,
@@ -588,7 +674,7 @@ static rb_status parse_weight(mu_json_reader *reader, const json_t *object, mu_m
     mu_json_push_key(reader, "masses");
     for (size_t i = 0; i < json_array_size(masses); ++i) {
         mu_json_push_index(reader, i);
-        MU_JSON_TRY(mu_json_expect_number(reader, json_array_get(masses, i), mu_json_non_negative,
+        MU_JSON_TRY(mu_json_expect_number(reader, json_array_get(masses, i), weight_mass,
                                           "a mass in kg, 0 for no weight", &weight->masses[i]));
         mu_json_pop(reader);
     }
@@ -726,15 +812,23 @@ static rb_status parse_settings(mu_json_reader *reader, const json_t *root, mu_m
     MU_JSON_TRY(mu_json_read_string(reader, root, "name", MU_JSON_REQUIRED, "the model's name", &name));
     MU_JSON_TRY(copy_string(name, &desc->name));
     desc->gravity = rb_v2(0.0, DEFAULT_GRAVITY_Y);
-    MU_JSON_TRY(mu_json_read_vec2(reader, root, "gravity", MU_JSON_OPTIONAL, mu_json_any, "the gravity in m/s²",
+    MU_JSON_TRY(mu_json_read_vec2(reader, root, "gravity", MU_JSON_OPTIONAL, gravity_component, "the gravity in m/s²",
                                   &desc->gravity));
     desc->frame_rate = DEFAULT_FRAME_RATE;
-    MU_JSON_TRY(mu_json_read_number(reader, root, "frame_rate", MU_JSON_OPTIONAL, mu_json_positive,
-                                    "the frame rate in Hz", &desc->frame_rate));
+    MU_JSON_TRY(mu_json_read_number(reader, root, "frame_rate", MU_JSON_OPTIONAL, frame_rate, "the frame rate in Hz",
+                                    &desc->frame_rate));
     desc->substeps = DEFAULT_SUBSTEPS;
     MU_JSON_TRY(mu_json_read_int(reader, root, "substeps", MU_JSON_OPTIONAL, 1, MAX_SUBSTEPS, "the substeps per frame",
                                  &desc->substeps));
-    return mu_json_read_vec2(reader, root, "placement", MU_JSON_OPTIONAL, mu_json_any, "the model's offset in m",
+    const double substep_rate = desc->frame_rate * desc->substeps;
+    if (substep_rate < MIN_SUBSTEP_RATE || substep_rate > MAX_SUBSTEP_RATE) {
+        mu_json_push_key(reader, json_object_get(root, "substeps") != NULL ? "substeps" : "frame_rate");
+        return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                            "frame_rate × substeps is %g Hz, expected a substep rate in [%g, %g] Hz (a substep of "
+                            "1/60 s at most)",
+                            substep_rate, MIN_SUBSTEP_RATE, MAX_SUBSTEP_RATE);
+    }
+    return mu_json_read_vec2(reader, root, "placement", MU_JSON_OPTIONAL, coordinate, "the model's offset in m",
                              &desc->placement);
 }
 
