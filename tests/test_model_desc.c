@@ -525,7 +525,7 @@ static const bad_model bad_models[] = {
     {"zero_frame_rate.json",
      "zero_frame_rate.json:3:17: frame_rate: 0 is out of range, expected the frame rate in Hz (in [1, 1000])"},
     {"negative_weight_mass.json", "negative_weight_mass.json:16:92: weight.masses[2]: -5 is out of range, expected a "
-                                  "mass in kg, 0 for no weight (in [0, 10000])"},
+                                  "mass in kg, 0 for no weight (in [0, 1e+06])"},
     {"empty_weight_list.json", "empty_weight_list.json:16:85: weight.masses: found 0 elements, expected 1 to 65535 "
                                "weight choices in kg"},
     {"unknown_body_in_hinge.json", "unknown_body_in_hinge.json:11:72: hinges[0].body_b: no nail or bone is named "
@@ -617,7 +617,7 @@ static const bad_model bad_models[] = {
     {"density_tiny.json", "density_tiny.json:7:77: bones[0].density: 1e-300 is out of range, expected the bone's "
                           "density in kg/m³ (in [1, 100000])"},
     {"weight_mass_huge.json", "weight_mass_huge.json:16:92: weight.masses[2]: 1e+308 is out of range, expected a mass "
-                              "in kg, 0 for no weight (in [0, 10000])"},
+                              "in kg, 0 for no weight (in [0, 1e+06])"},
     {"max_force_huge.json", "max_force_huge.json:20:40: muscles[0].max_force: 1e+308 is out of range, expected the "
                             "maximal isometric force in N (in [0.001, 1e+06])"},
     {"rest_width_huge.json", "rest_width_huge.json:20:41: muscles[0].rest_width: 1e+200 is out of range, expected the "

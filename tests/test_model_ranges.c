@@ -55,7 +55,7 @@ static const field_range fields[] = {
     {"hinges[0].upper", -360.0, 360.0, false, false, "(in [-360, 360])"},
     {"weight.position[0]", -100.0, 100.0, false, false, "(in [-100, 100])"},
     {"weight.position[1]", -100.0, 100.0, false, false, "(in [-100, 100])"},
-    {"weight.masses[1]", 0.0, 1e4, false, false, "(in [0, 10000])"},
+    {"weight.masses[1]", 0.0, 1e6, false, false, "(in [0, 1e+06])"},
     {"muscles[0].rest_length", 1e-3, 10.0, false, false, "(in [0.001, 10])"},
     {"muscles[0].rest_width", 1e-4, 1.0, false, false, "(in [0.0001, 1])"},
     {"muscles[0].specific_tension", 1e3, 1e7, false, false, "(in [1000, 1e+07])"},

@@ -56,8 +56,9 @@ static const mu_json_bounds angle_degrees = {-MAX_LIMIT_DEGREES, MAX_LIMIT_DEGRE
 static const mu_json_bounds density = {1.0, 1e5, false, false};
 /* m: drawn size only, but a huge circle stalls the drawing. */
 static const mu_json_bounds radius = {0.0, 100.0, true, false};
-/* kg: 0 for no weight. */
-static const mu_json_bounds weight_mass = {0.0, 1e4, false, false};
+/* kg: 0 for no weight; a million kilograms tears the arm apart (which
+ * mu_model_failure reports), but stays finite. */
+static const mu_json_bounds weight_mass = {0.0, 1e6, false, false};
 static const mu_json_bounds rest_length = {1e-3, 10.0, false, false};
 static const mu_json_bounds rest_width = {1e-4, 1.0, false, false};
 /* N/m²: physiological values are 2e5 to 1e6. */
