@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /* Fuzz target: a CSV file's bytes, read as `sinew plot` reads them
  * (csv_table_read) and, when accepted, drawn as it draws them: the first
- * numeric column against the others, each a series named by its header, by
- * chart_draw into a small image. The same bytes then go through the muscle
- * layer's CSV reader with the flags of the curve tables and motor-pool
- * profiles (spaces separate, '#' comments), every field read as a number. */
+ * numeric column against the others, each a series named by its header,
+ * the axes labelled from the names (column_label), by chart_draw into a
+ * small image. The same bytes then go through the muscle layer's CSV
+ * reader with the flags of the curve tables and motor-pool profiles
+ * (spaces separate, '#' comments), every field read as a number. */
 #define _POSIX_C_SOURCE 200809L /* fmemopen */
 
 #include <cairo.h>
@@ -13,6 +14,7 @@
 #include <stdlib.h>
 
 #include "chart/chart.h"
+#include "chart/column_label.h"
 #include "csv_reader.h" /* musculo/src: the muscle layer's internal CSV reader */
 #include "io/csv_table.h"
 #include "memory_file.h"
@@ -47,9 +49,13 @@ static void draw(const csv_table *table)
     if (count == 0) {
         return;
     }
+    /* Axis labels from the column names, with their units, as `sinew plot` makes them. */
+    char x_label[256], y_label[256];
+    column_label(table->columns[x].name, x_label, sizeof x_label);
+    column_label(series[count - 1].label, y_label, sizeof y_label);
     chart figure = {.title = table->columns[0].name,
-                    .x_label = table->columns[x].name,
-                    .y_label = table->columns[table->column_count - 1].name,
+                    .x_label = x_label,
+                    .y_label = y_label,
                     .series = series,
                     .series_count = count};
     cairo_surface_t *surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, WIDTH, HEIGHT);
