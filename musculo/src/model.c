@@ -16,7 +16,6 @@
 
 /* The constants of Castanyer's framework ("Implementació d'un model
  * computacional de sistemes musculoesquelètics", 2023-24). */
-#define BONE_DAMPING 8.0  /* 1/s, linear and angular */
 #define BONE_FRICTION 8.0 /* the original's; bones are sensors, so it never acts */
 #define BONE_RESTITUTION 0.5
 #define NAIL_HALF_EXTENT 0.0025 /* m: the original's tiny box */
@@ -117,6 +116,13 @@ static void unite(int *parent, int a, int b)
 
 /* ---- bodies ----------------------------------------------------------------------- */
 
+/* The damping of a part's body, linear and angular, in 1/s: a bone's own,
+ * or the model's for a nail (static, where damping does nothing). */
+static double part_damping(const mu_model_desc *desc, int part_index)
+{
+    return part_index < desc->nail_count ? desc->damping : desc->bones[part_index - desc->nail_count].damping;
+}
+
 static bool part_is_static(const mu_model_desc *desc, int part_index)
 {
     return part_index < desc->nail_count || desc->bones[part_index - desc->nail_count].is_static;
@@ -201,8 +207,9 @@ static rb_status build_bodies(mu_model *model, bool merge)
             def.type = is_static[root] ? RB_BODY_STATIC : RB_BODY_DYNAMIC;
             def.position = root_pose.p;
             def.angle = rb_rot_angle(root_pose.q);
-            def.linear_damping = BONE_DAMPING;
-            def.angular_damping = BONE_DAMPING;
+            /* Glued parts take the first one's damping, as they take its frame. */
+            def.linear_damping = part_damping(desc, root);
+            def.angular_damping = part_damping(desc, root);
             def.bullet = true;
             status = rb_body_create(model->world, &def, &model->bodies[model->body_count]);
             body_of_root[root] = model->body_count++;
@@ -324,8 +331,9 @@ static rb_status build_weight(mu_model *model, bool merge)
     rb_body_def def = rb_default_body_def();
     def.type = RB_BODY_DYNAMIC;
     def.position = centre;
-    def.linear_damping = BONE_DAMPING;
-    def.angular_damping = BONE_DAMPING;
+    /* Welded to its carrier, the disc moves as the carrier does, damped alike. */
+    def.linear_damping = part_damping(desc, carrier);
+    def.angular_damping = part_damping(desc, carrier);
     rb_body_id body;
     rb_status status = rb_body_create(model->world, &def, &body);
     rb_circle disc = {{0.0, 0.0}, radius};

@@ -19,6 +19,7 @@
 #define DEFAULT_FRAME_RATE 60.0        /* Hz */
 #define DEFAULT_SUBSTEPS 10            /* per frame */
 #define DEFAULT_BONE_DENSITY 1900.0    /* kg/m³ */
+#define DEFAULT_BONE_DAMPING 8.0       /* 1/s, linear and angular */
 #define DEFAULT_SPECIFIC_TENSION 1.5e6 /* N/m², the original code's (its report's table says 3e5) */
 #define DEFAULT_MAX_VELOCITY 0.25      /* m/s */
 #define DEFAULT_START_NORMALIZED_LENGTH 1.0
@@ -54,6 +55,9 @@ static const mu_json_bounds extent = {1e-3, 100.0, false, false};
 static const mu_json_bounds angle_degrees = {-MAX_LIMIT_DEGREES, MAX_LIMIT_DEGREES, false, false};
 /* kg/m³: from cork (about 100) down to 1, up to 5 times osmium's 22,590. */
 static const mu_json_bounds density = {1.0, 1e5, false, false};
+/* 1/s: a bone's velocity decays as exp(-c·t); 1000/s stops it within a
+ * few milliseconds, and v/(1 + h·c) stays stable for any c. */
+static const mu_json_bounds damping = {0.0, 1e3, false, false};
 /* m: drawn size only, but a huge circle stalls the drawing. */
 static const mu_json_bounds radius = {0.0, 100.0, true, false};
 /* kg: 0 for no weight; a million kilograms tears the arm apart (which
@@ -231,7 +235,8 @@ static rb_status parse_nail(mu_json_reader *reader, const json_t *object, mu_mod
 
 static rb_status parse_bone(mu_json_reader *reader, const json_t *object, mu_model_desc *desc)
 {
-    static const char *const keys[] = {"name", "centre", "size", "angle", "depth", "static", "density", NULL};
+    static const char *const keys[] = {"name",   "centre",  "size",    "angle", "depth",
+                                       "static", "density", "damping", NULL};
     MU_JSON_TRY(mu_json_check_object(reader, object, keys));
     mu_model_bone *bone = &desc->bones[desc->bone_count++];
     MU_JSON_TRY(read_object_name(reader, object, desc, &bone->name));
@@ -247,8 +252,11 @@ static rb_status parse_bone(mu_json_reader *reader, const json_t *object, mu_mod
     MU_JSON_TRY(
         mu_json_read_bool(reader, object, "static", MU_JSON_OPTIONAL, "whether the bone is static", &bone->is_static));
     bone->density = DEFAULT_BONE_DENSITY;
-    return mu_json_read_number(reader, object, "density", MU_JSON_OPTIONAL, density, "the bone's density in kg/m³",
-                               &bone->density);
+    MU_JSON_TRY(mu_json_read_number(reader, object, "density", MU_JSON_OPTIONAL, density, "the bone's density in kg/m³",
+                                    &bone->density));
+    bone->damping = desc->damping;
+    return mu_json_read_number(reader, object, "damping", MU_JSON_OPTIONAL, damping, "the bone's damping in 1/s",
+                               &bone->damping);
 }
 
 /* Where `point`, in the frame of the nail or bone `body`, is at the model's
@@ -829,15 +837,18 @@ static rb_status parse_settings(mu_json_reader *reader, const json_t *root, mu_m
                             "1/60 s at most)",
                             substep_rate, MIN_SUBSTEP_RATE, MAX_SUBSTEP_RATE);
     }
-    return mu_json_read_vec2(reader, root, "placement", MU_JSON_OPTIONAL, coordinate, "the model's offset in m",
-                             &desc->placement);
+    MU_JSON_TRY(mu_json_read_vec2(reader, root, "placement", MU_JSON_OPTIONAL, coordinate, "the model's offset in m",
+                                  &desc->placement));
+    desc->damping = DEFAULT_BONE_DAMPING;
+    return mu_json_read_number(reader, root, "damping", MU_JSON_OPTIONAL, damping, "the bones' damping in 1/s",
+                               &desc->damping);
 }
 
 rb_status mu_model_parse(mu_json_reader *reader, const json_t *root, mu_model_desc *desc)
 {
-    static const char *const keys[] = {"name",    "gravity", "frame_rate", "substeps",       "placement",
-                                       "nails",   "bones",   "hinges",     "glues",          "weight",
-                                       "muscles", "groups",  "variants",   "torque_muscles", NULL};
+    static const char *const keys[] = {"name",   "gravity",  "frame_rate",     "substeps", "placement", "damping",
+                                       "nails",  "bones",    "hinges",         "glues",    "weight",    "muscles",
+                                       "groups", "variants", "torque_muscles", NULL};
     MU_JSON_TRY(mu_json_check_object(reader, root, keys));
     MU_JSON_TRY(parse_settings(reader, root, desc));
     const json_t *list;

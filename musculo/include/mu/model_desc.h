@@ -73,6 +73,9 @@ typedef struct mu_model_bone {
     double depth;   /**< m, > 0; default the smaller extent (the bone's thickness) */
     bool is_static; /**< default false */
     double density; /**< kg/m³, > 0; default 1900 */
+    /** 1/s, linear and angular, in [0, 1000]; default the model's damping.
+     * Bones glued into one body take the first one's (in file order). */
+    double damping;
 } mu_model_bone;
 
 /** A revolute joint pinning anchor_a on body A to anchor_b on body B. The
@@ -187,6 +190,7 @@ typedef struct mu_model_desc {
     double frame_rate; /**< Hz, > 0; default 60 */
     int substeps;      /**< per frame, >= 1; default 10 */
     rb_vec2 placement; /**< m, added to every position when the model is built; default (0, 0) */
+    double damping;    /**< 1/s, every bone's unless it gives its own, in [0, 1000]; default 8 */
     int nail_count;
     mu_model_nail *nails;
     int bone_count;
