@@ -639,6 +639,8 @@ static const bad_model bad_models[] = {
     {"vmax_rest_lengths_too_slow.json",
      "vmax_rest_lengths_too_slow.json:20:78: muscles[0].max_velocity_rest_lengths: the maximal shortening speed it "
      "gives with the rest length, in m/s, is 0.0001, expected a value in [0.001, 100]"},
+    {"path_points_coincide.json", "path_points_coincide.json:23:9: muscles[0].path[1]: is 0 m from path[0] at the "
+                                  "start pose, expected consecutive path points at least 0.0005 m apart"},
 };
 
 #define BAD_MODEL_COUNT (sizeof bad_models / sizeof bad_models[0])

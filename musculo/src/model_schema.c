@@ -12,6 +12,7 @@
 #include "mu/geometry_lengths.h"
 #include "mu/motor_pool.h"
 #include "mu/muscle.h"
+#include "rb/geometry.h"
 
 /* The defaults of Castanyer's framework ("Implementació d'un model
  * computacional de sistemes musculoesquelètics", 2023-24). */
@@ -528,6 +529,18 @@ static rb_status parse_muscle_path(mu_json_reader *reader, const json_t *object,
         mu_json_push_index(reader, i);
         MU_JSON_TRY(parse_path_point(reader, json_array_get(path, i), desc, &muscle->path[i]));
         muscle->point_count = (int)i + 1;
+        if (i > 0) {
+            /* A segment of no length has no direction to pull along: the
+             * engine refuses such a cable (rb_cable_create). */
+            const mu_model_path_point *a = &muscle->path[i - 1], *b = &muscle->path[i];
+            const double gap = rb_distance(start_point(desc, a->body, a->point), start_point(desc, b->body, b->point));
+            if (gap < RB_POLYGON_WELD_DISTANCE) {
+                return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                                    "is %g m from path[%zu] at the start pose, expected consecutive path points at "
+                                    "least %g m apart",
+                                    gap, i - 1, RB_POLYGON_WELD_DISTANCE);
+            }
+        }
         mu_json_pop(reader);
     }
     mu_json_pop(reader);
