@@ -440,7 +440,7 @@ static bool create_pendulum(bench_world *bw)
     if (rb_shape_create_circle(bw->world, bw->bob, &material, &circle, &shape) != RB_OK) {
         return engine_failed("rb_shape_create_circle (bob)");
     }
-    rb_revolute_joint_def joint_def;
+    rb_revolute_joint_def joint_def = rb_default_revolute_joint_def();
     rb_joint_id joint;
     if (rb_revolute_joint_def_at(&joint_def, bw->world, pivot, bw->bob, rb_v2(0.0, 0.0)) != RB_OK ||
         rb_revolute_joint_create(bw->world, &joint_def, &joint) != RB_OK) {

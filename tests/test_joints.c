@@ -550,7 +550,9 @@ Test(joints, invalid_definitions_are_refused_and_leave_the_world_usable)
     const rb_body_id null_body = {0};
     rb_joint_id joint;
 
-    const rb_revolute_joint_def good = {.body_a = a, .body_b = b};
+    rb_revolute_joint_def good = rb_default_revolute_joint_def();
+    good.body_a = a;
+    good.body_b = b;
     rb_revolute_joint_def r = good;
     expect_status(rb_revolute_joint_create(world, NULL, &joint), RB_ERR_INVALID_ARGUMENT, "revolute, NULL def");
     expect_status(rb_revolute_joint_create(world, &r, NULL), RB_ERR_INVALID_ARGUMENT, "revolute, NULL out");
@@ -583,7 +585,9 @@ Test(joints, invalid_definitions_are_refused_and_leave_the_world_usable)
     expect_status(rb_revolute_joint_def_at(&r, world, a, b, rb_v2(NAN, 0.0)), RB_ERR_INVALID_ARGUMENT,
                   "rb_revolute_joint_def_at, anchor NaN");
 
-    const rb_weld_joint_def weld = {.body_a = a, .body_b = b};
+    rb_weld_joint_def weld = rb_default_weld_joint_def();
+    weld.body_a = a;
+    weld.body_b = b;
     rb_weld_joint_def w = weld;
     w.linear_hertz = NAN;
     expect_status(rb_weld_joint_create(world, &w, &joint), RB_ERR_INVALID_ARGUMENT, "weld, linear hertz NaN");
@@ -595,7 +599,10 @@ Test(joints, invalid_definitions_are_refused_and_leave_the_world_usable)
     expect_status(rb_weld_joint_create(world, &w, &joint), RB_ERR_INVALID_ARGUMENT, "weld, anchor NaN");
     expect_status(rb_weld_joint_create(world, NULL, &joint), RB_ERR_INVALID_ARGUMENT, "weld, NULL def");
 
-    const rb_distance_joint_def distance = {.body_a = a, .body_b = b, .length = 1.0};
+    rb_distance_joint_def distance = rb_default_distance_joint_def();
+    distance.body_a = a;
+    distance.body_b = b;
+    distance.length = 1.0;
     rb_distance_joint_def d = distance;
     d.length = 0.0;
     expect_status(rb_distance_joint_create(world, &d, &joint), RB_ERR_INVALID_ARGUMENT, "distance, length 0");
@@ -612,7 +619,11 @@ Test(joints, invalid_definitions_are_refused_and_leave_the_world_usable)
     expect_status(rb_distance_joint_create(world, &d, &joint), RB_ERR_INVALID_ARGUMENT, "distance, hertz < 0");
     expect_status(rb_distance_joint_create(world, &distance, NULL), RB_ERR_INVALID_ARGUMENT, "distance, NULL out");
 
-    const rb_mouse_joint_def mouse = {.body = a, .max_force = 10.0, .hertz = 5.0, .damping_ratio = 0.7};
+    rb_mouse_joint_def mouse = rb_default_mouse_joint_def();
+    mouse.body = a;
+    mouse.max_force = 10.0;
+    mouse.hertz = 5.0;
+    mouse.damping_ratio = 0.7;
     rb_mouse_joint_def m = mouse;
     m.body = ground;
     expect_status(rb_mouse_joint_create(world, &m, &joint), RB_ERR_INVALID_ARGUMENT, "mouse on a static body");

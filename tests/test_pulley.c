@@ -52,11 +52,11 @@ static machine make_machine(double density_a, double density_b, double ratio, do
     m.m_a = rb_body_mass(m.world, m.a);
     m.m_b = rb_body_mass(m.world, m.b);
     rb_pulley_joint_def def = rb_default_pulley_joint_def();
-    def.ratio = ratio;
-    def.min_length = min_length;
     cr_assert_eq(
         rb_pulley_joint_def_between(&def, m.world, m.a, m.b, ground_a, ground_b, rb_v2(-1.0, 0.0), rb_v2(1.0, 0.0)),
         RB_OK, "%s", rb_last_error());
+    def.ratio = ratio;
+    def.min_length = min_length;
     cr_assert_eq(rb_pulley_joint_create(m.world, &def, &m.rope), RB_OK, "%s", rb_last_error());
     return m;
 }

@@ -15,6 +15,7 @@ rb_body_def rb_default_body_def(void)
         .gravity_scale = 1.0,
         .awake = true,
         .enable_sleep = true,
+        .internal_value = RB_DEF_COOKIE,
     };
 }
 
@@ -22,16 +23,17 @@ static rb_status check_body_def(const rb_body_def *def)
 {
     const char *f = "rb_body_create";
     RB_TRY(rb_check_pointer(f, "def", def));
+    RB_TRY(rb_check_def_cookie(f, "rb_default_body_def", def->internal_value));
     if (def->type != RB_BODY_STATIC && def->type != RB_BODY_KINEMATIC && def->type != RB_BODY_DYNAMIC) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: type is %d, expected a rb_body_type", f, (int)def->type);
     }
-    RB_TRY(rb_check_vec2(f, "position", def->position));
-    RB_TRY(rb_check_finite(f, "angle", def->angle));
-    RB_TRY(rb_check_vec2(f, "linear_velocity", def->linear_velocity));
-    RB_TRY(rb_check_finite(f, "angular_velocity", def->angular_velocity));
-    RB_TRY(rb_check_range(f, "linear_damping", def->linear_damping, 0.0, DBL_MAX));
-    RB_TRY(rb_check_range(f, "angular_damping", def->angular_damping, 0.0, DBL_MAX));
-    RB_TRY(rb_check_finite(f, "gravity_scale", def->gravity_scale));
+    RB_TRY(rb_check_point(f, "position", def->position));
+    RB_TRY(rb_check_bound(f, "angle", def->angle, RB_MAX_ANGLE, "rad"));
+    RB_TRY(rb_check_vec2_bound(f, "linear_velocity", def->linear_velocity, RB_MAX_SPEED, "m/s"));
+    RB_TRY(rb_check_bound(f, "angular_velocity", def->angular_velocity, RB_MAX_SPEED, "rad/s"));
+    RB_TRY(rb_check_range(f, "linear_damping", def->linear_damping, 0.0, RB_MAX_DAMPING));
+    RB_TRY(rb_check_range(f, "angular_damping", def->angular_damping, 0.0, RB_MAX_DAMPING));
+    RB_TRY(rb_check_bound(f, "gravity_scale", def->gravity_scale, RB_MAX_GRAVITY_SCALE, ""));
     return RB_OK;
 }
 
@@ -45,7 +47,9 @@ static rb_status allocate_body_slot(rb_world *world, int *index)
     }
     int needed = world->body_slots + 1;
     if (rb_grow_array((void **)&world->bodies, &world->body_capacity, needed, sizeof *world->bodies) != 0 ||
-        rb_grow_array((void **)&world->states, &world->state_capacity, needed, sizeof *world->states) != 0) {
+        rb_grow_array((void **)&world->states, &world->state_capacity, needed, sizeof *world->states) != 0 ||
+        rb_grow_array((void **)&world->saved_states, &world->saved_state_capacity, needed,
+                      sizeof *world->saved_states) != 0) {
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_body_create: out of memory");
     }
     *index = world->body_slots++;
@@ -65,9 +69,9 @@ rb_status rb_body_create(rb_world *world, const rb_body_def *def, rb_body_id *ou
     RB_TRY(allocate_body_slot(world, &index));
 
     rb_body *body = &world->bodies[index];
-    uint16_t generation = (uint16_t)(body->generation + 1u);
+    uint32_t generation = body->generation + 1u;
     memset(body, 0, sizeof *body);
-    body->generation = generation != 0 ? generation : 1;
+    body->generation = generation;
     body->in_use = true;
     body->type = def->type;
     body->linear_damping = def->linear_damping;
@@ -109,8 +113,10 @@ rb_status rb_body_destroy(rb_world *world, rb_body_id id)
         RB_TRY(rb_shape_destroy(world, rb_make_shape_id(world, body->first_shape)));
     }
     body->in_use = false;
-    body->next_free = world->body_free;
-    world->body_free = index;
+    if (body->generation != RB_RETIRED_GENERATION) {
+        body->next_free = world->body_free;
+        world->body_free = index;
+    }
     world->body_count--;
     return RB_OK;
 }
@@ -323,8 +329,8 @@ rb_status rb_body_set_transform(rb_world *world, rb_body_id id, rb_vec2 position
 {
     int index;
     RB_TRY(find_for_change(world, id, "rb_body_set_transform", &index));
-    RB_TRY(rb_check_vec2("rb_body_set_transform", "position", position));
-    RB_TRY(rb_check_finite("rb_body_set_transform", "angle", angle));
+    RB_TRY(rb_check_point("rb_body_set_transform", "position", position));
+    RB_TRY(rb_check_bound("rb_body_set_transform", "angle", angle, RB_MAX_ANGLE, "rad"));
     rb_body_state *state = &world->states[index];
     state->angle = angle;
     state->rotation = rb_rot_from_angle(angle);
@@ -336,7 +342,7 @@ rb_status rb_body_set_linear_velocity(rb_world *world, rb_body_id id, rb_vec2 ve
 {
     int index;
     RB_TRY(find_for_change(world, id, "rb_body_set_linear_velocity", &index));
-    RB_TRY(rb_check_vec2("rb_body_set_linear_velocity", "velocity", velocity));
+    RB_TRY(rb_check_vec2_bound("rb_body_set_linear_velocity", "velocity", velocity, RB_MAX_SPEED, "m/s"));
     RB_TRY(check_moveable(world, index, "rb_body_set_linear_velocity"));
     world->states[index].linear_velocity = velocity;
     world->bodies[index].awake = true;
@@ -347,7 +353,7 @@ rb_status rb_body_set_angular_velocity(rb_world *world, rb_body_id id, double om
 {
     int index;
     RB_TRY(find_for_change(world, id, "rb_body_set_angular_velocity", &index));
-    RB_TRY(rb_check_finite("rb_body_set_angular_velocity", "omega", omega));
+    RB_TRY(rb_check_bound("rb_body_set_angular_velocity", "omega", omega, RB_MAX_SPEED, "rad/s"));
     RB_TRY(check_moveable(world, index, "rb_body_set_angular_velocity"));
     if (!world->bodies[index].fixed_rotation) {
         world->states[index].angular_velocity = omega;
@@ -389,8 +395,8 @@ rb_status rb_body_apply_force(rb_world *world, rb_body_id id, rb_vec2 force, rb_
 {
     int index;
     RB_TRY(find_for_change(world, id, "rb_body_apply_force", &index));
-    RB_TRY(rb_check_vec2("rb_body_apply_force", "force", force));
-    RB_TRY(rb_check_vec2("rb_body_apply_force", "world_point", world_point));
+    RB_TRY(rb_check_vec2_bound("rb_body_apply_force", "force", force, RB_MAX_FORCE, "N"));
+    RB_TRY(rb_check_point("rb_body_apply_force", "world_point", world_point));
     add_force(world, index, force, moment_about_center(world, index, world_point, force));
     return RB_OK;
 }
@@ -399,7 +405,7 @@ rb_status rb_body_apply_force_to_center(rb_world *world, rb_body_id id, rb_vec2 
 {
     int index;
     RB_TRY(find_for_change(world, id, "rb_body_apply_force_to_center", &index));
-    RB_TRY(rb_check_vec2("rb_body_apply_force_to_center", "force", force));
+    RB_TRY(rb_check_vec2_bound("rb_body_apply_force_to_center", "force", force, RB_MAX_FORCE, "N"));
     add_force(world, index, force, 0.0);
     return RB_OK;
 }
@@ -408,7 +414,7 @@ rb_status rb_body_apply_torque(rb_world *world, rb_body_id id, double torque)
 {
     int index;
     RB_TRY(find_for_change(world, id, "rb_body_apply_torque", &index));
-    RB_TRY(rb_check_finite("rb_body_apply_torque", "torque", torque));
+    RB_TRY(rb_check_bound("rb_body_apply_torque", "torque", torque, RB_MAX_FORCE, "N·m"));
     add_force(world, index, rb_v2(0.0, 0.0), torque);
     return RB_OK;
 }
@@ -417,8 +423,8 @@ rb_status rb_body_apply_linear_impulse(rb_world *world, rb_body_id id, rb_vec2 i
 {
     int index;
     RB_TRY(find_for_change(world, id, "rb_body_apply_linear_impulse", &index));
-    RB_TRY(rb_check_vec2("rb_body_apply_linear_impulse", "impulse", impulse));
-    RB_TRY(rb_check_vec2("rb_body_apply_linear_impulse", "world_point", world_point));
+    RB_TRY(rb_check_vec2_bound("rb_body_apply_linear_impulse", "impulse", impulse, RB_MAX_FORCE, "N·s"));
+    RB_TRY(rb_check_point("rb_body_apply_linear_impulse", "world_point", world_point));
     add_impulse(world, index, impulse, moment_about_center(world, index, world_point, impulse));
     return RB_OK;
 }
@@ -427,7 +433,7 @@ rb_status rb_body_apply_linear_impulse_to_center(rb_world *world, rb_body_id id,
 {
     int index;
     RB_TRY(find_for_change(world, id, "rb_body_apply_linear_impulse_to_center", &index));
-    RB_TRY(rb_check_vec2("rb_body_apply_linear_impulse_to_center", "impulse", impulse));
+    RB_TRY(rb_check_vec2_bound("rb_body_apply_linear_impulse_to_center", "impulse", impulse, RB_MAX_FORCE, "N·s"));
     add_impulse(world, index, impulse, 0.0);
     return RB_OK;
 }
@@ -436,7 +442,7 @@ rb_status rb_body_apply_angular_impulse(rb_world *world, rb_body_id id, double i
 {
     int index;
     RB_TRY(find_for_change(world, id, "rb_body_apply_angular_impulse", &index));
-    RB_TRY(rb_check_finite("rb_body_apply_angular_impulse", "impulse", impulse));
+    RB_TRY(rb_check_bound("rb_body_apply_angular_impulse", "impulse", impulse, RB_MAX_FORCE, "N·m·s"));
     add_impulse(world, index, rb_v2(0.0, 0.0), impulse);
     return RB_OK;
 }
@@ -463,6 +469,7 @@ static rb_status check_shapes_have_mass(const rb_world *world, int index, const 
                                    "expected a density > 0 or rb_body_set_mass_data",
                                    function, s, world->shapes[s].density);
         }
+        RB_TRY(rb_shape_check_mass(function, type, &world->shapes[s].geometry, world->shapes[s].density, true));
     }
     return RB_OK;
 }
@@ -498,9 +505,10 @@ rb_status rb_body_set_mass_data(rb_world *world, rb_body_id id, const rb_mass_da
     int index;
     RB_TRY(find_for_change(world, id, "rb_body_set_mass_data", &index));
     RB_TRY(rb_check_pointer("rb_body_set_mass_data", "mass_data", mass_data));
-    RB_TRY(rb_check_range("rb_body_set_mass_data", "mass", mass_data->mass, DBL_MIN, DBL_MAX));
-    RB_TRY(rb_check_vec2("rb_body_set_mass_data", "center", mass_data->center));
-    RB_TRY(rb_check_range("rb_body_set_mass_data", "rotational_inertia", mass_data->rotational_inertia, 0.0, DBL_MAX));
+    RB_TRY(rb_check_range("rb_body_set_mass_data", "mass", mass_data->mass, RB_MIN_MASS, RB_MAX_MASS));
+    RB_TRY(rb_check_point("rb_body_set_mass_data", "center", mass_data->center));
+    RB_TRY(rb_check_range("rb_body_set_mass_data", "rotational_inertia", mass_data->rotational_inertia, 0.0,
+                          RB_MAX_MASS * RB_MAX_LENGTH * RB_MAX_LENGTH));
     rb_body *body = &world->bodies[index];
     body->has_mass_override = true;
     body->mass_override = *mass_data;
@@ -536,10 +544,11 @@ rb_status rb_body_reset_mass_data(rb_world *world, rb_body_id id)
     }
 
 BODY_FIELD_SETTER(rb_body_set_linear_damping, double, damping, linear_damping,
-                  rb_check_range(function, "damping", damping, 0.0, DBL_MAX))
+                  rb_check_range(function, "damping", damping, 0.0, RB_MAX_DAMPING))
 BODY_FIELD_SETTER(rb_body_set_angular_damping, double, damping, angular_damping,
-                  rb_check_range(function, "damping", damping, 0.0, DBL_MAX))
-BODY_FIELD_SETTER(rb_body_set_gravity_scale, double, scale, gravity_scale, rb_check_finite(function, "scale", scale))
+                  rb_check_range(function, "damping", damping, 0.0, RB_MAX_DAMPING))
+BODY_FIELD_SETTER(rb_body_set_gravity_scale, double, scale, gravity_scale,
+                  rb_check_bound(function, "scale", scale, RB_MAX_GRAVITY_SCALE, ""))
 BODY_FIELD_SETTER(rb_body_set_bullet, bool, bullet, bullet, RB_OK)
 BODY_FIELD_SETTER(rb_body_set_user_data, void *, user_data, user_data, RB_OK)
 

@@ -19,7 +19,7 @@
 #include "error.h"
 #include "sleep.h"
 
-rb_cable_def rb_default_cable_def(void) { return (rb_cable_def){.point_count = 0}; }
+rb_cable_def rb_default_cable_def(void) { return (rb_cable_def){.internal_value = RB_DEF_COOKIE}; }
 
 /* A point of the path in the world: from its body's centre of mass,
  * turned with the body (no origin transform needed). */
@@ -37,6 +37,7 @@ rb_status rb_cable_create(rb_world *world, const rb_cable_def *def, rb_cable_id 
     RB_TRY(rb_check_pointer(f, "out", out));
     *out = (rb_cable_id){0};
     RB_TRY(rb_check_pointer(f, "def", def));
+    RB_TRY(rb_check_def_cookie(f, "rb_default_cable_def", def->internal_value));
     RB_TRY(rb_check_pointer(f, "world", world));
     RB_TRY(rb_world_check_unlocked(world, f));
     if (def->point_count < 2 || def->point_count > RB_MAX_CABLE_POINTS) {
@@ -46,7 +47,7 @@ rb_status rb_cable_create(rb_world *world, const rb_cable_def *def, rb_cable_id 
     rb_cable cable = {.point_count = def->point_count, .user_data = def->user_data};
     for (int i = 0; i < def->point_count; ++i) {
         RB_TRY(rb_world_find_body(world, def->bodies[i], f, &cable.bodies[i]));
-        RB_TRY(rb_check_vec2(f, "local_points[i]", def->local_points[i]));
+        RB_TRY(rb_check_point(f, "local_points[i]", def->local_points[i]));
         cable.local_points[i] = def->local_points[i];
     }
     for (int i = 0; i + 1 < def->point_count; ++i) {
@@ -66,12 +67,11 @@ rb_status rb_cable_create(rb_world *world, const rb_cable_def *def, rb_cable_id 
         index = world->cable_slots++;
         world->cables[index].generation = 0;
     }
-    uint16_t generation = (uint16_t)(world->cables[index].generation + 1u);
-    cable.generation = generation != 0 ? generation : 1;
+    cable.generation = world->cables[index].generation + 1u;
     cable.in_use = true;
     world->cables[index] = cable;
     world->cable_count++;
-    *out = (rb_cable_id){index, world->serial, cable.generation};
+    *out = (rb_cable_id){index, cable.generation, world->serial};
     return RB_OK;
 }
 
@@ -93,8 +93,10 @@ static rb_status find_cable(const rb_world *world, rb_cable_id id, const char *f
 static void free_cable(rb_world *world, int index)
 {
     world->cables[index].in_use = false;
-    world->cables[index].next_free = world->cable_free;
-    world->cable_free = index;
+    if (world->cables[index].generation != RB_RETIRED_GENERATION) {
+        world->cables[index].next_free = world->cable_free;
+        world->cable_free = index;
+    }
     world->cable_count--;
 }
 
@@ -134,8 +136,8 @@ rb_status rb_cable_set_tension_law(rb_world *world, rb_cable_id id, double base_
     int index = -1;
     RB_TRY(find_cable(world, id, f, &index));
     RB_TRY(rb_world_check_unlocked_or_in_substep_callback(world, f));
-    RB_TRY(rb_check_finite(f, "base_tension", base_tension));
-    RB_TRY(rb_check_range(f, "damping", damping, 0.0, DBL_MAX));
+    RB_TRY(rb_check_bound(f, "base_tension", base_tension, RB_MAX_FORCE, "N"));
+    RB_TRY(rb_check_range(f, "damping", damping, 0.0, RB_MAX_FORCE));
     rb_cable *cable = &world->cables[index];
     cable->base_tension = base_tension;
     cable->damping = damping;

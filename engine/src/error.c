@@ -2,6 +2,7 @@
 #define _POSIX_C_SOURCE 200809L /* newlocale, uselocale */
 
 #include <locale.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 
@@ -31,6 +32,8 @@ const char *rb_status_name(rb_status status)
         return "RB_ERR_LOCKED";
     case RB_ERR_OUT_OF_MEMORY:
         return "RB_ERR_OUT_OF_MEMORY";
+    case RB_ERR_NOT_FINITE:
+        return "RB_ERR_NOT_FINITE";
     }
     return "RB_ERR_UNKNOWN";
 }
@@ -97,10 +100,53 @@ rb_status rb_check_range(const char *function, const char *name, double value, d
     return RB_OK;
 }
 
+rb_status rb_check_bound(const char *function, const char *name, double value, double bound, const char *unit)
+{
+    if (!(fabs(value) <= bound)) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s is %g %s, expected a value in [%g, %g] %s", function,
+                               name, value, unit, -bound, bound, unit);
+    }
+    return RB_OK;
+}
+
+rb_status rb_check_vec2_bound(const char *function, const char *name, rb_vec2 value, double bound, const char *unit)
+{
+    if (!(fabs(value.x) <= bound && fabs(value.y) <= bound)) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s is (%g, %g) %s, expected coordinates in [%g, %g] %s",
+                               function, name, value.x, value.y, unit, -bound, bound, unit);
+    }
+    return RB_OK;
+}
+
+rb_status rb_check_hertz(const char *function, const char *name, double value, bool zero_allowed)
+{
+    if (!((value >= RB_MIN_HERTZ && value <= RB_MAX_HERTZ) || (zero_allowed && value == 0.0))) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s is %g Hz, expected %s[%g, %g] Hz", function, name,
+                               value, zero_allowed ? "0 or a value in " : "a value in ", RB_MIN_HERTZ, RB_MAX_HERTZ);
+    }
+    return RB_OK;
+}
+
+rb_status rb_check_point(const char *function, const char *name, rb_vec2 point)
+{
+    return rb_check_vec2_bound(function, name, point, RB_MAX_LENGTH, "m");
+}
+
 rb_status rb_check_pointer(const char *function, const char *name, const void *pointer)
 {
     if (pointer == NULL) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s is NULL", function, name);
+    }
+    return RB_OK;
+}
+
+rb_status rb_check_def_cookie(const char *function, const char *maker, int32_t internal_value)
+{
+    if (internal_value != RB_DEF_COOKIE) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                               "%s: def was not made by %s() (its internal_value is %ld): it is uninitialised or "
+                               "garbage; start from %s() and change the fields you need",
+                               function, maker, (long)internal_value, maker);
     }
     return RB_OK;
 }

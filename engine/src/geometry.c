@@ -30,9 +30,10 @@ static rb_status check_points(const char *function, const rb_vec2 *points, int c
                                RB_MAX_POLYGON_VERTICES);
     }
     for (int i = 0; i < count; ++i) {
-        if (!rb_vec2_is_finite(points[i])) {
-            return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: point %d is (%g, %g), expected finite coordinates",
-                                   function, i, points[i].x, points[i].y);
+        if (!(fabs(points[i].x) <= RB_MAX_LENGTH && fabs(points[i].y) <= RB_MAX_LENGTH)) {
+            return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                                   "%s: point %d is (%g, %g) m, expected coordinates in [%g, %g] m", function, i,
+                                   points[i].x, points[i].y, -RB_MAX_LENGTH, RB_MAX_LENGTH);
         }
     }
     return RB_OK;
@@ -195,11 +196,11 @@ rb_status rb_make_polygon(const rb_vec2 *points, int count, rb_polygon *out)
 static rb_status check_box(const char *function, double hx, double hy, rb_polygon *out)
 {
     RB_TRY(rb_check_pointer(function, "out", out));
-    RB_TRY(rb_check_finite(function, "hx", hx));
-    RB_TRY(rb_check_finite(function, "hy", hy));
+    RB_TRY(rb_check_bound(function, "hx", hx, RB_MAX_LENGTH, "m"));
+    RB_TRY(rb_check_bound(function, "hy", hy, RB_MAX_LENGTH, "m"));
     if (hx < RB_POLYGON_WELD_DISTANCE || hy < RB_POLYGON_WELD_DISTANCE) {
         return rb_report_error(RB_ERR_DEGENERATE_SHAPE,
-                               "%s: half-extents are (%g, %g) m, expected both >= %g m (smaller boxes have no "
+                               "%s: hx and hy are (%g, %g) m, expected both >= %g m (smaller boxes have no "
                                "well-defined faces)",
                                function, hx, hy, RB_POLYGON_WELD_DISTANCE);
     }
@@ -222,8 +223,8 @@ rb_status rb_make_offset_box(double hx, double hy, rb_vec2 center, double angle,
 {
     rb_clear_error();
     RB_TRY(check_box("rb_make_offset_box", hx, hy, out));
-    RB_TRY(rb_check_vec2("rb_make_offset_box", "center", center));
-    RB_TRY(rb_check_finite("rb_make_offset_box", "angle", angle));
+    RB_TRY(rb_check_point("rb_make_offset_box", "center", center));
+    RB_TRY(rb_check_bound("rb_make_offset_box", "angle", angle, RB_MAX_ANGLE, "rad"));
     fill_box(hx, hy, (rb_transform){center, rb_rot_from_angle(angle)}, out);
     return RB_OK;
 }

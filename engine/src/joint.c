@@ -41,20 +41,21 @@ rb_status rb_joint_check_bodies(const rb_world *world, rb_body_id a, rb_body_id 
 }
 
 rb_status rb_joint_check_common(const rb_world *world, const void *def, rb_joint_common_def common, rb_joint_id *out,
-                                const char *function, int *index_a, int *index_b)
+                                const char *function, const char *maker, int *index_a, int *index_b)
 {
     RB_TRY(rb_check_pointer(function, "out", out));
     *out = (rb_joint_id){0};
     RB_TRY(rb_check_pointer(function, "def", def));
+    RB_TRY(rb_check_def_cookie(function, maker, common.internal_value));
     RB_TRY(rb_joint_check_bodies(world, common.body_a, common.body_b, function, index_a, index_b));
-    RB_TRY(rb_check_vec2(function, "local_anchor_a", common.local_anchor_a));
-    return rb_check_vec2(function, "local_anchor_b", common.local_anchor_b);
+    RB_TRY(rb_check_point(function, "local_anchor_a", common.local_anchor_a));
+    return rb_check_point(function, "local_anchor_b", common.local_anchor_b);
 }
 
 rb_status rb_joint_anchor_at(const rb_world *world, rb_body_id body_a, rb_body_id body_b, rb_vec2 world_anchor,
                              const char *function, rb_vec2 *local_a, rb_vec2 *local_b, double *reference_angle)
 {
-    RB_TRY(rb_check_vec2(function, "world_anchor", world_anchor));
+    RB_TRY(rb_check_point(function, "world_anchor", world_anchor));
     int a;
     int b;
     RB_TRY(rb_joint_check_bodies(world, body_a, body_b, function, &a, &b));
@@ -70,9 +71,9 @@ rb_status rb_joint_create(rb_world *world, const rb_joint *prototype, rb_joint_i
     int index = -1;
     RB_TRY(allocate_joint_slot(world, &index, function));
     rb_joint *joint = &world->joints[index];
-    uint16_t generation = (uint16_t)(joint->generation + 1u);
+    uint32_t generation = joint->generation + 1u;
     *joint = *prototype;
-    joint->generation = generation != 0 ? generation : 1;
+    joint->generation = generation;
     joint->in_use = true;
     joint->next_on_a = -1;
     if (joint->body_a >= 0) {
@@ -118,8 +119,10 @@ static void free_joint(rb_world *world, int index)
     unlink_from_body(world, index, joint->body_b);
     rb_body_wake(world, joint->body_b);
     joint->in_use = false;
-    joint->next_free = world->joint_free;
-    world->joint_free = index;
+    if (joint->generation != RB_RETIRED_GENERATION) {
+        joint->next_free = world->joint_free;
+        world->joint_free = index;
+    }
     world->joint_count--;
 }
 
@@ -283,10 +286,10 @@ rb_joint *rb_joint_find_for_change(rb_world *world, rb_joint_id id, rb_joint_typ
 }
 
 rb_status rb_joint_check_limits(const char *function, const char *lower_name, const char *upper_name, const char *unit,
-                                bool enable_lower, double lower, bool enable_upper, double upper)
+                                double bound, bool enable_lower, double lower, bool enable_upper, double upper)
 {
-    RB_TRY(rb_check_finite(function, lower_name, lower));
-    RB_TRY(rb_check_finite(function, upper_name, upper));
+    RB_TRY(rb_check_bound(function, lower_name, lower, bound, unit));
+    RB_TRY(rb_check_bound(function, upper_name, upper, bound, unit));
     if (enable_lower && enable_upper && lower > upper) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s %g %s is above %s %g %s", function, lower_name, lower,
                                unit, upper_name, upper, unit);
@@ -296,14 +299,14 @@ rb_status rb_joint_check_limits(const char *function, const char *lower_name, co
 
 rb_status rb_joint_check_motor(const char *function, const char *max_name, double speed, double max)
 {
-    RB_TRY(rb_check_finite(function, "motor_speed", speed));
-    return rb_check_range(function, max_name, max, 0.0, DBL_MAX);
+    RB_TRY(rb_check_bound(function, "motor_speed", speed, RB_MAX_SPEED, "(m or rad)/s"));
+    return rb_check_range(function, max_name, max, 0.0, RB_MAX_FORCE);
 }
 
 rb_status rb_joint_check_spring(const char *function, double hertz, double damping_ratio)
 {
-    RB_TRY(rb_check_range(function, "spring_hertz", hertz, 0.0, DBL_MAX));
-    return rb_check_range(function, "spring_damping_ratio", damping_ratio, 0.0, DBL_MAX);
+    RB_TRY(rb_check_hertz(function, "spring_hertz", hertz, true));
+    return rb_check_range(function, "spring_damping_ratio", damping_ratio, 0.0, RB_MAX_DAMPING_RATIO);
 }
 
 rb_status rb_joint_set_user_data(rb_world *world, rb_joint_id id, void *user_data)

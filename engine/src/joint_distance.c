@@ -19,7 +19,8 @@
 
 rb_distance_joint_def rb_default_distance_joint_def(void)
 {
-    return (rb_distance_joint_def){.length = 1.0, .min_length = 0.0, .max_length = DBL_MAX};
+    return (rb_distance_joint_def){
+        .length = 1.0, .min_length = 0.0, .max_length = DBL_MAX, .internal_value = RB_DEF_COOKIE};
 }
 
 rb_status rb_distance_joint_def_between(rb_distance_joint_def *def, const rb_world *world, rb_body_id body_a,
@@ -28,11 +29,12 @@ rb_status rb_distance_joint_def_between(rb_distance_joint_def *def, const rb_wor
     const char *f = "rb_distance_joint_def_between";
     rb_clear_error();
     RB_TRY(rb_check_pointer(f, "def", def));
-    RB_TRY(rb_check_vec2(f, "world_anchor_a", world_anchor_a));
-    RB_TRY(rb_check_vec2(f, "world_anchor_b", world_anchor_b));
+    RB_TRY(rb_check_point(f, "world_anchor_a", world_anchor_a));
+    RB_TRY(rb_check_point(f, "world_anchor_b", world_anchor_b));
     int a;
     int b;
     RB_TRY(rb_joint_check_bodies(world, body_a, body_b, f, &a, &b));
+    *def = rb_default_distance_joint_def();
     def->body_a = body_a;
     def->body_b = body_b;
     def->local_anchor_a = rb_inv_transform_point(rb_body_origin_transform(world, a), world_anchor_a);
@@ -49,12 +51,12 @@ rb_status rb_distance_joint_create(rb_world *world, const rb_distance_joint_def 
     rb_clear_error();
     int a;
     int b;
-    RB_TRY(rb_joint_check_common(world, def, RB_JOINT_COMMON(def), out, f, &a, &b));
-    RB_TRY(rb_check_range(f, "length", def->length, MIN_AXIS_LENGTH, DBL_MAX));
-    RB_TRY(rb_check_range(f, "spring_hertz", def->spring_hertz, 0.0, DBL_MAX));
-    RB_TRY(rb_check_range(f, "spring_damping_ratio", def->spring_damping_ratio, 0.0, DBL_MAX));
+    RB_TRY(rb_joint_check_common(world, def, RB_JOINT_COMMON(def), out, f, "rb_default_distance_joint_def", &a, &b));
+    RB_TRY(rb_check_range(f, "length", def->length, MIN_AXIS_LENGTH, RB_MAX_LENGTH));
+    RB_TRY(rb_check_hertz(f, "spring_hertz", def->spring_hertz, true));
+    RB_TRY(rb_check_range(f, "spring_damping_ratio", def->spring_damping_ratio, 0.0, RB_MAX_DAMPING_RATIO));
     if (def->enable_limit) {
-        RB_TRY(rb_check_range(f, "min_length", def->min_length, 0.0, DBL_MAX));
+        RB_TRY(rb_check_range(f, "min_length", def->min_length, 0.0, RB_MAX_LENGTH));
         RB_TRY(rb_check_range(f, "max_length", def->max_length, 0.0, DBL_MAX));
         if (def->min_length > def->max_length) {
             return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: min_length %g m is above max_length %g m", f,

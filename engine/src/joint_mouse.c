@@ -14,7 +14,8 @@
 
 rb_mouse_joint_def rb_default_mouse_joint_def(void)
 {
-    return (rb_mouse_joint_def){.max_force = 1000.0, .hertz = 5.0, .damping_ratio = 0.7};
+    return (rb_mouse_joint_def){
+        .max_force = 1000.0, .hertz = 5.0, .damping_ratio = 0.7, .internal_value = RB_DEF_COOKIE};
 }
 
 rb_status rb_mouse_joint_create(rb_world *world, const rb_mouse_joint_def *def, rb_joint_id *out)
@@ -24,16 +25,17 @@ rb_status rb_mouse_joint_create(rb_world *world, const rb_mouse_joint_def *def, 
     RB_TRY(rb_check_pointer(f, "out", out));
     *out = (rb_joint_id){0};
     RB_TRY(rb_check_pointer(f, "def", def));
+    RB_TRY(rb_check_def_cookie(f, "rb_default_mouse_joint_def", def->internal_value));
     int body;
     RB_TRY(rb_world_find_body(world, def->body, f, &body));
     if (world->bodies[body].type != RB_BODY_DYNAMIC) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: the body is not dynamic and cannot be dragged", f);
     }
-    RB_TRY(rb_check_vec2(f, "local_anchor", def->local_anchor));
-    RB_TRY(rb_check_vec2(f, "target", def->target));
-    RB_TRY(rb_check_range(f, "max_force", def->max_force, 0.0, DBL_MAX));
-    RB_TRY(rb_check_range(f, "hertz", def->hertz, DBL_MIN, DBL_MAX));
-    RB_TRY(rb_check_range(f, "damping_ratio", def->damping_ratio, 0.0, DBL_MAX));
+    RB_TRY(rb_check_point(f, "local_anchor", def->local_anchor));
+    RB_TRY(rb_check_point(f, "target", def->target));
+    RB_TRY(rb_check_range(f, "max_force", def->max_force, 0.0, RB_MAX_FORCE));
+    RB_TRY(rb_check_hertz(f, "hertz", def->hertz, false));
+    RB_TRY(rb_check_range(f, "damping_ratio", def->damping_ratio, 0.0, RB_MAX_DAMPING_RATIO));
     rb_joint joint = {
         .type = RB_JOINT_MOUSE,
         .body_a = -1,
@@ -57,7 +59,7 @@ rb_status rb_mouse_joint_set_target(rb_world *world, rb_joint_id id, rb_vec2 tar
     rb_status status;
     rb_joint *joint = rb_joint_find_for_change(world, id, RB_JOINT_MOUSE, f, &status);
     RB_TRY(status);
-    RB_TRY(rb_check_vec2(f, "target", target));
+    RB_TRY(rb_check_point(f, "target", target));
     joint->as.mouse.target = target;
     return RB_OK;
 }

@@ -38,7 +38,7 @@
 
 rb_prismatic_joint_def rb_default_prismatic_joint_def(void)
 {
-    return (rb_prismatic_joint_def){.local_axis_a = {1.0, 0.0}};
+    return (rb_prismatic_joint_def){.local_axis_a = {1.0, 0.0}, .internal_value = RB_DEF_COOKIE};
 }
 
 /* The unit vector along `axis`, which must be finite and non-zero;
@@ -62,13 +62,15 @@ rb_status rb_prismatic_joint_def_at(rb_prismatic_joint_def *def, const rb_world 
     RB_TRY(rb_check_pointer(f, "def", def));
     rb_vec2 axis = {0.0, 0.0};
     RB_TRY(normalise_axis(f, "world_axis", world_axis, &axis));
-    RB_TRY(rb_joint_anchor_at(world, body_a, body_b, world_anchor, f, &def->local_anchor_a, &def->local_anchor_b,
-                              &def->reference_angle));
+    rb_prismatic_joint_def filled = rb_default_prismatic_joint_def();
+    RB_TRY(rb_joint_anchor_at(world, body_a, body_b, world_anchor, f, &filled.local_anchor_a, &filled.local_anchor_b,
+                              &filled.reference_angle));
     int a;
     RB_TRY(rb_world_find_body(world, body_a, f, &a));
-    def->local_axis_a = rb_inv_rotate(world->states[a].rotation, axis);
-    def->body_a = body_a;
-    def->body_b = body_b;
+    filled.local_axis_a = rb_inv_rotate(world->states[a].rotation, axis);
+    filled.body_a = body_a;
+    filled.body_b = body_b;
+    *def = filled;
     return RB_OK;
 }
 
@@ -78,12 +80,13 @@ rb_status rb_prismatic_joint_create(rb_world *world, const rb_prismatic_joint_de
     rb_clear_error();
     int a;
     int b;
-    RB_TRY(rb_joint_check_common(world, def, RB_JOINT_COMMON(def), out, f, &a, &b));
+    RB_TRY(rb_joint_check_common(world, def, RB_JOINT_COMMON(def), out, f, "rb_default_prismatic_joint_def", &a, &b));
     rb_vec2 axis;
     RB_TRY(normalise_axis(f, "local_axis_a", def->local_axis_a, &axis));
-    RB_TRY(rb_check_finite(f, "reference_angle", def->reference_angle));
-    RB_TRY(rb_joint_check_limits(f, "lower_translation", "upper_translation", "m", def->enable_lower_limit,
-                                 def->lower_translation, def->enable_upper_limit, def->upper_translation));
+    RB_TRY(rb_check_bound(f, "reference_angle", def->reference_angle, RB_MAX_ANGLE, "rad"));
+    RB_TRY(rb_joint_check_limits(f, "lower_translation", "upper_translation", "m", RB_MAX_LENGTH,
+                                 def->enable_lower_limit, def->lower_translation, def->enable_upper_limit,
+                                 def->upper_translation));
     RB_TRY(rb_joint_check_motor(f, "max_motor_force", def->motor_speed, def->max_motor_force));
     RB_TRY(rb_joint_check_spring(f, def->spring_hertz, def->spring_damping_ratio));
     rb_joint joint = {
@@ -208,8 +211,8 @@ rb_status rb_prismatic_joint_set_limits(rb_world *world, rb_joint_id id, bool en
     rb_status status;
     rb_prismatic_data *p = find_for_change(world, id, f, &status);
     RB_TRY(status);
-    RB_TRY(rb_joint_check_limits(f, "lower_translation", "upper_translation", "m", enable_lower, lower, enable_upper,
-                                 upper));
+    RB_TRY(rb_joint_check_limits(f, "lower_translation", "upper_translation", "m", RB_MAX_LENGTH, enable_lower, lower,
+                                 enable_upper, upper));
     p->enable_lower = enable_lower;
     p->enable_upper = enable_upper;
     p->lower = lower;

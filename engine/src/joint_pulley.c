@@ -29,9 +29,15 @@
 /* Below this length a side's direction is taken as undefined (m). */
 #define MIN_DIRECTION_LENGTH 1e-9
 
+/* The ratio's range (rb/joint.h): its square multiplies body B's inverse
+ * mass in the rope's effective mass, which must stay finite and above 0. */
+#define MIN_RATIO 1e-6
+#define MAX_RATIO 1e6
+
 rb_pulley_joint_def rb_default_pulley_joint_def(void)
 {
-    return (rb_pulley_joint_def){.length_a = 1.0, .length_b = 1.0, .ratio = 1.0, .min_length = 0.05};
+    return (rb_pulley_joint_def){
+        .length_a = 1.0, .length_b = 1.0, .ratio = 1.0, .min_length = 0.05, .internal_value = RB_DEF_COOKIE};
 }
 
 rb_status rb_pulley_joint_def_between(rb_pulley_joint_def *def, const rb_world *world, rb_body_id body_a,
@@ -41,13 +47,14 @@ rb_status rb_pulley_joint_def_between(rb_pulley_joint_def *def, const rb_world *
     const char *f = "rb_pulley_joint_def_between";
     rb_clear_error();
     RB_TRY(rb_check_pointer(f, "def", def));
-    RB_TRY(rb_check_vec2(f, "ground_anchor_a", ground_anchor_a));
-    RB_TRY(rb_check_vec2(f, "ground_anchor_b", ground_anchor_b));
-    RB_TRY(rb_check_vec2(f, "anchor_a", anchor_a));
-    RB_TRY(rb_check_vec2(f, "anchor_b", anchor_b));
+    RB_TRY(rb_check_point(f, "ground_anchor_a", ground_anchor_a));
+    RB_TRY(rb_check_point(f, "ground_anchor_b", ground_anchor_b));
+    RB_TRY(rb_check_point(f, "anchor_a", anchor_a));
+    RB_TRY(rb_check_point(f, "anchor_b", anchor_b));
     int a;
     int b;
     RB_TRY(rb_joint_check_bodies(world, body_a, body_b, f, &a, &b));
+    *def = rb_default_pulley_joint_def();
     def->body_a = body_a;
     def->body_b = body_b;
     def->ground_anchor_a = ground_anchor_a;
@@ -65,13 +72,13 @@ rb_status rb_pulley_joint_create(rb_world *world, const rb_pulley_joint_def *def
     rb_clear_error();
     int a;
     int b;
-    RB_TRY(rb_joint_check_common(world, def, RB_JOINT_COMMON(def), out, f, &a, &b));
-    RB_TRY(rb_check_vec2(f, "ground_anchor_a", def->ground_anchor_a));
-    RB_TRY(rb_check_vec2(f, "ground_anchor_b", def->ground_anchor_b));
-    RB_TRY(rb_check_range(f, "ratio", def->ratio, DBL_MIN, DBL_MAX));
-    RB_TRY(rb_check_range(f, "min_length", def->min_length, DBL_MIN, DBL_MAX));
-    RB_TRY(rb_check_range(f, "length_a", def->length_a, def->min_length, DBL_MAX));
-    RB_TRY(rb_check_range(f, "length_b", def->length_b, def->min_length, DBL_MAX));
+    RB_TRY(rb_joint_check_common(world, def, RB_JOINT_COMMON(def), out, f, "rb_default_pulley_joint_def", &a, &b));
+    RB_TRY(rb_check_point(f, "ground_anchor_a", def->ground_anchor_a));
+    RB_TRY(rb_check_point(f, "ground_anchor_b", def->ground_anchor_b));
+    RB_TRY(rb_check_range(f, "ratio", def->ratio, MIN_RATIO, MAX_RATIO));
+    RB_TRY(rb_check_range(f, "min_length", def->min_length, DBL_MIN, RB_MAX_LENGTH));
+    RB_TRY(rb_check_range(f, "length_a", def->length_a, def->min_length, RB_MAX_LENGTH));
+    RB_TRY(rb_check_range(f, "length_b", def->length_b, def->min_length, RB_MAX_LENGTH));
     double constant = def->length_a + def->ratio * def->length_b;
     if (!isfinite(constant)) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: length_a + ratio·length_b is not finite", f);

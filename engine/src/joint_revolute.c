@@ -17,7 +17,7 @@
 
 rb_revolute_joint_def rb_default_revolute_joint_def(void)
 {
-    return (rb_revolute_joint_def){.spring_damping_ratio = 0.0};
+    return (rb_revolute_joint_def){.internal_value = RB_DEF_COOKIE};
 }
 
 rb_status rb_revolute_joint_def_at(rb_revolute_joint_def *def, const rb_world *world, rb_body_id body_a,
@@ -26,10 +26,12 @@ rb_status rb_revolute_joint_def_at(rb_revolute_joint_def *def, const rb_world *w
     const char *f = "rb_revolute_joint_def_at";
     rb_clear_error();
     RB_TRY(rb_check_pointer(f, "def", def));
-    RB_TRY(rb_joint_anchor_at(world, body_a, body_b, world_anchor, f, &def->local_anchor_a, &def->local_anchor_b,
-                              &def->reference_angle));
-    def->body_a = body_a;
-    def->body_b = body_b;
+    rb_revolute_joint_def filled = rb_default_revolute_joint_def();
+    RB_TRY(rb_joint_anchor_at(world, body_a, body_b, world_anchor, f, &filled.local_anchor_a, &filled.local_anchor_b,
+                              &filled.reference_angle));
+    filled.body_a = body_a;
+    filled.body_b = body_b;
+    *def = filled;
     return RB_OK;
 }
 
@@ -39,10 +41,10 @@ rb_status rb_revolute_joint_create(rb_world *world, const rb_revolute_joint_def 
     rb_clear_error();
     int a;
     int b;
-    RB_TRY(rb_joint_check_common(world, def, RB_JOINT_COMMON(def), out, f, &a, &b));
-    RB_TRY(rb_check_finite(f, "reference_angle", def->reference_angle));
-    RB_TRY(rb_joint_check_limits(f, "lower_angle", "upper_angle", "rad", def->enable_lower_limit, def->lower_angle,
-                                 def->enable_upper_limit, def->upper_angle));
+    RB_TRY(rb_joint_check_common(world, def, RB_JOINT_COMMON(def), out, f, "rb_default_revolute_joint_def", &a, &b));
+    RB_TRY(rb_check_bound(f, "reference_angle", def->reference_angle, RB_MAX_ANGLE, "rad"));
+    RB_TRY(rb_joint_check_limits(f, "lower_angle", "upper_angle", "rad", RB_MAX_ANGLE, def->enable_lower_limit,
+                                 def->lower_angle, def->enable_upper_limit, def->upper_angle));
     RB_TRY(rb_joint_check_motor(f, "max_motor_torque", def->motor_speed, def->max_motor_torque));
     RB_TRY(rb_joint_check_spring(f, def->spring_hertz, def->spring_damping_ratio));
     rb_joint joint = {
@@ -132,7 +134,8 @@ rb_status rb_revolute_joint_set_limits(rb_world *world, rb_joint_id id, bool ena
     rb_status status;
     rb_revolute_data *r = find_for_change(world, id, f, &status);
     RB_TRY(status);
-    RB_TRY(rb_joint_check_limits(f, "lower_angle", "upper_angle", "rad", enable_lower, lower, enable_upper, upper));
+    RB_TRY(rb_joint_check_limits(f, "lower_angle", "upper_angle", "rad", RB_MAX_ANGLE, enable_lower, lower,
+                                 enable_upper, upper));
     r->enable_lower = enable_lower;
     r->enable_upper = enable_upper;
     r->lower = lower;

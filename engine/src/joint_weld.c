@@ -10,7 +10,7 @@
 #include "joint_internal.h"
 #include "joint_solver.h"
 
-rb_weld_joint_def rb_default_weld_joint_def(void) { return (rb_weld_joint_def){.linear_hertz = 0.0}; }
+rb_weld_joint_def rb_default_weld_joint_def(void) { return (rb_weld_joint_def){.internal_value = RB_DEF_COOKIE}; }
 
 rb_status rb_weld_joint_def_at(rb_weld_joint_def *def, const rb_world *world, rb_body_id body_a, rb_body_id body_b,
                                rb_vec2 world_anchor)
@@ -18,10 +18,12 @@ rb_status rb_weld_joint_def_at(rb_weld_joint_def *def, const rb_world *world, rb
     const char *f = "rb_weld_joint_def_at";
     rb_clear_error();
     RB_TRY(rb_check_pointer(f, "def", def));
-    RB_TRY(rb_joint_anchor_at(world, body_a, body_b, world_anchor, f, &def->local_anchor_a, &def->local_anchor_b,
-                              &def->reference_angle));
-    def->body_a = body_a;
-    def->body_b = body_b;
+    rb_weld_joint_def filled = rb_default_weld_joint_def();
+    RB_TRY(rb_joint_anchor_at(world, body_a, body_b, world_anchor, f, &filled.local_anchor_a, &filled.local_anchor_b,
+                              &filled.reference_angle));
+    filled.body_a = body_a;
+    filled.body_b = body_b;
+    *def = filled;
     return RB_OK;
 }
 
@@ -31,12 +33,12 @@ rb_status rb_weld_joint_create(rb_world *world, const rb_weld_joint_def *def, rb
     rb_clear_error();
     int a;
     int b;
-    RB_TRY(rb_joint_check_common(world, def, RB_JOINT_COMMON(def), out, f, &a, &b));
-    RB_TRY(rb_check_finite(f, "reference_angle", def->reference_angle));
-    RB_TRY(rb_check_range(f, "linear_hertz", def->linear_hertz, 0.0, DBL_MAX));
-    RB_TRY(rb_check_range(f, "linear_damping_ratio", def->linear_damping_ratio, 0.0, DBL_MAX));
-    RB_TRY(rb_check_range(f, "angular_hertz", def->angular_hertz, 0.0, DBL_MAX));
-    RB_TRY(rb_check_range(f, "angular_damping_ratio", def->angular_damping_ratio, 0.0, DBL_MAX));
+    RB_TRY(rb_joint_check_common(world, def, RB_JOINT_COMMON(def), out, f, "rb_default_weld_joint_def", &a, &b));
+    RB_TRY(rb_check_bound(f, "reference_angle", def->reference_angle, RB_MAX_ANGLE, "rad"));
+    RB_TRY(rb_check_hertz(f, "linear_hertz", def->linear_hertz, true));
+    RB_TRY(rb_check_range(f, "linear_damping_ratio", def->linear_damping_ratio, 0.0, RB_MAX_DAMPING_RATIO));
+    RB_TRY(rb_check_hertz(f, "angular_hertz", def->angular_hertz, true));
+    RB_TRY(rb_check_range(f, "angular_damping_ratio", def->angular_damping_ratio, 0.0, RB_MAX_DAMPING_RATIO));
     rb_joint joint = {
         .type = RB_JOINT_WELD,
         .body_a = a,

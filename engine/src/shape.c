@@ -12,15 +12,20 @@ rb_filter rb_default_filter(void) { return (rb_filter){.category_bits = 1u, .mas
 
 rb_shape_def rb_default_shape_def(void)
 {
-    return (rb_shape_def){.friction = 0.6, .restitution = 0.0, .density = 1.0, .filter = rb_default_filter()};
+    return (rb_shape_def){.friction = 0.6,
+                          .restitution = 0.0,
+                          .density = 1.0,
+                          .filter = rb_default_filter(),
+                          .internal_value = RB_DEF_COOKIE};
 }
 
 static rb_status check_shape_def(const rb_shape_def *def, const char *f)
 {
     RB_TRY(rb_check_pointer(f, "def", def));
-    RB_TRY(rb_check_range(f, "friction", def->friction, 0.0, DBL_MAX));
+    RB_TRY(rb_check_def_cookie(f, "rb_default_shape_def", def->internal_value));
+    RB_TRY(rb_check_range(f, "friction", def->friction, 0.0, RB_MAX_FRICTION));
     RB_TRY(rb_check_range(f, "restitution", def->restitution, 0.0, 1.0));
-    RB_TRY(rb_check_range(f, "density", def->density, 0.0, DBL_MAX));
+    RB_TRY(rb_check_range(f, "density", def->density, 0.0, RB_MAX_DENSITY));
     return RB_OK;
 }
 
@@ -35,7 +40,7 @@ static rb_status check_polygon(const rb_polygon *polygon, rb_polygon *clean)
                                RB_MAX_POLYGON_VERTICES);
     }
     for (int i = 0; i < polygon->count; ++i) {
-        RB_TRY(rb_check_vec2(f, "polygon vertex", polygon->vertices[i]));
+        RB_TRY(rb_check_point(f, "polygon vertex", polygon->vertices[i]));
     }
     *clean = *polygon;
     int n = polygon->count;
@@ -78,6 +83,24 @@ static rb_status allocate_shape_slot(rb_world *world, int *index)
     return RB_OK;
 }
 
+rb_status rb_shape_check_mass(const char *function, rb_shape_type type, const void *geometry, double density,
+                              bool gives_mass)
+{
+    double mass = 0.0;
+    if (type == RB_SHAPE_CIRCLE) {
+        mass = rb_circle_mass(geometry, density).mass;
+    } else if (type == RB_SHAPE_POLYGON) {
+        mass = rb_polygon_mass(geometry, density).mass;
+    }
+    double lowest = gives_mass ? RB_MIN_MASS : 0.0;
+    if (!(mass >= lowest && mass <= RB_MAX_MASS)) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                               "%s: the shape's mass (density %g kg/m² times its area) is %g kg, expected %g to %g kg",
+                               function, density, mass, lowest, RB_MAX_MASS);
+    }
+    return RB_OK;
+}
+
 static rb_status create_shape(rb_world *world, rb_body_id body_id, const rb_shape_def *def, rb_shape_type type,
                               const void *geometry, rb_shape_id *out, const char *f)
 {
@@ -98,12 +121,14 @@ static rb_status create_shape(rb_world *world, rb_body_id body_id, const rb_shap
                                "(kg/m²) or rb_body_set_mass_data first",
                                f, def->density);
     }
+    bool gives_mass = body->type == RB_BODY_DYNAMIC && !body->has_mass_override;
+    RB_TRY(rb_shape_check_mass(f, type, geometry, def->density, gives_mass));
     int index = -1;
     RB_TRY(allocate_shape_slot(world, &index));
     rb_shape *shape = &world->shapes[index];
-    uint16_t generation = (uint16_t)(shape->generation + 1u);
+    uint32_t generation = shape->generation + 1u;
     memset(shape, 0, sizeof *shape);
-    shape->generation = generation != 0 ? generation : 1;
+    shape->generation = generation;
     shape->in_use = true;
     shape->body = body_index;
     shape->next_in_body = -1;
@@ -154,8 +179,8 @@ rb_status rb_shape_create_circle(rb_world *world, rb_body_id body, const rb_shap
     *out = (rb_shape_id){0};
     RB_TRY(check_shape_def(def, f));
     RB_TRY(rb_check_pointer(f, "circle", circle));
-    RB_TRY(rb_check_vec2(f, "circle center", circle->center));
-    RB_TRY(rb_check_range(f, "circle radius", circle->radius, 0.0, DBL_MAX));
+    RB_TRY(rb_check_point(f, "circle center", circle->center));
+    RB_TRY(rb_check_range(f, "circle radius", circle->radius, 0.0, RB_MAX_LENGTH));
     if (circle->radius < RB_POLYGON_WELD_DISTANCE) {
         return rb_report_error(RB_ERR_DEGENERATE_SHAPE, "%s: circle radius is %g m, expected at least %g m", f,
                                circle->radius, RB_POLYGON_WELD_DISTANCE);
@@ -188,8 +213,10 @@ static void destroy_shape(rb_world *world, int index)
     *link = shape->next_in_body;
     body->shape_count--;
     shape->in_use = false;
-    shape->next_free = world->shape_free;
-    world->shape_free = index;
+    if (shape->generation != RB_RETIRED_GENERATION) {
+        shape->next_free = world->shape_free;
+        world->shape_free = index;
+    }
     world->shape_count--;
     world->solid_shape_count -= shape->sensor ? 0 : 1;
     world->sweep_stale = true;
@@ -200,9 +227,11 @@ static void destroy_shape(rb_world *world, int index)
  * segment a direction. */
 static rb_status check_segment_points(const char *f, const char *name, int index, rb_vec2 p1, rb_vec2 p2)
 {
-    if (!rb_vec2_is_finite(p1) || !rb_vec2_is_finite(p2)) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s %d has a non-finite point, expected finite coordinates",
-                               f, name, index);
+    if (!(fabs(p1.x) <= RB_MAX_LENGTH && fabs(p1.y) <= RB_MAX_LENGTH && fabs(p2.x) <= RB_MAX_LENGTH &&
+          fabs(p2.y) <= RB_MAX_LENGTH)) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                               "%s: %s %d runs from (%g, %g) to (%g, %g) m, expected coordinates in [%g, %g] m", f,
+                               name, index, p1.x, p1.y, p2.x, p2.y, -RB_MAX_LENGTH, RB_MAX_LENGTH);
     }
     if (rb_distance(p1, p2) < RB_POLYGON_WELD_DISTANCE) {
         return rb_report_error(RB_ERR_DEGENERATE_SHAPE,
@@ -396,7 +425,7 @@ static rb_status find_shape_for_change(rb_world *world, rb_shape_id id, const ch
     }
 
 SHAPE_FIELD_SETTER(rb_shape_set_friction, double, friction, friction,
-                   rb_check_range(function, "friction", friction, 0.0, DBL_MAX))
+                   rb_check_range(function, "friction", friction, 0.0, RB_MAX_FRICTION))
 SHAPE_FIELD_SETTER(rb_shape_set_restitution, double, restitution, restitution,
                    rb_check_range(function, "restitution", restitution, 0.0, 1.0))
 SHAPE_FIELD_SETTER(rb_shape_set_filter, rb_filter, filter, filter, RB_OK)
@@ -406,15 +435,17 @@ rb_status rb_shape_set_density(rb_world *world, rb_shape_id id, double density)
 {
     int index;
     RB_TRY(find_shape_for_change(world, id, "rb_shape_set_density", &index));
-    RB_TRY(rb_check_range("rb_shape_set_density", "density", density, 0.0, DBL_MAX));
+    RB_TRY(rb_check_range("rb_shape_set_density", "density", density, 0.0, RB_MAX_DENSITY));
     rb_shape *shape = &world->shapes[index];
     const rb_body *body = &world->bodies[shape->body];
-    if (body->type == RB_BODY_DYNAMIC && !body->has_mass_override && !(density > 0.0)) {
+    bool gives_mass = body->type == RB_BODY_DYNAMIC && !body->has_mass_override;
+    if (gives_mass && !(density > 0.0)) {
         return rb_report_error(RB_ERR_NO_MASS,
                                "rb_shape_set_density: density %g on a dynamic body without a mass override; "
                                "expected > 0",
                                density);
     }
+    RB_TRY(rb_shape_check_mass("rb_shape_set_density", shape->type, &shape->geometry, density, gives_mass));
     shape->density = density;
     rb_body_update_mass(world, shape->body);
     return RB_OK;

@@ -28,6 +28,11 @@
  * shape has moved about this far since they were last found. */
 #define RB_FAT_MARGIN 0.1
 
+/* A slot whose object of this generation is destroyed goes out of use
+ * for good rather than to its free list, so that its generation never
+ * wraps to one an old id still carries (id.h). */
+#define RB_RETIRED_GENERATION UINT32_MAX
+
 typedef struct rb_body_state {
     rb_vec2 linear_velocity; /* m/s, of the centre of mass */
     double angular_velocity; /* rad/s */
@@ -62,8 +67,8 @@ static inline void rb_body_state_turn(rb_body_state *state, double delta)
 }
 
 typedef struct rb_body {
-    int next_free; /* free-list link while the slot is unused */
-    uint16_t generation;
+    int next_free;       /* free-list link while the slot is unused */
+    uint32_t generation; /* of the last object made in the slot; RB_RETIRED_GENERATION retires it */
     bool in_use;
     rb_body_type type;
     rb_vec2 local_center;        /* m, centre of mass in the body frame */
@@ -85,7 +90,7 @@ typedef struct rb_body {
 
 typedef struct rb_shape {
     int next_free;
-    uint16_t generation;
+    uint32_t generation; /* of the last object made in the slot; RB_RETIRED_GENERATION retires it */
     bool in_use;
     int body;
     int next_in_body;
@@ -265,7 +270,7 @@ typedef struct rb_pulley_data {
  * each distinct body of its path. */
 typedef struct rb_cable {
     int next_free;
-    uint16_t generation;
+    uint32_t generation; /* of the last object made in the slot; RB_RETIRED_GENERATION retires it */
     bool in_use;
     int point_count;
     int bodies[RB_MAX_CABLE_POINTS];
@@ -284,7 +289,7 @@ typedef struct rb_cable {
 
 typedef struct rb_joint {
     int next_free;
-    uint16_t generation;
+    uint32_t generation; /* of the last object made in the slot; RB_RETIRED_GENERATION retires it */
     bool in_use;
     rb_joint_type type;
     int body_a; /* -1 for a mouse joint */
@@ -305,7 +310,7 @@ typedef struct rb_joint {
 } rb_joint;
 
 struct rb_world {
-    uint16_t serial;
+    uint64_t serial;          /* never 0, never reused (id.h) */
     bool locked;              /* inside rb_world_step */
     bool in_substep_callback; /* inside the user's substep callback, which may set cable laws */
     rb_substep_fn *substep_callback;
@@ -317,10 +322,15 @@ struct rb_world {
 
     rb_body *bodies;
     rb_body_state *states;
+    /* The states before the solver ran in this step, put back should it
+     * leave one non-finite (rb_world_step); grown with `states`, so the
+     * step allocates nothing. */
+    rb_body_state *saved_states;
     int body_capacity;
-    int state_capacity; /* equals body_capacity once a body exists */
-    int body_slots;     /* slots ever used: live bodies have index < body_slots */
-    int body_free;      /* head of the free list, -1 when empty */
+    int state_capacity;       /* equals body_capacity once a body exists */
+    int saved_state_capacity; /* equals state_capacity */
+    int body_slots;           /* slots ever used: live bodies have index < body_slots */
+    int body_free;            /* head of the free list, -1 when empty */
     int body_count;
 
     rb_shape *shapes;
@@ -425,6 +435,12 @@ rb_transform rb_body_origin_transform(const rb_world *world, int body);
 /* Recomputes mass, centre and inertia from the shapes (or the override),
  * keeping the origin in place; also refreshes every shape's extent. */
 void rb_body_update_mass(rb_world *world, int body);
+
+/* Fails unless a shape of `type` with this geometry and density weighs
+ * at most RB_MAX_MASS and, when it gives a dynamic body its mass
+ * (`gives_mass`), at least RB_MIN_MASS (rb/base.h). */
+rb_status rb_shape_check_mass(const char *function, rb_shape_type type, const void *geometry, double density,
+                              bool gives_mass);
 
 /* The shape's tight world box at the body's current pose. */
 rb_aabb rb_shape_tight_aabb(const rb_world *world, int shape);

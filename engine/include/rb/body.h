@@ -10,6 +10,7 @@
 #define RB_BODY_H
 
 #include <stdbool.h>
+#include <stdint.h>
 
 #include "rb/export.h"
 #include "rb/geometry.h"
@@ -28,18 +29,18 @@ typedef enum rb_body_type {
 
 typedef struct rb_body_def {
     rb_body_type type;       /**< default RB_BODY_STATIC */
-    rb_vec2 position;        /**< m, world position of the body origin */
-    double angle;            /**< rad */
-    rb_vec2 linear_velocity; /**< m/s, of the centre of mass */
-    double angular_velocity; /**< rad/s */
+    rb_vec2 position;        /**< m, world position of the body origin, within ±RB_MAX_LENGTH */
+    double angle;            /**< rad, within ±RB_MAX_ANGLE */
+    rb_vec2 linear_velocity; /**< m/s, of the centre of mass, within ±RB_MAX_SPEED */
+    double angular_velocity; /**< rad/s, within ±RB_MAX_SPEED */
     /** Damping: each (sub)step of length h, after the constraints are
      * solved, the velocities are divided by (1 + h·c), the backward-Euler
      * step of dv/dt = -c·v, stable for any c and h; over a time t it
      * decays as exp(-c·t) when h·c << 1. Acting after the constraints, it
      * leaves a supported body's full weight on its supports. */
-    double linear_damping;  /**< 1/s, >= 0, default 0 */
-    double angular_damping; /**< 1/s, >= 0, default 0 */
-    double gravity_scale;   /**< multiplies the world's gravity, default 1 */
+    double linear_damping;  /**< 1/s, 0 .. RB_MAX_DAMPING, default 0 */
+    double angular_damping; /**< 1/s, 0 .. RB_MAX_DAMPING, default 0 */
+    double gravity_scale;   /**< multiplies the world's gravity, within ±RB_MAX_GRAVITY_SCALE, default 1 */
     bool fixed_rotation;    /**< never rotates (infinite rotational inertia) */
     /** Default true. A sleeping body is not simulated (the solver treats it
      * as static) until something wakes it: a touching awake body, a force,
@@ -54,6 +55,10 @@ typedef struct rb_body_def {
      * (tests/test_tunnelling.c). */
     bool bullet;
     void *user_data;
+    /** Set by rb_default_body_def() and checked by the create function, which refuses a
+     * definition that does not carry it (left uninitialised, or garbage)
+     * rather than simulate it: start from rb_default_body_def() and change fields. */
+    int32_t internal_value;
 } rb_body_def;
 
 RB_API rb_body_def rb_default_body_def(void);
@@ -91,7 +96,9 @@ RB_API rb_vec2 rb_body_local_vector(const rb_world *world, rb_body_id body, rb_v
 
 /** @name Forces and impulses
  * Forces and torques accumulate until the end of
- * the next rb_world_step and act during all of its substeps. They are
+ * the next rb_world_step and act during all of its substeps. Each force,
+ * torque or impulse given is at most RB_MAX_FORCE (N, N·m, N·s, N·m·s) in
+ * each component, each point within ±RB_MAX_LENGTH m. They are
  * ignored (RB_OK) on static and kinematic bodies. Applying one wakes the
  * body. */
 /** @{ */
@@ -116,12 +123,15 @@ RB_API double rb_body_mass(const rb_world *world, rb_body_id body); /**< kg; 0 f
 RB_API double rb_body_rotational_inertia(const rb_world *world,
                                          rb_body_id body); /**< kg·m², about the centre of mass */
 RB_API rb_mass_data rb_body_mass_data(const rb_world *world, rb_body_id body);
-/** Overrides the shapes' mass (mass > 0, inertia >= 0, finite centre);
- * the override holds until rb_body_reset_mass_data. */
+/** Overrides the shapes' mass (mass RB_MIN_MASS .. RB_MAX_MASS kg,
+ * rotational inertia 0 .. RB_MAX_MASS·RB_MAX_LENGTH² kg·m², centre within
+ * ±RB_MAX_LENGTH m); the override holds until rb_body_reset_mass_data. */
 RB_API rb_status rb_body_set_mass_data(rb_world *world, rb_body_id body, const rb_mass_data *mass_data);
 RB_API rb_status rb_body_reset_mass_data(rb_world *world, rb_body_id body);
 
-/** Damping, gravity scale, flags. */
+/** Damping (1/s, 0 .. RB_MAX_DAMPING), gravity scale (within
+ * ±RB_MAX_GRAVITY_SCALE), flags. Positions set by rb_body_set_transform
+ * and velocities by the setters below have the ranges of rb_body_def. */
 RB_API rb_status rb_body_set_linear_damping(rb_world *world, rb_body_id body, double damping);
 RB_API rb_status rb_body_set_angular_damping(rb_world *world, rb_body_id body, double damping);
 RB_API double rb_body_linear_damping(const rb_world *world, rb_body_id body);

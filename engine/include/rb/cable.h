@@ -20,6 +20,8 @@
 #ifndef RB_CABLE_H
 #define RB_CABLE_H
 
+#include <stdint.h>
+
 #include "rb/base.h"
 #include "rb/export.h"
 #include "rb/id.h"
@@ -33,10 +35,15 @@ extern "C" {
 #define RB_MAX_CABLE_POINTS 8
 
 typedef struct rb_cable_def {
-    int point_count;                           /**< 2 .. RB_MAX_CABLE_POINTS */
-    rb_body_id bodies[RB_MAX_CABLE_POINTS];    /**< the body of each point, in path order */
-    rb_vec2 local_points[RB_MAX_CABLE_POINTS]; /**< m, each point in its body's frame (from the origin) */
+    int point_count;                        /**< 2 .. RB_MAX_CABLE_POINTS */
+    rb_body_id bodies[RB_MAX_CABLE_POINTS]; /**< the body of each point, in path order */
+    /** m, each point in its body's frame (from the origin), within ±RB_MAX_LENGTH */
+    rb_vec2 local_points[RB_MAX_CABLE_POINTS];
     void *user_data;
+    /** Set by rb_default_cable_def() and checked by the create function, which refuses a
+     * definition that does not carry it (left uninitialised, or garbage)
+     * rather than simulate it: start from rb_default_cable_def() and change fields. */
+    int32_t internal_value;
 } rb_cable_def;
 
 RB_API rb_cable_def rb_default_cable_def(void);
@@ -48,8 +55,8 @@ RB_API rb_status rb_cable_create(rb_world *world, const rb_cable_def *def, rb_ca
 RB_API rb_status rb_cable_destroy(rb_world *world, rb_cable_id cable);
 RB_API bool rb_cable_is_valid(const rb_world *world, rb_cable_id cable);
 
-/** The tension law for the following steps: base_tension (N, finite) and
- * damping (N·s/m, >= 0, finite). Both 0 (the default): a slack cable.
+/** The tension law for the following steps: base_tension (N, within
+ * ±RB_MAX_FORCE) and damping (N·s/m, 0 .. RB_MAX_FORCE). Both 0 (the default): a slack cable.
  * Wakes the cable's bodies and restarts their time at rest: a cable
  * driven by a law set every substep keeps them awake. */
 RB_API rb_status rb_cable_set_tension_law(rb_world *world, rb_cable_id cable, double base_tension, double damping);

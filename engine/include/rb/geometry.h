@@ -33,8 +33,8 @@ typedef enum rb_shape_type {
 } rb_shape_type;
 
 typedef struct rb_circle {
-    rb_vec2 center; /**< m, offset from the body origin */
-    double radius;  /**< m, > 0 */
+    rb_vec2 center; /**< m, offset from the body origin, coordinates within ±RB_MAX_LENGTH */
+    double radius;  /**< m, RB_POLYGON_WELD_DISTANCE .. RB_MAX_LENGTH */
 } rb_circle;
 
 typedef struct rb_polygon {
@@ -45,7 +45,7 @@ typedef struct rb_polygon {
 } rb_polygon;
 
 /** A line segment from point1 to point2 (m, at least
- * RB_POLYGON_WELD_DISTANCE apart). It has no thickness and no area: its
+ * RB_POLYGON_WELD_DISTANCE apart, coordinates within ±RB_MAX_LENGTH). It has no thickness and no area: its
  * mass is zero, so it belongs on a static or kinematic body, or on a
  * dynamic body with a mass override. It collides with circles and
  * polygons on both sides, not with other segments. */
@@ -75,18 +75,21 @@ typedef struct rb_mass_data {
     double rotational_inertia; /**< kg·m², about the centre of mass, >= 0 */
 } rb_mass_data;
 
-/** A box of half-extents hx, hy (m, > 0) centred on the body origin. */
+/** A box of half-extents hx, hy (m, from RB_POLYGON_WELD_DISTANCE to
+ * RB_MAX_LENGTH) centred on the body origin. */
 RB_API rb_status rb_make_box(double hx, double hy, rb_polygon *out);
 
-/** A box of half-extents hx, hy centred at `center` and turned by `angle`
- * (rad) in the body frame. */
+/** A box of half-extents hx, hy centred at `center` (m, within
+ * ±RB_MAX_LENGTH) and turned by `angle` (rad, within ±RB_MAX_ANGLE) in the
+ * body frame. */
 RB_API rb_status rb_make_offset_box(double hx, double hy, rb_vec2 center, double angle, rb_polygon *out);
 
 /** A convex polygon whose vertices are exactly `points` (any order, any
  * winding). Fails with RB_ERR_NOT_CONVEX when a point lies inside the
  * hull of the others or on one of its edges, RB_ERR_DEGENERATE_SHAPE when
  * the points are collinear, coincident or enclose no area, and
- * RB_ERR_INVALID_ARGUMENT for a count outside 3..8 or a non-finite point. */
+ * RB_ERR_INVALID_ARGUMENT for a count outside 3..8 or a point whose
+ * coordinates are not within ±RB_MAX_LENGTH m. */
 RB_API rb_status rb_make_polygon(const rb_vec2 *points, int count, rb_polygon *out);
 
 /** The convex hull of a point cloud as a polygon: interior and collinear

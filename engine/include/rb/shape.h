@@ -32,12 +32,20 @@ typedef struct rb_filter {
 } rb_filter;
 
 typedef struct rb_shape_def {
-    double friction;    /**< >= 0, Coulomb coefficient, default 0.6 */
+    double friction;    /**< Coulomb coefficient, 0 .. RB_MAX_FRICTION, default 0.6 */
     double restitution; /**< 0 .. 1, default 0 */
-    double density;     /**< kg/m², >= 0, default 1; must be > 0 on a dynamic body without a mass override */
-    bool is_sensor;     /**< reports overlaps with non-sensor shapes, never pushes */
+    /** kg/m², 0 .. RB_MAX_DENSITY, default 1. The shape's mass, density
+     * times area, is at most RB_MAX_MASS; on a dynamic body without a
+     * mass override the density must be > 0 and the mass at least
+     * RB_MIN_MASS. */
+    double density;
+    bool is_sensor; /**< reports overlaps with non-sensor shapes, never pushes */
     rb_filter filter;
     void *user_data;
+    /** Set by rb_default_shape_def() and checked by the create function, which refuses a
+     * definition that does not carry it (left uninitialised, or garbage)
+     * rather than simulate it: start from rb_default_shape_def() and change fields. */
+    int32_t internal_value;
 } rb_shape_def;
 
 RB_API rb_filter rb_default_filter(void);

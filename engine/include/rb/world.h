@@ -6,6 +6,7 @@
 #define RB_WORLD_H
 
 #include <stdbool.h>
+#include <stdint.h>
 
 #include "rb/base.h"
 #include "rb/collision.h"
@@ -51,32 +52,33 @@ RB_API rb_status rb_solver_type_from_name(const char *name, rb_solver_type *type
 
 /** Solver settings, held by the world; see rb_world_set_solver_settings. */
 typedef struct rb_solver_settings {
-    rb_solver_type type;          /**< default RB_SOLVER_NGS */
-    int velocity_iterations;      /**< 1 .. 1000, per substep, default 2 */
-    int position_iterations;      /**< 0 .. 1000, per substep, default 1 (NGS only) */
-    int relax_iterations;         /**< 0 .. 1000, per substep, default 1 (soft step only) */
-    int substeps;                 /**< 1 .. 1000, default 6: the step dt is split into this many substeps */
-    bool warm_starting;           /**< default true: start from last step's impulses */
-    bool block_solver;            /**< default true: solve two-point manifolds as one 2x2 LCP (Baumgarte, NGS) */
-    double baumgarte;             /**< 0 .. 1, fraction of the error removed per (sub)step, default 0.2 */
-    double linear_slop;           /**< m, 0 .. 0.1: penetration allowed without correction, default 0.005 */
-    double max_linear_correction; /**< m, > 0: largest position correction per iteration, default 0.2 */
-    double restitution_threshold; /**< m/s, >= 0: slower impacts do not bounce, default 1 */
+    rb_solver_type type;     /**< default RB_SOLVER_NGS */
+    int velocity_iterations; /**< 1 .. 1000, per substep, default 2 */
+    int position_iterations; /**< 0 .. 1000, per substep, default 1 (NGS only) */
+    int relax_iterations;    /**< 0 .. 1000, per substep, default 1 (soft step only) */
+    int substeps;            /**< 1 .. 1000, default 6: the step dt is split into this many substeps */
+    bool warm_starting;      /**< default true: start from last step's impulses */
+    bool block_solver;       /**< default true: solve two-point manifolds as one 2x2 LCP (Baumgarte, NGS) */
+    double baumgarte;        /**< 0 .. 1, fraction of the error removed per (sub)step, default 0.2 */
+    double linear_slop;      /**< m, 0 .. 0.1: penetration allowed without correction, default 0.005 */
+    /** m, > 0 .. RB_MAX_LENGTH: largest position correction per iteration, default 0.2 */
+    double max_linear_correction;
+    double restitution_threshold; /**< m/s, 0 .. RB_MAX_SPEED: slower impacts do not bounce, default 1 */
     /** Soft step only. A contact is a spring of contact_hertz against a
      * body that moves and twice that against one that cannot; it pushes
      * overlapping bodies apart no faster than max_push_speed. Joints'
      * rigid rows are springs of joint_hertz. Each frequency is capped at
      * a quarter of the substep rate, where the implicit spring stays
      * accurate (Catto, Solver2D). */
-    double contact_hertz;         /**< Hz, > 0, default 30 */
-    double contact_damping_ratio; /**< >= 0, default 10 (critically damped is 1) */
-    double joint_hertz;           /**< Hz, > 0, default 60 */
-    double joint_damping_ratio;   /**< >= 0, default 2 */
-    double max_push_speed;        /**< m/s, > 0, default 3 */
+    double contact_hertz;         /**< Hz, RB_MIN_HERTZ .. RB_MAX_HERTZ, default 30 */
+    double contact_damping_ratio; /**< 0 .. RB_MAX_DAMPING_RATIO, default 10 (critically damped is 1) */
+    double joint_hertz;           /**< Hz, RB_MIN_HERTZ .. RB_MAX_HERTZ, default 60 */
+    double joint_damping_ratio;   /**< 0 .. RB_MAX_DAMPING_RATIO, default 2 */
+    double max_push_speed;        /**< m/s, > 0 .. RB_MAX_SPEED, default 3 */
 } rb_solver_settings;
 
 typedef struct rb_world_def {
-    rb_vec2 gravity;           /**< m/s², default (0, -9.8) */
+    rb_vec2 gravity;           /**< m/s², each component within ±RB_MAX_ACCELERATION, default (0, -9.8) */
     rb_solver_settings solver; /**< default rb_default_solver_settings() */
     /** Time each phase of the step into rb_world_profile() (default true).
      * The clock reads cost about 0.3 µs a step: a tenth of a small
@@ -84,6 +86,10 @@ typedef struct rb_world_def {
     bool enable_profile;
     /** Let resting islands fall asleep (default true; see rb_body_def.awake). */
     bool enable_sleep;
+    /** Set by rb_default_world_def() and checked by the create function, which refuses a
+     * definition that does not carry it (left uninitialised, or garbage)
+     * rather than simulate it: start from rb_default_world_def() and change fields. */
+    int32_t internal_value;
 } rb_world_def;
 
 /** Time spent in each phase of the last step, in milliseconds. */
@@ -162,7 +168,19 @@ RB_API rb_status rb_world_create(const rb_world_def *def, rb_world **out);
 /** Frees the world and everything in it. Accepts NULL. */
 RB_API void rb_world_destroy(rb_world *world);
 
-/** Advances the world by dt seconds (finite, > 0, <= 10). */
+/** Advances the world by dt seconds (RB_MIN_STEP .. RB_MAX_STEP).
+ *
+ * Should the step leave a body's pose or velocity NaN or infinite (the
+ * arguments were in range, but the motion overflowed: a stack fed
+ * energy until it blew up), it fails with RB_ERR_NOT_FINITE, naming the
+ * first such body, its state and where it was before the step, and puts
+ * every body's pose and velocity back as they were before the step. The
+ * joints', cables' and contacts' warm-start impulses, made non-finite by
+ * the same failure, start again from 0; the forces applied for the step
+ * are kept, and the contact events of the step are reported as usual.
+ * The world can then be changed (a body moved, a joint removed, the
+ * settings made stiffer) and stepped again; stepped again unchanged it
+ * fails again. */
 RB_API rb_status rb_world_step(rb_world *world, double dt);
 
 RB_API rb_status rb_world_set_gravity(rb_world *world, rb_vec2 gravity);
