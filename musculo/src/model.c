@@ -53,6 +53,7 @@ struct mu_model {
     int joint_count;
     long substeps_taken;      /* since creation; the time is counted, not summed, so it does not drift */
     rb_status substep_status; /* the first error of the muscles' updates in this step */
+    char substep_error[512];  /* its message, which later engine calls of the step would clear */
     char warnings[WARNINGS_SIZE];
     char failure[512]; /* mu_model_failure: the first sign the run has failed, "" until then */
 };
@@ -79,6 +80,53 @@ static void warn(mu_model *model, const char *format, ...)
         model->warnings[used] = '\n';
         model->warnings[used + 1] = '\0';
     }
+}
+
+/* The error just reported without the name of the function that
+ * reported it ("rb_cable_create: points 0 and 1 coincide" gives "points 0
+ * and 1 coincide"): a user knows the model file's objects, not the
+ * engine's functions. */
+static const char *problem_of_last_error(void)
+{
+    const char *message = rb_last_error();
+    const size_t name = strspn(message, "abcdefghijklmnopqrstuvwxyz0123456789_");
+    const bool function =
+        (strncmp(message, "rb_", 3) == 0 || strncmp(message, "mu_", 3) == 0) && strncmp(message + name, ": ", 2) == 0;
+    return function ? message + name + 2 : message;
+}
+
+static const char *source_of(const mu_model_desc *desc) { return desc->source != NULL ? desc->source : desc->name; }
+
+/* Reports, with `status`, that the object `format...` ("muscle \"Biceps\"
+ * (muscles[0])") could not be built: "FILE: OBJECT in variant \"V\" cannot
+ * be built: PROBLEM". */
+static rb_status build_failed(const mu_model *model, rb_status status, const char *format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+static rb_status build_failed(const mu_model *model, rb_status status, const char *format, ...)
+{
+    char problem[512], object[256];
+    snprintf(problem, sizeof problem, "%s", problem_of_last_error());
+    va_list args;
+    va_start(args, format);
+    vsnprintf(object, sizeof object, format, args);
+    va_end(args);
+    return rb_report_error(status, "%s: %s in variant \"%s\" cannot be built: %s", source_of(model->desc), object,
+                           model->desc->variants[model->options.variant].name, problem);
+}
+
+/* "nail \"Nail\" (nails[0])" or "bone \"Humerus\" (bones[1])". */
+static rb_status part_failed(const mu_model *model, rb_status status, int part_index)
+{
+    const mu_model_desc *desc = model->desc;
+    if (part_index < desc->nail_count) {
+        return build_failed(model, status, "nail \"%s\" (nails[%d])", desc->nails[part_index].name, part_index);
+    }
+    const int bone = part_index - desc->nail_count;
+    return build_failed(model, status, "bone \"%s\" (bones[%d])", desc->bones[bone].name, bone);
 }
 
 /* A part's pose in the model, placement included. */
@@ -219,6 +267,9 @@ static rb_status build_bodies(mu_model *model, bool merge)
         if (status == RB_OK) {
             status = add_part_shape(model, i);
         }
+        if (status != RB_OK) {
+            status = part_failed(model, status, i);
+        }
     }
     free(is_static);
     free(parent);
@@ -263,7 +314,7 @@ static rb_status build_hinges(mu_model *model)
         def.upper_angle = hinge->upper / DEGREES;
         rb_status status = rb_revolute_joint_create(model->world, &def, &model->hinges[h]);
         if (status != RB_OK) {
-            return status;
+            return build_failed(model, status, "hinge \"%s\" (hinges[%d])", hinge->name, h);
         }
         model->joint_count++;
     }
@@ -290,7 +341,7 @@ static rb_status build_welds(mu_model *model)
             status = rb_weld_joint_create(model->world, &def, &joint);
         }
         if (status != RB_OK) {
-            return status;
+            return build_failed(model, status, "glue \"%s\" (glues[%d])", desc->glues[g].name, g);
         }
         model->joint_count++;
     }
@@ -326,7 +377,8 @@ static rb_status build_weight(mu_model *model, bool merge)
     rb_shape_id id;
     if (merge) {
         rb_circle disc = {rb_body_local_point(model->world, carrier_body, centre), radius};
-        return rb_shape_create_circle(model->world, carrier_body, &shape, &disc, &id);
+        rb_status status = rb_shape_create_circle(model->world, carrier_body, &shape, &disc, &id);
+        return status == RB_OK ? RB_OK : build_failed(model, status, "weight \"%s\" of %g kg", weight->name, mass);
     }
     rb_body_def def = rb_default_body_def();
     def.type = RB_BODY_DYNAMIC;
@@ -348,8 +400,11 @@ static rb_status build_weight(mu_model *model, bool merge)
     if (status == RB_OK) {
         status = rb_weld_joint_create(model->world, &weld, &joint);
     }
-    model->joint_count += status == RB_OK;
-    return status;
+    if (status != RB_OK) {
+        return build_failed(model, status, "weight \"%s\" of %g kg", weight->name, mass);
+    }
+    model->joint_count++;
+    return RB_OK;
 }
 
 /* ---- muscles ------------------------------------------------------------------------- */
@@ -387,7 +442,7 @@ static rb_status build_muscles(mu_model *model)
         def.fibre_damping = muscle->fibre_damping;
         rb_status status = mu_muscle_create(model->world, &def, &model->muscles[m]);
         if (status != RB_OK) {
-            return status;
+            return build_failed(model, status, "muscle \"%s\" (muscles[%d])", muscle->name, m);
         }
         model->built_muscles[model->built_muscle_count++] = m;
         mu_muscle_readout r = mu_muscle_read(model->muscles[m]);
@@ -437,7 +492,7 @@ static rb_status build_torque_muscles(mu_model *model)
         if (status != RB_OK) {
             mu_motor_pool_destroy(model->pools[built]);
             model->pools[built] = NULL;
-            return status;
+            return build_failed(model, status, "torque muscle \"%s\" (torque_muscles[%d])", muscle->name, t);
         }
         model->built_torque_muscles[built] = t;
         model->built_torque_muscle_count++;
@@ -484,12 +539,20 @@ static void update_muscles(rb_world *world, int substep, double h, void *context
 {
     mu_model *model = context;
     rb_status status = RB_OK;
+    int failed = -1;
     for (int i = 0; status == RB_OK && i < model->built_muscle_count; ++i) {
         mu_muscle *muscle = model->muscles[model->built_muscles[i]];
         status = substep > 0 ? mu_muscle_advance(muscle, world, h) : mu_muscle_prepare(muscle, world, h);
+        failed = status != RB_OK ? model->built_muscles[i] : failed;
     }
-    if (model->substep_status == RB_OK) {
+    if (model->substep_status == RB_OK && status != RB_OK) {
         model->substep_status = status;
+        /* Named now, in the user's terms: the engine calls left in the step clear the message. */
+        mu_c_locale_scope scope = mu_c_locale_begin();
+        snprintf(model->substep_error, sizeof model->substep_error, "%s: muscle \"%s\" (muscles[%d]) at t = %.6g s: %s",
+                 source_of(model->desc), model->desc->muscles[failed].name, failed, mu_model_time(model) + substep * h,
+                 problem_of_last_error());
+        mu_c_locale_end(scope);
     }
 }
 
@@ -701,8 +764,8 @@ static rb_status advance(mu_model *model, int substeps)
         }
     }
     rb_status status = rb_world_step(model->world, substeps * mu_model_substep_duration(model));
-    if (status == RB_OK) {
-        status = model->substep_status;
+    if (status == RB_OK && model->substep_status != RB_OK) {
+        status = rb_report_error(model->substep_status, "%s", model->substep_error);
     }
     if (status == RB_OK) {
         status = measure_muscles(model);

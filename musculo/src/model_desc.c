@@ -73,8 +73,14 @@ static rb_status parse_text(const char *path, const char *text, size_t length, m
     if (desc == NULL) {
         status = rb_report_error(RB_ERR_OUT_OF_MEMORY, "mu_model_desc_load: out of memory");
     } else {
-        mu_json_reader reader = {.file = path, .text = text, .length = length};
-        status = mu_model_parse(&reader, root, desc);
+        desc->source = malloc(strlen(path) + 1);
+        if (desc->source == NULL) {
+            status = rb_report_error(RB_ERR_OUT_OF_MEMORY, "mu_model_desc_load: out of memory");
+        } else {
+            memcpy(desc->source, path, strlen(path) + 1);
+            mu_json_reader reader = {.file = path, .text = text, .length = length};
+            status = mu_model_parse(&reader, root, desc);
+        }
     }
     json_decref(root);
     if (status != RB_OK) {
@@ -175,6 +181,7 @@ void mu_model_desc_destroy(mu_model_desc *desc)
         return;
     }
     free(desc->name);
+    free(desc->source);
     for (int i = 0; i < desc->nail_count; ++i) {
         free(desc->nails[i].name);
     }

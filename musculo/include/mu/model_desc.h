@@ -186,6 +186,10 @@ typedef struct mu_model_variant {
 
 typedef struct mu_model_desc {
     char *name;
+    /** The file it was read from, as given to the loader ("arm.json (built
+     * into libmu)" for a built-in one), which the model's messages name;
+     * NULL in a description made otherwise. */
+    char *source;
     rb_vec2 gravity;   /**< m/s², default (0, -9.8) */
     double frame_rate; /**< Hz, > 0; default 60 */
     int substeps;      /**< per frame, >= 1; default 10 */
