@@ -132,8 +132,8 @@ static int build_every_variant(const char *path, const mu_model_desc *desc)
         options.variant = v;
         mu_model *model;
         if (mu_model_create(desc, &options, &model) != RB_OK) {
-            fprintf(stderr, "sinew: %s: variant \"%s\" does not build: %s\n", path, desc->variants[v].name,
-                    user_error());
+            /* "FILE: muscle \"M\" (muscles[0]) in variant \"V\" cannot be built: ..." */
+            fprintf(stderr, "sinew: %s\n", user_error());
             code = EXIT_FAILURE;
             break;
         }
