@@ -86,7 +86,7 @@ Test(locale, curve_tables_read_the_same_under_a_decimal_comma)
                      "active_force_length,1.5,0.75\n"
                      "passive_force_length,1.25,0.125\n"
                      "passive_force_length,2.5,1.5\n"
-                     "force_velocity,-1.5,0.0625\n"
+                     "force_velocity,-0.75,0.0625\n"
                      "force_velocity,0.5,1.375\n");
     use_comma_locale();
     mu_curves *curves = NULL;
@@ -94,7 +94,8 @@ Test(locale, curve_tables_read_the_same_under_a_decimal_comma)
     cr_expect_eq(mu_curve_active_length(curves, 0.5), 0.25);
     cr_expect_eq(mu_curve_active_length(curves, 1.5), 0.75);
     cr_expect_eq(mu_curve_passive_length(curves, 2.5), 1.5);
-    cr_expect_eq(mu_curve_velocity(curves, -1.5), 0.0625);
+    /* (A knot at ṽ <= -1 would read 0: f_V is 0 beyond Vmax, curves.h.) */
+    cr_expect_eq(mu_curve_velocity(curves, -0.75), 0.0625);
     cr_expect_eq(mu_curve_velocity(curves, 0.5), 1.375);
     mu_curves_destroy(curves);
     cr_expect_str_eq(localeconv()->decimal_point, ",", "reading a table changed the program's locale");
@@ -129,7 +130,7 @@ Test(locale, model_files_read_and_report_the_same_under_a_decimal_comma)
     cr_expect_eq(mu_model_desc_load(SINEW_SOURCE_DIR "/tests/data/bad_models/negative_size.json", &desc),
                  RB_ERR_INVALID_ARGUMENT);
     cr_expect_not_null(strstr(rb_last_error(), "bones[1].size[1]: -0.05 is out of range"), "%s", rb_last_error());
-    cr_expect_not_null(strstr(rb_last_error(), "(> 0)"), "%s", rb_last_error());
+    cr_expect_not_null(strstr(rb_last_error(), "(in [0.001, 100])"), "%s", rb_last_error());
 
     cr_assert_eq(mu_model_desc_load_builtin("arm", &desc), RB_OK, "%s", rb_last_error());
     cr_expect_eq(desc->gravity.y, -9.8, "gravity read as %g", desc->gravity.y);
