@@ -8,7 +8,8 @@
 #   tools/fuzz.sh [--seconds N] [--seed N] [--build DIR] [TARGET...]
 #
 #   --seconds N  fuzz each target for N s (default 60; 0 only replays)
-#   --seed N     libFuzzer's random seed (default 1, so that a run is reproducible)
+#   --seed N     libFuzzer's random seed (default 1, so that a run is reproducible;
+#                0 picks one at random)
 #   --build DIR  the build folder (default build/fuzz); the working corpora
 #                grow in DIR/corpus/<target>, failing inputs land in
 #                DIR/artifacts/<target>
@@ -21,7 +22,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 usage()
 {
-    sed -n '3,18s/^# \{0,1\}//p' "$0"
+    sed -n '3,19s/^# \{0,1\}//p' "$0"
 }
 
 all_targets=(fuzz_model fuzz_control_file fuzz_csv_chart)
