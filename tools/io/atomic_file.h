@@ -11,20 +11,28 @@
  * a directory there is refused, since the rename would replace it. A
  * symbolic link at PATH is replaced by the new file, not written through.
  *
- * Interruption: while a file is open, SIGINT and SIGTERM remove its
- * temporary file. The first atomic_file_open installs a handler for both
- * that unlinks every open temporary file and then lets the signal's default
+ * Interruption: while a file is open, the signals a terminal, a shell or
+ * a pipe sends (SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGPIPE) remove its
+ * temporary file. The first atomic_file_open installs a handler that
+ * unlinks every open temporary file and then lets the signal's default
  * action end the process, so a parent (a shell loop) still sees that the
- * program was interrupted. The handler is installed even where the signal
- * was ignored (as SIGINT is in a background job of a shell without job
- * control), so `kill -INT` stops such a run too, removing its file.
+ * program was interrupted. SIGINT and SIGTERM get it even where they were
+ * ignored (as SIGINT is in a background job of a shell without job
+ * control), so `kill -INT` stops such a run too, removing its file; the
+ * others keep an inherited SIG_IGN (nohup's SIGHUP).
+ *
+ * A run that could not clean up (SIGKILL, a crash, a power loss) leaves its
+ * PATH.tmp.PID behind: the next atomic_file_open of the same PATH removes
+ * every such file whose process no longer exists.
+ *
+ * Power loss: atomic_file_commit syncs the file's data before the rename
+ * and the folder after it, so PATH is the old file or the complete new
+ * one, never a renamed empty file.
  *
  * Limits:
  *   - at most ATOMIC_FILE_MAX_OPEN files open at once;
- *   - for single-threaded programs that install no SIGINT or SIGTERM
- *     handler of their own (this one would replace it, or be replaced);
- *   - no fsync: the guarantee covers the process failing or being
- *     interrupted, not the machine losing power.
+ *   - for single-threaded programs that install no handler of their own
+ *     for those signals (this one would replace it, or be replaced).
  */
 #ifndef IO_ATOMIC_FILE_H
 #define IO_ATOMIC_FILE_H
@@ -61,11 +69,13 @@ typedef struct atomic_file {
  * `error` names the path and the reason. */
 bool atomic_file_open(atomic_file *file, const char *path, char *error, size_t error_size);
 
-/* Flushes and closes the stream and renames the temporary file to the final
- * name. Fails, with `error` naming the path and the reason, when the file
- * is not open, any write to the stream failed, the flush or close failed,
- * or the rename failed; the temporary file is then removed and the final
- * name left as it was. Either way `file` is closed afterwards. */
+/* Flushes, syncs and closes the stream and renames the temporary file to
+ * the final name, then syncs the folder. Fails, with `error` naming the
+ * path and the reason, when the file is not open, any write to the stream
+ * failed, the flush, sync or close failed, or the rename failed; the
+ * temporary file is then removed and the final name left as it was. When
+ * only the folder's sync fails, the new file is in place and `error` says
+ * so. Either way `file` is closed afterwards. */
 bool atomic_file_commit(atomic_file *file, char *error, size_t error_size);
 
 /* Closes the stream and removes the temporary file; the final name is left
