@@ -146,12 +146,30 @@ static void format_ref(mu_model_ref ref, char *buffer, size_t size)
     }
 }
 
+/* Reads the required string "name" of `object` (`what` in messages). A
+ * name heads CSV columns and shows in the viewer and in messages, so a
+ * control character (a line break, a tab, DEL) is refused: it would split
+ * a CSV header that sinew could not read back. */
+static rb_status read_name(mu_json_reader *reader, const json_t *object, const char *what, const char **out)
+{
+    MU_JSON_TRY(mu_json_read_string(reader, object, "name", MU_JSON_REQUIRED, what, out));
+    for (const unsigned char *c = (const unsigned char *)*out; *c != '\0'; ++c) {
+        if (*c < 0x20 || *c == 0x7f) {
+            mu_json_push_key(reader, "name");
+            return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                                "%s has the control character 0x%02x, expected printable text (no line break or tab)",
+                                what, *c);
+        }
+    }
+    return RB_OK;
+}
+
 /* Reads the required "name" of an object of the shared namespace and
  * copies it to *out, failing if another object has it already. */
 static rb_status read_object_name(mu_json_reader *reader, const json_t *object, const mu_model_desc *desc, char **out)
 {
     const char *name;
-    MU_JSON_TRY(mu_json_read_string(reader, object, "name", MU_JSON_REQUIRED, "the object's name", &name));
+    MU_JSON_TRY(read_name(reader, object, "the object's name", &name));
     mu_model_ref other;
     if (mu_model_desc_find(desc, name, &other)) {
         char where[32];
@@ -764,7 +782,7 @@ static rb_status parse_variant(mu_json_reader *reader, const json_t *object, mu_
     MU_JSON_TRY(mu_json_check_object(reader, object, keys));
     mu_model_variant *variant = &desc->variants[desc->variant_count++];
     const char *name;
-    MU_JSON_TRY(mu_json_read_string(reader, object, "name", MU_JSON_REQUIRED, "the variant's name", &name));
+    MU_JSON_TRY(read_name(reader, object, "the variant's name", &name));
     int other = mu_model_desc_find_variant(desc, name);
     if (other >= 0) {
         mu_json_push_key(reader, "name");
@@ -831,7 +849,7 @@ static rb_status read_list(mu_json_reader *reader, const json_t *root, const cha
 static rb_status parse_settings(mu_json_reader *reader, const json_t *root, mu_model_desc *desc)
 {
     const char *name;
-    MU_JSON_TRY(mu_json_read_string(reader, root, "name", MU_JSON_REQUIRED, "the model's name", &name));
+    MU_JSON_TRY(read_name(reader, root, "the model's name", &name));
     MU_JSON_TRY(copy_string(name, &desc->name));
     desc->gravity = rb_v2(0.0, DEFAULT_GRAVITY_Y);
     MU_JSON_TRY(mu_json_read_vec2(reader, root, "gravity", MU_JSON_OPTIONAL, gravity_component, "the gravity in m/s²",
