@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "cli/user_error.h"
+#include "mu/model_desc.h"
 
 static char dir[] = "/tmp/sinew-messages-XXXXXX";
 
@@ -92,4 +93,40 @@ Test(cli_messages, library_function_names_are_taken_off)
                      "arm.json:3:5: bones[0].size: expected two numbers");
     cr_expect_str_eq(user_error_text("mu_ is not a name: x"), "mu_ is not a name: x");
     cr_expect_str_eq(user_error_text(""), "");
+}
+
+/* The help of `sinew run` and the README's layout name every built-in
+ * model the library has (the worm was missing from the layout). */
+Test(cli_messages, run_help_and_the_readme_name_every_builtin_model)
+{
+    cr_assert_not_null(mkdtemp(dir));
+    char command[1024], path[600];
+    snprintf(path, sizeof path, "%s/help.txt", dir);
+    snprintf(command, sizeof command, "'%s' run --help > '%s' 2>&1", SINEW_TOOL, path);
+    cr_assert_eq(system(command), 0);
+    static char help[16384], readme[65536];
+    FILE *f = fopen(path, "r");
+    cr_assert_not_null(f);
+    help[fread(help, 1, sizeof help - 1, f)] = '\0';
+    fclose(f);
+    remove(path);
+    rmdir(dir);
+    f = fopen(SINEW_SOURCE_DIR "/README.md", "r");
+    cr_assert_not_null(f);
+    readme[fread(readme, 1, sizeof readme - 1, f)] = '\0';
+    fclose(f);
+    const char *layout = strstr(readme, "## Layout");
+    cr_assert_not_null(layout, "the README has no Layout section");
+    const char *models = strstr(layout, "- `models/`");
+    cr_assert_not_null(models, "the Layout has no models/ entry");
+    const char *entry_end = strstr(models + 1, "\n- ");
+    for (int k = 0; k < mu_builtin_model_count(); ++k) {
+        const char *name = mu_builtin_model_name(k);
+        cr_expect(strstr(help, name) != NULL, "sinew run --help does not name %s", name);
+        char quoted[64];
+        snprintf(quoted, sizeof quoted, "`%s`", name);
+        const char *at = strstr(models, quoted);
+        cr_expect(at != NULL && (entry_end == NULL || at < entry_end), "the README's models/ entry does not name %s",
+                  name);
+    }
 }
