@@ -116,6 +116,7 @@ int rb_contact_solver_prepare(rb_world *world)
     int next[RB_COLOUR_COUNT + 1];
     world->statistics.contact_colours = rb_colouring_offsets(colouring, next);
     bool warm = world->settings.warm_starting;
+    world->bouncing_constraint_count = 0;
     for (int i = 0; i < world->contact_count; ++i) {
         const rb_contact *contact = &world->contacts[i];
         if (contact->colour < 0) {
@@ -157,6 +158,7 @@ int rb_contact_solver_prepare(rb_world *world)
         }
         c->friction = contact->friction;
         c->restitution = contact->restitution;
+        world->bouncing_constraint_count += contact->restitution > 0.0;
         c->point_count = contact->manifold.point_count;
         for (int j = 0; j < c->point_count; ++j) {
             const rb_manifold_point *mp = &contact->manifold.points[j];
@@ -238,6 +240,63 @@ static void current_anchors(const rb_contact_constraint *c, const rb_constraint_
     anchors_at_midpoint(sa, sb, pa, pb, ra, rb);
 }
 
+/* The linear acceleration gravity and the applied force give a body now
+ * (m/s²): none for one that cannot move. */
+static rb_vec2 body_acceleration(const rb_world *world, int index, double inv_mass)
+{
+    const rb_body *body = &world->bodies[index];
+    if (body->type != RB_BODY_DYNAMIC || inv_mass == 0.0) {
+        return rb_v2(0.0, 0.0);
+    }
+    return rb_mul_add(rb_scale(body->gravity_scale, world->gravity), inv_mass, body->force);
+}
+
+/* Where a bounce starts: the speed at which the surfaces meet, whatever
+ * part of the step they meet in. Each substep until a point of a contact
+ * with restitution first pushes, this records it from the gap s at the
+ * substep's start and the point's normal velocity v (relative, after the
+ * substep's gravity). Semi-implicit Euler's velocity is that of the
+ * middle of the substep, so the velocity at its start is v - a·h/2, a the
+ * normal relative acceleration of gravity and forces; crossing the gap
+ * under a, the surfaces meet at -sqrt((v - a·h/2)² - 2·a·s). Measured once
+ * per step, at its start, the impact speed of a ball dropped from 1 m at
+ * 60 Hz was short by up to g·dt, 0.16 m/s, and its rebound by up to 7.8 %
+ * of e²·h. A pass of its own, run only in steps with such contacts,
+ * keeps the work (and the registers) out of every other contact's
+ * substep. */
+static void record_approaches(rb_world *world, double h, bool first_substep)
+{
+    for (int i = 0; i < world->constraint_count; ++i) {
+        const rb_contact_constraint *c = &world->constraints[i];
+        if (c->restitution == 0.0) {
+            continue;
+        }
+        const rb_body_state *sa = &world->states[c->body_a];
+        const rb_body_state *sb = &world->states[c->body_b];
+        rb_vec2 acceleration = rb_sub(body_acceleration(world, c->body_b, c->inv_mass_b),
+                                      body_acceleration(world, c->body_a, c->inv_mass_a));
+        for (int j = 0; j < c->point_count; ++j) {
+            rb_constraint_point *p = &world->constraints[i].points[j];
+            if (!first_substep && p->max_normal_impulse > 0.0) {
+                continue;
+            }
+            rb_vec2 normal;
+            rb_vec2 pa;
+            rb_vec2 pb;
+            current_geometry(c, p, sa, sb, &normal, &pa, &pb);
+            rb_vec2 ra;
+            rb_vec2 rb;
+            anchors_at_midpoint(sa, sb, pa, pb, &ra, &rb);
+            double s = rb_dot(normal, rb_sub(pb, pa));
+            double v = rb_dot(normal, relative_velocity(sa, sb, ra, rb));
+            double a = rb_dot(normal, acceleration);
+            double at_start = v - 0.5 * a * h;
+            p->impact_velocity = -sqrt(fmax(at_start * at_start - 2.0 * a * fmax(s, 0.0), 0.0));
+            p->approach_acceleration = a;
+        }
+    }
+}
+
 /* Lower bound of the normal velocity for a substep of length h:
  * - a gap s > 0 may close, but not more: vn >= -s/h (speculative);
  * - with Baumgarte, overlap beyond the slop is pushed out at a fraction
@@ -271,10 +330,6 @@ void rb_contact_solver_prepare_substep(rb_world *world, double h, rb_substep_row
             p->tangent_arm_b = rb_cross(rb, tangent);
             p->tangent_mass =
                 mass_from_arms(inv_mass_sum, c->inv_inertia_a, c->inv_inertia_b, p->tangent_arm_a, p->tangent_arm_b);
-            if (rows.first_substep) {
-                p->approach_velocity = relative_velocity(sa, sb, ra, rb);
-                p->relative_velocity = rb_dot(c->normal, p->approach_velocity);
-            }
             if (s > 0.0) {
                 p->min_normal_velocity = -s * inv_h;
             } else if (rows.baumgarte_bias) {
@@ -297,6 +352,9 @@ void rb_contact_solver_prepare_substep(rb_world *world, double h, rb_substep_row
                     mass_from_arms(inv_mass_sum, c->inv_inertia_a, c->inv_inertia_b, p->normal_arm_a, p->normal_arm_b);
             }
         }
+    }
+    if (world->bouncing_constraint_count > 0) {
+        record_approaches(world, h, rows.first_substep);
     }
 }
 
@@ -604,11 +662,14 @@ bool rb_contact_solver_correct_positions(rb_world *world)
     return deepest >= -NGS_TOLERANCE_SLOPS * settings->linear_slop;
 }
 
-/* Restitution after the step (as Box2D v3 does): a point that was
- * approaching faster than the threshold at the start of the step (with
- * the step's gravity in the velocity, as Box2D 2.x measures it), and
- * that the solver pushed, gets the normal velocity -e·(that speed). */
-void rb_contact_solver_apply_restitution(rb_world *world)
+/* Restitution after the step (as Box2D v3 does): a point whose surfaces
+ * met faster than the threshold (record_approach) and that the solver
+ * pushed leaves at e times that speed. The velocity it is given is, as
+ * every semi-implicit Euler velocity, that of the middle of the next
+ * substep: e·|impact| - a·h/2 with a the normal acceleration, so that
+ * the bounce rises to e² times the height it fell from to within the
+ * integrator's error, wherever in the step the impact fell. */
+void rb_contact_solver_apply_restitution(rb_world *world, double h)
 {
     double threshold = world->settings.restitution_threshold;
     for (int i = 0; i < world->constraint_count; ++i) {
@@ -620,7 +681,7 @@ void rb_contact_solver_apply_restitution(rb_world *world)
         rb_body_state *b = &world->states[c->body_b];
         for (int j = 0; j < c->point_count; ++j) {
             rb_constraint_point *p = &c->points[j];
-            if (p->relative_velocity > -threshold || p->max_normal_impulse == 0.0) {
+            if (p->impact_velocity > -threshold || p->max_normal_impulse == 0.0) {
                 continue;
             }
             /* The positions have moved since prepare: act at the contact
@@ -632,9 +693,7 @@ void rb_contact_solver_apply_restitution(rb_world *world)
             double mass =
                 effective_mass(c->inv_mass_a + c->inv_mass_b, c->inv_inertia_a, c->inv_inertia_b, ra, rb, normal);
             double vn = rb_dot(normal, relative_velocity(a, b, ra, rb));
-            /* Newton's law of restitution about the normal the impulse acts
-             * along: the approach speed is measured along it too. */
-            double target = -c->restitution * rb_dot(normal, p->approach_velocity);
+            double target = -c->restitution * p->impact_velocity - 0.5 * p->approach_acceleration * h;
             double accumulated = fmax(p->normal_impulse - mass * (vn - target), 0.0);
             double delta = accumulated - p->normal_impulse;
             p->normal_impulse = accumulated;

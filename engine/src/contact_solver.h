@@ -23,9 +23,11 @@ typedef struct rb_constraint_point {
     double normal_mass, tangent_mass;       /* kg, effective masses along the normal and the tangent */
     double normal_impulse, tangent_impulse; /* N·s, accumulated */
     double max_normal_impulse;              /* N·s, largest accumulated normal impulse of the step */
-    double relative_velocity;   /* m/s, normal velocity after the first velocity integration (< 0 approaching) */
-    rb_vec2 approach_velocity;  /* m/s, the whole relative velocity of the point then */
-    double min_normal_velocity; /* m/s, the velocity solve's lower bound for this substep */
+    /* Restitution's record (contact_solver.c, record_approach), kept from
+     * the last substep before the point first pushed: */
+    double impact_velocity;       /* m/s, normal velocity when the surfaces met (< 0 approaching) */
+    double approach_acceleration; /* m/s², normal relative acceleration of gravity and forces then */
+    double min_normal_velocity;   /* m/s, the velocity solve's lower bound for this substep */
 } rb_constraint_point;
 
 struct rb_contact_constraint {
@@ -52,8 +54,9 @@ struct rb_contact_constraint {
 int rb_contact_solver_prepare(rb_world *world);
 /* What a solver asks of rb_contact_solver_prepare_substep. */
 typedef struct rb_substep_rows {
-    /* record each point's relative velocity as its impact speed for
-     * restitution (the step's first substep) */
+    /* the step's first substep: every point of a contact with restitution
+     * records its impact speed anew; in later substeps only those that
+     * have not pushed yet (contact_solver.c, record_approaches) */
     bool first_substep;
     /* the normal velocity's lower bound pushes overlap beyond the slop
      * out (Baumgarte) */
@@ -96,7 +99,7 @@ void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *so
 /* One non-linear Gauss-Seidel pass over the contacts; returns whether no
  * point was deeper than the tolerance before it. */
 bool rb_contact_solver_correct_positions(rb_world *world);
-void rb_contact_solver_apply_restitution(rb_world *world);
+void rb_contact_solver_apply_restitution(rb_world *world, double h);
 /* Writes the impulses back to the manifolds for the next step; returns
  * the deepest penetration left (m, >= 0). */
 double rb_contact_solver_store_impulses(rb_world *world);

@@ -34,7 +34,7 @@ rb_solver_counts rb_solve_baumgarte(rb_world *world, double dt)
     }
 
     double t = rb_world_clock(world);
-    rb_contact_solver_apply_restitution(world);
+    rb_contact_solver_apply_restitution(world, h);
     world->profile.restitution = rb_world_clock(world) - t;
     return (rb_solver_counts){.velocity_iterations = substeps * settings->velocity_iterations};
 }

@@ -116,7 +116,7 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
     }
 
     t = rb_world_clock(world);
-    rb_contact_solver_apply_restitution(world);
+    rb_contact_solver_apply_restitution(world, h);
     profile->restitution = rb_world_clock(world) - t;
     return (rb_solver_counts){
         .velocity_iterations = substeps * settings->velocity_iterations,

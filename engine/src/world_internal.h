@@ -383,6 +383,7 @@ struct rb_world {
 
     rb_contact_constraint *constraints; /* in colour order */
     int constraint_count, constraint_capacity;
+    int bouncing_constraint_count; /* constraints with restitution > 0 this step */
     rb_colouring contact_colouring;
 
     rb_joint *joints;
