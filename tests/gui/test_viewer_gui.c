@@ -19,6 +19,7 @@
 #include <sys/wait.h>
 
 #include "canvas_draw.h"
+#include "io/csv_table.h"
 #include "rb/debug_draw.h"
 
 static void make_temp_dir(char *path, size_t size)
@@ -267,7 +268,8 @@ Test(viewer, the_panels_controls_drive_the_simulation, .timeout = 240)
     snprintf(path, sizeof path, "%s/err.txt", dir);
     const char *errors = read_file(path);
     cr_expect_eq(status, 1, "the last command, a variant for a scene, fails the script");
-    cr_expect(strstr(errors, "script.txt:28: variant: the control is not available now") != NULL, "stderr:\n%s", errors);
+    cr_expect(strstr(errors, "script.txt:28: variant: the control is not available now") != NULL, "stderr:\n%s",
+              errors);
     snprintf(path, sizeof path, "%s/out.txt", dir);
     const char *output = read_file(path);
     expect_status(output, 0, (const char *const[]){"model=leg ", "variant=0 ", "level=4 ", "muscles=4 ", NULL});
@@ -379,6 +381,61 @@ Test(viewer, bad_scripts_fail_at_their_line, .timeout = 240)
     remove(script);
     remove(path);
     snprintf(path, sizeof path, "%s/out.txt", dir);
+    remove(path);
+    remove(dir);
+}
+
+/* The viewer's graph export writes names a CSV treats specially (a
+ * comma, quotes, ';', '#') so that the reader `sinew plot` uses gives them
+ * back exactly. */
+Test(viewer, an_exported_graph_reads_back_with_its_names, .timeout = 240)
+{
+    char dir[64], model[128], script[128], csv[128], arguments[512], path[128];
+    make_temp_dir(dir, sizeof dir);
+    snprintf(model, sizeof model, "%s/names.json", dir);
+    snprintf(script, sizeof script, "%s/script.txt", dir);
+    snprintf(csv, sizeof csv, "%s/activation.csv", dir);
+    snprintf(path, sizeof path, "%s/models/arm.json", SINEW_SOURCE_DIR);
+    char *arm = read_file(path);
+    static char renamed[65536];
+    const char *from = "\"Biceps Long\"", *to = "\"Bi,ceps; #1 \\\"L\\\"\"";
+    size_t used = 0;
+    for (const char *at = arm;;) {
+        const char *next = strstr(at, from);
+        const size_t keep = next != NULL ? (size_t)(next - at) : strlen(at);
+        cr_assert_lt(used + keep + strlen(to), sizeof renamed);
+        memcpy(renamed + used, at, keep);
+        used += keep;
+        if (next == NULL) {
+            break;
+        }
+        memcpy(renamed + used, to, strlen(to));
+        used += strlen(to);
+        at = next + strlen(from);
+    }
+    renamed[used] = '\0';
+    write_file(model, renamed);
+    char text[512];
+    snprintf(text, sizeof text, "activation \"Biceps Short\" 0.5\nplay 5\nexport activation %s\nquit\n", csv);
+    write_file(script, text);
+    snprintf(arguments, sizeof arguments, "'%s' --script '%s'", model, script);
+    cr_assert_eq(run_viewer(dir, arguments), 0);
+    csv_table table;
+    char error[1024];
+    cr_assert(csv_table_read(csv, &table, error, sizeof error), "%s", error);
+    cr_expect_geq(csv_table_find(&table, "Bi,ceps; #1 \"L\".activation"), 0, "the renamed muscle's column");
+    cr_expect_geq(csv_table_find(&table, "Biceps Short.activation"), 0);
+    cr_expect_geq(table.row_count, 5);
+    for (int c = 0; c < table.column_count; ++c) {
+        cr_expect(table.columns[c].numeric, "column \"%s\" is not numeric", table.columns[c].name);
+    }
+    csv_table_free(&table);
+    remove(csv);
+    remove(model);
+    remove(script);
+    snprintf(path, sizeof path, "%s/out.txt", dir);
+    remove(path);
+    snprintf(path, sizeof path, "%s/err.txt", dir);
     remove(path);
     remove(dir);
 }
