@@ -861,3 +861,49 @@ Test(model_desc, endless_and_huge_files_are_refused_at_the_limit, .timeout = 30)
     cr_expect(strstr(rb_last_error(), "invalid JSON") != NULL, "%s", rb_last_error());
     remove(path);
 }
+
+/* Finding names does not scan: a file of 65,535 nails, or of 65,535
+ * muscles listed by a group and a variant, loads in linear time. (Each
+ * name was once checked against every name before it: the nails took a
+ * minute.) The timeout is the bound. */
+Test(model_desc, full_lists_load_in_linear_time, .timeout = 60)
+{
+    char path[] = "/tmp/sinew-model-XXXXXX";
+    int fd = mkstemp(path);
+    cr_assert_geq(fd, 0);
+    FILE *file = fdopen(fd, "wb");
+    cr_assert_not_null(file);
+    fputs("{\"name\": \"many\", \"nails\": [", file);
+    for (int i = 0; i < MU_MODEL_MAX_OBJECTS; ++i) {
+        fprintf(file, "%s{\"name\": \"n%d\", \"position\": [0, %d]}", i > 0 ? "," : "", i, i % 2);
+    }
+    fputs("], \"muscles\": [", file);
+    for (int i = 0; i < MU_MODEL_MAX_OBJECTS; ++i) {
+        fprintf(file,
+                "%s{\"name\": \"m%d\", \"rest_length\": 1, \"max_force\": 1, \"path\": [{\"body\": \"n0\", "
+                "\"point\": [0, 0]}, {\"body\": \"n1\", \"point\": [0, 0]}]}",
+                i > 0 ? "," : "", i);
+    }
+    const char *lists[2] = {"], \"groups\": [{\"name\": \"all\", \"muscles\": [",
+                            "]}], \"variants\": [{\"name\": \"all\", \"muscles\": ["};
+    for (int l = 0; l < 2; ++l) {
+        fputs(lists[l], file);
+        for (int i = 0; i < MU_MODEL_MAX_OBJECTS; ++i) {
+            fprintf(file, "%s\"m%d\"", i > 0 ? "," : "", i);
+        }
+    }
+    fputs("]}]}\n", file);
+    fclose(file);
+    mu_model_desc *desc = NULL;
+    cr_expect_eq(mu_model_desc_load(path, &desc), RB_OK, "%s", rb_last_error());
+    remove(path);
+    cr_assert_not_null(desc);
+    cr_expect_eq(desc->nail_count, MU_MODEL_MAX_OBJECTS);
+    cr_expect_eq(desc->groups[0].muscle_count, MU_MODEL_MAX_OBJECTS);
+    mu_model_ref ref;
+    cr_expect(mu_model_desc_find(desc, "m65534", &ref) && ref.kind == MU_MODEL_MUSCLE && ref.index == 65534);
+    cr_expect(mu_model_desc_find(desc, "n7", &ref) && ref.kind == MU_MODEL_NAIL && ref.index == 7);
+    cr_expect_not(mu_model_desc_find(desc, "n65535", &ref));
+    cr_expect_eq(mu_model_desc_find_variant(desc, "all"), 0);
+    mu_model_desc_destroy(desc);
+}

@@ -9,6 +9,7 @@
 #include "data_file.h"
 #include "model_schema.h"
 #include "mu/model_desc.h"
+#include "name_index.h"
 
 /* Reads the whole file into *text (not terminated; jansson takes a
  * length), refusing it past MU_MODEL_MAX_FILE_BYTES: a file that never
@@ -180,6 +181,8 @@ void mu_model_desc_destroy(mu_model_desc *desc)
     if (desc == NULL) {
         return;
     }
+    mu_name_index_destroy(desc->object_names);
+    mu_name_index_destroy(desc->variant_names);
     free(desc->name);
     free(desc->source);
     for (int i = 0; i < desc->nail_count; ++i) {
@@ -285,6 +288,14 @@ bool mu_model_desc_find(const mu_model_desc *desc, const char *name, mu_model_re
     if (mu_refuse_null(f, "desc", desc) || mu_refuse_null(f, "name", name) || mu_refuse_null(f, "out", out)) {
         return false;
     }
+    int kind, index;
+    if (mu_name_index_find(desc->object_names, name, &kind, &index)) {
+        *out = (mu_model_ref){(mu_model_kind)kind, index};
+        return true;
+    }
+    if (desc->object_names != NULL) {
+        return false;
+    }
     static const mu_model_kind kinds[] = {MU_MODEL_NAIL,   MU_MODEL_BONE,   MU_MODEL_HINGE, MU_MODEL_GLUE,
                                           MU_MODEL_WEIGHT, MU_MODEL_MUSCLE, MU_MODEL_GROUP, MU_MODEL_TORQUE_MUSCLE};
     for (size_t k = 0; k < sizeof kinds / sizeof kinds[0]; ++k) {
@@ -305,6 +316,13 @@ int mu_model_desc_find_variant(const mu_model_desc *desc, const char *name)
 {
     const char *f = "mu_model_desc_find_variant";
     if (mu_refuse_null(f, "desc", desc) || mu_refuse_null(f, "name", name)) {
+        return -1;
+    }
+    int kind, index;
+    if (mu_name_index_find(desc->variant_names, name, &kind, &index)) {
+        return index;
+    }
+    if (desc->variant_names != NULL) {
         return -1;
     }
     for (int i = 0; i < desc->variant_count; ++i) {

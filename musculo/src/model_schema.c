@@ -12,6 +12,7 @@
 #include "mu/geometry_lengths.h"
 #include "mu/motor_pool.h"
 #include "mu/muscle.h"
+#include "name_index.h"
 #include "rb/geometry.h"
 
 /* The defaults of Castanyer's framework ("Implementació d'un model
@@ -166,7 +167,8 @@ static rb_status read_name(mu_json_reader *reader, const json_t *object, const c
 
 /* Reads the required "name" of an object of the shared namespace and
  * copies it to *out, failing if another object has it already. */
-static rb_status read_object_name(mu_json_reader *reader, const json_t *object, const mu_model_desc *desc, char **out)
+static rb_status read_object_name(mu_json_reader *reader, const json_t *object, mu_model_desc *desc, mu_model_ref ref,
+                                  char **out)
 {
     const char *name;
     MU_JSON_TRY(read_name(reader, object, "the object's name", &name));
@@ -180,7 +182,8 @@ static rb_status read_object_name(mu_json_reader *reader, const json_t *object, 
                             "glue, weight, muscle, group or torque muscle has",
                             name, where);
     }
-    return copy_string(name, out);
+    MU_JSON_TRY(copy_string(name, out));
+    return mu_name_index_add(&desc->object_names, *out, (int)ref.kind, ref.index);
 }
 
 /* Reads the member `key`, the name of a nail or a bone. */
@@ -217,9 +220,10 @@ static rb_status read_body_pair(mu_json_reader *reader, const json_t *object, co
 }
 
 /* Reads the element at the current path, the name of an object of `kind`,
- * and checks that the first `count` entries of `taken` do not hold it. */
+ * and fails if `seen` (one flag per object of the kind) marks it already
+ * listed; marks it. */
 static rb_status read_member_ref(mu_json_reader *reader, const json_t *value, const mu_model_desc *desc,
-                                 mu_model_kind kind, const int *taken, int count, int *out)
+                                 mu_model_kind kind, bool *seen, int *out)
 {
     char what[32];
     snprintf(what, sizeof what, "the name of a %s", kind_singular[kind]);
@@ -230,14 +234,46 @@ static rb_status read_member_ref(mu_json_reader *reader, const json_t *value, co
         return mu_json_fail(reader, MU_JSON_AT_VALUE, "no %s is named \"%s\", expected %s", kind_singular[kind], name,
                             what);
     }
-    for (int i = 0; i < count; ++i) {
-        if (taken[i] == ref.index) {
-            return mu_json_fail(reader, MU_JSON_AT_VALUE, "\"%s\" is listed twice, expected each %s once", name,
-                                kind_singular[kind]);
-        }
+    if (seen[ref.index]) {
+        return mu_json_fail(reader, MU_JSON_AT_VALUE, "\"%s\" is listed twice, expected each %s once", name,
+                            kind_singular[kind]);
     }
+    seen[ref.index] = true;
     *out = ref.index;
     return RB_OK;
+}
+
+/* Reads the list `key` of min_count or more names of muscles or bones
+ * (`kind`) into *indices, *count of them, each once. */
+static rb_status read_name_list(mu_json_reader *reader, const json_t *object, const char *key, mu_model_kind kind,
+                                const mu_model_desc *desc, size_t min_count, int **indices, int *count)
+{
+    char what[32];
+    snprintf(what, sizeof what, "%s names", kind_singular[kind]);
+    const json_t *names;
+    MU_JSON_TRY(
+        mu_json_read_array(reader, object, key, MU_JSON_REQUIRED, min_count, MU_MODEL_MAX_OBJECTS, what, &names));
+    *indices = calloc(json_array_size(names), sizeof **indices);
+    MU_JSON_TRY(check_allocation(*indices, json_array_size(names)));
+    /* Flags, not a scan of the names before: a list of 65,535 names stays linear. */
+    const int objects = kind == MU_MODEL_MUSCLE ? desc->muscle_count : desc->bone_count;
+    bool *seen = calloc((size_t)objects + 1, sizeof *seen);
+    MU_JSON_TRY(check_allocation(seen, 1));
+    mu_json_push_key(reader, key);
+    rb_status status = RB_OK;
+    for (size_t i = 0; i < json_array_size(names) && status == RB_OK; ++i) {
+        mu_json_push_index(reader, i);
+        status = read_member_ref(reader, json_array_get(names, i), desc, kind, seen, &(*indices)[i]);
+        if (status == RB_OK) {
+            ++*count;
+            mu_json_pop(reader);
+        }
+    }
+    free(seen);
+    if (status == RB_OK) {
+        mu_json_pop(reader);
+    }
+    return status;
 }
 
 /* ---- one object of each kind ------------------------------------------ */
@@ -247,7 +283,8 @@ static rb_status parse_nail(mu_json_reader *reader, const json_t *object, mu_mod
     static const char *const keys[] = {"name", "position", NULL};
     MU_JSON_TRY(mu_json_check_object(reader, object, keys));
     mu_model_nail *nail = &desc->nails[desc->nail_count++];
-    MU_JSON_TRY(read_object_name(reader, object, desc, &nail->name));
+    MU_JSON_TRY(
+        read_object_name(reader, object, desc, (mu_model_ref){MU_MODEL_NAIL, desc->nail_count - 1}, &nail->name));
     return mu_json_read_vec2(reader, object, "position", MU_JSON_REQUIRED, coordinate, "the nail's position in m",
                              &nail->position);
 }
@@ -258,7 +295,8 @@ static rb_status parse_bone(mu_json_reader *reader, const json_t *object, mu_mod
                                        "static", "density", "damping", NULL};
     MU_JSON_TRY(mu_json_check_object(reader, object, keys));
     mu_model_bone *bone = &desc->bones[desc->bone_count++];
-    MU_JSON_TRY(read_object_name(reader, object, desc, &bone->name));
+    MU_JSON_TRY(
+        read_object_name(reader, object, desc, (mu_model_ref){MU_MODEL_BONE, desc->bone_count - 1}, &bone->name));
     MU_JSON_TRY(mu_json_read_vec2(reader, object, "centre", MU_JSON_REQUIRED, coordinate, "the bone's centre in m",
                                   &bone->centre));
     MU_JSON_TRY(mu_json_read_vec2(reader, object, "size", MU_JSON_REQUIRED, extent, "the bone's x and y extents in m",
@@ -297,7 +335,8 @@ static rb_status parse_hinge(mu_json_reader *reader, const json_t *object, mu_mo
     const char *limit_what = "a joint angle limit in degrees, left out for no limit";
     MU_JSON_TRY(mu_json_check_object(reader, object, keys));
     mu_model_hinge *hinge = &desc->hinges[desc->hinge_count++];
-    MU_JSON_TRY(read_object_name(reader, object, desc, &hinge->name));
+    MU_JSON_TRY(
+        read_object_name(reader, object, desc, (mu_model_ref){MU_MODEL_HINGE, desc->hinge_count - 1}, &hinge->name));
     MU_JSON_TRY(read_body_pair(reader, object, desc, &hinge->body_a, &hinge->body_b));
     MU_JSON_TRY(mu_json_read_vec2(reader, object, "anchor_a", MU_JSON_REQUIRED, coordinate,
                                   "the pin in body A's frame, in m", &hinge->anchor_a));
@@ -330,7 +369,8 @@ static rb_status parse_glue(mu_json_reader *reader, const json_t *object, mu_mod
     static const char *const keys[] = {"name", "body_a", "body_b", NULL};
     MU_JSON_TRY(mu_json_check_object(reader, object, keys));
     mu_model_glue *glue = &desc->glues[desc->glue_count++];
-    MU_JSON_TRY(read_object_name(reader, object, desc, &glue->name));
+    MU_JSON_TRY(
+        read_object_name(reader, object, desc, (mu_model_ref){MU_MODEL_GLUE, desc->glue_count - 1}, &glue->name));
     return read_body_pair(reader, object, desc, &glue->body_a, &glue->body_b);
 }
 
@@ -586,7 +626,8 @@ static rb_status parse_muscle(mu_json_reader *reader, const json_t *object, mu_m
                                        NULL};
     MU_JSON_TRY(mu_json_check_object(reader, object, keys));
     mu_model_muscle *muscle = &desc->muscles[desc->muscle_count++];
-    MU_JSON_TRY(read_object_name(reader, object, desc, &muscle->name));
+    MU_JSON_TRY(
+        read_object_name(reader, object, desc, (mu_model_ref){MU_MODEL_MUSCLE, desc->muscle_count - 1}, &muscle->name));
     MU_JSON_TRY(parse_muscle_size(reader, object, muscle));
     MU_JSON_TRY(parse_muscle_force(reader, object, muscle));
     double rest_lengths_per_second = 0.0;
@@ -649,7 +690,8 @@ static rb_status parse_torque_muscle(mu_json_reader *reader, const json_t *objec
     static const char *const keys[] = {"name", "body", "reaction_body", "peak_torque", "motor_pool", "recruited", NULL};
     MU_JSON_TRY(mu_json_check_object(reader, object, keys));
     mu_model_torque_muscle *muscle = &desc->torque_muscles[desc->torque_muscle_count++];
-    MU_JSON_TRY(read_object_name(reader, object, desc, &muscle->name));
+    MU_JSON_TRY(read_object_name(reader, object, desc,
+                                 (mu_model_ref){MU_MODEL_TORQUE_MUSCLE, desc->torque_muscle_count - 1}, &muscle->name));
     MU_JSON_TRY(read_body(reader, object, "body", desc, &muscle->body));
     if (muscle->body.kind != MU_MODEL_BONE) {
         mu_json_push_key(reader, "body");
@@ -677,22 +719,9 @@ static rb_status parse_group(mu_json_reader *reader, const json_t *object, mu_mo
     static const char *const keys[] = {"name", "muscles", NULL};
     MU_JSON_TRY(mu_json_check_object(reader, object, keys));
     mu_model_group *group = &desc->groups[desc->group_count++];
-    MU_JSON_TRY(read_object_name(reader, object, desc, &group->name));
-    const json_t *muscles;
-    MU_JSON_TRY(mu_json_read_array(reader, object, "muscles", MU_JSON_REQUIRED, 1, MU_MODEL_MAX_OBJECTS, "muscle names",
-                                   &muscles));
-    group->muscles = calloc(json_array_size(muscles), sizeof *group->muscles);
-    MU_JSON_TRY(check_allocation(group->muscles, json_array_size(muscles)));
-    mu_json_push_key(reader, "muscles");
-    for (size_t i = 0; i < json_array_size(muscles); ++i) {
-        mu_json_push_index(reader, i);
-        MU_JSON_TRY(read_member_ref(reader, json_array_get(muscles, i), desc, MU_MODEL_MUSCLE, group->muscles,
-                                    group->muscle_count, &group->muscles[i]));
-        ++group->muscle_count;
-        mu_json_pop(reader);
-    }
-    mu_json_pop(reader);
-    return RB_OK;
+    MU_JSON_TRY(
+        read_object_name(reader, object, desc, (mu_model_ref){MU_MODEL_GROUP, desc->group_count - 1}, &group->name));
+    return read_name_list(reader, object, "muscles", MU_MODEL_MUSCLE, desc, 1, &group->muscles, &group->muscle_count);
 }
 
 static rb_status parse_weight(mu_json_reader *reader, const json_t *object, mu_model_desc *desc)
@@ -701,7 +730,7 @@ static rb_status parse_weight(mu_json_reader *reader, const json_t *object, mu_m
     MU_JSON_TRY(mu_json_check_object(reader, object, keys));
     desc->has_weight = true;
     mu_model_weight *weight = &desc->weight;
-    MU_JSON_TRY(read_object_name(reader, object, desc, &weight->name));
+    MU_JSON_TRY(read_object_name(reader, object, desc, (mu_model_ref){MU_MODEL_WEIGHT, 0}, &weight->name));
     MU_JSON_TRY(read_body(reader, object, "body", desc, &weight->body));
     MU_JSON_TRY(mu_json_read_vec2(reader, object, "position", MU_JSON_REQUIRED, coordinate, "the weight's centre in m",
                                   &weight->position));
@@ -727,11 +756,18 @@ static rb_status parse_weight(mu_json_reader *reader, const json_t *object, mu_m
 /* Fails if a muscle of the variant runs over a bone the variant leaves out. */
 static rb_status check_variant_bones(mu_json_reader *reader, const mu_model_desc *desc, const mu_model_variant *variant)
 {
+    /* Flags, not mu_model_variant_has_bone's scan: linear in the variant's size. */
+    bool *in_variant = calloc((size_t)desc->bone_count + 1, sizeof *in_variant);
+    MU_JSON_TRY(check_allocation(in_variant, 1));
+    for (int b = 0; b < variant->bone_count; ++b) {
+        in_variant[variant->bones[b]] = true;
+    }
     for (int m = 0; m < variant->muscle_count; ++m) {
         const mu_model_muscle *muscle = &desc->muscles[variant->muscles[m]];
         for (int p = 0; p < muscle->point_count; ++p) {
             mu_model_ref body = muscle->path[p].body;
-            if (body.kind == MU_MODEL_BONE && !mu_model_variant_has_bone(variant, body.index)) {
+            if (body.kind == MU_MODEL_BONE && !in_variant[body.index]) {
+                free(in_variant);
                 mu_json_push_key(reader, "muscles");
                 mu_json_push_index(reader, (size_t)m);
                 return mu_json_fail(reader, MU_JSON_AT_VALUE,
@@ -741,27 +777,7 @@ static rb_status check_variant_bones(mu_json_reader *reader, const mu_model_desc
             }
         }
     }
-    return RB_OK;
-}
-
-/* Reads the list `key` of names of objects of `kind` into *indices. */
-static rb_status read_variant_list(mu_json_reader *reader, const json_t *object, const char *key, mu_model_kind kind,
-                                   const mu_model_desc *desc, int **indices, int *count)
-{
-    char what[32];
-    snprintf(what, sizeof what, "%s names", kind_singular[kind]);
-    const json_t *names;
-    MU_JSON_TRY(mu_json_read_array(reader, object, key, MU_JSON_REQUIRED, 0, MU_MODEL_MAX_OBJECTS, what, &names));
-    *indices = calloc(json_array_size(names), sizeof **indices);
-    MU_JSON_TRY(check_allocation(*indices, json_array_size(names)));
-    mu_json_push_key(reader, key);
-    for (size_t i = 0; i < json_array_size(names); ++i) {
-        mu_json_push_index(reader, i);
-        MU_JSON_TRY(read_member_ref(reader, json_array_get(names, i), desc, kind, *indices, *count, &(*indices)[i]));
-        ++*count;
-        mu_json_pop(reader);
-    }
-    mu_json_pop(reader);
+    free(in_variant);
     return RB_OK;
 }
 
@@ -791,11 +807,12 @@ static rb_status parse_variant(mu_json_reader *reader, const json_t *object, mu_
                             name, other);
     }
     MU_JSON_TRY(copy_string(name, &variant->name));
+    MU_JSON_TRY(mu_name_index_add(&desc->variant_names, variant->name, 0, desc->variant_count - 1));
     MU_JSON_TRY(
-        read_variant_list(reader, object, "muscles", MU_MODEL_MUSCLE, desc, &variant->muscles, &variant->muscle_count));
+        read_name_list(reader, object, "muscles", MU_MODEL_MUSCLE, desc, 0, &variant->muscles, &variant->muscle_count));
     if (json_object_get(object, "bones") != NULL) {
         MU_JSON_TRY(
-            read_variant_list(reader, object, "bones", MU_MODEL_BONE, desc, &variant->bones, &variant->bone_count));
+            read_name_list(reader, object, "bones", MU_MODEL_BONE, desc, 0, &variant->bones, &variant->bone_count));
     } else {
         MU_JSON_TRY(all_bones(desc, variant));
     }

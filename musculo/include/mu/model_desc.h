@@ -213,6 +213,11 @@ typedef struct mu_model_desc {
     mu_model_torque_muscle *torque_muscles;
     int variant_count; /**< >= 1: without "variants" in the file, one variant "Default" with everything */
     mu_model_variant *variants;
+    /** Private: the loader's indices of the objects' and the variants'
+     * names, which make mu_model_desc_find and mu_model_desc_find_variant
+     * take constant time (NULL in a description made otherwise: they then
+     * scan). They borrow the names: change no name of a loaded description. */
+    struct mu_name_index *object_names, *variant_names;
 } mu_model_desc;
 
 /** Reads and validates the model file `path`. On success *out owns a new
