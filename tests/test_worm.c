@@ -86,8 +86,9 @@ Test(worm, bad_recruit_calls_are_errors)
     cr_expect(strstr(rb_last_error(), "Nobody") != NULL, "%s", rb_last_error());
     cr_expect_eq(mu_model_recruit_at(model, 1, 10), RB_ERR_INVALID_ARGUMENT);
     cr_expect_null(mu_model_motor_pool(model, -1));
-    cr_assert_eq(mu_model_recruit(model, "Torque Muscle", 500), RB_OK);
-    cr_expect_eq(mu_motor_pool_recruited(mu_model_motor_pool(model, 0)), 200, "clamped to the pool");
+    cr_expect_eq(mu_model_recruit(model, "Torque Muscle", 500), RB_ERR_INVALID_ARGUMENT);
+    cr_expect(strstr(rb_last_error(), "500") != NULL && strstr(rb_last_error(), "200") != NULL, "%s", rb_last_error());
+    cr_expect_eq(mu_motor_pool_recruited(mu_model_motor_pool(model, 0)), 0, "refused, not clamped to the pool");
     mu_model_destroy(model);
     mu_model_desc_destroy(desc);
 }
