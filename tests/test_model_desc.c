@@ -795,8 +795,9 @@ Test(model_desc, a_nul_byte_inside_an_array_ends_in_an_error, .timeout = 10)
     cr_expect(strstr(rb_last_error(), "zz") != NULL, "%s", rb_last_error());
 }
 
-/* A NUL written over, or inserted before, every byte of a small model, and
- * every prefix of it: each load ends (the test's timeout is the bound).
+/* A NUL written over, or inserted before, every byte of a small model, a
+ * structural byte written over it (each of 11 in turn), and every prefix
+ * of the model: each load ends (the test's timeout is the bound).
  * jansson passes over a NUL between tokens, so most of these files parse;
  * an unknown key at the end then makes the loader locate an error past
  * every value of the file. */
@@ -821,6 +822,11 @@ Test(model_desc, a_nul_at_every_position_and_every_truncation_end, .timeout = 60
     for (size_t at = 0; at < length; ++at) {
         memcpy(changed, text, length);
         changed[at] = '\0';
+        load_bytes(path, changed, length);
+        /* A byte the scanner treats apart written over this one, each in turn. */
+        static const char structural[] = "[]{}\",:\\ 1e";
+        memcpy(changed, text, length);
+        changed[at] = structural[at % (sizeof structural - 1)];
         load_bytes(path, changed, length);
         memcpy(changed, text, at);
         changed[at] = '\0';
