@@ -93,6 +93,10 @@ Test(cli_messages, library_function_names_are_taken_off)
                      "arm.json:3:5: bones[0].size: expected two numbers");
     cr_expect_str_eq(user_error_text("mu_ is not a name: x"), "mu_ is not a name: x");
     cr_expect_str_eq(user_error_text(""), "");
+    cr_expect_str_eq(user_error_text("arm.json: muscle 'X': rb_cable_create: points 0 and 1 coincide"),
+                     "arm.json: muscle 'X': points 0 and 1 coincide");
+    cr_expect_str_eq(user_error_text("sum_mu_x: kept, and so is mu_x without its colon"),
+                     "sum_mu_x: kept, and so is mu_x without its colon");
 }
 
 /* The help of `sinew run` and the README's layout name every built-in

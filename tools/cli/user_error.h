@@ -7,8 +7,9 @@
 #ifndef CLI_USER_ERROR_H
 #define CLI_USER_ERROR_H
 
-/* `message` past its leading function names ("rb_..: " or "mu_..: ",
- * however many are chained); `message` itself when it has none. */
+/* `message` without the library function names in it ("rb_..: " or
+ * "mu_..: " at the start of a word, however many), in a buffer of the
+ * calling thread that the next call overwrites. */
 const char *user_error_text(const char *message);
 
 /* user_error_text(rb_last_error()). */
