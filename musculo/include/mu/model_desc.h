@@ -11,7 +11,8 @@
  * are in degrees, as in the file.
  *
  * A loaded description has been validated as a whole: every reference is
- * resolved to an index, every value is in its documented range. A file
+ * resolved to an index, every value is in its range (docs/model-format.md
+ * gives them, and why a model within them runs). A file
  * that fails yields no description and an error (rb_last_error()) naming
  * the file, the line and column, the JSON path and what was expected.
  */
@@ -61,18 +62,18 @@ typedef struct mu_model_ref {
 /** A static anchor point. */
 typedef struct mu_model_nail {
     char *name;
-    rb_vec2 position; /**< m */
+    rb_vec2 position; /**< m, each coordinate in [-100, 100] */
 } mu_model_nail;
 
 /** A box; its mass is density·size.x·size.y·depth. */
 typedef struct mu_model_bone {
     char *name;
-    rb_vec2 centre; /**< m */
-    rb_vec2 size;   /**< m, x extent and y extent in the bone's frame, each > 0 */
-    double angle;   /**< degrees, counter-clockwise; default 0 */
-    double depth;   /**< m, > 0; default the smaller extent (the bone's thickness) */
+    rb_vec2 centre; /**< m, each coordinate in [-100, 100] */
+    rb_vec2 size;   /**< m, x extent and y extent in the bone's frame, each in [0.001, 100] */
+    double angle;   /**< degrees in [-360, 360], counter-clockwise; default 0 */
+    double depth;   /**< m in [0.001, 100]; default the smaller extent (the bone's thickness) */
     bool is_static; /**< default false */
-    double density; /**< kg/m³, > 0; default 1900 */
+    double density; /**< kg/m³ in [1, 100000]; default 1900 */
     /** 1/s, linear and angular, in [0, 1000]; default the model's damping.
      * Bones glued into one body take the first one's (in file order). */
     double damping;
@@ -83,8 +84,8 @@ typedef struct mu_model_bone {
 typedef struct mu_model_hinge {
     char *name;
     mu_model_ref body_a, body_b; /**< nails or bones, different */
-    rb_vec2 anchor_a, anchor_b;  /**< m, in each body's frame */
-    double radius;               /**< m, > 0: drawn size only */
+    rb_vec2 anchor_a, anchor_b;  /**< m, in each body's frame, in [-100, 100]; they meet (within 0.01 m) */
+    double radius;               /**< m in (0, 100]: drawn size only */
     bool has_lower, has_upper;
     double lower, upper; /**< degrees in [-360, 360]; lower <= upper when both are on */
 } mu_model_hinge;
@@ -100,9 +101,9 @@ typedef struct mu_model_glue {
 typedef struct mu_model_weight {
     char *name;
     mu_model_ref body;
-    rb_vec2 position; /**< m, the disc's centre */
+    rb_vec2 position; /**< m, the disc's centre, in [-100, 100] */
     int mass_count;   /**< 1 .. MU_MODEL_MAX_OBJECTS: the weight choices */
-    double *masses;   /**< kg, each >= 0 */
+    double *masses;   /**< kg, each in [0, 1e6] */
 } mu_model_weight;
 
 typedef enum mu_model_curve_set {
@@ -113,21 +114,21 @@ typedef enum mu_model_curve_set {
 /** One point of a muscle's path: origin, via points, insertion. */
 typedef struct mu_model_path_point {
     mu_model_ref body; /**< a nail or a bone */
-    rb_vec2 point;     /**< m, in the body's frame */
+    rb_vec2 point;     /**< m, in the body's frame, in [-100, 100]; apart from the previous point */
 } mu_model_path_point;
 
 /** A Hill muscle (muscle.h); the fields map onto mu_muscle_def. */
 typedef struct mu_model_muscle {
     char *name;
-    double rest_length; /**< m, > 0: the fibres' optimal length */
+    double rest_length; /**< m in [0.001, 10]: the fibres' optimal length */
     /** Maximal isometric force: max_force when > 0, else the circular
      * cross-section π·rest_width²/4 times specific_tension. */
-    double max_force;               /**< N, > 0, or 0 when not given */
-    double rest_width;              /**< m, > 0, or 0 when not given (then max_force is given) */
-    double specific_tension;        /**< N/m², > 0; default 1.5e6; unused when max_force is given */
-    double max_velocity;            /**< m/s, > 0; default 0.25 */
+    double max_force;               /**< N in [0.001, 1e6], or 0 when not given */
+    double rest_width;              /**< m in [1e-4, 1], or 0 when not given (then max_force is given) */
+    double specific_tension;        /**< N/m² in [1e3, 1e7]; default 1.5e6; unused when max_force is given */
+    double max_velocity;            /**< m/s in [0.001, 100]; default 0.25 */
     double start_normalized_length; /**< in [0.5, 1.5]; default 1; unused when tendon_length >= 0 */
-    double tendon_length;           /**< m, >= 0, or -1 when not given (then from start_normalized_length) */
+    double tendon_length;           /**< m in [0, 100], or -1 when not given (then from start_normalized_length) */
     double symmetry;                /**< in [0, 1]: where the belly sits between the path's ends; default 0.5 */
     mu_model_curve_set curves;      /**< default MU_MODEL_CURVES_TABULATED */
     int point_count;                /**< 2 .. RB_MAX_CABLE_POINTS */
@@ -140,14 +141,14 @@ typedef struct mu_model_muscle {
     double pennation_angle; /**< degrees in [0, 80] at the optimal fibre length; default 0 */
     /** Activation dynamics (activation.h): off by default. */
     bool activation_dynamics;
-    double activation_time;   /**< s, > 0; default 0.010 */
-    double deactivation_time; /**< s, > 0; default 0.040 */
+    double activation_time;   /**< s in [1e-4, 10]; default 0.010 */
+    double deactivation_time; /**< s in [1e-4, 10]; default 0.040 */
     /** A compliant tendon (tendon.h): off by default (rigid). Its slack
      * length, tendon_length or the one derived at build, is > 0: checked
      * at load against the path's length at the start pose. */
     bool compliant_tendon;
-    double tendon_strain_at_max_force; /**< in (0, 1]; default 0.049 */
-    double fibre_damping;              /**< > 0; default 0.1 */
+    double tendon_strain_at_max_force; /**< in [0.001, 1]; default 0.049 */
+    double fibre_damping;              /**< in [0.001, 10]; default 0.1 */
 } mu_model_muscle;
 
 /** A torque muscle (after McIntyre, "Simulated Muscles"; torque_actuator.h and
@@ -160,10 +161,10 @@ typedef struct mu_model_torque_muscle {
     mu_model_ref body;          /**< a bone */
     bool has_reaction_body;     /**< default false: the reaction goes to the world */
     mu_model_ref reaction_body; /**< a nail or bone other than body */
-    double peak_torque;         /**< N·m, finite: the torque at full recruitment, counter-clockwise when > 0 */
-    int neurons;                /**< 1 .. MU_MAX_MOTOR_NEURONS */
-    double weakest, strongest;  /**< strengths of the first and last neuron, 0 < weakest <= strongest */
-    int recruited;              /**< neurons recruited at the start, 0 .. neurons; default 0 */
+    double peak_torque;        /**< N·m in [-1000, 1000]: the torque at full recruitment, counter-clockwise when > 0 */
+    int neurons;               /**< 1 .. MU_MAX_MOTOR_NEURONS */
+    double weakest, strongest; /**< strengths of the first and last neuron, 1e-6 <= weakest <= strongest <= 1e6 */
+    int recruited;             /**< neurons recruited at the start, 0 .. neurons; default 0 */
 } mu_model_torque_muscle;
 
 /** Muscles driven together. Each muscle is also a group of its own, which
@@ -190,10 +191,10 @@ typedef struct mu_model_desc {
      * into libmu)" for a built-in one), which the model's messages name;
      * NULL in a description made otherwise. */
     char *source;
-    rb_vec2 gravity;   /**< m/s², default (0, -9.8) */
-    double frame_rate; /**< Hz, > 0; default 60 */
-    int substeps;      /**< per frame, >= 1; default 10 */
-    rb_vec2 placement; /**< m, added to every position when the model is built; default (0, 0) */
+    rb_vec2 gravity;   /**< m/s², each component in [-1000, 1000]; default (0, -9.8) */
+    double frame_rate; /**< Hz in [1, 1000]; default 60; frame_rate · substeps in [60, 1e5] */
+    int substeps;      /**< per frame, in [1, 1000]; default 10 */
+    rb_vec2 placement; /**< m, each in [-100, 100], added to every position when the model is built; default (0, 0) */
     double damping;    /**< 1/s, every bone's unless it gives its own, in [0, 1000]; default 8 */
     int nail_count;
     mu_model_nail *nails;
