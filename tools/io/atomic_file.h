@@ -23,7 +23,10 @@
  *
  * A run that could not clean up (SIGKILL, a crash, a power loss) leaves its
  * PATH.tmp.PID behind: the next atomic_file_open of the same PATH removes
- * every such file whose process no longer exists.
+ * every such file whose process no longer exists. PIDs are those this
+ * process sees: a run in another PID namespace (another container) writing
+ * to the same folder at the same time is not seen, and must not write the
+ * same PATH.
  *
  * Power loss: atomic_file_commit syncs the file's data before the rename
  * and the folder after it, so PATH is the old file or the complete new
