@@ -385,6 +385,41 @@ Test(viewer, bad_scripts_fail_at_their_line, .timeout = 240)
     remove(dir);
 }
 
+/* A reload the Reload button starts, of a model file broken since it
+ * loaded, fails the script at the `set reload` line with the loader's
+ * message (it was shown in the window, and the script went on). */
+Test(viewer, a_failed_reload_fails_the_script_at_its_line, .timeout = 240)
+{
+    char dir[64], model[128], script[128], flag[128], arguments[512], environment[512], path[128];
+    make_temp_dir(dir, sizeof dir);
+    snprintf(model, sizeof model, "%s/reloaded.json", dir);
+    snprintf(script, sizeof script, "%s/script.txt", dir);
+    snprintf(flag, sizeof flag, "%s/broken", dir);
+    snprintf(path, sizeof path, "%s/models/sample.json", SINEW_SOURCE_DIR);
+    write_file(model, read_file(path));
+    char text[512];
+    snprintf(text, sizeof text, "wait-for %s\nset reload x\nprint after\nquit\n", flag);
+    write_file(script, text);
+    /* Breaks the model file while the viewer waits, then lets it go on. */
+    snprintf(environment, sizeof environment, "(sleep 2; printf '{' > '%s'; touch '%s') & ", model, flag);
+    snprintf(arguments, sizeof arguments, "'%s' --script '%s'", model, script);
+    int status = run_viewer_with(dir, environment, arguments);
+    snprintf(path, sizeof path, "%s/err.txt", dir);
+    const char *errors = read_file(path);
+    cr_expect_eq(status, 1, "status %d, stderr:\n%s", status, errors);
+    cr_expect(strstr(errors, "script.txt:2: ") != NULL && strstr(errors, "reloaded.json") != NULL,
+              "the script's line and the model file:\n%s", errors);
+    remove(path);
+    snprintf(path, sizeof path, "%s/out.txt", dir);
+    const char *output = read_file(path);
+    cr_expect(strstr(output, "after") == NULL, "the script stopped at the failed reload:\n%s", output);
+    remove(path);
+    remove(model);
+    remove(script);
+    remove(flag);
+    remove(dir);
+}
+
 /* The viewer's graph export writes names a CSV treats specially (a
  * comma, quotes, ';', '#') so that the reader `sinew plot` uses gives them
  * back exactly. */
