@@ -8,6 +8,7 @@
 #include "error.h"
 #include "joint_internal.h"
 #include "joint_solver.h"
+#include "joint_tree.h"
 #include "sleep.h"
 
 /* ---- creation and destruction ---------------------------------------------- */
@@ -521,7 +522,7 @@ bool rb_joints_correct_positions(rb_world *world, bool backwards)
         }
         all_within = all_within && within;
     }
-    return all_within;
+    return rb_joint_tree_correct_positions(world) && all_within;
 }
 
 void rb_joints_reset_impulses(rb_world *world)

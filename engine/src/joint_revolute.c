@@ -250,7 +250,9 @@ void rb_revolute_solve(rb_world *world, rb_joint *joint, double h)
             r->motor_impulse = accumulated;
             rb_joint_apply_angular(joint, a, b, impulse);
         }
-        solve_limits(world, joint, a, b, angle, h);
+        if (!joint->in_tree) { /* a tree's pins are solved together (joint_tree.h) */
+            solve_limits(world, joint, a, b, angle, h);
+        }
         return;
     }
     rb_point_constraint_solve(world, joint, &r->point_impulse, NULL);
@@ -273,6 +275,9 @@ double rb_revolute_angle_error(const rb_world *world, const rb_joint *joint)
 
 bool rb_revolute_correct(rb_world *world, rb_joint *joint)
 {
+    if (joint->in_tree) { /* corrected with its tree (joint_tree.h) */
+        return true;
+    }
     rb_revolute_data *r = &joint->as.revolute;
     double angle = rb_joint_relative_angle(world, joint, r->reference_angle);
     /* Negative below the lower limit, positive above the upper one. */

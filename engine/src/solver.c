@@ -15,6 +15,7 @@
 #include "contact_solver.h"
 #include "error.h"
 #include "joint_solver.h"
+#include "joint_tree.h"
 #include "solver.h"
 
 static bool is_simulated(const rb_body *body) { return body->in_use && body->awake; }
@@ -84,6 +85,10 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
     t = rb_world_clock(world);
     rb_cables_prepare(world);
     rb_joints_prepare(world, h);
+    if (substep == 0) {
+        rb_joint_tree_build(world);
+    }
+    rb_joint_tree_factor_velocities(world);
     rb_contact_solver_prepare_substep(world, h,
                                       (rb_substep_rows){.first_substep = substep == 0,
                                                         .baumgarte_bias = contact_bias,
@@ -98,6 +103,7 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
         rb_cables_solve(world, h);
         bool backwards = iteration % 2 == 1;
         rb_joints_solve_velocities(world, h, backwards);
+        rb_joint_tree_solve_velocities(world);
         rb_contact_solver_solve_velocities(world, backwards && !contact_bias);
     }
     profile->solve_velocities += rb_world_clock(world) - t;
@@ -122,6 +128,8 @@ rb_status rb_solver_step(rb_world *world, double dt)
         rb_cables_reset_impulses(world);
     }
 
+    /* NGS solves the pins of joint trees together (joint_tree.h). */
+    world->joint_tree.enabled = world->settings.type == RB_SOLVER_NGS;
     rb_solver_counts counts = {0};
     switch (world->settings.type) {
     case RB_SOLVER_BAUMGARTE:

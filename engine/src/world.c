@@ -13,6 +13,7 @@
 #include "contact_solver.h"
 #include "error.h"
 #include "joint_solver.h"
+#include "joint_tree.h"
 #include "sleep.h"
 #include "solver.h"
 #include "timer.h"
@@ -157,6 +158,7 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->island_rest, &world->island_rest_capacity, sizeof *world->island_rest);
     rb_free_array((void **)&world->constraints, &world->constraint_capacity, sizeof *world->constraints);
     rb_colouring_free(&world->contact_colouring);
+    rb_joint_tree_free(world);
     rb_free_array((void **)&world->joints, &world->joint_capacity, sizeof *world->joints);
     rb_free_array((void **)&world->cables, &world->cable_capacity, sizeof *world->cables);
     rb_contact_events_free(world);

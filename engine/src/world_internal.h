@@ -291,6 +291,7 @@ typedef struct rb_joint {
     int next_free;
     uint32_t generation; /* of the last object made in the slot; RB_RETIRED_GENERATION retires it */
     bool in_use;
+    bool in_tree; /* this step, a pin solved with its tree (joint_tree.h) */
     rb_joint_type type;
     int body_a; /* -1 for a mouse joint */
     int body_b;
@@ -308,6 +309,35 @@ typedef struct rb_joint {
         rb_pulley_data pulley;
     } as;
 } rb_joint;
+
+/* A node of the pins' trees (joint_tree.h): a body or a pin. */
+typedef struct rb_tree_node {
+    int body;        /* body slot, or -1 for a pin */
+    int joint;       /* joint slot, or -1 for a body */
+    int parent;      /* node index, -1 for a root */
+    int dim;         /* 3 for a body (vx, vy, ω), 2 for a pin (its impulse) */
+    double pivot[9]; /* D(node), dim × dim, summed from its children */
+    double dinv[9];  /* D(node)⁻¹ */
+    double x[6];     /* D(node)⁻¹·H(node, parent) */
+    double value[3]; /* the right-hand side, then the solution */
+} rb_tree_node;
+
+/* The pins solved together this step, with the arrays the search for
+ * them reuses from step to step. */
+typedef struct rb_joint_tree {
+    bool enabled;          /* set by the solver that uses it (NGS) */
+    bool velocity_factors; /* the nodes hold this substep's velocity factors */
+    rb_tree_node *nodes;   /* breadth first from each root: a parent before its children */
+    int node_count, node_capacity;
+    int *body_node; /* per body slot: its node, or -1 */
+    int body_node_capacity;
+    int *union_parent; /* per body slot: union-find of the bodies the trees link */
+    int union_capacity;
+    unsigned char *grounded; /* per union root: the tree already holds a pin to a fixed body */
+    int grounded_capacity;
+    double *mass_range; /* per union root: its lightest and heaviest body's mass, kg */
+    int mass_range_capacity;
+} rb_joint_tree;
 
 struct rb_world {
     uint64_t serial;          /* never 0, never reused (id.h) */
@@ -399,6 +429,8 @@ struct rb_world {
     int cable_slots;
     int cable_free;
     int cable_count;
+
+    rb_joint_tree joint_tree;
 
     double last_substep;              /* s, the substep length of the last step: impulses / it = forces */
     rb_rigid_response joint_response; /* the current pass's, set by the solver */

@@ -1,0 +1,558 @@
+/* SPDX-License-Identifier: MIT */
+/* Pins solved together, exactly, over the trees they form (joint_tree.h
+ * says why and how; Baraff, "Linear-time dynamics using Lagrange
+ * multipliers", 1996).
+ *
+ * The nodes are stored breadth first from each root, so a parent comes
+ * before its children: elimination runs through them backwards (children
+ * first), back substitution forwards. Each node keeps its block of the
+ * matrix towards its parent, H(i, p), and after factoring its pivot's
+ * inverse D⁻¹ and X = D⁻¹·H(i, p). Then
+ *
+ *     D(p) = H(p, p) - Σ over children c of H(c, p)ᵀ·X(c)
+ *     solve H·x = b:  y(p) = b(p) - Σ X(c)ᵀ·y(c);  z = D⁻¹·y;
+ *                     x(c) = z(c) - X(c)·x(p)
+ *
+ * which is the L·D·Lᵀ factorisation with L(p, c) = X(c)ᵀ.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "allocator.h"
+#include "joint_solver.h"
+#include "joint_tree.h"
+
+/* ---- which pins -------------------------------------------------------- */
+
+static bool moves_freely(double inv_mass, double inv_inertia) { return inv_mass > 0.0 && inv_inertia > 0.0; }
+static bool is_fixed(double inv_mass, double inv_inertia) { return inv_mass == 0.0 && inv_inertia == 0.0; }
+
+static bool is_candidate(const rb_joint *joint)
+{
+    if (joint->type != RB_JOINT_REVOLUTE || joint->body_a < 0) {
+        return false;
+    }
+    const rb_revolute_data *r = &joint->as.revolute;
+    const rb_joint_frame *f = &joint->frame;
+    bool a_moves = moves_freely(f->inv_mass_a, f->inv_inertia_a);
+    bool b_moves = moves_freely(f->inv_mass_b, f->inv_inertia_b);
+    return !r->enable_lower && !r->enable_upper && (a_moves || is_fixed(f->inv_mass_a, f->inv_inertia_a)) &&
+           (b_moves || is_fixed(f->inv_mass_b, f->inv_inertia_b)) && (a_moves || b_moves);
+}
+
+static int find_root(int *parent, int i)
+{
+    while (parent[i] != i) {
+        parent[i] = parent[parent[i]]; /* path halving */
+        i = parent[i];
+    }
+    return i;
+}
+
+/* Whether the candidate pins' moving bodies differ in mass by
+ * RB_TREE_MASS_RATIO or more: when not, no tree of them can be uneven. */
+static bool any_uneven_candidates(const rb_world *world)
+{
+    double lightest = INFINITY, heaviest = 0.0;
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        const rb_joint *joint = &world->joints[world->active_joints[k]];
+        if (!is_candidate(joint)) {
+            continue;
+        }
+        const rb_joint_frame *f = &joint->frame;
+        if (moves_freely(f->inv_mass_a, f->inv_inertia_a)) {
+            lightest = rb_min(lightest, 1.0 / f->inv_mass_a);
+            heaviest = rb_max(heaviest, 1.0 / f->inv_mass_a);
+        }
+        if (moves_freely(f->inv_mass_b, f->inv_inertia_b)) {
+            lightest = rb_min(lightest, 1.0 / f->inv_mass_b);
+            heaviest = rb_max(heaviest, 1.0 / f->inv_mass_b);
+        }
+    }
+    return heaviest >= RB_TREE_MASS_RATIO * lightest;
+}
+
+/* Leaves in the trees only the pins of trees whose heaviest body is at
+ * least RB_TREE_MASS_RATIO times their lightest (joint_tree.h says why),
+ * and returns how many are left. */
+static int keep_uneven_trees(rb_world *world, int pins)
+{
+    rb_joint_tree *tree = &world->joint_tree;
+    double *range = tree->mass_range;
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        const rb_joint *joint = &world->joints[world->active_joints[k]];
+        if (!joint->in_tree) {
+            continue;
+        }
+        const int bodies[2] = {joint->body_a, joint->body_b};
+        for (int i = 0; i < 2; ++i) {
+            const rb_body *body = &world->bodies[bodies[i]];
+            if (!moves_freely(body->inv_mass, body->inv_inertia)) {
+                continue;
+            }
+            int root = find_root(tree->union_parent, bodies[i]);
+            double mass = 1.0 / body->inv_mass;
+            range[2 * root] = rb_min(range[2 * root], mass);
+            range[2 * root + 1] = rb_max(range[2 * root + 1], mass);
+        }
+    }
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        rb_joint *joint = &world->joints[world->active_joints[k]];
+        if (!joint->in_tree) {
+            continue;
+        }
+        const rb_joint_frame *f = &joint->frame;
+        int root = find_root(tree->union_parent,
+                             moves_freely(f->inv_mass_a, f->inv_inertia_a) ? joint->body_a : joint->body_b);
+        if (range[2 * root + 1] < RB_TREE_MASS_RATIO * range[2 * root]) {
+            joint->in_tree = false;
+            --pins;
+        }
+    }
+    return pins;
+}
+
+/* Marks in_tree the candidate pins that keep every tree a tree: none
+ * closing a loop among moving bodies, and at most one pin to a fixed body
+ * per tree (two would close a loop through the ground). Returns how many. */
+static int choose_pins(rb_world *world)
+{
+    rb_joint_tree *tree = &world->joint_tree;
+    for (int i = 0; i < world->body_slots; ++i) {
+        tree->union_parent[i] = i;
+        tree->grounded[i] = 0;
+        tree->body_node[i] = -1;
+        tree->mass_range[2 * i] = INFINITY;
+        tree->mass_range[2 * i + 1] = 0.0;
+    }
+    int pins = 0;
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        rb_joint *joint = &world->joints[world->active_joints[k]];
+        if (!is_candidate(joint)) {
+            continue;
+        }
+        const rb_joint_frame *f = &joint->frame;
+        bool a_moves = moves_freely(f->inv_mass_a, f->inv_inertia_a);
+        bool b_moves = moves_freely(f->inv_mass_b, f->inv_inertia_b);
+        if (a_moves && b_moves) {
+            int ra = find_root(tree->union_parent, joint->body_a);
+            int rb = find_root(tree->union_parent, joint->body_b);
+            if (ra == rb || (tree->grounded[ra] && tree->grounded[rb])) {
+                continue;
+            }
+            tree->union_parent[ra] = rb;
+            tree->grounded[rb] = (unsigned char)(tree->grounded[rb] | tree->grounded[ra]);
+        } else {
+            int r = find_root(tree->union_parent, a_moves ? joint->body_a : joint->body_b);
+            if (tree->grounded[r]) {
+                continue;
+            }
+            tree->grounded[r] = 1;
+        }
+        joint->in_tree = true;
+        ++pins;
+    }
+    return keep_uneven_trees(world, pins);
+}
+
+/* ---- the nodes ---------------------------------------------------------- */
+
+static int add_node(rb_joint_tree *tree, int body, int joint, int parent)
+{
+    int index = tree->node_count++;
+    rb_tree_node *node = &tree->nodes[index];
+    node->body = body;
+    node->joint = joint;
+    node->parent = parent;
+    node->dim = body >= 0 ? 3 : 2;
+    if (body >= 0) {
+        tree->body_node[body] = index;
+    }
+    return index;
+}
+
+/* Adds, breadth first from node `root` (already added), every node of its
+ * tree. */
+static void grow_tree(rb_world *world, int root)
+{
+    rb_joint_tree *tree = &world->joint_tree;
+    for (int n = root; n < tree->node_count; ++n) {
+        const rb_tree_node node = tree->nodes[n];
+        if (node.joint >= 0) {
+            /* A pin: its moving bodies other than its parent. */
+            const rb_joint *joint = &world->joints[node.joint];
+            const rb_joint_frame *f = &joint->frame;
+            int parent_body = node.parent >= 0 ? tree->nodes[node.parent].body : -1;
+            if (moves_freely(f->inv_mass_a, f->inv_inertia_a) && joint->body_a != parent_body) {
+                add_node(tree, joint->body_a, -1, n);
+            }
+            if (moves_freely(f->inv_mass_b, f->inv_inertia_b) && joint->body_b != parent_body) {
+                add_node(tree, joint->body_b, -1, n);
+            }
+            continue;
+        }
+        /* A body: its pins in the tree other than its parent. */
+        int parent_joint = node.parent >= 0 ? tree->nodes[node.parent].joint : -1;
+        for (int j = world->bodies[node.body].first_joint; j >= 0;) {
+            const rb_joint *joint = &world->joints[j];
+            if (joint->in_tree && j != parent_joint) {
+                add_node(tree, -1, j, n);
+            }
+            j = joint->body_a == node.body ? joint->next_on_a : joint->next_on_b;
+        }
+    }
+}
+
+void rb_joint_tree_build(rb_world *world)
+{
+    rb_joint_tree *tree = &world->joint_tree;
+    tree->node_count = 0;
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        world->joints[world->active_joints[k]].in_tree = false;
+    }
+    if (!tree->enabled || world->active_joint_count == 0) {
+        return;
+    }
+    if (!any_uneven_candidates(world)) {
+        return; /* the common case of like masses costs one pass */
+    }
+    int slots = world->body_slots;
+    if (rb_grow_array((void **)&tree->body_node, &tree->body_node_capacity, slots, sizeof(int)) != 0 ||
+        rb_grow_array((void **)&tree->union_parent, &tree->union_capacity, slots, sizeof(int)) != 0 ||
+        rb_grow_array((void **)&tree->grounded, &tree->grounded_capacity, slots, 1) != 0 ||
+        rb_grow_array((void **)&tree->mass_range, &tree->mass_range_capacity, 2 * slots, sizeof(double)) != 0) {
+        return; /* out of memory: every pin stays with Gauss-Seidel */
+    }
+    int pins = choose_pins(world);
+    /* A forest of `pins` edges has at most 2·pins bodies. */
+    if (pins == 0 || rb_grow_array((void **)&tree->nodes, &tree->node_capacity, 3 * pins, sizeof(rb_tree_node)) != 0) {
+        for (int k = 0; k < world->active_joint_count; ++k) {
+            world->joints[world->active_joints[k]].in_tree = false;
+        }
+        return;
+    }
+    /* Trees with a pin to a fixed body are rooted at that pin, so that no
+     * pin is a leaf (its pivot would be zero); the others at a body. */
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        const int j = world->active_joints[k];
+        const rb_joint *joint = &world->joints[j];
+        const rb_joint_frame *f = &joint->frame;
+        bool grounded_pin =
+            !moves_freely(f->inv_mass_a, f->inv_inertia_a) || !moves_freely(f->inv_mass_b, f->inv_inertia_b);
+        if (joint->in_tree && grounded_pin) {
+            grow_tree(world, add_node(tree, -1, j, -1));
+        }
+    }
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        const rb_joint *joint = &world->joints[world->active_joints[k]];
+        const rb_joint_frame *f = &joint->frame;
+        bool both_move = moves_freely(f->inv_mass_a, f->inv_inertia_a) && moves_freely(f->inv_mass_b, f->inv_inertia_b);
+        if (joint->in_tree && both_move && tree->body_node[joint->body_a] < 0) {
+            grow_tree(world, add_node(tree, joint->body_a, -1, -1));
+        }
+    }
+}
+
+/* ---- factor and solve ----------------------------------------------------- */
+
+/* Every block between a pin and one of its bodies has one shape: the pin's
+ * Jacobian on the body is s·G with s = +1 on body B, -1 on body A, and
+ *
+ *     G = | 1  0  -r.y |     (r the anchor's offset from the body's centre)
+ *         | 0  1   r.x |
+ *
+ * so H(pin, body) = -s·G and H(body, pin) = -s·Gᵀ. The products the
+ * factorisation needs are then those of the point constraint's mass
+ * matrix (joint_point.c): G·E·Gᵀ for a body's 3×3 block E, and Gᵀ·F·G for
+ * a pin's 2×2 block F. Symmetric blocks are kept whole (row-major) for
+ * plain indexing. */
+
+/* s and r of the edge between node `n` and its parent. */
+static void edge(const rb_world *world, const rb_tree_node *node, const rb_tree_node *parent, bool current_poses,
+                 double *s, rb_vec2 *r)
+{
+    const int j = node->joint >= 0 ? node->joint : parent->joint;
+    const int b = node->body >= 0 ? node->body : parent->body;
+    const rb_joint *joint = &world->joints[j];
+    const bool on_b = b == joint->body_b;
+    *s = on_b ? 1.0 : -1.0;
+    if (current_poses) {
+        *r = rb_rotate(world->states[b].rotation, on_b ? joint->frame.local_b : joint->frame.local_a);
+    } else {
+        *r = on_b ? joint->frame.rb : joint->frame.ra;
+    }
+}
+
+/* The inverse of a symmetric 2×2 or 3×3 block; false when singular. */
+static bool invert(const double *a, double *inverse, int n)
+{
+    if (n == 2) {
+        double det = a[0] * a[3] - a[1] * a[1];
+        if (!(det != 0.0 && isfinite(det))) {
+            return false;
+        }
+        double s = 1.0 / det;
+        inverse[0] = s * a[3];
+        inverse[1] = inverse[2] = -s * a[1];
+        inverse[3] = s * a[0];
+        return true;
+    }
+    double c00 = a[4] * a[8] - a[5] * a[5];
+    double c01 = a[5] * a[2] - a[1] * a[8];
+    double c02 = a[1] * a[5] - a[4] * a[2];
+    double det = a[0] * c00 + a[1] * c01 + a[2] * c02;
+    if (!(det != 0.0 && isfinite(det))) {
+        return false;
+    }
+    double s = 1.0 / det;
+    inverse[0] = s * c00;
+    inverse[1] = inverse[3] = s * c01;
+    inverse[2] = inverse[6] = s * c02;
+    inverse[4] = s * (a[0] * a[8] - a[2] * a[2]);
+    inverse[5] = inverse[7] = s * (a[2] * a[1] - a[0] * a[5]);
+    inverse[8] = s * (a[0] * a[4] - a[1] * a[1]);
+    return true;
+}
+
+/* Eliminates body node `node` into its parent pin: X = D⁻¹·H = -s·E·Gᵀ
+ * (3×2) and the pin's pivot loses H·ᵀX = G·E·Gᵀ. */
+static void eliminate_body(rb_tree_node *node, rb_tree_node *pin, double s, rb_vec2 r)
+{
+    const double *e = node->dinv;
+    for (int i = 0; i < 3; ++i) {
+        node->x[2 * i] = -s * (e[3 * i] - r.y * e[3 * i + 2]);
+        node->x[2 * i + 1] = -s * (e[3 * i + 1] + r.x * e[3 * i + 2]);
+    }
+    double k11 = e[0] - 2.0 * r.y * e[2] + r.y * r.y * e[8];
+    double k12 = e[1] + r.x * e[2] - r.y * e[5] - r.x * r.y * e[8];
+    double k22 = e[4] + 2.0 * r.x * e[5] + r.x * r.x * e[8];
+    pin->pivot[0] -= k11;
+    pin->pivot[1] -= k12;
+    pin->pivot[2] -= k12;
+    pin->pivot[3] -= k22;
+}
+
+/* Eliminates pin node `node` into its parent body: X = D⁻¹·H = -s·F·G
+ * (2×3) and the body's pivot loses Gᵀ·F·G. */
+static void eliminate_pin(rb_tree_node *node, rb_tree_node *body, double s, rb_vec2 r)
+{
+    const double f11 = node->dinv[0], f12 = node->dinv[1], f22 = node->dinv[3];
+    const double f13 = -r.y * f11 + r.x * f12; /* (F·G) third column */
+    const double f23 = -r.y * f12 + r.x * f22;
+    const double x[6] = {-s * f11, -s * f12, -s * f13, -s * f12, -s * f22, -s * f23};
+    memcpy(node->x, x, sizeof x);
+    const double g33 = -r.y * f13 + r.x * f23;
+    double *p = body->pivot;
+    p[0] -= f11;
+    p[1] -= f12;
+    p[3] -= f12;
+    p[2] -= f13;
+    p[6] -= f13;
+    p[4] -= f22;
+    p[5] -= f23;
+    p[7] -= f23;
+    p[8] -= g33;
+}
+
+/* Factors every tree with each pin's anchor offsets: the substep's
+ * (frame.ra, rb), or at the bodies' current poses. Returns false when a
+ * pivot is singular, which leaves the trees unusable for this pass. */
+static bool factor(rb_world *world, bool current_poses)
+{
+    rb_joint_tree *tree = &world->joint_tree;
+    for (int n = 0; n < tree->node_count; ++n) {
+        rb_tree_node *node = &tree->nodes[n];
+        memset(node->pivot, 0, sizeof node->pivot);
+        if (node->body >= 0) {
+            const rb_body *body = &world->bodies[node->body];
+            node->pivot[0] = node->pivot[4] = 1.0 / body->inv_mass;
+            node->pivot[8] = 1.0 / body->inv_inertia;
+        }
+    }
+    for (int n = tree->node_count - 1; n >= 0; --n) {
+        rb_tree_node *node = &tree->nodes[n];
+        if (!invert(node->pivot, node->dinv, node->dim)) {
+            return false;
+        }
+        if (node->parent < 0) {
+            continue;
+        }
+        rb_tree_node *parent = &tree->nodes[node->parent];
+        double s;
+        rb_vec2 r;
+        edge(world, node, parent, current_poses, &s, &r);
+        if (node->body >= 0) {
+            eliminate_body(node, parent, s, r);
+        } else {
+            eliminate_pin(node, parent, s, r);
+        }
+    }
+    return true;
+}
+
+/* Solves H·x = b in place over node->value. */
+static void solve(rb_joint_tree *tree)
+{
+    for (int n = tree->node_count - 1; n >= 0; --n) {
+        rb_tree_node *node = &tree->nodes[n];
+        const int dim = node->dim;
+        double *y = node->value;
+        if (node->parent >= 0) {
+            /* y(p) -= Xᵀ·y(n), X being dim × dim(p) = dim × (5 - dim) */
+            rb_tree_node *parent = &tree->nodes[node->parent];
+            const int pdim = 5 - dim;
+            for (int c = 0; c < pdim; ++c) {
+                double sum = 0.0;
+                for (int l = 0; l < dim; ++l) {
+                    sum += node->x[l * pdim + c] * y[l];
+                }
+                parent->value[c] -= sum;
+            }
+        }
+        const double *d = node->dinv;
+        if (dim == 2) {
+            const double y0 = y[0], y1 = y[1];
+            y[0] = d[0] * y0 + d[1] * y1;
+            y[1] = d[2] * y0 + d[3] * y1;
+        } else {
+            const double y0 = y[0], y1 = y[1], y2 = y[2];
+            y[0] = d[0] * y0 + d[1] * y1 + d[2] * y2;
+            y[1] = d[3] * y0 + d[4] * y1 + d[5] * y2;
+            y[2] = d[6] * y0 + d[7] * y1 + d[8] * y2;
+        }
+    }
+    for (int n = 0; n < tree->node_count; ++n) {
+        rb_tree_node *node = &tree->nodes[n];
+        if (node->parent >= 0) {
+            /* x(n) -= X·x(p) */
+            const double *xp = tree->nodes[node->parent].value;
+            const int pdim = 5 - node->dim;
+            for (int l = 0; l < node->dim; ++l) {
+                double sum = 0.0;
+                for (int c = 0; c < pdim; ++c) {
+                    sum += node->x[l * pdim + c] * xp[c];
+                }
+                node->value[l] -= sum;
+            }
+        }
+    }
+}
+
+void rb_joint_tree_factor_velocities(rb_world *world)
+{
+    world->joint_tree.velocity_factors = world->joint_tree.node_count > 0 && factor(world, false);
+}
+
+void rb_joint_tree_solve_velocities(rb_world *world)
+{
+    rb_joint_tree *tree = &world->joint_tree;
+    if (!tree->velocity_factors) {
+        return;
+    }
+    const rb_rigid_response *response = &world->joint_response;
+    for (int n = 0; n < tree->node_count; ++n) {
+        rb_tree_node *node = &tree->nodes[n];
+        if (node->joint < 0) {
+            memset(node->value, 0, sizeof node->value);
+            continue;
+        }
+        rb_joint *joint = &world->joints[node->joint];
+        const rb_joint_frame *f = &joint->frame;
+        rb_body_state *a = rb_joint_state_a(world, joint);
+        rb_body_state *b = rb_joint_state_b(world, joint);
+        rb_vec2 cdot = rb_sub(rb_joint_relative_velocity(joint, a, b), f->point_drift);
+        if (response->bias_rate > 0.0) {
+            rb_vec2 gap = rb_sub(rb_add(b->center, f->rb), rb_add(a->center, f->ra));
+            cdot = rb_mul_add(cdot, response->bias_rate, gap);
+        }
+        node->value[0] = cdot.x;
+        node->value[1] = cdot.y;
+    }
+    solve(tree);
+    for (int n = 0; n < tree->node_count; ++n) {
+        const rb_tree_node *node = &tree->nodes[n];
+        if (node->body >= 0) {
+            rb_body_state *state = &world->states[node->body];
+            state->linear_velocity = rb_add(state->linear_velocity, rb_v2(node->value[0], node->value[1]));
+            state->angular_velocity += node->value[2];
+        } else {
+            rb_revolute_data *r = &world->joints[node->joint].as.revolute;
+            r->point_impulse = rb_add(r->point_impulse, rb_v2(node->value[0], node->value[1]));
+        }
+    }
+}
+
+bool rb_joint_tree_correct_positions(rb_world *world)
+{
+    rb_joint_tree *tree = &world->joint_tree;
+    if (tree->node_count == 0) {
+        return true;
+    }
+    double cap = world->settings.max_linear_correction;
+    double largest = 0.0;
+    for (int n = 0; n < tree->node_count; ++n) {
+        rb_tree_node *node = &tree->nodes[n];
+        if (node->joint < 0) {
+            memset(node->value, 0, sizeof node->value);
+            continue;
+        }
+        const rb_joint *joint = &world->joints[node->joint];
+        const rb_body_state *a = &world->states[joint->body_a];
+        const rb_body_state *b = &world->states[joint->body_b];
+        rb_vec2 ra = rb_rotate(a->rotation, joint->frame.local_a);
+        rb_vec2 rb = rb_rotate(b->rotation, joint->frame.local_b);
+        rb_vec2 gap = rb_sub(rb_add(b->center, rb), rb_add(a->center, ra));
+        double error = rb_length(gap);
+        largest = rb_max(largest, error);
+        if (error > cap) {
+            gap = rb_scale(cap / error, gap);
+        }
+        node->value[0] = gap.x;
+        node->value[1] = gap.y;
+    }
+    /* The factors at the current poses replace the substep's. */
+    tree->velocity_factors = false;
+    if (largest <= world->settings.linear_slop || !factor(world, true)) {
+        return largest <= world->settings.linear_slop;
+    }
+    solve(tree);
+    /* The step is the linearised system's, exact for small gaps. Where a
+     * gap is large or a light body spins, it can ask for turns far beyond
+     * the linearisation's reach, and the next pass overshoots back: scaled
+     * as a whole so that no body moves more than max_linear_correction or
+     * turns more than RB_MAX_ANGULAR_CORRECTION, the step keeps its
+     * direction and the trees converge over the passes and substeps. */
+    double scale = 1.0;
+    for (int n = 0; n < tree->node_count; ++n) {
+        const rb_tree_node *node = &tree->nodes[n];
+        if (node->body >= 0) {
+            double move = sqrt(node->value[0] * node->value[0] + node->value[1] * node->value[1]);
+            if (move * scale > cap) {
+                scale = cap / move;
+            }
+            if (fabs(node->value[2]) * scale > RB_MAX_ANGULAR_CORRECTION) {
+                scale = RB_MAX_ANGULAR_CORRECTION / fabs(node->value[2]);
+            }
+        }
+    }
+    for (int n = 0; n < tree->node_count; ++n) {
+        const rb_tree_node *node = &tree->nodes[n];
+        if (node->body >= 0) {
+            rb_body_state *state = &world->states[node->body];
+            state->center = rb_add(state->center, rb_v2(scale * node->value[0], scale * node->value[1]));
+            rb_body_state_turn(state, scale * node->value[2]);
+        }
+    }
+    return false;
+}
+
+void rb_joint_tree_free(rb_world *world)
+{
+    rb_joint_tree *tree = &world->joint_tree;
+    rb_free_array((void **)&tree->nodes, &tree->node_capacity, sizeof(rb_tree_node));
+    rb_free_array((void **)&tree->body_node, &tree->body_node_capacity, sizeof(int));
+    rb_free_array((void **)&tree->union_parent, &tree->union_capacity, sizeof(int));
+    rb_free_array((void **)&tree->grounded, &tree->grounded_capacity, 1);
+    rb_free_array((void **)&tree->mass_range, &tree->mass_range_capacity, sizeof(double));
+    tree->node_count = 0;
+}

@@ -1,0 +1,82 @@
+/* SPDX-License-Identifier: MIT */
+/* Pins solved together, exactly: the point rows of revolute joints that
+ * link bodies into trees (ropes, chains, limbs) as one linear system,
+ * instead of one joint at a time.
+ *
+ * Why. Gauss-Seidel passes carry an impulse one joint per pass, and a
+ * light link beside a heavy body passes on only a small part of it: a
+ * rope of 30 light links with a box 1,000 times heavier at its end lets
+ * the box's momentum stretch the joints faster than a few passes a
+ * substep can pull them together, and at the defaults it tore apart for
+ * good. Solved as one system the same rope holds at any mass ratio.
+ *
+ * How (Baraff, "Linear-time dynamics using Lagrange multipliers", 1996).
+ * Bodies and pins are the nodes of one graph, each pin joined to its one
+ * or two moving bodies. The velocity change Δv of the bodies and the pins'
+ * impulses λ satisfy
+ *
+ *     | M   -Jᵀ | | Δv |   | 0    |
+ *     | -J   0  | | λ  | = | Cdot |      (M Δv = Jᵀ λ, J (v + Δv) = 0)
+ *
+ * with M the bodies' masses and inertias (3×3 diagonal blocks) and J the
+ * pins' 2×3 blocks [1 0 -r.y; 0 1 r.x] (negated on body A). When the graph
+ * is a forest, eliminating each node after its children (a leaf first)
+ * factors this matrix as L·D·Lᵀ with no fill: O(n) small blocks. A body's
+ * pivot stays positive definite and a pin's negative definite, so every
+ * pivot is invertible provided no pin is eliminated before a body below
+ * it, which rooting each tree at its one pin to a fixed body (or, without
+ * one, at a body) guarantees.
+ *
+ * Which pins. A revolute joint whose limits are off (a limit is solved
+ * with its pin as one 3×3 block by Gauss-Seidel), between two bodies that
+ * each either move and turn freely (mass and inertia finite) or do not
+ * move at all. A pin that would close a loop (the joint grid's cells, a
+ * body pinned to the ground twice) is left to Gauss-Seidel, which then
+ * solves it with the tree's pins held; the tree's pins carry the rest. A
+ * revolute joint's motor and spring stay Gauss-Seidel rows too. And only
+ * in trees of uneven masses, whose heaviest body is at least
+ * RB_TREE_MASS_RATIO times their lightest: below that Gauss-Seidel holds
+ * at the defaults (a 40-link chain with a 100:1 end box swings within
+ * 0.018 m, the joint grid's equal boxes within 0.5 m), at less cost (the
+ * joint grid solved as a spanning tree took twice the time), and the
+ * built-in muscle models keep the figures they were validated with.
+ *
+ * The factors are built at the substep's anchors for the velocity passes,
+ * and again at the current poses for each NGS position pass, which asks
+ * for the position change Δx with J Δx = -C (C the anchors' gap, each
+ * capped at max_linear_correction).
+ */
+#ifndef RB_JOINT_TREE_H
+#define RB_JOINT_TREE_H
+
+#include "world_internal.h"
+
+/* A tree is solved together when its heaviest body is at least this many
+ * times its lightest (joint_tree.c, keep_uneven_trees): where Gauss-Seidel
+ * starts to let a chain stretch by centimetres (at 600:1 a rope held
+ * within 0.065 m, at 700:1 it tore apart). */
+#define RB_TREE_MASS_RATIO 100.0
+
+/* Finds the pins solved together this step (sets joint->in_tree) and
+ * their trees. On running out of memory no joint is in a tree, and every
+ * pin is solved by Gauss-Seidel as before. Call after the frames of the
+ * step's first substep are prepared. */
+void rb_joint_tree_build(rb_world *world);
+
+/* Factors the trees at the joints' substep anchors (frame.ra, rb). */
+void rb_joint_tree_factor_velocities(rb_world *world);
+
+/* One velocity pass over the trees' pins: the impulses that make every
+ * pin's anchors move together (less the centripetal drift the pin
+ * prepared, plus the response's bias), applied to the bodies and added to
+ * each pin's accumulated impulse. */
+void rb_joint_tree_solve_velocities(rb_world *world);
+
+/* One NGS position pass over the trees' pins at the current poses;
+ * returns whether every pin's gap was within the linear slop before it. */
+bool rb_joint_tree_correct_positions(rb_world *world);
+
+/* Frees the trees' arrays (at world destruction). */
+void rb_joint_tree_free(rb_world *world);
+
+#endif

@@ -1,0 +1,185 @@
+/* SPDX-License-Identifier: MIT */
+/* The pins of a joint tree solved together (engine/src/joint_tree.c),
+ * checked against the equations they solve rather than against a second
+ * solver: after one velocity pass every pin's anchors move together (up
+ * to the centripetal drift the pin asks for), and the bodies' momentum
+ * changed by exactly the pins' impulses, M·Δv = Jᵀ·λ; after one position
+ * pass on small gaps, the gaps close to second order.
+ *
+ * The tree branches (a body with three pins), holds a chain, a pin to the
+ * ground at its root, a second pin to the ground (a loop through the
+ * ground, left to Gauss-Seidel) and a pin closing a loop among moving
+ * bodies (likewise); its bodies have unequal masses, from 1 to 1,000.
+ */
+#include <criterion/criterion.h>
+#include <math.h>
+
+#include "joint_solver.h"
+#include "joint_tree.h"
+#include "rb/rb.h"
+#include "test_support.h"
+#include "world_internal.h"
+
+#define BODIES 8
+
+typedef struct tree_scene {
+    rb_world *world;
+    rb_body_id ground, bodies[BODIES];
+    rb_joint_id pins[BODIES + 2];
+    int pin_count;
+} tree_scene;
+
+static rb_body_id add_link(rb_world *world, rb_vec2 position, double angle, double density)
+{
+    rb_body_def def = rb_default_body_def();
+    def.type = RB_BODY_DYNAMIC;
+    def.position = position;
+    def.angle = angle;
+    rb_body_id body;
+    cr_assert_eq(rb_body_create(world, &def, &body), RB_OK, "%s", rb_last_error());
+    rb_polygon box;
+    cr_assert_eq(rb_make_box(0.3, 0.1, &box), RB_OK);
+    rb_shape_def shape = rb_default_shape_def();
+    shape.density = density;
+    shape.filter.group_index = -1;
+    rb_shape_id id;
+    cr_assert_eq(rb_shape_create_polygon(world, body, &shape, &box, &id), RB_OK, "%s", rb_last_error());
+    return body;
+}
+
+static void pin(tree_scene *scene, rb_body_id a, rb_body_id b, rb_vec2 anchor)
+{
+    rb_revolute_joint_def def = rb_default_revolute_joint_def();
+    cr_assert_eq(rb_revolute_joint_def_at(&def, scene->world, a, b, anchor), RB_OK, "%s", rb_last_error());
+    cr_assert_eq(rb_revolute_joint_create(scene->world, &def, &scene->pins[scene->pin_count++]), RB_OK, "%s",
+                 rb_last_error());
+}
+
+/* Body 0 pinned to the ground; bodies 1, 2, 3 pinned to body 0 (a
+ * branch); 4, 5, 6 a chain from body 1; 7 pinned to body 6, to the ground
+ * again (a loop through the ground) and to body 2 (a loop). */
+static tree_scene make_tree(void)
+{
+    tree_scene scene = {.world = make_world(rb_v2(0.0, -9.8))};
+    rb_body_def ground = rb_default_body_def();
+    cr_assert_eq(rb_body_create(scene.world, &ground, &scene.ground), RB_OK);
+    const double densities[BODIES] = {1.0, 1000.0, 3.0, 10.0, 1.0, 300.0, 2.0, 50.0};
+    for (int i = 0; i < BODIES; ++i) {
+        scene.bodies[i] = add_link(scene.world, rb_v2(0.5 * i, 0.2 * (i % 3)), 0.3 * i, densities[i]);
+    }
+    pin(&scene, scene.ground, scene.bodies[0], rb_v2(-0.2, 0.0));
+    for (int i = 1; i <= 3; ++i) {
+        pin(&scene, scene.bodies[0], scene.bodies[i], rb_v2(0.25 * i, 0.1));
+    }
+    pin(&scene, scene.bodies[1], scene.bodies[4], rb_v2(1.0, 0.1));
+    pin(&scene, scene.bodies[4], scene.bodies[5], rb_v2(2.2, 0.2));
+    pin(&scene, scene.bodies[5], scene.bodies[6], rb_v2(2.7, 0.0));
+    pin(&scene, scene.bodies[6], scene.bodies[7], rb_v2(3.3, 0.3));
+    pin(&scene, scene.ground, scene.bodies[7], rb_v2(3.6, 0.2));
+    pin(&scene, scene.bodies[2], scene.bodies[7], rb_v2(3.4, 0.1));
+    /* Velocities the pins do not allow. */
+    for (int i = 0; i < BODIES; ++i) {
+        cr_assert_eq(rb_body_set_linear_velocity(scene.world, scene.bodies[i], rb_v2(sin(1.7 * i), cos(2.3 * i))),
+                     RB_OK);
+        cr_assert_eq(rb_body_set_angular_velocity(scene.world, scene.bodies[i], 2.0 * sin(0.9 * i + 0.4)), RB_OK);
+    }
+    return scene;
+}
+
+/* The solver's set-up of one substep of h, as rb_solver_sequential_substep
+ * does it, with the trees on (NGS). */
+static void prepare(rb_world *world, double h)
+{
+    cr_assert_eq(rb_joints_collect_active(world), RB_OK);
+    world->joint_tree.enabled = true;
+    world->joint_response = (rb_rigid_response){.mass_scale = 1.0};
+    rb_joints_prepare(world, h);
+    rb_joint_tree_build(world);
+    rb_joint_tree_factor_velocities(world);
+}
+
+static rb_joint *joint_of(rb_world *world, rb_joint_id id) { return &world->joints[id.index]; }
+
+Test(joint_tree, the_tree_takes_every_pin_but_those_closing_loops)
+{
+    tree_scene scene = make_tree();
+    prepare(scene.world, 1.0 / 360.0);
+    for (int k = 0; k < scene.pin_count; ++k) {
+        bool closes_loop = k >= scene.pin_count - 2;
+        cr_expect_eq(joint_of(scene.world, scene.pins[k])->in_tree, !closes_loop, "pin %d", k);
+    }
+    /* 8 bodies and 8 pins. */
+    cr_expect_eq(scene.world->joint_tree.node_count, 16);
+    destroy_world_and_expect_no_leak(scene.world);
+}
+
+Test(joint_tree, one_velocity_pass_meets_every_pin_with_the_pins_impulses)
+{
+    tree_scene scene = make_tree();
+    rb_world *world = scene.world;
+    prepare(world, 1.0 / 360.0);
+    rb_body_state before[BODIES];
+    rb_vec2 impulse_before[BODIES + 2];
+    for (int i = 0; i < BODIES; ++i) {
+        before[i] = world->states[scene.bodies[i].index];
+    }
+    for (int k = 0; k < scene.pin_count; ++k) {
+        impulse_before[k] = joint_of(world, scene.pins[k])->as.revolute.point_impulse;
+    }
+    rb_joint_tree_solve_velocities(world);
+
+    /* J·v' = drift for every pin of the tree. */
+    for (int k = 0; k < scene.pin_count - 2; ++k) {
+        rb_joint *joint = joint_of(world, scene.pins[k]);
+        rb_vec2 cdot =
+            rb_joint_relative_velocity(joint, rb_joint_state_a(world, joint), rb_joint_state_b(world, joint));
+        expect_vec_near(cdot, joint->frame.point_drift, 1e-10, "a pin's anchor velocity after the pass");
+    }
+    /* M·Δv = Jᵀ·λ for every body: momentum and angular momentum about the
+     * centre change by the pins' impulses at their anchors. */
+    for (int i = 0; i < BODIES; ++i) {
+        const rb_body *body = &world->bodies[scene.bodies[i].index];
+        const rb_body_state *after = &world->states[scene.bodies[i].index];
+        rb_vec2 force = rb_v2(0.0, 0.0);
+        double torque = 0.0;
+        for (int k = 0; k < scene.pin_count - 2; ++k) {
+            rb_joint *joint = joint_of(world, scene.pins[k]);
+            rb_vec2 impulse = rb_sub(joint->as.revolute.point_impulse, impulse_before[k]);
+            if (joint->body_b == scene.bodies[i].index) {
+                force = rb_add(force, impulse);
+                torque += rb_cross(joint->frame.rb, impulse);
+            } else if (joint->body_a == scene.bodies[i].index) {
+                force = rb_sub(force, impulse);
+                torque -= rb_cross(joint->frame.ra, impulse);
+            }
+        }
+        rb_vec2 momentum = rb_scale(1.0 / body->inv_mass, rb_sub(after->linear_velocity, before[i].linear_velocity));
+        double angular = (after->angular_velocity - before[i].angular_velocity) / body->inv_inertia;
+        expect_vec_near(momentum, force, 1e-9 * (1.0 + rb_length(force)), "a body's momentum change");
+        expect_near(angular, torque, 1e-9 * (1.0 + fabs(torque)), "a body's angular momentum change");
+    }
+    destroy_world_and_expect_no_leak(scene.world);
+}
+
+Test(joint_tree, one_position_pass_closes_small_gaps_to_second_order)
+{
+    tree_scene scene = make_tree();
+    rb_world *world = scene.world;
+    prepare(world, 1.0 / 360.0);
+    /* Open every pin by about a centimetre, beyond the linear slop. */
+    for (int i = 0; i < BODIES; ++i) {
+        rb_body_state *state = &world->states[scene.bodies[i].index];
+        state->center = rb_add(state->center, rb_v2(1e-2 * sin(3.1 * i), 1e-2 * cos(1.3 * i)));
+        rb_body_state_turn(state, 1e-2 * sin(0.7 * i));
+    }
+    cr_expect_not(rb_joint_tree_correct_positions(world), "gaps of a centimetre are beyond the slop");
+    for (int k = 0; k < scene.pin_count - 2; ++k) {
+        rb_joint *joint = joint_of(world, scene.pins[k]);
+        const rb_body_state *a = rb_joint_state_a(world, joint);
+        const rb_body_state *b = rb_joint_state_b(world, joint);
+        rb_vec2 gap = rb_sub(rb_add(b->center, rb_rotate(b->rotation, joint->frame.local_b)),
+                             rb_add(a->center, rb_rotate(a->rotation, joint->frame.local_a)));
+        cr_expect_lt(rb_length(gap), 2e-4, "pin %d: gap %.3g m after one pass (about 1e-2 before)", k, rb_length(gap));
+    }
+    destroy_world_and_expect_no_leak(scene.world);
+}
