@@ -75,7 +75,7 @@
 #include "rb/rb.h"
 #include "scenes/scenes.h"
 
-enum { OPT_SCENE, OPT_METHOD, OPT_RUNS, OPT_CSV, OPT_QUICK, OPT_SINGLE, OPT_VEL, OPT_POS, OPT_SUBSTEPS };
+enum { OPT_SCENE, OPT_METHOD, OPT_RUNS, OPT_CSV, OPT_QUICK, OPT_SINGLE, OPT_VEL, OPT_POS, OPT_SUBSTEPS, OPT_NO_TREES };
 
 static const cli_option options_table[] = {
     {.name = "scene",
@@ -108,6 +108,11 @@ static const cli_option options_table[] = {
      .id = OPT_QUICK,
      .kind = CLI_FLAG,
      .help = "smoke test: 1 run, joint grid 10 warm-up + 10 timed steps\n(an explicit --runs still wins)"},
+    {.name = "no-trees",
+     .id = OPT_NO_TREES,
+     .kind = CLI_FLAG,
+     .help = "NGS solves every pin by Gauss-Seidel (rb_solver_settings.tree_pins false),\nto see how mass ratios "
+             "defeat it"},
     {.name = "single",
      .id = OPT_SINGLE,
      .kind = CLI_FLAG,
@@ -204,6 +209,7 @@ typedef struct bench_options {
     int runs;                /* 1 .. 1000 */
     int grid_warmup, grid_steps;
     const char *csv_path;
+    bool no_trees; /* --no-trees: tree_pins off */
 } bench_options;
 
 static const char *method_name(rb_solver_type method) { return rb_solver_type_name(method); }
@@ -276,6 +282,9 @@ static parse_result parse_options(int argc, char **argv, bench_options *opts)
             break;
         case OPT_SINGLE:
             opts->single = true;
+            break;
+        case OPT_NO_TREES:
+            opts->no_trees = true;
             break;
         case OPT_VEL:
             opts->velocity_iterations = (int)value.integer;
@@ -473,6 +482,7 @@ static bool bench_world_create(bench_scene scene, const bench_setting *setting, 
     def.solver.velocity_iterations = setting->velocity_iterations;
     def.solver.position_iterations = setting->position_iterations;
     def.solver.substeps = setting->substeps;
+    def.solver.tree_pins = !opts->no_trees;
     if (rb_world_create(&def, &bw->world) != RB_OK) {
         return engine_failed("rb_world_create");
     }

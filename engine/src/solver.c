@@ -129,7 +129,7 @@ rb_status rb_solver_step(rb_world *world, double dt)
     }
 
     /* NGS solves the pins of joint trees together (joint_tree.h). */
-    world->joint_tree.enabled = world->settings.type == RB_SOLVER_NGS;
+    world->joint_tree.enabled = world->settings.type == RB_SOLVER_NGS && world->settings.tree_pins;
     rb_solver_counts counts = {0};
     switch (world->settings.type) {
     case RB_SOLVER_BAUMGARTE:

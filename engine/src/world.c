@@ -33,6 +33,7 @@ rb_solver_settings rb_default_solver_settings(void)
         .substeps = 6,
         .warm_starting = true,
         .block_solver = true,
+        .tree_pins = true,
         .baumgarte = 0.2,
         .linear_slop = 0.005,
         .max_linear_correction = 0.2,

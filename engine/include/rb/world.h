@@ -59,8 +59,13 @@ typedef struct rb_solver_settings {
     int substeps;            /**< 1 .. 1000, default 6: the step dt is split into this many substeps */
     bool warm_starting;      /**< default true: start from last step's impulses */
     bool block_solver;       /**< default true: solve two-point manifolds as one 2x2 LCP (Baumgarte, NGS) */
-    double baumgarte;        /**< 0 .. 1, fraction of the error removed per (sub)step, default 0.2 */
-    double linear_slop;      /**< m, 0 .. 0.1: penetration allowed without correction, default 0.005 */
+    /** default true (NGS only): solve the pins of joint trees whose heaviest
+     * body is at least 100 times their lightest together, exactly, in every
+     * pass (a rope with a heavy end stays a rope); false leaves every pin to
+     * Gauss-Seidel, one joint at a time, to study how mass ratios defeat it */
+    bool tree_pins;
+    double baumgarte;   /**< 0 .. 1, fraction of the error removed per (sub)step, default 0.2 */
+    double linear_slop; /**< m, 0 .. 0.1: penetration allowed without correction, default 0.005 */
     /** m, > 0 .. RB_MAX_LENGTH: largest position correction per iteration, default 0.2 */
     double max_linear_correction;
     double restitution_threshold; /**< m/s, 0 .. RB_MAX_SPEED: slower impacts do not bounce, default 1 */
