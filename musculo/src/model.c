@@ -722,7 +722,7 @@ static void watch(mu_model *model)
     }
     double t = mu_model_time(model);
     mu_c_locale_scope scope = mu_c_locale_begin();
-    for (int h = 0; h < model->joint_count && model->failure[0] == '\0'; ++h) {
+    for (int h = 0; h < model->desc->hinge_count && model->failure[0] == '\0'; ++h) {
         if (rb_joint_id_is_null(model->hinges[h])) {
             continue;
         }
