@@ -32,15 +32,14 @@ static void expect_message(const char *call)
 
 /* Builds variant `variant` at the full level and steps it. The weight
  * choice changes with the variant, so that across variants the weights
- * are met. Glues stay merged (the default): with weld_glues, an open
- * defect (docs/fuzzing.md) reads past model->hinges in watch()
- * (musculo/src/model.c) on the built-in arm; once it is fixed, odd
- * variants are to be built with weld_glues too. */
+ * are met; odd variants keep their glues as weld joints (weld_glues),
+ * even ones merge them, so that both builders are fuzzed. */
 static void build_and_step(const mu_model_desc *desc, int variant)
 {
     mu_model_options options = mu_default_model_options();
     options.variant = variant;
     options.weight_index = desc->has_weight ? variant % desc->weight.mass_count : 0;
+    options.weld_glues = variant % 2 == 1;
     mu_model *model = NULL;
     if (mu_model_create(desc, &options, &model) != RB_OK) {
         expect_message("mu_model_create");

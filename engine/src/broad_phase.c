@@ -391,7 +391,12 @@ static rb_status find_candidates(rb_world *world)
     int begin = 0;
     for (int b = 0; b < bands.count; ++b) {
         int end = world->band_end[b];
-        RB_TRY(sweep_band(world, &bands, b, world->band_entries + begin, end - begin));
+        /* An empty band has nothing to sweep, and its entries may not even
+         * be allocated (no shape in the sweep: band_entries is NULL, and
+         * NULL + 0 is undefined). */
+        if (end > begin) {
+            RB_TRY(sweep_band(world, &bands, b, world->band_entries + begin, end - begin));
+        }
         begin = end;
     }
     return sort_candidates(world);

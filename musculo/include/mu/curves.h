@@ -44,7 +44,7 @@ typedef struct mu_analytic_curves {
      * past l̃ = 1 + min(1, 100/d) f_P goes on as the straight line with
      * the exponential's slope there, so that it stays finite. */
     double passive_scale;
-    double passive_rate;      /**< d, > 0, default 10 */
+    double passive_rate; /**< d, > 0, default 10 */
 } mu_analytic_curves;
 
 MU_API mu_analytic_curves mu_default_analytic_curves(void);
