@@ -140,28 +140,37 @@ for p in "${presets[@]}"; do
         summary+=("$p ok")
 done
 
+# Runs a stage whose script ends with "NAME: N passed, N failed": records
+# "NAME ok" or "NAME FAIL", and adds its counts to the closing line's (one
+# failure when it printed none).
+counted_stage()
+{
+    local name=$1 log counts passed_here failed_here
+    shift
+    log=$(mktemp)
+    if "$@" 2>&1 | tee "$log"; then
+        summary+=("$name ok")
+    else
+        summary+=("$name FAIL")
+        failed=1
+    fi
+    counts=$(sed -n "s/^$name: \([0-9]*\) passed, \([0-9]*\) failed$/\1 \2/p" "$log")
+    rm -f "$log"
+    if [[ -n "$counts" ]]; then
+        read -r passed_here failed_here <<<"$counts"
+        tests_passed=$((tests_passed + passed_here))
+        tests_failed=$((tests_failed + failed_here))
+    else
+        tests_failed=$((tests_failed + 1))
+    fi
+}
+
 # ---- The installed library, as other programs use it ------------------------
 # On the release build: installed, built as shared libraries too, moved, and
 # built on by the examples of docs/examples (tools/check_install.sh).
 if [[ " ${summary[*]} " == *" release ok"* ]]; then
     banner "install: consumers, relocation, exported symbols, headers"
-    install_log=$(mktemp)
-    if tools/check_install.sh build/release 2>&1 | tee "$install_log"; then
-        summary+=("install ok")
-    else
-        summary+=("install FAIL")
-        failed=1
-    fi
-    # Its checks join the closing count ("install: N passed, N failed").
-    install_counts=$(sed -n 's/^install: \([0-9]*\) passed, \([0-9]*\) failed$/\1 \2/p' "$install_log")
-    rm -f "$install_log"
-    if [[ -n "$install_counts" ]]; then
-        read -r install_passed install_failed <<<"$install_counts"
-        tests_passed=$((tests_passed + install_passed))
-        tests_failed=$((tests_failed + install_failed))
-    else
-        tests_failed=$((tests_failed + 1))
-    fi
+    counted_stage install tools/check_install.sh build/release
 else
     summary+=("install skipped (release failed)")
     failed=1
@@ -170,23 +179,7 @@ fi
 # ---- Fuzzing ------------------------------------------------------------------
 # The regression corpora, then a fixed-seed session per target (tools/fuzz.sh).
 banner "fuzz: regressions, then 60 s per target"
-fuzz_log=$(mktemp)
-if tools/fuzz.sh --seconds 60 2>&1 | tee "$fuzz_log"; then
-    summary+=("fuzz ok")
-else
-    summary+=("fuzz FAIL")
-    failed=1
-fi
-# Its replays and sessions join the closing count ("fuzz: N passed, N failed").
-fuzz_counts=$(sed -n 's/^fuzz: \([0-9]*\) passed, \([0-9]*\) failed$/\1 \2/p' "$fuzz_log")
-rm -f "$fuzz_log"
-if [[ -n "$fuzz_counts" ]]; then
-    read -r fuzz_passed fuzz_failed <<<"$fuzz_counts"
-    tests_passed=$((tests_passed + fuzz_passed))
-    tests_failed=$((tests_failed + fuzz_failed))
-else
-    tests_failed=$((tests_failed + 1))
-fi
+counted_stage fuzz tools/fuzz.sh --seconds 60
 
 banner "summary"
 summary_line=$(printf '%s, ' "${summary[@]}")
