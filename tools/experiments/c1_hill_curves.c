@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* C1 the Hill curves (docs/experiments.md; the original report's figures
- * 5.14-5.16): the original report's tables (digitised from Ross et al.,
- * 2018) as the muscle reads them, with linear interpolation (the original
+/* C1 the Hill curves (docs/muscle-experiments.md; figures 5.14-5.16 of
+ * Castanyer, "Implementació d'un model computacional de sistemes musculoesquelètics", 2023-24): the original report's
+ * tables (digitised from Ross et al., 2018) as the muscle reads them, with linear interpolation (the original
  * program's) and Steffen's monotone cubic, beside the analytic curves of
  * the MATLAB worksheet "1D Muscle Model based on the Hill 2-Element
  * Model"; and the worksheet's total force against length for its family

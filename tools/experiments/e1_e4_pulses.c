@@ -1,11 +1,10 @@
 /* SPDX-License-Identifier: MIT */
-/* E1 twitch and E4 summation and tetanus (docs/experiments.md; the
- * original report's sections 6.4.2 and 6.4.5): the arm, variant "All
- * Muscles", hangs until it is at rest, then both biceps get activation
- * pulses of 1, each one frame long as the original program's space bar
- * gave them (or --pulse-width, at substep resolution), with activation 0
- * between them. The trace is Biceps Long's normalized contraction (the
- * muscle the report plots), sampled at the end of every substep.
+/* E1 twitch and E4 summation and tetanus (docs/muscle-experiments.md;
+ * sections 6.4.2 and 6.4.5 of Castanyer, "Implementació d'un model computacional de sistemes musculoesquelètics",
+ * 2023-24): the arm, variant "All Muscles", hangs until it is at rest, then both biceps get activation pulses of 1,
+ * each one frame long as the original program's space bar gave them (or --pulse-width, at substep resolution), with
+ * activation 0 between them. The trace is Biceps Long's normalized contraction (the muscle the report plots), sampled
+ * at the end of every substep.
  */
 #include <math.h>
 #include <stdio.h>

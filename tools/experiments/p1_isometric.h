@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* P1's isometric muscle (docs/experiments.md, P1): the arm's Biceps Long, the
+/* P1's isometric muscle (docs/muscle-experiments.md, P1): the arm's Biceps Long, the
  * muscle E1 plots, taken out of the arm and held between two static
  * bodies with its belly at rest length, activation dynamics on (mu/
  * activation.h: Millard et al. 2013, τ_act 10 ms, τ_deact 40 ms), driven
