@@ -49,27 +49,31 @@ static int find_root(int *parent, int i)
     return i;
 }
 
-/* Whether the candidate pins' moving bodies differ in mass by
- * RB_TREE_MASS_RATIO or more: when not, no tree of them can be uneven. */
-static bool any_uneven_candidates(const rb_world *world)
+/* Clears every active joint's in_tree, and says whether the candidate
+ * pins' moving bodies differ in mass by RB_TREE_MASS_RATIO or more: when
+ * not, no tree of them can be uneven. One pass, comparing inverse masses
+ * (the heaviest has the smallest), so the common case of like masses
+ * costs a load and a comparison or two a joint. */
+static bool clear_and_find_uneven(rb_world *world)
 {
-    double lightest = INFINITY, heaviest = 0.0;
+    double smallest = INFINITY, largest = 0.0; /* inverse masses, 1/kg */
     for (int k = 0; k < world->active_joint_count; ++k) {
-        const rb_joint *joint = &world->joints[world->active_joints[k]];
+        rb_joint *joint = &world->joints[world->active_joints[k]];
+        joint->in_tree = false;
         if (!is_candidate(joint)) {
             continue;
         }
         const rb_joint_frame *f = &joint->frame;
         if (moves_freely(f->inv_mass_a, f->inv_inertia_a)) {
-            lightest = rb_min(lightest, 1.0 / f->inv_mass_a);
-            heaviest = rb_max(heaviest, 1.0 / f->inv_mass_a);
+            smallest = rb_min(smallest, f->inv_mass_a);
+            largest = rb_max(largest, f->inv_mass_a);
         }
         if (moves_freely(f->inv_mass_b, f->inv_inertia_b)) {
-            lightest = rb_min(lightest, 1.0 / f->inv_mass_b);
-            heaviest = rb_max(heaviest, 1.0 / f->inv_mass_b);
+            smallest = rb_min(smallest, f->inv_mass_b);
+            largest = rb_max(largest, f->inv_mass_b);
         }
     }
-    return heaviest >= RB_TREE_MASS_RATIO * lightest;
+    return largest >= RB_TREE_MASS_RATIO * smallest;
 }
 
 /* Leaves in the trees only the pins of trees whose heaviest body is at
@@ -207,14 +211,8 @@ void rb_joint_tree_build(rb_world *world)
 {
     rb_joint_tree *tree = &world->joint_tree;
     tree->node_count = 0;
-    for (int k = 0; k < world->active_joint_count; ++k) {
-        world->joints[world->active_joints[k]].in_tree = false;
-    }
-    if (!tree->enabled || world->active_joint_count == 0) {
+    if (!clear_and_find_uneven(world) || !tree->enabled) {
         return;
-    }
-    if (!any_uneven_candidates(world)) {
-        return; /* the common case of like masses costs one pass */
     }
     int slots = world->body_slots;
     if (rb_grow_array((void **)&tree->body_node, &tree->body_node_capacity, slots, sizeof(int)) != 0 ||
