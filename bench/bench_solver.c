@@ -111,7 +111,8 @@ static const cli_option options_table[] = {
     {.name = "no-trees",
      .id = OPT_NO_TREES,
      .kind = CLI_FLAG,
-     .help = "NGS solves every pin by Gauss-Seidel (rb_solver_settings.tree_pins false),\nto see how mass ratios "
+     .help = "NGS and the soft step solve every pin by Gauss-Seidel (rb_solver_settings.tree_pins\nfalse), to see how "
+             "mass ratios "
              "defeat it"},
     {.name = "single",
      .id = OPT_SINGLE,

@@ -211,6 +211,7 @@ void rb_joint_tree_build(rb_world *world)
 {
     rb_joint_tree *tree = &world->joint_tree;
     tree->node_count = 0;
+    tree->pose_factors = false;
     if (!clear_and_find_uneven(world) || !tree->enabled) {
         return;
     }
@@ -388,56 +389,63 @@ static bool factor(rb_world *world, bool current_poses)
     return true;
 }
 
-/* Solves H·x = b in place over node->value. */
+/* Solves H·x = b in place over node->value: L·D·Lᵀ from the leaves up,
+ * then down from the roots. A body's X is 3 × 2 (its parent a pin), a
+ * pin's 2 × 3 (its parent a body); written out for each, as this runs in
+ * every pass. */
 static void solve(rb_joint_tree *tree)
 {
     for (int n = tree->node_count - 1; n >= 0; --n) {
         rb_tree_node *node = &tree->nodes[n];
-        const int dim = node->dim;
         double *y = node->value;
-        if (node->parent >= 0) {
-            /* y(p) -= Xᵀ·y(n), X being dim × dim(p) = dim × (5 - dim) */
-            rb_tree_node *parent = &tree->nodes[node->parent];
-            const int pdim = 5 - dim;
-            for (int c = 0; c < pdim; ++c) {
-                double sum = 0.0;
-                for (int l = 0; l < dim; ++l) {
-                    sum += node->x[l * pdim + c] * y[l];
-                }
-                parent->value[c] -= sum;
-            }
-        }
         const double *d = node->dinv;
-        if (dim == 2) {
-            const double y0 = y[0], y1 = y[1];
-            y[0] = d[0] * y0 + d[1] * y1;
-            y[1] = d[2] * y0 + d[3] * y1;
-        } else {
+        if (node->dim == 3) {
+            if (node->parent >= 0) { /* y(p) -= Xᵀ·y(n) */
+                double *yp = tree->nodes[node->parent].value;
+                const double *x = node->x;
+                yp[0] -= x[0] * y[0] + x[2] * y[1] + x[4] * y[2];
+                yp[1] -= x[1] * y[0] + x[3] * y[1] + x[5] * y[2];
+            }
             const double y0 = y[0], y1 = y[1], y2 = y[2];
             y[0] = d[0] * y0 + d[1] * y1 + d[2] * y2;
             y[1] = d[3] * y0 + d[4] * y1 + d[5] * y2;
             y[2] = d[6] * y0 + d[7] * y1 + d[8] * y2;
+        } else {
+            if (node->parent >= 0) {
+                double *yp = tree->nodes[node->parent].value;
+                const double *x = node->x;
+                yp[0] -= x[0] * y[0] + x[3] * y[1];
+                yp[1] -= x[1] * y[0] + x[4] * y[1];
+                yp[2] -= x[2] * y[0] + x[5] * y[1];
+            }
+            const double y0 = y[0], y1 = y[1];
+            y[0] = d[0] * y0 + d[1] * y1;
+            y[1] = d[2] * y0 + d[3] * y1;
         }
     }
     for (int n = 0; n < tree->node_count; ++n) {
         rb_tree_node *node = &tree->nodes[n];
-        if (node->parent >= 0) {
-            /* x(n) -= X·x(p) */
-            const double *xp = tree->nodes[node->parent].value;
-            const int pdim = 5 - node->dim;
-            for (int l = 0; l < node->dim; ++l) {
-                double sum = 0.0;
-                for (int c = 0; c < pdim; ++c) {
-                    sum += node->x[l * pdim + c] * xp[c];
-                }
-                node->value[l] -= sum;
-            }
+        if (node->parent < 0) {
+            continue;
+        }
+        /* x(n) -= X·x(p) */
+        const double *xp = tree->nodes[node->parent].value;
+        const double *x = node->x;
+        double *y = node->value;
+        if (node->dim == 3) {
+            y[0] -= x[0] * xp[0] + x[1] * xp[1];
+            y[1] -= x[2] * xp[0] + x[3] * xp[1];
+            y[2] -= x[4] * xp[0] + x[5] * xp[1];
+        } else {
+            y[0] -= x[0] * xp[0] + x[1] * xp[1] + x[2] * xp[2];
+            y[1] -= x[3] * xp[0] + x[4] * xp[1] + x[5] * xp[2];
         }
     }
 }
 
 void rb_joint_tree_factor_velocities(rb_world *world)
 {
+    world->joint_tree.pose_factors = false;
     world->joint_tree.velocity_factors = world->joint_tree.node_count > 0 && factor(world, false);
 }
 
@@ -480,6 +488,75 @@ void rb_joint_tree_solve_velocities(rb_world *world)
     }
 }
 
+/* The soft step's pass. Its relax pass comes after the positions have
+ * moved, so the pins are taken where they are now: the trees factored at
+ * the current poses, the rows' velocities at the current anchors (Box2D
+ * v3 also solves its joints at anchors turned with the bodies). Asked to
+ * close the gap at the spring's bias rate, the tree's impulses are then
+ * softened as a single row's are (rb_soften): the spring's softness is
+ * proportional to the rows' mass, gamma = K/a2 (rb_make_rigid_softness),
+ * so the soft solution of K·λ = -(Cdot + bias) - gamma·λ_accumulated is
+ * (K + K/a2)⁻¹ applied to it, mass_scale times the rigid solution less
+ * impulse_scale times the impulse each pin holds. The bodies take the
+ * softened impulses at the pins' anchors. The factors serve every pass
+ * until the bodies move: the relax pass's serve the next substep's solve
+ * pass, the integration of velocities between them moving no body. */
+void rb_joint_tree_solve_soft(rb_world *world)
+{
+    rb_joint_tree *tree = &world->joint_tree;
+    if (tree->node_count == 0) {
+        return;
+    }
+    if (!tree->pose_factors) {
+        tree->pose_factors = factor(world, true);
+        if (!tree->pose_factors) {
+            return;
+        }
+    }
+    const rb_rigid_response *response = &world->joint_response;
+    for (int n = 0; n < tree->node_count; ++n) {
+        rb_tree_node *node = &tree->nodes[n];
+        if (node->joint < 0) {
+            memset(node->value, 0, sizeof node->value);
+            continue;
+        }
+        const rb_joint *joint = &world->joints[node->joint];
+        const rb_body_state *a = &world->states[joint->body_a];
+        const rb_body_state *b = &world->states[joint->body_b];
+        rb_vec2 ra = rb_rotate(a->rotation, joint->frame.local_a);
+        rb_vec2 rb = rb_rotate(b->rotation, joint->frame.local_b);
+        rb_vec2 va = rb_add(a->linear_velocity, rb_cross_sv(a->angular_velocity, ra));
+        rb_vec2 vb = rb_add(b->linear_velocity, rb_cross_sv(b->angular_velocity, rb));
+        rb_vec2 cdot = rb_sub(vb, va);
+        if (response->bias_rate > 0.0) {
+            rb_vec2 gap = rb_sub(rb_add(b->center, rb), rb_add(a->center, ra));
+            cdot = rb_mul_add(cdot, response->bias_rate, gap);
+        }
+        node->value[0] = cdot.x;
+        node->value[1] = cdot.y;
+    }
+    solve(tree);
+    for (int n = 0; n < tree->node_count; ++n) {
+        const rb_tree_node *node = &tree->nodes[n];
+        if (node->body >= 0) {
+            continue;
+        }
+        rb_joint *joint = &world->joints[node->joint];
+        const rb_joint_frame *f = &joint->frame;
+        rb_revolute_data *r = &joint->as.revolute;
+        rb_vec2 impulse = rb_soften(response, rb_v2(node->value[0], node->value[1]), r->point_impulse);
+        r->point_impulse = rb_add(r->point_impulse, impulse);
+        rb_body_state *a = &world->states[joint->body_a];
+        rb_body_state *b = &world->states[joint->body_b];
+        rb_vec2 ra = rb_rotate(a->rotation, f->local_a);
+        rb_vec2 rb = rb_rotate(b->rotation, f->local_b);
+        a->linear_velocity = rb_mul_sub(a->linear_velocity, f->inv_mass_a, impulse);
+        a->angular_velocity -= f->inv_inertia_a * rb_cross(ra, impulse);
+        b->linear_velocity = rb_mul_add(b->linear_velocity, f->inv_mass_b, impulse);
+        b->angular_velocity += f->inv_inertia_b * rb_cross(rb, impulse);
+    }
+}
+
 bool rb_joint_tree_correct_positions(rb_world *world)
 {
     rb_joint_tree *tree = &world->joint_tree;
@@ -508,8 +585,10 @@ bool rb_joint_tree_correct_positions(rb_world *world)
         node->value[0] = gap.x;
         node->value[1] = gap.y;
     }
-    /* The factors at the current poses replace the substep's. */
+    /* The factors at the current poses replace the substep's, and are
+     * out of date once the bodies move. */
     tree->velocity_factors = false;
+    tree->pose_factors = false;
     if (largest <= world->settings.linear_slop || !factor(world, true)) {
         return largest <= world->settings.linear_slop;
     }
@@ -543,6 +622,8 @@ bool rb_joint_tree_correct_positions(rb_world *world)
     }
     return false;
 }
+
+void rb_joint_tree_poses_moved(rb_world *world) { world->joint_tree.pose_factors = false; }
 
 void rb_joint_tree_free(rb_world *world)
 {

@@ -45,6 +45,12 @@
  * and again at the current poses for each NGS position pass, which asks
  * for the position change Δx with J Δx = -C (C the anchors' gap, each
  * capped at max_linear_correction).
+ *
+ * The soft step (solver_soft_step.c) solves the trees too: each of its
+ * passes at the current poses, softened by the pass's spring, and one
+ * position pass after the positions move, as NGS does. Without them a
+ * 40-link chain with a 400:1 end box tore apart at Box2D v3's budget
+ * (4 substeps of 1 + 1 passes), where Box2D v3 holds it within 0.29 m.
  */
 #ifndef RB_JOINT_TREE_H
 #define RB_JOINT_TREE_H
@@ -72,9 +78,18 @@ void rb_joint_tree_factor_velocities(rb_world *world);
  * each pin's accumulated impulse. */
 void rb_joint_tree_solve_velocities(rb_world *world);
 
+/* One soft-step pass over the trees' pins under the pass's response
+ * (world->joint_response: the spring, or rigid for the relax pass), at
+ * the bodies' current poses. */
+void rb_joint_tree_solve_soft(rb_world *world);
+
 /* One NGS position pass over the trees' pins at the current poses;
  * returns whether every pin's gap was within the linear slop before it. */
 bool rb_joint_tree_correct_positions(rb_world *world);
+
+/* Says the bodies have moved since the trees were last factored at their
+ * poses (rb_joint_tree_solve_soft factors them again). */
+void rb_joint_tree_poses_moved(rb_world *world);
 
 /* Frees the trees' arrays (at world destruction). */
 void rb_joint_tree_free(rb_world *world);

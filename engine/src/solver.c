@@ -128,8 +128,9 @@ rb_status rb_solver_step(rb_world *world, double dt)
         rb_cables_reset_impulses(world);
     }
 
-    /* NGS solves the pins of joint trees together (joint_tree.h). */
-    world->joint_tree.enabled = world->settings.type == RB_SOLVER_NGS && world->settings.tree_pins;
+    /* NGS and the soft step solve the pins of joint trees together
+     * (joint_tree.h). */
+    world->joint_tree.enabled = world->settings.type != RB_SOLVER_BAUMGARTE && world->settings.tree_pins;
     rb_solver_counts counts = {0};
     switch (world->settings.type) {
     case RB_SOLVER_BAUMGARTE:

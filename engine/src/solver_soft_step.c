@@ -12,11 +12,14 @@
  *   for each substep of length h = dt / substeps:
  *       substep callback       the user's
  *       integrate velocities
- *       prepare joints         and cables, at the poses now
+ *       prepare joints         and cables, at the poses now (and at the
+ *                              first substep, find the joint trees)
  *       warm start             the accumulated impulses again
  *       solve                  velocity_iterations passes with the springs'
- *                              bias: cables, joints, contacts
+ *                              bias: cables, joints, trees' pins, contacts
  *       damp, integrate positions
+ *       correct the trees      position_iterations NGS passes over the
+ *                              pins of uneven trees (joint_tree.h)
  *       relax                  relax_iterations passes without bias
  *   apply restitution
  *
@@ -28,6 +31,7 @@
 #include "cable_solver.h"
 #include "contact_solver.h"
 #include "joint_solver.h"
+#include "joint_tree.h"
 #include "solver.h"
 
 /* The springs follow the substep rate up to this fraction of it. */
@@ -48,6 +52,7 @@ static void solve_pass(rb_world *world, double h, const rb_contact_softness *con
 {
     rb_cables_solve(world, h);
     rb_joints_solve_velocities(world, h, backwards);
+    rb_joint_tree_solve_soft(world);
     rb_contact_solver_solve_soft(world, contacts);
 }
 
@@ -89,6 +94,9 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
         t = rb_world_clock(world);
         rb_cables_prepare(world);
         rb_joints_prepare(world, h);
+        if (substep == 0) {
+            rb_joint_tree_build(world);
+        }
         rb_cables_warm_start(world);
         rb_joints_warm_start(world);
         rb_contact_solver_warm_start(world);
@@ -104,7 +112,14 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
 
         t = rb_world_clock(world);
         rb_solver_damp_and_integrate_positions(world, h);
+        rb_joint_tree_poses_moved(world);
         profile->integrate_positions += rb_world_clock(world) - t;
+
+        t = rb_world_clock(world);
+        for (int iteration = 0; iteration < settings->position_iterations; ++iteration) {
+            rb_joint_tree_correct_positions(world);
+        }
+        profile->correct_positions += rb_world_clock(world) - t;
 
         t = rb_world_clock(world);
         world->joint_response = joint_rigid;

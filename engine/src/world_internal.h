@@ -325,8 +325,9 @@ typedef struct rb_tree_node {
 /* The pins solved together this step, with the arrays the search for
  * them reuses from step to step. */
 typedef struct rb_joint_tree {
-    bool enabled;          /* set by the solver that uses it (NGS) */
+    bool enabled;          /* set by the solvers that use it (NGS, soft step) */
     bool velocity_factors; /* the nodes hold this substep's velocity factors */
+    bool pose_factors;     /* the nodes hold factors at the bodies' current poses */
     rb_tree_node *nodes;   /* breadth first from each root: a parent before its children */
     int node_count, node_capacity;
     int *body_node; /* per body slot: its node, or -1 */

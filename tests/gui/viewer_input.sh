@@ -13,7 +13,7 @@
 #     that cannot be written is shown in the window,
 #   - Up recruits 20 neurons of the worm's motor pool per press.
 #
-#   xvfb-run -a bash tests/gui/viewer_input.sh build/release/tools/sinew
+#   tests/gui/in_virtual_display.sh bash tests/gui/viewer_input.sh build/release/tools/sinew
 #
 # Registered in tests/CMakeLists.txt when the viewer, xvfb-run and xdotool
 # are all there. Exit status 0 when every check holds; each failure is one

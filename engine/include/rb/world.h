@@ -54,12 +54,12 @@ RB_API rb_status rb_solver_type_from_name(const char *name, rb_solver_type *type
 typedef struct rb_solver_settings {
     rb_solver_type type;     /**< default RB_SOLVER_NGS */
     int velocity_iterations; /**< 1 .. 1000, per substep, default 2 */
-    int position_iterations; /**< 0 .. 1000, per substep, default 1 (NGS only) */
+    int position_iterations; /**< 0 .. 1000, per substep, default 1 (NGS; the soft step's joint trees) */
     int relax_iterations;    /**< 0 .. 1000, per substep, default 1 (soft step only) */
     int substeps;            /**< 1 .. 1000, default 6: the step dt is split into this many substeps */
     bool warm_starting;      /**< default true: start from last step's impulses */
     bool block_solver;       /**< default true: solve two-point manifolds as one 2x2 LCP (Baumgarte, NGS) */
-    /** default true (NGS only): solve the pins of joint trees whose heaviest
+    /** default true (NGS and soft step): solve the pins of joint trees whose heaviest
      * body is at least 100 times their lightest together, exactly, in every
      * pass (a rope with a heavy end stays a rope); false leaves every pin to
      * Gauss-Seidel, one joint at a time, to study how mass ratios defeat it */
@@ -108,7 +108,7 @@ typedef struct rb_profile {
     double warm_start;
     double solve_velocities;
     double integrate_positions;
-    double correct_positions; /**< NGS position passes */
+    double correct_positions; /**< NGS position passes; the soft step's pass over joint trees */
     double relax;             /**< soft step's relax passes */
     double restitution;
     double store_impulses;
