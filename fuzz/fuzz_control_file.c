@@ -53,7 +53,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             abort();
         }
         for (long frame = 0; frame < FRAMES; ++frame) {
-            if (controls_apply(&schedule, model, frame) != RB_OK || mu_model_step(model) != RB_OK) {
+            if (controls_step_frame(&schedule, model, frame) != RB_OK) {
                 break;
             }
         }
