@@ -219,10 +219,10 @@ static bool check_value(const controls *schedule, control_kind kind, mu_model_re
  * substeps, which sample it. */
 static bool check_timing(const controls *schedule, const control_shape *shape, char *error, size_t error_size)
 {
-    const char *name = control_shape_name(shape->kind);
+    const char *name = shape->kind == CONTROL_PULSES ? "pulses'" : shape->kind == CONTROL_SINE ? "sine's" : "ramp's";
     const double rate = 1.0 / schedule->substep; /* substeps per second */
     if (!(shape->duration > 0.0 && shape->duration <= CONTROL_MAX_TIME)) {
-        snprintf(error, error_size, "the %s's DURATION must be more than 0 s (at most %g s), got %g", name,
+        snprintf(error, error_size, "the %s DURATION must be more than 0 s (at most %g s), got %g", name,
                  CONTROL_MAX_TIME, shape->duration);
         return false;
     }
@@ -230,7 +230,7 @@ static bool check_timing(const controls *schedule, const control_shape *shape, c
         return true;
     }
     if (!(shape->frequency > 0.0 && shape->frequency <= rate)) {
-        snprintf(error, error_size, "the %s's FREQUENCY must be more than 0 Hz (at most %g Hz), got %g", name, rate,
+        snprintf(error, error_size, "the %s FREQUENCY must be more than 0 Hz (at most %g Hz), got %g", name, rate,
                  shape->frequency);
         return false;
     }
@@ -352,14 +352,14 @@ bool controls_add(controls *schedule, double time, control_kind kind, const char
 
 /* The value channel `c` has at `substep`: its pulse's while one lasts,
  * else its command's, a whole number of neurons for a torque muscle
- * (rounded to the nearest, as a sine of recruitment asks). */
+ * (rounded to the nearest, halves up, as a ramp or sine of recruitment asks). */
 static double channel_value(const controls *schedule, const control_channel *channel, long substep)
 {
     if (substep < channel->pulse_end) {
         return channel->pulse_value;
     }
     double value = control_shape_value(&channel->shape, (double)substep * schedule->substep, schedule->substep);
-    return channel->kind == CONTROL_RECRUIT ? nearbyint(value) : value;
+    return channel->kind == CONTROL_RECRUIT ? round(value) : value;
 }
 
 /* Gives channel `c` its value at `substep`. */
