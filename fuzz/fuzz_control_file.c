@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Fuzz target: a control file's bytes (`sinew run --control FILE`), read
- * into a schedule for the built-in arm as control_file_read reads it, and
- * when it is accepted, applied to the built arm over a few frames as a run
+ * into a schedule for the built-in arm and for the worm (whose torque
+ * muscle takes recruit lines) as control_file_read reads it, and when it
+ * is accepted, applied to the built model over a few frames as a run
  * applies it. */
 #include <stdint.h>
 #include <stdio.h>
@@ -15,10 +16,11 @@
  * are undone, and an input stays well under a millisecond. */
 enum { FRAMES = 3 };
 
-/* The arm's description, loaded once: its muscles and groups are the names
- * a control file addresses, and loading it for every input would only slow
- * the fuzzer down. */
-static mu_model_desc *arm;
+/* The arm's and the worm's descriptions, loaded once: their muscles,
+ * groups and torque muscle are the names a control file addresses, and
+ * loading them for every input would only slow the fuzzer down. */
+enum { MODELS = 2 };
+static mu_model_desc *models[MODELS];
 
 int LLVMFuzzerInitialize(int *argc, char ***argv);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
@@ -27,17 +29,20 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
 {
     (void)argc;
     (void)argv;
-    if (mu_model_desc_load_builtin("arm", &arm) != RB_OK) {
-        fprintf(stderr, "fuzz_control_file: %s\n", rb_last_error());
-        abort();
+    static const char *const names[MODELS] = {"arm", "worm"};
+    for (int m = 0; m < MODELS; ++m) {
+        if (mu_model_desc_load_builtin(names[m], &models[m]) != RB_OK) {
+            fprintf(stderr, "fuzz_control_file: %s\n", rb_last_error());
+            abort();
+        }
     }
     return 0;
 }
 
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+static void read_and_run(const mu_model_desc *desc, const uint8_t *data, size_t size)
 {
     controls schedule;
-    if (!controls_init(&schedule, arm, 0)) {
+    if (!controls_init(&schedule, desc, 0)) {
         abort();
     }
     memory_file file;
@@ -48,17 +53,24 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     mu_model *model = NULL;
     if (ok) {
         mu_model_options options = mu_default_model_options();
-        if (mu_model_create(arm, &options, &model) != RB_OK) {
+        if (mu_model_create(desc, &options, &model) != RB_OK) {
             fprintf(stderr, "fuzz_control_file: %s\n", rb_last_error());
             abort();
         }
         for (long frame = 0; frame < FRAMES; ++frame) {
-            if (controls_apply(&schedule, model, frame) != RB_OK || mu_model_step(model) != RB_OK) {
+            if (controls_step_frame(&schedule, model, frame) != RB_OK) {
                 break;
             }
         }
         mu_model_destroy(model);
     }
     controls_free(&schedule);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    for (int m = 0; m < MODELS; ++m) {
+        read_and_run(models[m], data, size);
+    }
     return 0;
 }

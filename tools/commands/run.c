@@ -100,7 +100,11 @@ static const cli_option options_table[] = {
      .kind = CLI_PATH,
      .value_name = "FILE",
      .help = "scheduled controls: lines `TIME activation NAME VALUE`,\n"
-             "`TIME tension NAME NEWTONS`, `TIME pulse NAME [VALUE]`;\n"
+             "`TIME tension NAME NEWTONS`, `TIME recruit NAME NEURONS`,\n"
+             "`TIME pulse NAME [VALUE]`, and shapes of each quantity:\n"
+             "`TIME [QUANTITY] ramp NAME FROM TO DURATION`,\n"
+             "`... sine NAME MEAN AMPLITUDE FREQUENCY DURATION`,\n"
+             "`... pulses NAME LEVEL FREQUENCY WIDTH DURATION` (docs/cli.md);\n"
              "'#' comments; names with spaces in double quotes"},
     {.name = "out",
      .id = OPT_OUT,
@@ -446,13 +450,9 @@ static int run_frames(run_state *run)
     progress_start(&bar, run->frames, 1.0 / frame_rate);
     const double start = progress_now();
     for (long frame = 0; frame < run->frames; ++frame) {
-        if (controls_apply(&run->schedule, run->model, frame) != RB_OK) {
-            progress_finish(&bar);
-            recorder_abandon(&run->csv);
-            return engine_failure("applying the controls");
-        }
+        /* The controls act before every substep whose values they change. */
         const double step_start = progress_now();
-        rb_status status = mu_model_step(run->model);
+        rb_status status = controls_step_frame(&run->schedule, run->model, frame);
         run->step_seconds += progress_now() - step_start;
         if (status != RB_OK) {
             progress_finish(&bar);

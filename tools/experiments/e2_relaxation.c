@@ -9,9 +9,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "cli/user_error.h"
 #include "experiment.h"
+#include "protocol.h"
 #include "substep_model.h"
+
+/* The protocol, as a control file (the times below give the same). */
+static const char protocol[] = "# TIME  SHAPE       NAME    ARGUMENTS\n"
+                               "0       activation  Muscle  1        # until the weight hangs still\n"
+                               "2       ramp        Muscle  1 0 3    # activation 1 to 0 over 3 s, then 0\n";
 
 #define HOLD_TIME 2.0  /* s at activation 1 first: the weight comes to rest */
 #define RAMP_TIME 3.0  /* s from activation 1 to 0 */
@@ -27,9 +32,6 @@ static const char *const names[COLUMNS] = {
     "Muscle.total_force_N",
 };
 
-/* The activation at `time`: 1, then a linear ramp down, then 0. */
-static double activation_at(double time) { return fmin(fmax(1.0 - (time - HOLD_TIME) / RAMP_TIME, 0.0), 1.0); }
-
 static int run(csv_table *table)
 {
     char error[256];
@@ -44,11 +46,14 @@ static int run(csv_table *table)
         fprintf(stderr, "sinew: the sample model has no muscle named \"Muscle\"\n");
         code = EXIT_FAILURE;
     }
+    controls schedule = {.desc = NULL};
+    if (code == 0) {
+        code = experiment_protocol_read(&schedule, &model, "Default", "e2 protocol", protocol);
+    }
     long total = code == 0 ? experiment_model_substep_at(&model, HOLD_TIME + RAMP_TIME + AFTER_TIME) : 0;
     for (long k = 0; k < total && code == 0; ++k) {
-        if (mu_model_set_activation_at(model.model, muscle, activation_at((double)k * model.h)) != RB_OK) {
-            fprintf(stderr, "sinew: %s\n", user_error());
-            code = EXIT_FAILURE;
+        code = experiment_protocol_apply(&schedule, &model);
+        if (code != 0) {
             break;
         }
         code = experiment_model_substep(&model);
@@ -64,6 +69,7 @@ static int run(csv_table *table)
             code = EXIT_FAILURE;
         }
     }
+    controls_free(&schedule);
     experiment_model_close(&model);
     return code;
 }

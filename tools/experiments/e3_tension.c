@@ -13,14 +13,16 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/user_error.h"
 #include "experiment.h"
+#include "protocol.h"
 #include "substep_model.h"
 
 #define SETTLE_TIME 3.0 /* s: the arm hangs at rest (e1_e4_pulses.c) */
 
+/* The protocol, a control file, and its times for the figures. */
 typedef struct tension_plan {
     const char *title;
+    const char *protocol;
     double weight_kg;
     double target;    /* N */
     double ramp_time; /* s, up and down */
@@ -40,14 +42,6 @@ static const char *const names[COLUMNS] = {
     "Elbow.angle_deg",
 };
 
-/* The target at `time`: 0, a ramp up, the hold, a ramp down, 0. */
-static double target_at(const tension_plan *plan, double time)
-{
-    double up = (time - SETTLE_TIME) / plan->ramp_time;
-    double down = (SETTLE_TIME + 2.0 * plan->ramp_time + plan->hold_time - time) / plan->ramp_time;
-    return plan->target * fmax(0.0, fmin(1.0, fmin(up, down)));
-}
-
 static int run(const tension_plan *plan, csv_table *table)
 {
     char error[256];
@@ -66,22 +60,26 @@ static int run(const tension_plan *plan, csv_table *table)
         fprintf(stderr, "sinew: the arm model has no Biceps Short or Elbow\n");
         code = EXIT_FAILURE;
     }
+    controls schedule = {.desc = NULL};
+    mu_model_ref biceps = {.kind = MU_MODEL_MUSCLE};
+    if (code == 0) {
+        code = experiment_protocol_read(&schedule, &model, "All Muscles", "e3 protocol", plan->protocol);
+        mu_model_desc_find(model.desc, "Biceps Short", &biceps);
+    }
     double end = SETTLE_TIME + 2.0 * plan->ramp_time + plan->hold_time + plan->after;
     long total = code == 0 ? experiment_model_substep_at(&model, end) : 0;
     for (long k = 0; k < total && code == 0; ++k) {
-        double time = (double)k * model.h;
-        rb_status status = time < SETTLE_TIME ? mu_model_set_activation_at(model.model, muscle, 0.0)
-                                              : mu_model_set_tension_at(model.model, muscle, target_at(plan, time));
-        if (status != RB_OK) {
-            fprintf(stderr, "sinew: %s\n", user_error());
-            code = EXIT_FAILURE;
+        code = experiment_protocol_apply(&schedule, &model);
+        if (code != 0) {
             break;
         }
+        control_kind kind;
+        double command = controls_muscle_value(&schedule, biceps.index, &kind);
         code = experiment_model_substep(&model);
         mu_muscle_readout r = mu_model_muscle_readout(model.model, muscle);
         double row[COLUMNS] = {
             experiment_model_time(&model),
-            time < SETTLE_TIME ? 0.0 : target_at(plan, time),
+            kind == CONTROL_TENSION ? command : 0.0, /* 0 under activation control */
             r.activation,
             r.length,
             r.normalized_length,
@@ -94,6 +92,7 @@ static int run(const tension_plan *plan, csv_table *table)
             code = EXIT_FAILURE;
         }
     }
+    controls_free(&schedule);
     experiment_model_close(&model);
     return code;
 }
@@ -172,6 +171,10 @@ int experiment_e3_isometric(const experiment *self, const experiment_options *op
 {
     tension_plan plan = {
         .title = "E3.1 isometric: Biceps Short held at 330 N against 100 kg (arm)",
+        .protocol = "# TIME  QUANTITY  SHAPE       NAME            ARGUMENTS\n"
+                    "0       activation            \"Biceps Short\"  0            # the arm hangs until at rest\n"
+                    "3       tension   ramp        \"Biceps Short\"  0 330 0.2    # up to 330 N, held\n"
+                    "6.2     tension   ramp        \"Biceps Short\"  330 0 0.2    # down to 0 N\n",
         .weight_kg = 100.0,
         .target = 330.0,
         .ramp_time = 0.2, /* "ramp quickly" */
@@ -185,6 +188,10 @@ int experiment_e3_isotonic(const experiment *self, const experiment_options *opt
 {
     tension_plan plan = {
         .title = "E3.2 isotonic: Biceps Short at 350 N with 5 kg, then 0 (arm)",
+        .protocol = "# TIME  QUANTITY  SHAPE       NAME            ARGUMENTS\n"
+                    "0       activation            \"Biceps Short\"  0            # the arm hangs until at rest\n"
+                    "3       tension   ramp        \"Biceps Short\"  0 350 1      # up to 350 N, held\n"
+                    "4.7     tension   ramp        \"Biceps Short\"  350 0 1      # down to 0 N\n",
         .weight_kg = 5.0,
         .target = 350.0,
         /* A ramp of 0.2 s overshoots: the active force reaches 390 N
