@@ -264,10 +264,12 @@ Test(model_desc, arm_loads_as_models_md_gives_it)
     mu_model_desc_destroy(desc);
 }
 
-Test(model_desc, leg_loads_as_models_md_gives_it)
+/* The source's leg, hinges and substeps as the report has them;
+ * test_leg_ranges.c checks the built-in leg's anatomical ranges. */
+Test(model_desc, leg_unlimited_loads_as_models_md_gives_it)
 {
-    mu_model_desc *desc = load_builtin("leg");
-    cr_expect_str_eq(desc->name, "leg");
+    mu_model_desc *desc = load_builtin("leg-unlimited");
+    cr_expect_str_eq(desc->name, "leg-unlimited");
     expect_counts(desc, 2, 6, 4, 3, 4, 2, 5, 4);
     expect_seed_settings(desc, -0.30, 0.30);
     expect_hinges_closed(desc);
@@ -732,7 +734,7 @@ Test(model_desc, missing_and_unreadable_files_fail)
 
     cr_expect_eq(mu_model_desc_load_builtin("worm-of-doom", &desc), RB_ERR_INVALID_ARGUMENT, "no such model");
     cr_expect(strstr(rb_last_error(), "no built-in model is named \"worm-of-doom\", expected one of sample, arm, "
-                                      "leg, worm") != NULL,
+                                      "leg, leg-unlimited, worm") != NULL,
               "%s", rb_last_error());
     cr_expect_eq(mu_model_desc_load_builtin("../models/arm", &desc), RB_ERR_INVALID_ARGUMENT, "a path, not a name");
     cr_expect(strstr(rb_last_error(), "expected a built-in model's name") != NULL, "%s", rb_last_error());
