@@ -431,7 +431,10 @@ Test(model_desc, the_readme_example_loads)
     rb_status status = mu_model_desc_load(path, &desc);
     remove(path);
     cr_assert_eq(status, RB_OK, "%s", rb_last_error());
-    expect_counts(desc, 1, 3, 1, 1, 2, 1, 2, 3);
+    expect_counts(desc, 1, 3, 1, 1, 3, 1, 2, 3);
+    /* Calf: 0.3 MPa × 1e-5 m³ / (0.05 m · 2 µm / 2.5 µm). */
+    expect_near(desc->muscles[index_of(desc, MU_MODEL_MUSCLE, "Calf")].max_force, 3e5 * 1e-5 / 0.04, 1e-9,
+                "the force from the architecture");
     const mu_model_variant *strap_alone = &desc->variants[1];
     cr_expect_eq(strap_alone->bone_count, 2, "a variant that lists its bones");
     cr_expect_not(mu_model_variant_has_bone(strap_alone, index_of(desc, MU_MODEL_BONE, "Hook")));
