@@ -585,7 +585,7 @@ static const bad_model bad_models[] = {
      "max_force_and_specific_tension.json:20:66: muscles[0].specific_tension: given with max_force, expected either "
      "max_force or rest_width with specific_tension"},
     {"missing_rest_width.json", "missing_rest_width.json:18:5: muscles[0]: missing key \"rest_width\", expected the "
-                                "belly's width at rest in m, or max_force"},
+                                "belly's width at rest in m, max_force or architecture"},
     {"negative_rest_width.json", "negative_rest_width.json:20:41: muscles[0].rest_width: -0.05 is out of range, "
                                  "expected the belly's width at rest in m (in [0.0001, 1])"},
     {"symmetry_out_of_range.json", "symmetry_out_of_range.json:20:59: muscles[0].symmetry: 1.5 is out of range, "
