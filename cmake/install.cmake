@@ -57,7 +57,8 @@ foreach(library rb mu)
 endforeach()
 
 install(FILES ${PROJECT_SOURCE_DIR}/models/sample.json ${PROJECT_SOURCE_DIR}/models/arm.json
-              ${PROJECT_SOURCE_DIR}/models/leg.json ${PROJECT_SOURCE_DIR}/models/worm.json
+              ${PROJECT_SOURCE_DIR}/models/leg.json ${PROJECT_SOURCE_DIR}/models/leg-unlimited.json
+              ${PROJECT_SOURCE_DIR}/models/worm.json
               ${PROJECT_SOURCE_DIR}/models/data/hill-curves.csv
         DESTINATION ${CMAKE_INSTALL_DATADIR}/sinew
         COMPONENT runtime)

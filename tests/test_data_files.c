@@ -20,7 +20,7 @@
 #include "mu/version.h"
 #include "rb/version.h"
 
-static const char *const expected_models[] = {"sample", "arm", "leg", "worm"};
+static const char *const expected_models[] = {"sample", "arm", "leg", "leg-unlimited", "worm"};
 
 /* A fresh empty folder under /tmp; the test removes what it puts there. */
 static void make_folder(char *path, size_t size)
@@ -51,12 +51,12 @@ static void copy_file(const char *from, const char *to, const char *find, const 
 Test(data_files, the_built_in_models_are_listed_in_order)
 {
     int count = mu_builtin_model_count();
-    cr_assert_eq(count, 4, "mu_builtin_model_count() is %d, expected 4", count);
+    cr_assert_eq(count, 5, "mu_builtin_model_count() is %d, expected 5", count);
     for (int i = 0; i < count; ++i) {
         cr_expect_str_eq(mu_builtin_model_name(i), expected_models[i]);
     }
     cr_expect_null(mu_builtin_model_name(count));
-    cr_expect(strstr(rb_last_error(), "index is 4, expected 0 to 3") != NULL, "%s", rb_last_error());
+    cr_expect(strstr(rb_last_error(), "index is 5, expected 0 to 4") != NULL, "%s", rb_last_error());
     cr_expect_null(mu_builtin_model_name(-1));
 }
 

@@ -264,10 +264,12 @@ Test(model_desc, arm_loads_as_models_md_gives_it)
     mu_model_desc_destroy(desc);
 }
 
-Test(model_desc, leg_loads_as_models_md_gives_it)
+/* The source's leg, hinges and substeps as the report has them;
+ * test_leg_ranges.c checks the built-in leg's anatomical ranges. */
+Test(model_desc, leg_unlimited_loads_as_models_md_gives_it)
 {
-    mu_model_desc *desc = load_builtin("leg");
-    cr_expect_str_eq(desc->name, "leg");
+    mu_model_desc *desc = load_builtin("leg-unlimited");
+    cr_expect_str_eq(desc->name, "leg-unlimited");
     expect_counts(desc, 2, 6, 4, 3, 4, 2, 5, 4);
     expect_seed_settings(desc, -0.30, 0.30);
     expect_hinges_closed(desc);
@@ -429,7 +431,10 @@ Test(model_desc, the_readme_example_loads)
     rb_status status = mu_model_desc_load(path, &desc);
     remove(path);
     cr_assert_eq(status, RB_OK, "%s", rb_last_error());
-    expect_counts(desc, 1, 3, 1, 1, 2, 1, 2, 3);
+    expect_counts(desc, 1, 3, 1, 1, 3, 1, 2, 3);
+    /* Calf: 0.3 MPa × 1e-5 m³ / (0.05 m · 2 µm / 2.5 µm). */
+    expect_near(desc->muscles[index_of(desc, MU_MODEL_MUSCLE, "Calf")].max_force, 3e5 * 1e-5 / 0.04, 1e-9,
+                "the force from the architecture");
     const mu_model_variant *strap_alone = &desc->variants[1];
     cr_expect_eq(strap_alone->bone_count, 2, "a variant that lists its bones");
     cr_expect_not(mu_model_variant_has_bone(strap_alone, index_of(desc, MU_MODEL_BONE, "Hook")));
@@ -580,7 +585,7 @@ static const bad_model bad_models[] = {
      "max_force_and_specific_tension.json:20:66: muscles[0].specific_tension: given with max_force, expected either "
      "max_force or rest_width with specific_tension"},
     {"missing_rest_width.json", "missing_rest_width.json:18:5: muscles[0]: missing key \"rest_width\", expected the "
-                                "belly's width at rest in m, or max_force"},
+                                "belly's width at rest in m, max_force or architecture"},
     {"negative_rest_width.json", "negative_rest_width.json:20:41: muscles[0].rest_width: -0.05 is out of range, "
                                  "expected the belly's width at rest in m (in [0.0001, 1])"},
     {"symmetry_out_of_range.json", "symmetry_out_of_range.json:20:59: muscles[0].symmetry: 1.5 is out of range, "
@@ -732,7 +737,7 @@ Test(model_desc, missing_and_unreadable_files_fail)
 
     cr_expect_eq(mu_model_desc_load_builtin("worm-of-doom", &desc), RB_ERR_INVALID_ARGUMENT, "no such model");
     cr_expect(strstr(rb_last_error(), "no built-in model is named \"worm-of-doom\", expected one of sample, arm, "
-                                      "leg, worm") != NULL,
+                                      "leg, leg-unlimited, worm") != NULL,
               "%s", rb_last_error());
     cr_expect_eq(mu_model_desc_load_builtin("../models/arm", &desc), RB_ERR_INVALID_ARGUMENT, "a path, not a name");
     cr_expect(strstr(rb_last_error(), "expected a built-in model's name") != NULL, "%s", rb_last_error());

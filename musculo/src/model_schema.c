@@ -12,6 +12,7 @@
 #include "mu/geometry_lengths.h"
 #include "mu/motor_pool.h"
 #include "mu/muscle.h"
+#include "mu/muscle_statics.h"
 #include "name_index.h"
 #include "rb/geometry.h"
 
@@ -384,17 +385,144 @@ static rb_status parse_path_point(mu_json_reader *reader, const json_t *object, 
                              "the point in the body's frame, in m", &point->point);
 }
 
-/* The muscle's force: max_force, or rest_width with specific_tension. */
+/* ---- a muscle's force from its architecture (Castanyer's report §2.2) ---- */
+
+/* m³: a muscle of a cubic millimetre to 100 litres (the largest human
+ * muscles hold under a litre), and m²: 0.01 mm² to 1000 cm². */
+static const mu_json_bounds muscle_volume = {1e-9, 0.1, false, false};
+static const mu_json_bounds cross_section = {1e-8, 0.1, false, false};
+/* Sarcomeres in series: 500 to 5 million are fibres of 1 mm to 10 m at
+ * the optimal 2 µm, the rest length's range. A measured sarcomere length
+ * of 1 to 5 µm: wide of the lengths at which the filaments still overlap
+ * and pull (about 1.3 to 4 µm). */
+static const mu_json_bounds sarcomere_count = {500.0, 5e6, false, false};
+static const mu_json_bounds sarcomere_length = {1e-6, 5e-6, false, false};
+
+/* max_force, rest_width and architecture: each alone gives the force. */
+static rb_status check_one_force(mu_json_reader *reader, const json_t *object, bool has_max_force,
+                                 bool has_architecture)
+{
+    const char *other = has_max_force                                   ? "max_force"
+                        : json_object_get(object, "rest_width") != NULL ? "rest_width"
+                                                                        : NULL;
+    if (has_architecture && other != NULL) {
+        mu_json_push_key(reader, "architecture");
+        return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                            "given with %s, expected one of max_force, rest_width or architecture to give the "
+                            "maximal force",
+                            other);
+    }
+    return RB_OK;
+}
+
+/* Fails at `key` of the current object, given where it does not belong. */
+static rb_status refuse_key(mu_json_reader *reader, const json_t *object, const char *key, const char *expected)
+{
+    if (json_object_get(object, key) == NULL) {
+        return RB_OK;
+    }
+    mu_json_push_key(reader, key);
+    return mu_json_fail(reader, MU_JSON_AT_VALUE, "%s", expected);
+}
+
+/* The architecture's inputs: volume with a fibre length (given, as
+ * sarcomeres, measured with its sarcomere length, or else the rest
+ * length), or the anatomical cross-section with the muscle's pennation
+ * angle. derive_muscle_force turns them into the force. */
+static rb_status parse_muscle_architecture(mu_json_reader *reader, const json_t *object,
+                                           mu_model_architecture *architecture)
+{
+    static const char *const keys[] = {"volume",     "anatomical_cross_section", "fibre_length",
+                                       "sarcomeres", "sarcomere_length",         NULL};
+    mu_json_push_key(reader, "architecture");
+    MU_JSON_TRY(mu_json_check_object(reader, object, keys));
+    architecture->given = true;
+    MU_JSON_TRY(mu_json_read_number(reader, object, "volume", MU_JSON_OPTIONAL, muscle_volume,
+                                    "the muscle's volume in m³", &architecture->volume));
+    MU_JSON_TRY(mu_json_read_number(reader, object, "anatomical_cross_section", MU_JSON_OPTIONAL, cross_section,
+                                    "the muscle's anatomical cross-section in m²",
+                                    &architecture->anatomical_cross_section));
+    if (architecture->volume == 0.0 && architecture->anatomical_cross_section == 0.0) {
+        return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                            "missing key \"volume\", expected the muscle's volume in m³ (PCSA = volume / fibre "
+                            "length) or its anatomical_cross_section in m² (PCSA = it / cos(pennation_angle))");
+    }
+    if (architecture->volume > 0.0) {
+        MU_JSON_TRY(refuse_key(reader, object, "anatomical_cross_section",
+                               "given with volume, expected one of volume (with a fibre length) or "
+                               "anatomical_cross_section (with the pennation angle)"));
+    } else {
+        const char *expected = "given with anatomical_cross_section, expected a fibre length only with volume";
+        MU_JSON_TRY(refuse_key(reader, object, "fibre_length", expected));
+        MU_JSON_TRY(refuse_key(reader, object, "sarcomeres", expected));
+        MU_JSON_TRY(refuse_key(reader, object, "sarcomere_length", expected));
+    }
+    MU_JSON_TRY(mu_json_read_number(reader, object, "fibre_length", MU_JSON_OPTIONAL, rest_length,
+                                    "the fibres' length in m", &architecture->measured_fibre_length));
+    MU_JSON_TRY(mu_json_read_number(reader, object, "sarcomeres", MU_JSON_OPTIONAL, sarcomere_count,
+                                    "the number of sarcomeres in series in a fibre", &architecture->sarcomeres));
+    MU_JSON_TRY(mu_json_read_number(reader, object, "sarcomere_length", MU_JSON_OPTIONAL, sarcomere_length,
+                                    "the sarcomere length measured with fibre_length, in m",
+                                    &architecture->sarcomere_length));
+    if (architecture->sarcomeres > 0.0) {
+        MU_JSON_TRY(refuse_key(reader, object, "fibre_length",
+                               "given with sarcomeres, expected one of fibre_length or sarcomeres"));
+    }
+    if (architecture->sarcomere_length > 0.0 && architecture->measured_fibre_length == 0.0) {
+        mu_json_push_key(reader, "sarcomere_length");
+        return mu_json_fail(reader, MU_JSON_AT_VALUE,
+                            "given without fibre_length, expected it with the fibre length it was measured in");
+    }
+    mu_json_pop(reader);
+    return RB_OK;
+}
+
+/* The force the architecture gives, Fmax = specific_tension · PCSA
+ * (muscle_statics.h), into max_force; after derive_muscle_lengths, since
+ * the fibre length may be the rest length, which tendon_fraction derives. */
+static rb_status derive_muscle_force(mu_json_reader *reader, mu_model_muscle *muscle)
+{
+    mu_model_architecture *architecture = &muscle->architecture;
+    if (!architecture->given) {
+        return RB_OK;
+    }
+    if (architecture->volume > 0.0) {
+        double fibre = muscle->rest_length;
+        if (architecture->sarcomeres > 0.0) {
+            fibre = mu_fibre_length_from_sarcomeres(architecture->sarcomeres);
+        } else if (architecture->sarcomere_length > 0.0) {
+            fibre = mu_fibre_length_normalized(architecture->measured_fibre_length, architecture->sarcomere_length);
+        } else if (architecture->measured_fibre_length > 0.0) {
+            fibre = architecture->measured_fibre_length;
+        }
+        architecture->fibre_length = fibre;
+        MU_JSON_TRY(check_derived(reader, "architecture", fibre, rest_length,
+                                  "the optimal fibre length PCSA divides the volume by, in m,"));
+        architecture->pcsa = mu_pcsa_from_volume(architecture->volume, fibre);
+    } else {
+        architecture->pcsa =
+            mu_pcsa_from_anatomical(architecture->anatomical_cross_section, muscle->pennation_angle / DEGREES);
+    }
+    muscle->max_force = mu_max_force_from_pcsa(architecture->pcsa, muscle->specific_tension);
+    return check_derived(reader, "architecture", muscle->max_force, max_force,
+                         "the maximal force specific_tension·PCSA in N");
+}
+
+/* The muscle's force: max_force, rest_width with specific_tension, or
+ * architecture with specific_tension (parse_muscle_architecture). */
 static rb_status parse_muscle_force(mu_json_reader *reader, const json_t *object, mu_model_muscle *muscle)
 {
     MU_JSON_TRY(mu_json_read_number(reader, object, "max_force", MU_JSON_OPTIONAL, max_force,
                                     "the maximal isometric force in N", &muscle->max_force));
     bool has_max_force = muscle->max_force > 0.0;
+    const json_t *architecture = json_object_get(object, "architecture");
+    MU_JSON_TRY(check_one_force(reader, object, has_max_force, architecture != NULL));
     MU_JSON_TRY(mu_json_read_number(reader, object, "rest_width", MU_JSON_OPTIONAL, rest_width,
                                     "the belly's width at rest in m", &muscle->rest_width));
-    if (!has_max_force && muscle->rest_width == 0.0) {
+    if (!has_max_force && architecture == NULL && muscle->rest_width == 0.0) {
         return mu_json_fail(reader, MU_JSON_AT_VALUE,
-                            "missing key \"rest_width\", expected the belly's width at rest in m, or max_force");
+                            "missing key \"rest_width\", expected the belly's width at rest in m, max_force or "
+                            "architecture");
     }
     muscle->specific_tension = DEFAULT_SPECIFIC_TENSION;
     MU_JSON_TRY(mu_json_read_number(reader, object, "specific_tension", MU_JSON_OPTIONAL, specific_tension,
@@ -406,6 +534,9 @@ static rb_status parse_muscle_force(mu_json_reader *reader, const json_t *object
     }
     if (has_max_force) {
         return RB_OK;
+    }
+    if (architecture != NULL) {
+        return parse_muscle_architecture(reader, architecture, &muscle->architecture);
     }
     /* The force mu_muscle_def derives: the circular cross-section times the tension. */
     const double force = RB_PI * muscle->rest_width * muscle->rest_width / 4.0 * muscle->specific_tension;
@@ -613,6 +744,7 @@ static rb_status parse_muscle(mu_json_reader *reader, const json_t *object, mu_m
                                        "rest_width",
                                        "specific_tension",
                                        "max_force",
+                                       "architecture",
                                        "max_velocity",
                                        "max_velocity_rest_lengths",
                                        "start_normalized_length",
@@ -651,6 +783,7 @@ static rb_status parse_muscle(mu_json_reader *reader, const json_t *object, mu_m
     }
     MU_JSON_TRY(parse_muscle_path(reader, object, desc, muscle));
     MU_JSON_TRY(derive_muscle_lengths(reader, desc, muscle));
+    MU_JSON_TRY(derive_muscle_force(reader, muscle));
     if (rest_lengths_per_second > 0.0) {
         muscle->max_velocity = rest_lengths_per_second * muscle->rest_length;
         return check_derived(reader, "max_velocity_rest_lengths", muscle->max_velocity, max_velocity,

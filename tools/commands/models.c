@@ -26,8 +26,9 @@ static const cli_command check_command = {
     .max_operands = 1,
     .operand = "model file",
     .about = "Validates the model file FILE (format: docs/model-format.md) and builds it in each\n"
-             "of its variants. Prints a one-line summary and exits 0, or prints what is wrong\n"
-             "and where (file:line:column, the JSON path, what was expected) and exits 1.\n",
+             "of its variants. Prints a one-line summary and each muscle's maximal force with\n"
+             "what gave it, and exits 0, or prints what is wrong and where (file:line:column,\n"
+             "the JSON path, what was expected) and exits 1.\n",
 };
 
 static const char *plural(int count) { return count == 1 ? "" : "s"; }
@@ -89,6 +90,49 @@ int cmd_models(int argc, char **argv)
     }
     printf("\nRun one with `sinew run MODEL [--variant NAME|N] [--weight KG]` (see `sinew run --help`).\n");
     return EXIT_SUCCESS;
+}
+
+/* Where a muscle's architecture took its fibre length from. */
+static void print_fibre_length(const mu_model_architecture *architecture)
+{
+    printf("fibre length %g m", architecture->fibre_length);
+    if (architecture->sarcomeres > 0.0) {
+        printf(" = %g sarcomeres × 2 µm", architecture->sarcomeres);
+    } else if (architecture->sarcomere_length > 0.0) {
+        printf(" = %g m measured × 2 µm / %g µm sarcomeres", architecture->measured_fibre_length,
+               architecture->sarcomere_length * 1e6);
+    } else if (architecture->measured_fibre_length == 0.0) {
+        printf(", the rest length");
+    }
+}
+
+/* Each muscle's maximal force and what gave it: max_force, the belly's
+ * width, or its architecture (docs/model-format.md). */
+static void print_forces(const mu_model_desc *desc)
+{
+    for (int m = 0; m < desc->muscle_count; ++m) {
+        const mu_model_muscle *muscle = &desc->muscles[m];
+        const mu_model_architecture *architecture = &muscle->architecture;
+        printf("  muscle \"%s\": Fmax ", muscle->name);
+        if (architecture->given) {
+            printf("%g N = specific tension %g N/m² × PCSA %g m²", muscle->max_force, muscle->specific_tension,
+                   architecture->pcsa);
+            if (architecture->volume > 0.0) {
+                printf("; PCSA = volume %g m³ / ", architecture->volume);
+                print_fibre_length(architecture);
+            } else {
+                printf("; PCSA = anatomical cross-section %g m² / cos(pennation %g°)",
+                       architecture->anatomical_cross_section, muscle->pennation_angle);
+            }
+        } else if (muscle->rest_width > 0.0 && muscle->max_force == 0.0) {
+            printf("%g N = specific tension %g N/m² × π·(rest_width %g m)²/4",
+                   RB_PI * muscle->rest_width * muscle->rest_width / 4.0 * muscle->specific_tension,
+                   muscle->specific_tension, muscle->rest_width);
+        } else {
+            printf("%g N, as given (max_force)", muscle->max_force);
+        }
+        printf("\n");
+    }
 }
 
 /* Prints the warning lines of `warnings` not in *printed yet, and adds
@@ -168,6 +212,7 @@ int cmd_check(int argc, char **argv)
         print_counts(desc);
         printf(", %d variant%s, %d weight choice%s\n", desc->variant_count, plural(desc->variant_count),
                desc->has_weight ? desc->weight.mass_count : 0, plural(desc->has_weight ? desc->weight.mass_count : 0));
+        print_forces(desc);
     }
     mu_model_desc_destroy(desc);
     return code;

@@ -130,7 +130,7 @@ static const cli_command command = {
     .max_operands = 1,
     .operand = "model",
     .about = "Runs a muscle model, writes a CSV of every frame and prints a summary.\n"
-             "MODEL is a built-in model (sample, arm, leg, worm; see `sinew models`) or a model file\n"
+             "MODEL is a built-in model (sample, arm, leg, leg-unlimited, worm; see `sinew models`) or a model file\n"
              "(a path containing '/' or ending in .json).\n",
     .options = options_table,
     .option_count = sizeof options_table / sizeof options_table[0],
@@ -235,7 +235,7 @@ static parse_result parse_arguments(int argc, char **argv, run_options *opts)
         return id == CLI_HELP ? PARSE_HELP : PARSE_ERROR;
     }
     if (opts->model == NULL) {
-        cli_usage_error(&command, "missing the model (sample, arm, leg, worm or a model file)");
+        cli_usage_error(&command, "missing the model (sample, arm, leg, leg-unlimited, worm or a model file)");
         return PARSE_ERROR;
     }
     if (opts->has_weight_kg && opts->weight_index >= 0) {

@@ -50,7 +50,7 @@ static const cli_command command = {
     .max_operands = 1,
     .operand = "model",
     .about = "Opens the interactive viewer (GTK 4) on a muscle model or an engine scene.\n"
-             "MODEL is a built-in model (sample, arm, leg, worm; default arm) or a model file.\n",
+             "MODEL is a built-in model (sample, arm, leg, leg-unlimited, worm; default arm) or a model file.\n",
     .options = options_table,
     .option_count = sizeof options_table / sizeof options_table[0],
     .notes = "Keys: space pulses the selected muscle or group (one frame at activation 1), P plays or\n"

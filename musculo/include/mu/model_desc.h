@@ -117,15 +117,37 @@ typedef struct mu_model_path_point {
     rb_vec2 point;     /**< m, in the body's frame, in [-100, 100]; apart from the previous point */
 } mu_model_path_point;
 
+/** A muscle's architecture, when the file derives its maximal force from
+ * it (Castanyer's report §2.2; muscle_statics.h): Fmax = specific_tension
+ * · PCSA, with PCSA = volume / fibre_length, or anatomical_cross_section /
+ * cos(pennation_angle). The inputs the file gives are kept (0 when not
+ * given) so that they can be shown; max_force holds the derived force. */
+typedef struct mu_model_architecture {
+    bool given;                      /**< whether the file gave "architecture" */
+    double volume;                   /**< m³ in [1e-9, 0.1], or 0 (then anatomical_cross_section) */
+    double anatomical_cross_section; /**< m² in [1e-8, 0.1], or 0 (then volume) */
+    double sarcomeres;               /**< in [500, 5e6] sarcomeres in series, or 0 when not given */
+    double measured_fibre_length;    /**< m in [0.001, 10], or 0 when not given */
+    double sarcomere_length;         /**< m in [1e-6, 5e-6], measured with the fibre length, or 0 */
+    /** m: the optimal fibre length PCSA divides by (volume only): sarcomeres
+     * · 2 µm, the measured fibre length normalized to 2 µm sarcomeres, the
+     * fibre length as given, or else the muscle's rest_length. */
+    double fibre_length;
+    double pcsa; /**< m²: the physiological cross-section derived */
+} mu_model_architecture;
+
 /** A Hill muscle (muscle.h); the fields map onto mu_muscle_def. */
 typedef struct mu_model_muscle {
     char *name;
     double rest_length; /**< m in [0.001, 10]: the fibres' optimal length */
-    /** Maximal isometric force: max_force when > 0, else the circular
-     * cross-section π·rest_width²/4 times specific_tension. */
-    double max_force;               /**< N in [0.001, 1e6], or 0 when not given */
-    double rest_width;              /**< m in [1e-4, 1], or 0 when not given (then max_force is given) */
-    double specific_tension;        /**< N/m² in [1e3, 1e7]; default 1.5e6; unused when max_force is given */
+    /** Maximal isometric force: max_force when > 0 (given, or derived from
+     * the architecture), else the circular cross-section π·rest_width²/4
+     * times specific_tension. */
+    double max_force;        /**< N in [0.001, 1e6], or 0 when not given */
+    double rest_width;       /**< m in [1e-4, 1], or 0 when not given (then max_force is given) */
+    double specific_tension; /**< N/m² in [1e3, 1e7]; default 1.5e6; unused when max_force is given */
+    /** When architecture.given, max_force above is derived from it. */
+    mu_model_architecture architecture;
     double max_velocity;            /**< m/s in [0.001, 100]; default 0.25 */
     double start_normalized_length; /**< in [0.5, 1.5]; default 1; unused when tendon_length >= 0 */
     double tendon_length;           /**< m in [0, 100], or -1 when not given (then from start_normalized_length) */
