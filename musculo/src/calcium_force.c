@@ -113,7 +113,9 @@ rb_status mu_calcium_force_step(mu_calcium_force_state *state, double h, const m
                                f, c, a, h);
     }
     const double tau_c = calcium_time(u, c, &params->times);
-    const double tau_a = force_time(c, a, &params->times);
+    /* The force stage's branch by the calcium halfway through the step:
+     * from c = a at rest the calcium is about to rise above a. */
+    const double tau_a = force_time(u + (c - u) * exp(-0.5 * h / tau_c), a, &params->times);
     const double next_c = u + (c - u) * exp(-h / tau_c);
     const double next_a = u + (a - u) * exp(-h / tau_a) + (c - u) * convolution(h, tau_c, tau_a);
     /* Both are convex combinations of values in [0, 1]; the clamp removes

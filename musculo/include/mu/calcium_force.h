@@ -28,8 +28,8 @@
  * twitch reaches about a quarter of it.
  *
  * Both stages are linear while their branches hold, so a step has a
- * closed form (mu_calcium_force_step); the branch is chosen at the start
- * of each step.
+ * closed form (mu_calcium_force_step); the branches are chosen at the
+ * start of each step.
  */
 #ifndef MU_CALCIUM_FORCE_H
 #define MU_CALCIUM_FORCE_H
@@ -89,8 +89,10 @@ typedef struct mu_calcium_force_state {
 MU_API int mu_calcium_force_derivative(double t, const double y[], double dydt[], void *params);
 
 /** Advances the state by h s (finite, >= 0) under the params' excitation,
- * exactly for the branches chosen at the start of the step: with
- * τ_c and τ_a so chosen and x = h·(1/τ_a - 1/τ_c),
+ * exactly for the branches chosen at the start of the step (the force
+ * stage's by the calcium halfway through it, so that from c = a the
+ * calcium's coming rise or fall decides): with τ_c and τ_a so chosen and
+ * x = h·(1/τ_a - 1/τ_c),
  *   c(h) = u + (c - u)·e^(-h/τ_c),
  *   a(h) = u + (a - u)·e^(-h/τ_a) + (c - u)·(h/τ_a)·e^(-h/τ_a)·(e^x - 1)/x,
  * the convolution of the calcium's exponential with the force stage's
