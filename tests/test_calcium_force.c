@@ -163,7 +163,7 @@ Test(calcium_force, invalid_arguments_are_refused_with_a_message)
     mu_calcium_force_state state = {0.0, 0.0};
     p.times.force_decay_time = -0.01;
     cr_expect_eq(mu_calcium_force_step(&state, 0.001, &p), RB_ERR_INVALID_ARGUMENT);
-    cr_expect(strstr(rb_last_error(), "force decay -0.01 s") != NULL, "%s", rb_last_error());
+    cr_expect(strstr(rb_last_error(), "force_decay_time -0.01 s") != NULL, "%s", rb_last_error());
     p = params_of(MU_FIBRE_FAST, 1.5);
     cr_expect_eq(mu_calcium_force_step(&state, 0.001, &p), RB_ERR_INVALID_ARGUMENT);
     cr_expect(strstr(rb_last_error(), "excitation is 1.5") != NULL, "%s", rb_last_error());
@@ -446,7 +446,7 @@ Test(calcium_force, a_muscle_def_with_a_bad_time_is_refused)
     mu_muscle *muscle = NULL;
     cr_expect_eq(mu_muscle_create(world, &def, &muscle), RB_ERR_INVALID_ARGUMENT);
     cr_expect_null(muscle);
-    cr_expect(strstr(rb_last_error(), "calcium rise 0 s") != NULL, "%s", rb_last_error());
+    cr_expect(strstr(rb_last_error(), "calcium_rise_time 0 s") != NULL, "%s", rb_last_error());
     mu_curves_destroy(curves);
     destroy_world_and_expect_no_leak(world);
 }

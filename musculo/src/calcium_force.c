@@ -20,6 +20,13 @@
 
 mu_calcium_force_times mu_calcium_force_times_of(mu_fibre_type type)
 {
+    if (type != MU_FIBRE_FAST && type != MU_FIBRE_SLOW) {
+        rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                        "mu_calcium_force_times_of: type is %d, expected MU_FIBRE_FAST (%d) "
+                        "or MU_FIBRE_SLOW (%d)",
+                        (int)type, (int)MU_FIBRE_FAST, (int)MU_FIBRE_SLOW);
+        return (mu_calcium_force_times){NAN, NAN, NAN, NAN};
+    }
     if (type == MU_FIBRE_SLOW) {
         return (mu_calcium_force_times){.calcium_rise_time = 0.002,
                                         .calcium_decay_time = 0.050,
@@ -45,8 +52,8 @@ static rb_status check_params(const mu_calcium_force_params *p, const char *func
     if (!(valid_time(t->calcium_rise_time) && valid_time(t->calcium_decay_time) && valid_time(t->force_rise_time) &&
           valid_time(t->force_decay_time))) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT,
-                               "%s: calcium rise %g s, calcium decay %g s, force rise %g s, force decay %g s, "
-                               "expected each finite and > 0",
+                               "%s: times: calcium_rise_time %g s, calcium_decay_time %g s, force_rise_time %g s, "
+                               "force_decay_time %g s, expected each finite and > 0",
                                function, t->calcium_rise_time, t->calcium_decay_time, t->force_rise_time,
                                t->force_decay_time);
     }

@@ -146,8 +146,8 @@ static rb_status check_def(const mu_muscle_def *def)
         for (int i = 0; i < 4; ++i) {
             if (!(times[i] > 0.0 && isfinite(times[i]))) {
                 return rb_report_error(RB_ERR_INVALID_ARGUMENT,
-                                       "%s: calcium_force: calcium rise %g s, calcium decay %g s, force rise %g s, "
-                                       "force decay %g s, expected each finite and > 0",
+                                       "%s: calcium_force: calcium_rise_time %g s, calcium_decay_time %g s, "
+                                       "force_rise_time %g s, force_decay_time %g s, expected each finite and > 0",
                                        f, times[0], times[1], times[2], times[3]);
             }
         }

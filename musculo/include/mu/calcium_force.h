@@ -68,7 +68,8 @@ typedef enum mu_fibre_type {
     MU_FIBRE_SLOW,
 } mu_fibre_type;
 
-/** The time constants of a fibre type; the fast set for any other value. */
+/** The time constants of a fibre type; NaN times (and an error) for any
+ * other value. */
 MU_API mu_calcium_force_times mu_calcium_force_times_of(mu_fibre_type type);
 
 typedef struct mu_calcium_force_params {
