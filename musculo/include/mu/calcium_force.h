@@ -54,11 +54,11 @@ typedef struct mu_calcium_force_times {
  * an action potential (Baylor and Hollingworth, "Sarcoplasmic reticulum
  * calcium release compared in slow-twitch and fast-twitch fibres of mouse
  * muscle", J Physiol 551, 2003, whose slow-twitch fibres' transients also
- * decay several times more slowly). The three slower constants are
- * chosen, slow three times fast as the contraction times of slow and fast
- * muscles differ (Close, "Dynamic properties of mammalian skeletal
- * muscles", Physiol Rev 52, 1972), so that an isometric twitch to a 2 ms
- * pulse falls within the published ranges: */
+ * decay more slowly). The three slower constants are chosen, not
+ * measured: slow three times fast, as the contraction times of slow and
+ * fast muscles differ (Close, "Dynamic properties of mammalian skeletal
+ * muscles", Physiol Rev 52, 1972), and such that an isometric twitch to a
+ * 2 ms pulse falls within the published ranges (docs/muscle.md): */
 typedef enum mu_fibre_type {
     /** calcium 2 ms / 16 ms, force 20 ms / 25 ms: P1's twitch peaks after
      * 18.7 ms (fast muscle: 10-50 ms), fuses at 80 Hz, tetanus 3.8 ×. */
