@@ -36,9 +36,10 @@ static const cli_option options_table[] = {
      .id = OPT_DYNAMICS,
      .kind = CLI_TEXT,
      .value_name = "NAME",
-     .help = "the muscle's activation dynamics, for p1: first_order (one lag,\n"
-             "Millard et al. 2013), or fast or slow: a calcium stage then a\n"
-             "force-generating stage, with the fast or the slow fibres' times",
+     .help = "the muscle's activation dynamics, for p1\n"
+             "first_order: one lag (Millard et al. 2013); fast or slow: a calcium\n"
+             "stage then a force-generating stage, with the fast or the slow\n"
+             "fibres' times",
      .fallback = "first_order"},
 };
 

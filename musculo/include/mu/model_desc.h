@@ -145,7 +145,7 @@ typedef struct mu_model_muscle {
     bool activation_dynamics;
     double activation_time;   /**< s in [1e-4, 10]; default 0.010 */
     double deactivation_time; /**< s in [1e-4, 10]; default 0.040 */
-    /** The dynamics' kind (muscle.h); calcium_force holds the two-stage
+    /** The dynamics' kind (activation.h); calcium_force holds the two-stage
      * dynamics' times, each s in [1e-4, 10], by default the fast set. */
     mu_activation_model activation_model;
     mu_calcium_force_times calcium_force;
