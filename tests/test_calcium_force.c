@@ -13,8 +13,9 @@
  *   contraction, fusion between 30 and 100 Hz, tetanic/twitch between 3
  *   and 5, each measured here from the CSV the command writes;
  * - model files: the dynamics are read and reach the built muscle; a
- *   negative or zero time, an unknown dynamics or fibre type, a time of
- *   the other dynamics are refused with file, line and JSON path;
+ *   negative, zero, too long or non-numeric time, an unknown dynamics or
+ *   fibre type, a time of the other dynamics are refused with file, line,
+ *   column and JSON path;
  * - the C API refuses invalid params, and P1 an unknown --dynamics.
  */
 #define _POSIX_C_SOURCE 200809L /* mkdtemp, mkstemp */
@@ -388,6 +389,12 @@ Test(calcium_force, bad_dynamics_in_a_model_file_name_the_json_path)
         {"{ \"model\": \"calcium_force\", \"calcium_decay_time\": 0 }", "0 }",
          "muscles[0].activation_dynamics.calcium_decay_time: 0 is out of range, expected the calcium stage's decay "
          "time constant in s (in [0.0001, 10])"},
+        {"{ \"model\": \"calcium_force\", \"force_decay_time\": 11 }", "11",
+         "muscles[0].activation_dynamics.force_decay_time: 11 is out of range, expected the force-generating stage's "
+         "decay time constant in s (in [0.0001, 10])"},
+        {"{ \"model\": \"calcium_force\", \"calcium_rise_time\": \"fast\" }", "\"fast\"",
+         "muscles[0].activation_dynamics.calcium_rise_time: found a string, expected the calcium stage's rise time "
+         "constant in s (in [0.0001, 10])"},
         {"{ \"model\": \"hatze\" }", "\"hatze\"",
          "muscles[0].activation_dynamics.model: \"hatze\" is no activation dynamics, expected the dynamics, "
          "\"first_order\" or \"calcium_force\""},
