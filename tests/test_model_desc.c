@@ -598,7 +598,8 @@ static const bad_model bad_models[] = {
      "expected the tendon's strain at the maximal isometric force (in [0.001, 1])"},
     {"activation_dynamics_unknown_key.json",
      "activation_dynamics_unknown_key.json:20:72: muscles[0].activation_dynamics.tau: unknown key \"tau\", expected "
-     "one of activation_time, deactivation_time (or comment)"},
+     "one of model, activation_time, deactivation_time, fibre_type, calcium_rise_time, calcium_decay_time, "
+     "force_rise_time, force_decay_time (or comment)"},
     {"pennation_out_of_range.json", "pennation_out_of_range.json:20:66: muscles[0].pennation_angle: 90 is out of "
                                     "range, expected the pennation angle at the optimal fibre length in degrees (in "
                                     "[0, 80])"},

@@ -23,6 +23,7 @@
 #include <string.h>
 
 #include "mu/activation.h"
+#include "mu/calcium_force.h"
 #include "mu/curves.h"
 #include "mu/geometry_lengths.h"
 #include "mu/model.h"
@@ -205,6 +206,54 @@ static void storm_activation(void)
     clear_error();
     cr_expect_neq(mu_activation_derivative(0.0, y, dydt, NULL), 0);
     expect_refused("mu_activation_derivative", "params", __LINE__);
+}
+
+static void storm_calcium_force(void)
+{
+    const mu_calcium_force_params good = {.excitation = 0.5, .times = mu_calcium_force_times_of(MU_FIBRE_FAST)};
+    clear_error();
+    mu_calcium_force_times none = mu_calcium_force_times_of((mu_fibre_type)99);
+    cr_expect(isnan(none.calcium_rise_time) && isnan(none.force_decay_time), "an unknown fibre type gives NaN times");
+    expect_refused("mu_calcium_force_times_of", "type", __LINE__);
+    static const char *const fields[4] = {"calcium_rise_time", "calcium_decay_time", "force_rise_time",
+                                          "force_decay_time"};
+    double bad;
+    FOR_BAD_DOUBLES(bad)
+    {
+        mu_calcium_force_params params = good;
+        params.excitation = bad;
+        mu_calcium_force_state state = {0.5, 0.5};
+        REFUSED_STATUS(mu_calcium_force_step(&state, 0.01, &params), "mu_calcium_force_step", "excitation");
+        for (int k = 0; k < 4; ++k) {
+            params = good;
+            double *times[4] = {&params.times.calcium_rise_time, &params.times.calcium_decay_time,
+                                &params.times.force_rise_time, &params.times.force_decay_time};
+            *times[k] = bad;
+            REFUSED_STATUS(mu_calcium_force_step(&state, 0.01, &params), "mu_calcium_force_step", fields[k]);
+        }
+        REFUSED_STATUS(mu_calcium_force_step(&state, bad, &good), "mu_calcium_force_step", "h");
+        state.calcium = bad;
+        REFUSED_STATUS(mu_calcium_force_step(&state, 0.01, &good), "mu_calcium_force_step", "calcium");
+        state = (mu_calcium_force_state){0.5, bad};
+        REFUSED_STATUS(mu_calcium_force_step(&state, 0.01, &good), "mu_calcium_force_step", "activation");
+        double y[2] = {0.5, bad}, dydt[2];
+        clear_error();
+        cr_expect_neq(mu_calcium_force_derivative(0.0, y, dydt, (void *)&good), 0);
+        expect_refused("mu_calcium_force_derivative", "y", __LINE__);
+    }
+    mu_calcium_force_state state = {0.5, 0.5};
+    REFUSED_STATUS(mu_calcium_force_step(NULL, 0.01, &good), "mu_calcium_force_step", "state");
+    REFUSED_STATUS(mu_calcium_force_step(&state, 0.01, NULL), "mu_calcium_force_step", "params");
+    double y[2] = {0.5, 0.5}, dydt[2];
+    clear_error();
+    cr_expect_neq(mu_calcium_force_derivative(0.0, NULL, dydt, (void *)&good), 0);
+    expect_refused("mu_calcium_force_derivative", "y", __LINE__);
+    clear_error();
+    cr_expect_neq(mu_calcium_force_derivative(0.0, y, NULL, (void *)&good), 0);
+    expect_refused("mu_calcium_force_derivative", "dydt", __LINE__);
+    clear_error();
+    cr_expect_neq(mu_calcium_force_derivative(0.0, y, dydt, NULL), 0);
+    expect_refused("mu_calcium_force_derivative", "params", __LINE__);
 }
 
 static void storm_curves_create(void)
@@ -716,6 +765,7 @@ static const api_storm storms[] = {
      "mu_default_torque_actuator_def mu_builtin_model_count mu_version",
      storm_no_arguments},
     {"mu_activation_time_constant mu_activation_derivative mu_activation_step", storm_activation},
+    {"mu_calcium_force_times_of mu_calcium_force_derivative mu_calcium_force_step", storm_calcium_force},
     {"mu_curves_create_tabulated mu_curves_create_seed_tables mu_curves_create_analytic mu_curves_destroy",
      storm_curves_create},
     {"mu_curve_active_length mu_curve_passive_length mu_curve_velocity mu_curve_velocity_slope "

@@ -37,5 +37,5 @@ bool mu_refuse_non_finite(const char *function, const char *name, double value)
 
 mu_muscle_readout mu_nan_readout(void)
 {
-    return (mu_muscle_readout){NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN};
+    return (mu_muscle_readout){NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN};
 }

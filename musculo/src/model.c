@@ -437,6 +437,8 @@ static rb_status build_muscles(mu_model *model)
         def.activation_dynamics = muscle->activation_dynamics;
         def.activation_time = muscle->activation_time;
         def.deactivation_time = muscle->deactivation_time;
+        def.activation_model = muscle->activation_model;
+        def.calcium_force = muscle->calcium_force;
         def.compliant_tendon = muscle->compliant_tendon;
         def.tendon_strain_at_max_force = muscle->tendon_strain_at_max_force;
         def.fibre_damping = muscle->fibre_damping;

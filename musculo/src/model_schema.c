@@ -612,6 +612,92 @@ static rb_status parse_muscle_size(mu_json_reader *reader, const json_t *object,
                                rest_length, "the fibres' rest (optimal) length in m", &muscle->rest_length);
 }
 
+/* activation_dynamics: {"model": "first_order", "activation_time": ...,
+ * "deactivation_time": ...} (the default model), or {"model":
+ * "calcium_force", "fibre_type": "fast" or "slow", and any of the four
+ * times to override the set's} (mu/calcium_force.h). A time of the other
+ * model is refused rather than ignored. */
+static const char *const first_order_keys[] = {"activation_time", "deactivation_time", NULL};
+static const char *const calcium_force_keys[] = {"fibre_type",      "calcium_rise_time", "calcium_decay_time",
+                                                 "force_rise_time", "force_decay_time",  NULL};
+
+/* Fails at the first key of `keys` the object has: it belongs to `other`. */
+static rb_status refuse_keys_of(mu_json_reader *reader, const json_t *dynamics, const char *const *keys,
+                                const char *model, const char *other)
+{
+    for (int k = 0; keys[k] != NULL; ++k) {
+        if (json_object_get(dynamics, keys[k]) != NULL) {
+            mu_json_push_key(reader, keys[k]);
+            return mu_json_fail(reader, MU_JSON_AT_KEY,
+                                "belongs to the %s dynamics, expected \"model\": \"%s\" or "
+                                "the keys of the %s dynamics",
+                                other, other, model);
+        }
+    }
+    return RB_OK;
+}
+
+static rb_status parse_calcium_force(mu_json_reader *reader, const json_t *dynamics, mu_model_muscle *muscle)
+{
+    const char *type = "fast";
+    const char *type_what = "the fibre type, \"fast\" or \"slow\"";
+    MU_JSON_TRY(mu_json_read_string(reader, dynamics, "fibre_type", MU_JSON_OPTIONAL, type_what, &type));
+    if (strcmp(type, "fast") != 0 && strcmp(type, "slow") != 0) {
+        mu_json_push_key(reader, "fibre_type");
+        return mu_json_fail(reader, MU_JSON_AT_VALUE, "\"%s\" is no fibre type, expected %s", type, type_what);
+    }
+    mu_calcium_force_times *t = &muscle->calcium_force;
+    *t = mu_calcium_force_times_of(strcmp(type, "slow") == 0 ? MU_FIBRE_SLOW : MU_FIBRE_FAST);
+    double *const times[] = {&t->calcium_rise_time, &t->calcium_decay_time, &t->force_rise_time, &t->force_decay_time};
+    static const char *const whats[] = {"the calcium stage's rise time constant in s",
+                                        "the calcium stage's decay time constant in s",
+                                        "the force-generating stage's rise time constant in s",
+                                        "the force-generating stage's decay time constant in s"};
+    for (int k = 0; k < 4; ++k) {
+        MU_JSON_TRY(mu_json_read_number(reader, dynamics, calcium_force_keys[k + 1], MU_JSON_OPTIONAL, time_constant,
+                                        whats[k], times[k]));
+    }
+    return refuse_keys_of(reader, dynamics, first_order_keys, "calcium_force", "first_order");
+}
+
+static rb_status parse_activation_dynamics(mu_json_reader *reader, const json_t *object, mu_model_muscle *muscle)
+{
+    const mu_muscle_def defaults = mu_default_muscle_def();
+    muscle->activation_time = defaults.activation_time;
+    muscle->deactivation_time = defaults.deactivation_time;
+    muscle->activation_model = MU_ACTIVATION_FIRST_ORDER;
+    muscle->calcium_force = defaults.calcium_force;
+    const json_t *dynamics = json_object_get(object, "activation_dynamics");
+    if (dynamics == NULL) {
+        return RB_OK;
+    }
+    static const char *const keys[] = {"model",           "activation_time",   "deactivation_time",
+                                       "fibre_type",      "calcium_rise_time", "calcium_decay_time",
+                                       "force_rise_time", "force_decay_time",  NULL};
+    mu_json_push_key(reader, "activation_dynamics");
+    MU_JSON_TRY(mu_json_check_object(reader, dynamics, keys));
+    const char *model = "first_order";
+    const char *model_what = "the dynamics, \"first_order\" or \"calcium_force\"";
+    MU_JSON_TRY(mu_json_read_string(reader, dynamics, "model", MU_JSON_OPTIONAL, model_what, &model));
+    if (strcmp(model, "calcium_force") == 0) {
+        muscle->activation_model = MU_ACTIVATION_CALCIUM_FORCE;
+        MU_JSON_TRY(parse_calcium_force(reader, dynamics, muscle));
+    } else if (strcmp(model, "first_order") == 0) {
+        MU_JSON_TRY(mu_json_read_number(reader, dynamics, "activation_time", MU_JSON_OPTIONAL, time_constant,
+                                        "the activation time constant in s", &muscle->activation_time));
+        MU_JSON_TRY(mu_json_read_number(reader, dynamics, "deactivation_time", MU_JSON_OPTIONAL, time_constant,
+                                        "the deactivation time constant in s", &muscle->deactivation_time));
+        MU_JSON_TRY(refuse_keys_of(reader, dynamics, calcium_force_keys, "first_order", "calcium_force"));
+    } else {
+        mu_json_push_key(reader, "model");
+        return mu_json_fail(reader, MU_JSON_AT_VALUE, "\"%s\" is no activation dynamics, expected %s", model,
+                            model_what);
+    }
+    mu_json_pop(reader);
+    muscle->activation_dynamics = true;
+    return RB_OK;
+}
+
 /* The options beyond the original muscle: pennation, activation dynamics
  * and a compliant tendon, each an object of its parameters. */
 static rb_status parse_muscle_physiology(mu_json_reader *reader, const json_t *object, mu_model_muscle *muscle)
@@ -620,21 +706,8 @@ static rb_status parse_muscle_physiology(mu_json_reader *reader, const json_t *o
     MU_JSON_TRY(mu_json_read_number(reader, object, "pennation_angle", MU_JSON_OPTIONAL, angle,
                                     "the pennation angle at the optimal fibre length in degrees",
                                     &muscle->pennation_angle));
+    MU_JSON_TRY(parse_activation_dynamics(reader, object, muscle));
     const mu_muscle_def defaults = mu_default_muscle_def();
-    muscle->activation_time = defaults.activation_time;
-    muscle->deactivation_time = defaults.deactivation_time;
-    const json_t *dynamics = json_object_get(object, "activation_dynamics");
-    if (dynamics != NULL) {
-        static const char *const keys[] = {"activation_time", "deactivation_time", NULL};
-        mu_json_push_key(reader, "activation_dynamics");
-        MU_JSON_TRY(mu_json_check_object(reader, dynamics, keys));
-        MU_JSON_TRY(mu_json_read_number(reader, dynamics, "activation_time", MU_JSON_OPTIONAL, time_constant,
-                                        "the activation time constant in s", &muscle->activation_time));
-        MU_JSON_TRY(mu_json_read_number(reader, dynamics, "deactivation_time", MU_JSON_OPTIONAL, time_constant,
-                                        "the deactivation time constant in s", &muscle->deactivation_time));
-        mu_json_pop(reader);
-        muscle->activation_dynamics = true;
-    }
     muscle->tendon_strain_at_max_force = defaults.tendon_strain_at_max_force;
     muscle->fibre_damping = defaults.fibre_damping;
     const json_t *tendon = json_object_get(object, "compliant_tendon");

@@ -49,7 +49,10 @@ struct mu_muscle {
     double activation;
     double excitation;
     bool activation_dynamics;
+    mu_activation_model activation_model;
     mu_activation_params activation_params;
+    mu_calcium_force_params calcium_force_params;
+    double calcium; /* the two-stage dynamics' calcium stage */
     bool compliant;
     mu_fibre_tendon unit;         /* the compliant tendon's fibre-tendon pair */
     double fibre_length;          /* m: the compliant fibre's state */
@@ -71,6 +74,7 @@ mu_muscle_def mu_default_muscle_def(void)
         .tension_gain = 0.08,
         .activation_time = 0.010,
         .deactivation_time = 0.040,
+        .calcium_force = mu_calcium_force_times_of(MU_FIBRE_FAST),
         .tendon_strain_at_max_force = MU_DEFAULT_TENDON_STRAIN_AT_MAX_FORCE,
         .fibre_damping = 0.1,
     };
@@ -130,6 +134,24 @@ static rb_status check_def(const mu_muscle_def *def)
                                "%s: activation_time %g s and deactivation_time %g s, expected both finite and > 0", f,
                                def->activation_time, def->deactivation_time);
     }
+    if (def->activation_dynamics && def->activation_model != MU_ACTIVATION_FIRST_ORDER &&
+        def->activation_model != MU_ACTIVATION_CALCIUM_FORCE) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: activation_model is %d, expected %d or %d", f,
+                               (int)def->activation_model, (int)MU_ACTIVATION_FIRST_ORDER,
+                               (int)MU_ACTIVATION_CALCIUM_FORCE);
+    }
+    if (def->activation_dynamics && def->activation_model == MU_ACTIVATION_CALCIUM_FORCE) {
+        const mu_calcium_force_times *t = &def->calcium_force;
+        const double times[4] = {t->calcium_rise_time, t->calcium_decay_time, t->force_rise_time, t->force_decay_time};
+        for (int i = 0; i < 4; ++i) {
+            if (!(times[i] > 0.0 && isfinite(times[i]))) {
+                return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                                       "%s: calcium_force: calcium_rise_time %g s, calcium_decay_time %g s, "
+                                       "force_rise_time %g s, force_decay_time %g s, expected each finite and > 0",
+                                       f, times[0], times[1], times[2], times[3]);
+            }
+        }
+    }
     if (def->compliant_tendon && !(def->tendon_strain_at_max_force > 0.0 && def->tendon_strain_at_max_force <= 1.0 &&
                                    def->fibre_damping > 0.0 && isfinite(def->fibre_damping))) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT,
@@ -186,6 +208,7 @@ static void fill_readout(mu_muscle *muscle, double path, double fibre_length, do
         .fibre_length = fibre_length,
         .tendon_length = tendon,
         .pennation_angle = muscle->width > 0.0 ? mu_pennation_angle(fibre_length, muscle->width) : 0.0,
+        .calcium = muscle->activation_model == MU_ACTIVATION_CALCIUM_FORCE ? muscle->calcium : muscle->activation,
     };
 }
 
@@ -264,6 +287,8 @@ rb_status mu_muscle_create(rb_world *world, const mu_muscle_def *def, mu_muscle 
     muscle->target_tension = -1.0;
     muscle->width = def->pennation_angle > 0.0 ? mu_pennation_width(def->rest_length, def->pennation_angle) : 0.0;
     muscle->activation_dynamics = def->activation_dynamics;
+    muscle->activation_model = def->activation_dynamics ? def->activation_model : MU_ACTIVATION_FIRST_ORDER;
+    muscle->calcium_force_params = (mu_calcium_force_params){.excitation = 0.0, .times = def->calcium_force};
     muscle->activation_params = (mu_activation_params){
         .excitation = 0.0,
         .activation_time = def->activation_time,
@@ -374,6 +399,23 @@ static void prepare_rigid(mu_muscle *muscle, double path, double speed)
     muscle->base_tension = active + passive - muscle->damping * speed;
 }
 
+/* The activation dynamics over h under the present excitation. */
+static void advance_activation(mu_muscle *muscle, double h)
+{
+    if (muscle->activation_model == MU_ACTIVATION_CALCIUM_FORCE) {
+        mu_calcium_force_state state = {.calcium = muscle->calcium, .activation = muscle->activation};
+        muscle->calcium_force_params.excitation = muscle->excitation;
+        /* Cannot fail: checked times, an excitation clamped to [0, 1], a
+         * state the step keeps in [0, 1] and h > 0 checked by the caller. */
+        (void)mu_calcium_force_step(&state, h, &muscle->calcium_force_params);
+        muscle->calcium = state.calcium;
+        muscle->activation = state.activation;
+        return;
+    }
+    muscle->activation_params.excitation = muscle->excitation;
+    muscle->activation = mu_activation_step(muscle->activation, h, &muscle->activation_params);
+}
+
 /* mu_muscle_prepare at the path's length and lengthening speed now. */
 static rb_status prepare_at(mu_muscle *muscle, rb_world *world, double h, double path, double speed)
 {
@@ -381,8 +423,7 @@ static rb_status prepare_at(mu_muscle *muscle, rb_world *world, double h, double
         control_tension(muscle);
     }
     if (muscle->activation_dynamics) {
-        muscle->activation_params.excitation = muscle->excitation;
-        muscle->activation = mu_activation_step(muscle->activation, h, &muscle->activation_params);
+        advance_activation(muscle, h);
     }
     if (muscle->compliant) {
         muscle->step = mu_fibre_tendon_solve(&muscle->unit, muscle->fibre_length, muscle->activation, path + h * speed,

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* `sinew experiment NAME [--out DIR] [--pulse-width S]`: runs one of the
+/* `sinew experiment NAME [--out DIR] [--pulse-width S] [--dynamics NAME]`: runs one of the
  * experiments (experiment.h) and writes DIR/STEM.csv, .png, .svg.
  */
 #include <errno.h>
@@ -12,7 +12,7 @@
 #include "commands.h"
 #include "experiments/experiment.h"
 
-enum { OPT_OUT, OPT_PULSE_WIDTH };
+enum { OPT_OUT, OPT_PULSE_WIDTH, OPT_DYNAMICS };
 
 static const cli_option options_table[] = {
     {.name = "out",
@@ -32,6 +32,15 @@ static const cli_option options_table[] = {
      .min = 0.0,
      .max = EXPERIMENT_MAX_PULSE_WIDTH,
      .min_open = true},
+    {.name = "dynamics",
+     .id = OPT_DYNAMICS,
+     .kind = CLI_TEXT,
+     .value_name = "NAME",
+     .help = "the muscle's activation dynamics, for p1\n"
+             "first_order: one lag (Millard et al. 2013); fast or slow: a calcium\n"
+             "stage then a force-generating stage, with the fast or the slow\n"
+             "fibres' times",
+     .fallback = "first_order"},
 };
 
 static const cli_command command = {
@@ -85,9 +94,19 @@ static int name_experiments(const char *name)
     return cli_usage_error(&command, "missing the experiment's name (%s)", names);
 }
 
+static bool known_dynamics(const char *name)
+{
+    for (int k = 0; experiment_dynamics_names[k] != NULL; ++k) {
+        if (strcmp(experiment_dynamics_names[k], name) == 0) {
+            return true;
+        }
+    }
+    return false;
+}
+
 int cmd_experiment(int argc, char **argv)
 {
-    experiment_options options = {.out_dir = ".", .pulse_width = 0.0};
+    experiment_options options = {.out_dir = ".", .pulse_width = 0.0, .dynamics = NULL};
     cli_parser parser;
     cli_parser_start(&parser, &command, argc, argv);
     cli_value value;
@@ -95,6 +114,8 @@ int cmd_experiment(int argc, char **argv)
     while ((id = cli_next(&parser, &value)) >= 0) {
         if (id == OPT_OUT) {
             options.out_dir = value.text;
+        } else if (id == OPT_DYNAMICS) {
+            options.dynamics = value.text;
         } else {
             options.pulse_width = value.number;
         }
@@ -118,6 +139,15 @@ int cmd_experiment(int argc, char **argv)
                                    chosen->name, chosen->max_pulse_width);
         }
         return cli_usage_error(&command, "--pulse-width: %s gives no pulses", chosen->name);
+    }
+    if (options.dynamics != NULL) {
+        if (!chosen->takes_dynamics) {
+            return cli_usage_error(&command, "--dynamics: %s takes its muscles' dynamics from its model", chosen->name);
+        }
+        if (!known_dynamics(options.dynamics)) {
+            return cli_usage_error(&command, "--dynamics \"%s\": unknown, expected first_order, fast or slow",
+                                   options.dynamics);
+        }
     }
     struct stat info;
     if (stat(options.out_dir, &info) != 0) {

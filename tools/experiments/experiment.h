@@ -13,6 +13,7 @@
 #ifndef SINEW_EXPERIMENT_H
 #define SINEW_EXPERIMENT_H
 
+#include <stdbool.h>
 #include <stddef.h>
 
 #include "chart/chart.h"
@@ -24,7 +25,16 @@ typedef struct experiment_options {
      * least one); 0 when not given, for each experiment's own: one frame
      * of the model for E1 and E4 (the original program's space bar), 2 ms for P1. */
     double pulse_width;
+    /* The muscle's activation dynamics, for the experiments that take
+     * them (P1): NULL for the experiment's own (P1: first order, Millard
+     * et al. 2013), else one of experiment_dynamics_names. */
+    const char *dynamics;
 } experiment_options;
+
+/* --dynamics: "first_order" (mu/activation.h), "fast" and "slow" (the
+ * two-stage calcium-force dynamics of mu/calcium_force.h with the fast or
+ * the slow fibres' times); NULL-terminated. */
+extern const char *const experiment_dynamics_names[];
 
 /* Longest pulse width accepted, s; P1 takes pulses up to its own
  * maximum, since a longer stimulus gives no twitch. */
@@ -40,6 +50,8 @@ typedef struct experiment {
     /* Runs the experiment, writes its files and prints its figures;
      * returns the exit status, after one line on stderr on failure. */
     int (*run)(const struct experiment *self, const experiment_options *options);
+    /* Whether it takes --dynamics. */
+    bool takes_dynamics;
 } experiment;
 
 extern const experiment experiment_list[];

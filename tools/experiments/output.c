@@ -26,8 +26,9 @@ static bool part_path(const experiment *self, const experiment_options *options,
 static bool write_table(const experiment *self, const experiment_options *options, const csv_table *table,
                         const char *csv, char *error, size_t error_size)
 {
-    json_t *settings = json_pack("{s:s, s:s, s:o}", "experiment", self->name, "stem", self->stem, "pulse_width_s",
-                                 options->pulse_width > 0.0 ? json_real(options->pulse_width) : json_null());
+    json_t *settings = json_pack("{s:s, s:s, s:o, s:s?}", "experiment", self->name, "stem", self->stem, "pulse_width_s",
+                                 options->pulse_width > 0.0 ? json_real(options->pulse_width) : json_null(), "dynamics",
+                                 options->dynamics);
     if (settings == NULL) {
         snprintf(error, error_size, "out of memory");
         return false;

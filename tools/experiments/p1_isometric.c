@@ -28,9 +28,18 @@ static rb_status create_curves(mu_model_curve_set set, mu_curves **out)
     return mu_curves_create_seed_tables(MU_INTERPOLATION_LINEAR, out);
 }
 
-int p1_muscle_load(p1_muscle *muscle)
+int p1_muscle_load(p1_muscle *muscle, const char *dynamics)
 {
-    *muscle = (p1_muscle){.name = P1_MUSCLE};
+    *muscle = (p1_muscle){.name = P1_MUSCLE, .dynamics = MU_ACTIVATION_FIRST_ORDER};
+    if (dynamics != NULL && strcmp(dynamics, "first_order") != 0) {
+        const bool slow = strcmp(dynamics, "slow") == 0;
+        if (!slow && strcmp(dynamics, "fast") != 0) {
+            fprintf(stderr, "sinew: P1: unknown dynamics \"%s\", expected first_order, fast or slow\n", dynamics);
+            return EXIT_FAILURE;
+        }
+        muscle->dynamics = MU_ACTIVATION_CALCIUM_FORCE;
+        muscle->calcium_force = mu_calcium_force_times_of(slow ? MU_FIBRE_SLOW : MU_FIBRE_FAST);
+    }
     experiment_model arm;
     int code = experiment_model_open(&arm, "arm", "All Muscles", 1.0);
     int built = code == 0 ? experiment_model_muscle(&arm, P1_MUSCLE) : -1;
@@ -93,6 +102,8 @@ static int create_rig(const p1_muscle *muscle, p1_tendon tendon, rb_world **worl
     def.tendon_length = muscle->tendon_length;
     def.curves = muscle->curves;
     def.activation_dynamics = true;
+    def.activation_model = muscle->dynamics;
+    def.calcium_force = muscle->calcium_force;
     def.compliant_tendon = tendon == P1_TENDON_COMPLIANT;
     if (mu_muscle_create(*world, &def, out) != RB_OK) {
         return engine_failure("creating the muscle");
@@ -114,14 +125,15 @@ static double excitation_at(const p1_train *train, long substep)
 int p1_run_train(const p1_muscle *muscle, p1_tendon tendon, const p1_train *train, p1_trace *trace)
 {
     *trace = (p1_trace){.count = 0};
-    double *values = calloc(3 * (size_t)train->substeps, sizeof *values);
+    double *values = calloc(4 * (size_t)train->substeps, sizeof *values);
     if (values == NULL) {
         fputs("sinew: P1: out of memory\n", stderr);
         return EXIT_FAILURE;
     }
     trace->excitation = values;
-    trace->activation = values + train->substeps;
-    trace->developed_force = values + 2 * train->substeps;
+    trace->calcium = values + train->substeps;
+    trace->activation = values + 2 * train->substeps;
+    trace->developed_force = values + 3 * train->substeps;
     rb_world *world = NULL;
     mu_muscle *rig = NULL;
     int code = create_rig(muscle, tendon, &world, &rig);
@@ -135,6 +147,7 @@ int p1_run_train(const p1_muscle *muscle, p1_tendon tendon, const p1_train *trai
         mu_muscle_readout r = mu_muscle_read(rig);
         trace->rest_force = k == train->lead - 1 ? r.total_force : trace->rest_force;
         trace->excitation[k] = r.excitation;
+        trace->calcium[k] = r.calcium;
         trace->activation[k] = r.activation;
         trace->developed_force[k] = r.total_force;
         trace->count = k + 1;

@@ -1,9 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /* P1's isometric muscle (docs/muscle-experiments.md, P1): the arm's Biceps Long, the
  * muscle E1 plots, taken out of the arm and held between two static
- * bodies with its belly at rest length, activation dynamics on (mu/
- * activation.h: Millard et al. 2013, τ_act 10 ms, τ_deact 40 ms), driven
- * by excitation pulses of whole substeps.
+ * bodies with its belly at rest length, activation dynamics on, driven
+ * by excitation pulses of whole substeps. The dynamics are first order by
+ * default (mu/activation.h: Millard et al. 2013, τ_act 10 ms, τ_deact
+ * 40 ms), or the two stages of mu/calcium_force.h, calcium then force,
+ * with the fast or the slow fibres' times.
  *
  * Two tendons, each the real muscle code (mu/muscle.h):
  * - rigid, as the arm builds it: the fibre cannot move, so the force is
@@ -16,6 +18,8 @@
 #ifndef SINEW_EXPERIMENT_P1_ISOMETRIC_H
 #define SINEW_EXPERIMENT_P1_ISOMETRIC_H
 
+#include "mu/activation.h"
+#include "mu/calcium_force.h"
 #include "mu/curves.h"
 
 /* 6 kHz, ten times the models' 600 Hz: 2 ms and the period of every
@@ -31,11 +35,14 @@ typedef struct p1_muscle {
     double max_velocity;  /* m/s */
     double tendon_length; /* m, the arm's rigid tendon; the compliant one's slack length */
     mu_curves *curves;    /* the arm's set, owned */
+    mu_activation_model dynamics;
+    mu_calcium_force_times calcium_force; /* the two stages' times, when those are the dynamics */
 } p1_muscle;
 
-/* Reads Biceps Long from the arm as the arm builds it. Returns 0, or
- * EXIT_FAILURE after one line on stderr. */
-int p1_muscle_load(p1_muscle *muscle);
+/* Reads Biceps Long from the arm as the arm builds it, with the named
+ * dynamics: NULL or "first_order", "fast" or "slow" (experiment.h).
+ * Returns 0, or EXIT_FAILURE after one line on stderr. */
+int p1_muscle_load(p1_muscle *muscle, const char *dynamics);
 /* Accepts a muscle that failed to load. */
 void p1_muscle_free(p1_muscle *muscle);
 
@@ -53,8 +60,8 @@ typedef struct p1_train {
  * physiologist's isometric recording reads it. */
 typedef struct p1_trace {
     long count;
-    double rest_force; /* N, the tension at the end of the lead */
-    double *excitation, *activation, *developed_force;
+    double rest_force;                                           /* N, the tension at the end of the lead */
+    double *excitation, *calcium, *activation, *developed_force; /* calcium: the readout's (mu/muscle.h) */
 } p1_trace;
 
 /* Runs the train on a fresh world holding the muscle with the given

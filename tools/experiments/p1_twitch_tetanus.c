@@ -16,12 +16,16 @@
  *   to 200 Hz (the rates at which isolated muscles are tetanised for
  *   their maximal force), over the twitch's peak.
  *
+ * The muscle's activation dynamics are first order unless --dynamics
+ * asks for the two stages of mu/calcium_force.h (p1_isometric.h).
+ *
  * Files: STEM.csv, the first 0.5 s of the twitch and of three trains;
  * STEM_sweep.csv, the sweep; one figure of both.
  */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "experiment.h"
 #include "p1_isometric.h"
@@ -107,9 +111,10 @@ static train_measure measure_train(const p1_trace *trace, long first)
 /* Column indices of STEM.csv. */
 enum {
     COL_TIME,
-    COL_EXCITATION,                        /* + 2·run */
-    COL_ACTIVATION,                        /* + 2·run */
-    COL_FORCE = COL_EXCITATION + 2 * RUNS, /* + tendon·RUNS + run */
+    COL_EXCITATION,                        /* + 3·run */
+    COL_CALCIUM,                           /* + 3·run */
+    COL_ACTIVATION,                        /* + 3·run */
+    COL_FORCE = COL_EXCITATION + 3 * RUNS, /* + tendon·RUNS + run */
     TRACE_COLUMNS = COL_FORCE + P1_TENDON_COUNT * RUNS,
 };
 /* Column indices of STEM_sweep.csv: the rate, then per tendon these. */
@@ -136,8 +141,9 @@ static int init_trace_table(csv_table *table)
     char names[TRACE_COLUMNS][NAME_SIZE];
     snprintf(names[COL_TIME], NAME_SIZE, "time_s");
     for (int r = 0; r < RUNS; ++r) {
-        snprintf(names[COL_EXCITATION + 2 * r], NAME_SIZE, "%s.excitation", run_names[r]);
-        snprintf(names[COL_ACTIVATION + 2 * r], NAME_SIZE, "%s.activation", run_names[r]);
+        snprintf(names[COL_EXCITATION + 3 * r], NAME_SIZE, "%s.excitation", run_names[r]);
+        snprintf(names[COL_CALCIUM + 3 * r], NAME_SIZE, "%s.calcium", run_names[r]);
+        snprintf(names[COL_ACTIVATION + 3 * r], NAME_SIZE, "%s.activation", run_names[r]);
         for (int t = 0; t < P1_TENDON_COUNT; ++t) {
             snprintf(names[COL_FORCE + t * RUNS + r], NAME_SIZE, "%s.%s.developed_force_N", tendon_names[t],
                      run_names[r]);
@@ -170,8 +176,9 @@ static void copy_run(csv_table *table, int run, p1_tendon tendon, const p1_trace
 {
     for (long k = 0; k < table->row_count && k < trace->count; ++k) {
         if (tendon == P1_TENDON_RIGID) {
-            table->columns[COL_EXCITATION + 2 * run].values[k] = trace->excitation[k];
-            table->columns[COL_ACTIVATION + 2 * run].values[k] = trace->activation[k];
+            table->columns[COL_EXCITATION + 3 * run].values[k] = trace->excitation[k];
+            table->columns[COL_CALCIUM + 3 * run].values[k] = trace->calcium[k];
+            table->columns[COL_ACTIVATION + 3 * run].values[k] = trace->activation[k];
         }
         table->columns[COL_FORCE + tendon * RUNS + run].values[k] = trace->developed_force[k];
     }
@@ -278,10 +285,21 @@ static int fill_sweep(const p1_results *results, csv_table *table)
     return 0;
 }
 
-static int draw(const experiment *self, const experiment_options *options, const p1_results *results,
-                const csv_table *traces, const csv_table *sweep)
+/* The dynamics in a few words, for the figure and stdout. */
+static const char *dynamics_label(const p1_muscle *muscle)
 {
-    chart_series twitch_force[P1_TENDON_COUNT], twitch_drive[2], trains[P1_TENDON_COUNT][SHOWN_TRAINS];
+    if (muscle->dynamics == MU_ACTIVATION_FIRST_ORDER) {
+        return "first-order activation";
+    }
+    mu_calcium_force_times fast = mu_calcium_force_times_of(MU_FIBRE_FAST);
+    return memcmp(&muscle->calcium_force, &fast, sizeof fast) == 0 ? "calcium-force, fast fibres"
+                                                                   : "calcium-force, slow fibres";
+}
+
+static int draw(const experiment *self, const experiment_options *options, const p1_muscle *muscle,
+                const p1_results *results, const csv_table *traces, const csv_table *sweep)
+{
+    chart_series twitch_force[P1_TENDON_COUNT], twitch_drive[3], trains[P1_TENDON_COUNT][SHOWN_TRAINS];
     chart_series ripple[P1_TENDON_COUNT + 1], ratio[P1_TENDON_COUNT];
     for (int t = 0; t < P1_TENDON_COUNT; ++t) {
         twitch_force[t] = experiment_series(traces, COL_TIME, COL_FORCE + t * RUNS, 0, tendon_labels[t]);
@@ -294,22 +312,25 @@ static int draw(const experiment *self, const experiment_options *options, const
     }
     twitch_drive[0] = experiment_series(traces, COL_TIME, COL_EXCITATION, 0, "excitation");
     twitch_drive[1] = experiment_series(traces, COL_TIME, COL_ACTIVATION, 0, "activation");
+    twitch_drive[2] = experiment_series(traces, COL_TIME, COL_CALCIUM, 0, "calcium");
+    const bool two_stage = muscle->dynamics == MU_ACTIVATION_CALCIUM_FORCE;
     static const double fusion_x[2] = {0.0, 400.0}, fusion_y[2] = {FUSION_RIPPLE, FUSION_RIPPLE};
     ripple[P1_TENDON_COUNT] = (chart_series){.label = "fusion: 5 %", .x = fusion_x, .y = fusion_y, .count = 2};
     char title[128];
-    snprintf(title, sizeof title, "P1 twitch: Biceps Long held isometric, one pulse of %.1f ms",
-             1e3 * (double)results->width * P1_SUBSTEP);
+    snprintf(title, sizeof title, "P1 twitch: Biceps Long held isometric, one pulse of %.1f ms, %s",
+             1e3 * (double)results->width * P1_SUBSTEP, dynamics_label(muscle));
     chart charts[6] = {
         {.title = title,
          .x_label = "time from the onset (s)",
          .y_label = "developed force (N)",
          .series = twitch_force,
          .series_count = P1_TENDON_COUNT},
-        {.title = "the twitch's excitation and activation (either tendon)",
+        {.title = two_stage ? "the twitch's excitation, calcium and activation (either tendon)"
+                            : "the twitch's excitation and activation (either tendon)",
          .x_label = "time from the onset (s)",
-         .y_label = "excitation, activation",
+         .y_label = two_stage ? "excitation, calcium, activation" : "excitation, activation",
          .series = twitch_drive,
-         .series_count = 2},
+         .series_count = two_stage ? 3 : 2},
         {.title = "trains, rigid tendon",
          .x_label = "time from the onset (s)",
          .y_label = "developed force (N)",
@@ -342,9 +363,16 @@ static void print_results(const p1_muscle *muscle, const p1_results *results)
     printf("muscle       %s of the arm, isometric at its rest length %.4f m: Fmax %.1f N, Vmax %.3f m/s, "
            "tendon %.4f m\n",
            muscle->name, muscle->rest_length, muscle->max_force, muscle->max_velocity, muscle->tendon_length);
-    printf("pulses       excitation 1 for %.1f ms (%ld substeps of 1/6000 s); activation dynamics tau_act 10 ms, "
-           "tau_deact 40 ms\n",
+    printf("pulses       excitation 1 for %.1f ms (%ld substeps of 1/6000 s)\n",
            1e3 * (double)results->width * P1_SUBSTEP, results->width);
+    if (muscle->dynamics == MU_ACTIVATION_FIRST_ORDER) {
+        printf("dynamics     first-order activation (Millard et al. 2013): tau_act 10 ms, tau_deact 40 ms\n");
+    } else {
+        const mu_calcium_force_times *t = &muscle->calcium_force;
+        printf("dynamics     %s: calcium rise %g ms, decay %g ms; force rise %g ms, decay %g ms\n",
+               dynamics_label(muscle), 1e3 * t->calcium_rise_time, 1e3 * t->calcium_decay_time,
+               1e3 * t->force_rise_time, 1e3 * t->force_decay_time);
+    }
     printf("%-17s %11s %13s %17s %15s %25s\n", "", "twitch peak", "time to peak", "half-relaxation", "fusion (< 5 %)",
            "tetanic / twitch");
     for (int t = 0; t < P1_TENDON_COUNT; ++t) {
@@ -374,7 +402,7 @@ int experiment_p1_twitch_tetanus(const experiment *self, const experiment_option
     results.width = results.width < 1 ? 1 : results.width;
     p1_muscle muscle;
     csv_table traces = {.columns = NULL}, sweep = {.columns = NULL};
-    int code = p1_muscle_load(&muscle);
+    int code = p1_muscle_load(&muscle, options->dynamics);
     code = code == 0 ? init_trace_table(&traces) : code;
     code = code == 0 ? fill_trace_rows(&traces, results.lead) : code;
     code = code == 0 ? init_sweep_table(&sweep) : code;
@@ -382,7 +410,7 @@ int experiment_p1_twitch_tetanus(const experiment *self, const experiment_option
         code = run_tendon(&muscle, (p1_tendon)t, &results, &traces);
     }
     code = code == 0 ? fill_sweep(&results, &sweep) : code;
-    code = code == 0 ? draw(self, options, &results, &traces, &sweep) : code;
+    code = code == 0 ? draw(self, options, &muscle, &results, &traces, &sweep) : code;
     if (code == 0) {
         print_results(&muscle, &results);
     }

@@ -26,6 +26,12 @@
 extern "C" {
 #endif
 
+/** The activation dynamics a muscle follows when they are on. */
+typedef enum mu_activation_model {
+    MU_ACTIVATION_FIRST_ORDER,   /**< activation.h: one first-order lag (the default) */
+    MU_ACTIVATION_CALCIUM_FORCE, /**< calcium_force.h: a calcium stage, then the force-generating state */
+} mu_activation_model;
+
 typedef struct mu_activation_params {
     double excitation;        /**< u, in [0, 1]: held constant over a step */
     double activation_time;   /**< τ_act, s, > 0; default 0.010 */

@@ -21,6 +21,8 @@
 
 #include <stdbool.h>
 
+#include "mu/activation.h"
+#include "mu/calcium_force.h"
 #include "mu/export.h"
 #include "rb/base.h"
 #include "rb/cable.h"
@@ -165,6 +167,10 @@ typedef struct mu_model_muscle {
     bool activation_dynamics;
     double activation_time;   /**< s in [1e-4, 10]; default 0.010 */
     double deactivation_time; /**< s in [1e-4, 10]; default 0.040 */
+    /** The dynamics' kind (activation.h); calcium_force holds the two-stage
+     * dynamics' times, each s in [1e-4, 10], by default the fast set. */
+    mu_activation_model activation_model;
+    mu_calcium_force_times calcium_force;
     /** A compliant tendon (tendon.h): off by default (rigid). Its slack
      * length, tendon_length or the one derived at build, is > 0: checked
      * at load against the path's length at the start pose. */

@@ -6,6 +6,7 @@
 #define MU_MU_H
 
 #include "mu/activation.h"
+#include "mu/calcium_force.h"
 #include "mu/curves.h"
 #include "mu/geometry_lengths.h"
 #include "mu/model.h"

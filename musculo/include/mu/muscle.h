@@ -11,8 +11,10 @@
  * tendon (its length fixed at creation, so the belly's velocity is the
  * path's) and fibres along the line of action. Three options, each per
  * muscle, go beyond it:
- * - activation dynamics (activation.h): the controls set the excitation,
- *   and the activation follows it with a first-order delay;
+ * - activation dynamics: the controls set the excitation, and the
+ *   activation follows it with a first-order delay (activation.h) or
+ *   through a calcium stage and a force-generating stage
+ *   (calcium_force.h);
  * - pennation (pennation.h): fibres at an angle that rises as they
  *   shorten, their force projected on the tendon;
  * - a compliant tendon (tendon.h): a series spring, the fibre length a
@@ -40,6 +42,7 @@
 #include <stdbool.h>
 
 #include "mu/activation.h"
+#include "mu/calcium_force.h"
 #include "mu/curves.h"
 #include "mu/export.h"
 #include "mu/pennation.h"
@@ -79,6 +82,10 @@ typedef struct mu_muscle_def {
     bool activation_dynamics;
     double activation_time;   /**< τ_act, s, > 0; default 0.010 */
     double deactivation_time; /**< τ_deact, s, > 0; default 0.040 */
+    /** Which dynamics; the two time constants above belong to the first
+     * order's, calcium_force to the two stages'. */
+    mu_activation_model activation_model;
+    mu_calcium_force_times calcium_force; /**< each s, > 0; default the fast set */
     /** A compliant tendon: off by default (rigid). On, tendon_length (or the
      * length derived from start_normalized_length) is the tendon's slack
      * length, which must be > 0, and the fibre starts in static
@@ -108,6 +115,9 @@ typedef struct mu_muscle_readout {
     double fibre_length;           /**< m */
     double tendon_length;          /**< m */
     double pennation_angle;        /**< rad, 0 .. MU_MAX_PENNATION_ANGLE */
+    /** 0 .. 1: the calcium stage of the two-stage dynamics; the activation
+     * itself under the others, whose one state lumps both stages. */
+    double calcium;
 } mu_muscle_readout;
 
 MU_API rb_status mu_muscle_create(rb_world *world, const mu_muscle_def *def, mu_muscle **out);
