@@ -34,8 +34,14 @@ Test(worm, loads_as_models_md_gives_it)
     cr_assert_eq(mu_model_torque_muscle_count(model), 1);
     const mu_motor_pool *pool = mu_model_motor_pool(model, 0);
     cr_expect_eq(mu_motor_pool_neuron_count(pool), 200);
-    expect_near(mu_motor_pool_strength(pool, 0), 1.0, 1e-12, "weakest");
-    expect_near(mu_motor_pool_strength(pool, 199), 100.0, 1e-9, "strongest");
+    /* Its profile image (models/worm-pool.png) draws the strengths 1 .. 100
+     * as 2.55 .. 255 (255 − blue), to half a 16-bit step. */
+    expect_near(mu_motor_pool_strength(pool, 0), 2.55, 0.5 / 257.0, "weakest");
+    expect_near(mu_motor_pool_strength(pool, 199), 255.0, 0.0, "strongest");
+    for (int i = 1; i < 200; ++i) {
+        expect_near(mu_motor_pool_strength(pool, i) / mu_motor_pool_strength(pool, i - 1), pow(100.0, 1.0 / 199.0),
+                    2e-3, "equal ratios between neighbours");
+    }
     cr_expect_eq(mu_motor_pool_recruited(pool), 0);
     mu_model_destroy(model);
     mu_model_desc_destroy(desc);

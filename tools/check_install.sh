@@ -18,7 +18,7 @@
 #   4. checks that the shared libraries export only the public API: every
 #      dynamic symbol of librb.so starts with rb_, of libmu.so with mu_, and
 #      each is declared RB_API/MU_API in an installed header (and the other
-#      way round);
+#      way round); and that libmu needs libpng, not Cairo;
 #   5. compiles every installed public header alone as C17 and as C++17, with
 #      gcc, g++, clang and clang++, warnings as errors;
 #   6. builds the examples of docs/examples with sinew as a subproject
@@ -131,6 +131,12 @@ check "libmu.so exports exactly the MU_API functions" exports_match mu mu_ MU_AP
 check "librb.so and libmu.so carry their soname" \
     bash -c "readelf -d '$shared_prefix/lib/librb.so' | grep -q 'SONAME.*librb.so.0.2' &&
              readelf -d '$shared_prefix/lib/libmu.so' | grep -q 'SONAME.*libmu.so.0.2'"
+# The muscle layer reads profile images with libpng; the drawing library
+# (Cairo) is the tools' alone.
+check "libmu.so needs libpng and not Cairo" \
+    bash -c "readelf -d '$shared_prefix/lib/libmu.so' | grep -q 'NEEDED.*libpng' &&
+             ! readelf -d '$shared_prefix/lib/libmu.so' | grep -q 'NEEDED.*cairo' &&
+             ! grep -q cairo '$shared_prefix/lib/pkgconfig/sinew-mu.pc'"
 
 # ---- 5. Each public header compiles alone as C17 and C++17 -----------------
 headers_compile()
