@@ -235,7 +235,7 @@ Test(profile_image, a_model_files_bad_image_names_the_file_the_path_and_the_imag
     const unsigned two_high[] = {255, 0, 0, 255, 0, 0, 255, 0, 0, 255, 0, 0};
     write_test_png(image, &(test_png){2, 2, PNG_COLOR_TYPE_RGB, 8, two_high, NULL, 0, false});
     write_model(model_path, "{\"image\": \"tall.png\"}");
-    char where[160];
+    char where[400];
     snprintf(where, sizeof where, "%s:5:46: torque_muscles[0].motor_pool.image: %s: the image is 2 × 2 pixels",
              model_path, image);
     expect_model_refused(model_path, (const char *const[]){where, "expected 1 pixel high", NULL});
