@@ -252,6 +252,20 @@ Test(profile_image, a_model_files_bad_image_names_the_file_the_path_and_the_imag
                                                            "PNG file",
                                                            NULL});
 
+    /* A device or a folder could feed a reader without end: only regular
+     * files are read. */
+    write_model(model_path, "{\"csv\": \"/dev/zero\"}");
+    expect_model_refused(model_path, (const char *const[]){"torque_muscles[0].motor_pool.csv: /dev/zero: cannot read: "
+                                                           "not a regular file",
+                                                           NULL});
+    write_model(model_path, "{\"image\": \".\"}");
+    expect_model_refused(model_path,
+                         (const char *const[]){"motor_pool.image", "/.: cannot read: not a regular file", NULL});
+    mu_motor_pool *pool = NULL;
+    cr_expect_eq(mu_motor_pool_load_csv("/dev/zero", &pool), RB_ERR_INVALID_ARGUMENT);
+    cr_expect(strstr(rb_last_error(), "mu_motor_pool_load_csv: /dev/zero: cannot read: not a regular file") != NULL,
+              "%s", rb_last_error());
+
     write_model(model_path, "{\"image\": \"tall.png\", \"neurons\": 3}");
     expect_model_refused(model_path, (const char *const[]){"torque_muscles[0].motor_pool.neurons: \"neurons\" beside "
                                                            "\"image\", expected one form of motor pool",

@@ -690,7 +690,11 @@ static rb_status open_pool_file(mu_json_reader *reader, const char *key, const c
             return mu_json_fail(reader, MU_JSON_AT_VALUE, "the path of \"%s\" is too long, expected under %zu bytes",
                                 name, label_size);
         }
-        *out = fopen(label, "rb");
+        char problem[MU_POOL_PROBLEM_SIZE];
+        *out = mu_pool_profile_open(label, problem, sizeof problem);
+        if (*out == NULL) {
+            return mu_json_fail(reader, MU_JSON_AT_VALUE, "%s: %s, expected %s", label, problem, what);
+        }
     }
     if (*out == NULL) {
         return mu_json_fail(reader, MU_JSON_AT_VALUE, "%s: cannot open: %s, expected %s", label, strerror(errno), what);

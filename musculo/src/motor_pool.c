@@ -118,14 +118,14 @@ static rb_status load_profile(const char *f, const char *path, bool image, mu_mo
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: path and out must not be NULL", f);
     }
     *out = NULL;
-    FILE *file = fopen(path, image ? "rb" : "r");
+    char problem[MU_POOL_PROBLEM_SIZE];
+    FILE *file = mu_pool_profile_open(path, problem, sizeof problem);
     if (file == NULL) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s: cannot open: %s, expected %s", f, path,
-                               strerror(errno), image ? "a PNG profile image" : "a CSV of strengths");
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s: %s, expected %s", f, path, problem,
+                               image ? "a PNG profile image" : "a CSV of strengths");
     }
     double *strengths = NULL;
     int count = 0;
-    char problem[MU_POOL_PROBLEM_SIZE];
     const bool read = image ? mu_pool_profile_read_png(file, &strengths, &count, problem, sizeof problem)
                             : mu_pool_profile_read_csv(file, path, &strengths, &count, problem, sizeof problem);
     fclose(file);

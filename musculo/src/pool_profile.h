@@ -22,6 +22,11 @@
 /* Bytes of a problem: a CSV problem holds a path and a field. */
 #define MU_POOL_PROBLEM_SIZE 4608
 
+/* Opens the regular file `path` for reading; NULL, with the problem said
+ * ("cannot open: No such file or directory", "cannot read: not a regular
+ * file"), otherwise. */
+FILE *mu_pool_profile_open(const char *path, char *problem, size_t problem_size);
+
 /* McIntyre's profile image (mu/motor_pool.h gives the rule): a PNG 1
  * pixel high; each pixel's strength is 255 − blue, on the scale red >=
  * green = blue; opaque. Read with libpng. */
