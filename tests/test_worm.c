@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* The worm of McIntyre's "Simulated Muscles": its file loads as described,
  * and its torque muscle turns the top segment only when neurons are
- * recruited, by the torque its exertion gives.
+ * recruited, by the torque its exertion gives; a wrong name is answered
+ * with the right ones.
  */
 #include <criterion/criterion.h>
 #include <math.h>
@@ -95,6 +96,28 @@ Test(worm, bad_recruit_calls_are_errors)
     cr_expect_eq(mu_model_recruit(model, "Torque Muscle", 500), RB_ERR_INVALID_ARGUMENT);
     cr_expect(strstr(rb_last_error(), "500") != NULL && strstr(rb_last_error(), "200") != NULL, "%s", rb_last_error());
     cr_expect_eq(mu_motor_pool_recruited(mu_model_motor_pool(model, 0)), 0, "refused, not clamped to the pool");
+    mu_model_destroy(model);
+    mu_model_desc_destroy(desc);
+}
+
+Test(worm, an_unknown_torque_muscle_is_answered_with_the_names_built)
+{
+    mu_model_desc *desc = NULL;
+    mu_model *model = build_worm(&desc);
+    cr_expect_eq(mu_model_recruit(model, "Torque", 10), RB_ERR_INVALID_ARGUMENT);
+    cr_expect_str_eq(rb_last_error(),
+                     "mu_model_recruit: no torque muscle named \"Torque\" is built in this model, expected \"Torque "
+                     "Muscle\"");
+    cr_expect_eq(mu_motor_pool_recruited(mu_model_motor_pool(model, 0)), 0, "nothing recruited");
+    cr_expect_eq(mu_model_recruit(model, "Torque Muscle", 201), RB_ERR_INVALID_ARGUMENT);
+    cr_expect(strstr(rb_last_error(), "neurons") != NULL, "%s", rb_last_error());
+    mu_model_destroy(model);
+    /* Below level 3 no torque muscle is built: the message says so. */
+    mu_model_options options = mu_default_model_options();
+    options.level = 2;
+    cr_assert_eq(mu_model_create(desc, &options, &model), RB_OK, "%s", rb_last_error());
+    cr_expect_eq(mu_model_recruit(model, "Torque Muscle", 10), RB_ERR_INVALID_ARGUMENT);
+    cr_expect(strstr(rb_last_error(), "this model builds no torque muscle") != NULL, "%s", rb_last_error());
     mu_model_destroy(model);
     mu_model_desc_destroy(desc);
 }

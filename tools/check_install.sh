@@ -14,7 +14,8 @@
 #   3. deletes that copy of the sources and its build tree, moves the shared
 #      install to a third prefix, and checks that nothing installed names
 #      the deleted folders; then runs, from the moved prefix, `sinew
-#      --version`, `sinew run arm` and `sinew experiment c1`;
+#      --version`, `sinew run arm`, `sinew experiment c1` and the installed
+#      worm with its profile image (share/sinew, through SINEW_DATA_DIR);
 #   4. checks that the shared libraries export only the public API: every
 #      dynamic symbol of librb.so starts with rb_, of libmu.so with mu_, and
 #      each is declared RB_API/MU_API in an installed header (and the other
@@ -104,9 +105,13 @@ run_moved()
         env -u SINEW_DATA_DIR "$shared_prefix/bin/sinew" run arm --duration 1 --out "$out" &&
         test -s "$out/arm.csv" &&
         env -u SINEW_DATA_DIR "$shared_prefix/bin/sinew" experiment c1 --out "$out" &&
-        test -s "$out/c1_hill_curves.csv" && test -s "$out/c1_hill_curves.png"
+        test -s "$out/c1_hill_curves.csv" && test -s "$out/c1_hill_curves.png" &&
+        # The installed worm names its profile image beside it, in share/sinew.
+        env -u SINEW_DATA_DIR "$shared_prefix/bin/sinew" check "$shared_prefix/share/sinew/worm.json" &&
+        SINEW_DATA_DIR="$shared_prefix/share/sinew" "$shared_prefix/bin/sinew" run worm --duration 0.1 \
+            --recruit "Torque Muscle=100" --out "$out" && grep -q 'Torque Muscle.exertion' "$out/worm.csv"
 )
-check "the moved install runs sinew --version, run arm and experiment c1" run_moved
+check "the moved install runs sinew --version, run arm, experiment c1 and its share/sinew worm" run_moved
 
 # ---- 4. Only the public API leaves the shared libraries --------------------
 exports_match()
