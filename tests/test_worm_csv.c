@@ -3,7 +3,8 @@
  * muscle's CSV columns against McIntyre's exertion formula computed here
  * (exertion = sum of the first n strengths / sum of all, the torque that
  * share of the peak), its name in `sinew models` and `sinew run --help`,
- * a wrong name answered with the right one, and its runs unchanged by the
+ * a wrong name answered with the right one, `sinew check` reading the
+ * image its file names, and its runs unchanged by the
  * move of its pool into a profile image.
  */
 #define _POSIX_C_SOURCE 200809L /* mkdtemp */
@@ -199,5 +200,32 @@ Test(worm_csv, the_image_leaves_the_worms_runs_as_they_were)
         free(was);
         free(is);
     }
+    cr_expect_eq(rmdir(dir), 0);
+}
+
+Test(worm_csv, sinew_check_reads_the_image_a_model_names)
+{
+    char dir[] = "/tmp/sinew-worm-XXXXXX";
+    cr_assert_not_null(mkdtemp(dir));
+    /* The worm's own file and image, copied: valid; the image removed: the
+     * error names the model file, the JSON path and the image. */
+    char command[512], output[8192], args[256];
+    snprintf(command, sizeof command, "cp '%s/models/worm.json' '%s/models/worm-pool.png' '%s'", SINEW_SOURCE_DIR,
+             SINEW_SOURCE_DIR, dir);
+    cr_assert_eq(system(command), 0);
+    snprintf(args, sizeof args, "check '%s/worm.json'", dir);
+    cr_expect_eq(run_sinew(args, output, sizeof output), 0, "%s", output);
+    cr_expect(strstr(output, "valid model \"worm\"") != NULL && strstr(output, "1 torque muscle") != NULL, "%s",
+              output);
+    char image[96];
+    snprintf(image, sizeof image, "%s/worm-pool.png", dir);
+    cr_assert_eq(remove(image), 0);
+    cr_expect_eq(run_sinew(args, output, sizeof output), 1, "%s", output);
+    char expected[256];
+    snprintf(expected, sizeof expected,
+             "sinew: %s/worm.json:22:32: torque_muscles[0].motor_pool.image: %s: cannot open", dir, image);
+    cr_expect(strstr(output, expected) != NULL, "expected \"%s\" in: %s", expected, output);
+    snprintf(image, sizeof image, "%s/worm.json", dir);
+    remove(image);
     cr_expect_eq(rmdir(dir), 0);
 }
