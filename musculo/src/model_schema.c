@@ -682,6 +682,10 @@ static rb_status open_pool_file(mu_json_reader *reader, const char *key, const c
         }
         /* fmemopen takes a non-const buffer; in mode "r" it never writes it. */
         *out = fmemopen((void *)file->data, file->size, "r");
+        if (*out == NULL) {
+            return mu_json_fail(reader, MU_JSON_AT_VALUE, "%s: cannot open: %s, expected %s", label, strerror(errno),
+                                what);
+        }
     } else {
         const bool absolute = name[0] == '/';
         const int written =
@@ -695,9 +699,6 @@ static rb_status open_pool_file(mu_json_reader *reader, const char *key, const c
         if (*out == NULL) {
             return mu_json_fail(reader, MU_JSON_AT_VALUE, "%s: %s, expected %s", label, problem, what);
         }
-    }
-    if (*out == NULL) {
-        return mu_json_fail(reader, MU_JSON_AT_VALUE, "%s: cannot open: %s, expected %s", label, strerror(errno), what);
     }
     return RB_OK;
 }
