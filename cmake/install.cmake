@@ -6,7 +6,8 @@
 #                                       the targets sinew::rb and sinew::mu
 #   P/lib/pkgconfig/sinew-rb.pc, sinew-mu.pc
 #   P/bin/sinew, sinew-view             the programs (tools/CMakeLists.txt)
-#   P/share/sinew/                      the built-in models, the curve tables
+#   P/share/sinew/                      the built-in models (and the worm's
+#                                       profile image), the curve tables
 #                                       and the control files (libmu has its own
 #                                       copies compiled in; these are to read,
 #                                       copy and change, with SINEW_DATA_DIR)
@@ -30,7 +31,7 @@ install(EXPORT sinewTargets
         COMPONENT development)
 
 # sinewConfig.cmake: a static libmu.a needs its private dependencies (GSL,
-# jansson, Cairo) at the consumer's link, found with pkg-config.
+# jansson, libpng) at the consumer's link, found with pkg-config.
 set(SINEW_SHARED_LIBRARIES ${BUILD_SHARED_LIBS})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/sinewConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/sinewConfig.cmake
@@ -58,7 +59,7 @@ endforeach()
 
 install(FILES ${PROJECT_SOURCE_DIR}/models/sample.json ${PROJECT_SOURCE_DIR}/models/arm.json
               ${PROJECT_SOURCE_DIR}/models/leg.json ${PROJECT_SOURCE_DIR}/models/leg-unlimited.json
-              ${PROJECT_SOURCE_DIR}/models/worm.json
+              ${PROJECT_SOURCE_DIR}/models/worm.json ${PROJECT_SOURCE_DIR}/models/worm-pool.png
               ${PROJECT_SOURCE_DIR}/models/data/hill-curves.csv
         DESTINATION ${CMAKE_INSTALL_DATADIR}/sinew
         COMPONENT runtime)

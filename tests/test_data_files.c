@@ -77,6 +77,17 @@ Test(data_files, each_built_in_model_is_its_file_in_the_repository)
         for (int m = 0; m < built_in->muscle_count && m < from_file->muscle_count; ++m) {
             cr_expect_str_eq(built_in->muscles[m].name, from_file->muscles[m].name);
         }
+        /* A torque muscle's pool, read from the image built in beside the
+         * model or from the one beside its file: the same strengths. */
+        cr_expect_eq(built_in->torque_muscle_count, from_file->torque_muscle_count);
+        for (int t = 0; t < built_in->torque_muscle_count && t < from_file->torque_muscle_count; ++t) {
+            const mu_model_torque_muscle *a = &built_in->torque_muscles[t], *b = &from_file->torque_muscles[t];
+            cr_expect_eq(a->pool_source, b->pool_source);
+            cr_assert_eq(a->neurons, b->neurons);
+            for (int n = 0; a->strengths != NULL && n < a->neurons; ++n) {
+                cr_expect_eq(a->strengths[n], b->strengths[n], "%s neuron %d", expected_models[i], n);
+            }
+        }
         mu_model_desc_destroy(built_in);
         mu_model_desc_destroy(from_file);
     }
@@ -150,6 +161,35 @@ Test(data_files, sinew_data_dir_replaces_the_built_in_files)
     mu_curves_destroy(copied);
     mu_curves_destroy(original);
     unlink(arm);
+    rmdir(folder);
+}
+
+Test(data_files, sinew_data_dir_holds_the_worms_image_too)
+{
+    char folder[64];
+    make_folder(folder, sizeof folder);
+    char worm[128], image[128];
+    snprintf(worm, sizeof worm, "%s/worm.json", folder);
+    snprintf(image, sizeof image, "%s/worm-pool.png", folder);
+    copy_file(SINEW_SOURCE_DIR "/models/worm.json", worm, "\"name\": \"worm\"", "\"name\": \"worm from elsewhere\"");
+    cr_assert_eq(setenv("SINEW_DATA_DIR", folder, 1), 0);
+    /* The model there names its image there, not the built-in one. */
+    mu_model_desc *desc = NULL;
+    cr_expect_eq(mu_model_desc_load_builtin("worm", &desc), RB_ERR_INVALID_ARGUMENT);
+    cr_expect_null(desc);
+    cr_expect(strstr(rb_last_error(), "torque_muscles[0].motor_pool.image") != NULL &&
+                  strstr(rb_last_error(), "/worm-pool.png: cannot open") != NULL,
+              "%s", rb_last_error());
+    char command[512];
+    snprintf(command, sizeof command, "cp '%s/models/worm-pool.png' '%s'", SINEW_SOURCE_DIR, image);
+    cr_assert_eq(system(command), 0);
+    cr_assert_eq(mu_model_desc_load_builtin("worm", &desc), RB_OK, "%s", rb_last_error());
+    cr_expect_str_eq(desc->name, "worm from elsewhere");
+    cr_expect_str_eq(desc->torque_muscles[0].pool_path, image);
+    mu_model_desc_destroy(desc);
+    unsetenv("SINEW_DATA_DIR");
+    unlink(image);
+    unlink(worm);
     rmdir(folder);
 }
 

@@ -34,6 +34,7 @@
 #include <unistd.h>
 
 #include "io/csv_table.h"
+#include "worm_pool_image.h"
 
 static char dir[] = "/tmp/sinew-experiment-XXXXXX";
 
@@ -592,8 +593,10 @@ Test(experiment, p1_pulses_have_the_asked_width_in_substeps)
 
 Test(experiment, r1_exertion_is_the_cumulative_share_of_the_worms_pool)
 {
-    /* models/worm.json: 200 neurons, s_i = 1·100^(i/199), weakest first;
-     * peak torque 0.01 N·m. */
+    /* models/worm.json: 200 neurons read from models/worm-pool.png, which
+     * draws s_i = 100^(i/199) on the white-to-red scale (255 − blue =
+     * 2.55·s_i to a 16-bit step, worm_pool_image.h), weakest first; peak
+     * torque 0.01 N·m. */
     csv_table table;
     run_experiment("r1", "", "r1_recruitment", &table);
     const double *neurons = column(&table, "recruited_neurons");
@@ -603,13 +606,13 @@ Test(experiment, r1_exertion_is_the_cumulative_share_of_the_worms_pool)
     cr_assert_eq(table.row_count, 201, "%ld rows", table.row_count);
     double total = 0.0;
     for (int i = 0; i < 200; ++i) {
-        total += pow(100.0, i / 199.0);
+        total += worm_pool_image_strength(i);
     }
     double sum = 0.0;
     for (long n = 0; n <= 200; ++n) {
         cr_expect_eq(neurons[n], (double)n);
         if (n > 0) {
-            double s = pow(100.0, (n - 1) / 199.0);
+            double s = worm_pool_image_strength((int)n - 1);
             sum += s;
             expect_near_relative(strength[n], s, 1e-9, "a neuron's strength");
         }

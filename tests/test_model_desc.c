@@ -489,8 +489,9 @@ static const bad_model bad_models[] = {
      "(5), expected a strength >= weakest"},
     {"torque_muscle_on_a_nail.json",
      "torque_muscle_on_a_nail.json:10:32: torque_muscles[0].body: \"Nail\" is a nail, expected the name of a bone"},
-    {"torque_muscle_without_pool.json", "torque_muscle_without_pool.json:7:5: torque_muscles[0]: missing key "
-                                        "\"motor_pool\", expected the motor pool {neurons, weakest, strongest}"},
+    {"torque_muscle_without_pool.json",
+     "torque_muscle_without_pool.json:7:5: torque_muscles[0]: missing key \"motor_pool\", expected the motor pool "
+     "{\"image\": PNG}, {\"csv\": CSV} or {neurons, weakest, strongest}"},
     {"vmax_twice.json", "vmax_twice.json:7:114: muscles[0].max_velocity_rest_lengths: given with max_velocity, "
                         "expected either max_velocity (m/s) or max_velocity_rest_lengths (rest lengths per second)"},
     {"syntax_error.json", "syntax_error.json:7:49: invalid JSON: '}' expected near '\"size\"'"},

@@ -1,11 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* The motor pool (after McIntyre, "Simulated Muscles") against running sums by
- * hand, profile images written here with Cairo, and the torque actuator
+ * hand, profile images written here with libpng, and the torque actuator
  * against Newton's second law for rotation (α = τ/I) and the conservation
  * of angular momentum under an internal torque pair.
  */
 #define _POSIX_C_SOURCE 200809L /* mkdtemp */
-#include <cairo.h>
 #include <criterion/criterion.h>
 #include <math.h>
 #include <stdio.h>
@@ -14,6 +13,7 @@
 
 #include "mu/motor_pool.h"
 #include "mu/torque_actuator.h"
+#include "png_writer.h"
 #include "test_support.h"
 
 /* A scratch file path in a fresh directory; both removed by remove_scratch. */
@@ -35,20 +35,24 @@ static void remove_scratch(const scratch *s)
     rmdir(s->dir);
 }
 
-/* Writes a width × height opaque PNG whose pixel x has blue `blue[x]`
- * (every row alike), red 255 − x % 7 and green 0: only blue matters. */
+/* Writes a width × height opaque 8-bit RGB PNG whose pixel x is on the
+ * white-to-red scale with blue `blue[x]`: red 255, green = blue (every
+ * row alike). */
 static void write_profile(const char *path, const int *blue, int width, int height)
 {
-    cairo_surface_t *surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
-    cairo_t *cr = cairo_create(surface);
-    for (int x = 0; x < width; ++x) {
-        cairo_set_source_rgb(cr, (255 - x % 7) / 255.0, 0.0, blue[x] / 255.0);
-        cairo_rectangle(cr, x, 0, 1, height);
-        cairo_fill(cr);
+    unsigned samples[3 * 16 * 2];
+    cr_assert(width * height <= 32);
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            unsigned *pixel = &samples[3 * (y * width + x)];
+            pixel[0] = 255;
+            pixel[1] = (unsigned)blue[x];
+            pixel[2] = (unsigned)blue[x];
+        }
     }
-    cairo_destroy(cr);
-    cr_assert_eq(cairo_surface_write_to_png(surface, path), CAIRO_STATUS_SUCCESS);
-    cairo_surface_destroy(surface);
+    write_test_png(
+        path, &(test_png){
+                  .width = width, .height = height, .colour_type = PNG_COLOR_TYPE_RGB, .depth = 8, .samples = samples});
 }
 
 Test(motor_pool, exertion_is_the_running_sum_share)
@@ -125,7 +129,7 @@ Test(motor_pool, bad_profiles_are_clear_errors)
     mu_motor_pool *pool = NULL;
     cr_expect_eq(mu_motor_pool_load_png("/nonexistent/profile.png", &pool), RB_ERR_INVALID_ARGUMENT);
     cr_expect_null(pool);
-    cr_expect(strstr(rb_last_error(), "/nonexistent/profile.png: cannot read") != NULL, "%s", rb_last_error());
+    cr_expect(strstr(rb_last_error(), "/nonexistent/profile.png: cannot open") != NULL, "%s", rb_last_error());
 
     scratch s;
     make_scratch(&s, "tall.png");
@@ -143,7 +147,7 @@ Test(motor_pool, bad_profiles_are_clear_errors)
     fputs("1, 2, 3\n", file);
     fclose(file);
     cr_expect_eq(mu_motor_pool_load_png(s.path, &pool), RB_ERR_INVALID_ARGUMENT);
-    cr_expect(strstr(rb_last_error(), "cannot read") != NULL, "%s", rb_last_error());
+    cr_expect(strstr(rb_last_error(), "tall.png: not a PNG file") != NULL, "%s", rb_last_error());
     cr_expect_null(pool);
     remove_scratch(&s);
 }

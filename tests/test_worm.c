@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* The worm of McIntyre's "Simulated Muscles": its file loads as described,
  * and its torque muscle turns the top segment only when neurons are
- * recruited, by the torque its exertion gives.
+ * recruited, by the torque its exertion gives; a wrong name is answered
+ * with the right ones.
  */
 #include <criterion/criterion.h>
 #include <math.h>
@@ -34,8 +35,14 @@ Test(worm, loads_as_models_md_gives_it)
     cr_assert_eq(mu_model_torque_muscle_count(model), 1);
     const mu_motor_pool *pool = mu_model_motor_pool(model, 0);
     cr_expect_eq(mu_motor_pool_neuron_count(pool), 200);
-    expect_near(mu_motor_pool_strength(pool, 0), 1.0, 1e-12, "weakest");
-    expect_near(mu_motor_pool_strength(pool, 199), 100.0, 1e-9, "strongest");
+    /* Its profile image (models/worm-pool.png) draws the strengths 1 .. 100
+     * as 2.55 .. 255 (255 − blue), to half a 16-bit step. */
+    expect_near(mu_motor_pool_strength(pool, 0), 2.55, 0.5 / 257.0, "weakest");
+    expect_near(mu_motor_pool_strength(pool, 199), 255.0, 0.0, "strongest");
+    for (int i = 1; i < 200; ++i) {
+        expect_near(mu_motor_pool_strength(pool, i) / mu_motor_pool_strength(pool, i - 1), pow(100.0, 1.0 / 199.0),
+                    2e-3, "equal ratios between neighbours");
+    }
     cr_expect_eq(mu_motor_pool_recruited(pool), 0);
     mu_model_destroy(model);
     mu_model_desc_destroy(desc);
@@ -89,6 +96,28 @@ Test(worm, bad_recruit_calls_are_errors)
     cr_expect_eq(mu_model_recruit(model, "Torque Muscle", 500), RB_ERR_INVALID_ARGUMENT);
     cr_expect(strstr(rb_last_error(), "500") != NULL && strstr(rb_last_error(), "200") != NULL, "%s", rb_last_error());
     cr_expect_eq(mu_motor_pool_recruited(mu_model_motor_pool(model, 0)), 0, "refused, not clamped to the pool");
+    mu_model_destroy(model);
+    mu_model_desc_destroy(desc);
+}
+
+Test(worm, an_unknown_torque_muscle_is_answered_with_the_names_built)
+{
+    mu_model_desc *desc = NULL;
+    mu_model *model = build_worm(&desc);
+    cr_expect_eq(mu_model_recruit(model, "Torque", 10), RB_ERR_INVALID_ARGUMENT);
+    cr_expect_str_eq(rb_last_error(),
+                     "mu_model_recruit: no torque muscle named \"Torque\" is built in this model, expected \"Torque "
+                     "Muscle\"");
+    cr_expect_eq(mu_motor_pool_recruited(mu_model_motor_pool(model, 0)), 0, "nothing recruited");
+    cr_expect_eq(mu_model_recruit(model, "Torque Muscle", 201), RB_ERR_INVALID_ARGUMENT);
+    cr_expect(strstr(rb_last_error(), "neurons") != NULL, "%s", rb_last_error());
+    mu_model_destroy(model);
+    /* Below level 3 no torque muscle is built: the message says so. */
+    mu_model_options options = mu_default_model_options();
+    options.level = 2;
+    cr_assert_eq(mu_model_create(desc, &options, &model), RB_OK, "%s", rb_last_error());
+    cr_expect_eq(mu_model_recruit(model, "Torque Muscle", 10), RB_ERR_INVALID_ARGUMENT);
+    cr_expect(strstr(rb_last_error(), "this model builds no torque muscle") != NULL, "%s", rb_last_error());
     mu_model_destroy(model);
     mu_model_desc_destroy(desc);
 }

@@ -14,11 +14,12 @@
 #   3. deletes that copy of the sources and its build tree, moves the shared
 #      install to a third prefix, and checks that nothing installed names
 #      the deleted folders; then runs, from the moved prefix, `sinew
-#      --version`, `sinew run arm` and `sinew experiment c1`;
+#      --version`, `sinew run arm`, `sinew experiment c1` and the installed
+#      worm with its profile image (share/sinew, through SINEW_DATA_DIR);
 #   4. checks that the shared libraries export only the public API: every
 #      dynamic symbol of librb.so starts with rb_, of libmu.so with mu_, and
 #      each is declared RB_API/MU_API in an installed header (and the other
-#      way round);
+#      way round); and that libmu needs libpng, not Cairo;
 #   5. compiles every installed public header alone as C17 and as C++17, with
 #      gcc, g++, clang and clang++, warnings as errors;
 #   6. builds the examples of docs/examples with sinew as a subproject
@@ -104,9 +105,13 @@ run_moved()
         env -u SINEW_DATA_DIR "$shared_prefix/bin/sinew" run arm --duration 1 --out "$out" &&
         test -s "$out/arm.csv" &&
         env -u SINEW_DATA_DIR "$shared_prefix/bin/sinew" experiment c1 --out "$out" &&
-        test -s "$out/c1_hill_curves.csv" && test -s "$out/c1_hill_curves.png"
+        test -s "$out/c1_hill_curves.csv" && test -s "$out/c1_hill_curves.png" &&
+        # The installed worm names its profile image beside it, in share/sinew.
+        env -u SINEW_DATA_DIR "$shared_prefix/bin/sinew" check "$shared_prefix/share/sinew/worm.json" &&
+        SINEW_DATA_DIR="$shared_prefix/share/sinew" "$shared_prefix/bin/sinew" run worm --duration 0.1 \
+            --recruit "Torque Muscle=100" --out "$out" && grep -q 'Torque Muscle.exertion' "$out/worm.csv"
 )
-check "the moved install runs sinew --version, run arm and experiment c1" run_moved
+check "the moved install runs sinew --version, run arm, experiment c1 and its share/sinew worm" run_moved
 
 # ---- 4. Only the public API leaves the shared libraries --------------------
 exports_match()
@@ -131,6 +136,12 @@ check "libmu.so exports exactly the MU_API functions" exports_match mu mu_ MU_AP
 check "librb.so and libmu.so carry their soname" \
     bash -c "readelf -d '$shared_prefix/lib/librb.so' | grep -q 'SONAME.*librb.so.0.2' &&
              readelf -d '$shared_prefix/lib/libmu.so' | grep -q 'SONAME.*libmu.so.0.2'"
+# The muscle layer reads profile images with libpng; the drawing library
+# (Cairo) is the tools' alone.
+check "libmu.so needs libpng and not Cairo" \
+    bash -c "readelf -d '$shared_prefix/lib/libmu.so' | grep -q 'NEEDED.*libpng' &&
+             ! readelf -d '$shared_prefix/lib/libmu.so' | grep -q 'NEEDED.*cairo' &&
+             ! grep -q cairo '$shared_prefix/lib/pkgconfig/sinew-mu.pc'"
 
 # ---- 5. Each public header compiles alone as C17 and C++17 -----------------
 headers_compile()

@@ -13,7 +13,8 @@
 #   --build DIR  the build folder (default build/fuzz); the working corpora
 #                grow in DIR/corpus/<target>, failing inputs land in
 #                DIR/artifacts/<target>
-#   TARGET       fuzz_model, fuzz_control_file, fuzz_csv_chart (default: all)
+#   TARGET       fuzz_model, fuzz_control_file, fuzz_csv_chart, fuzz_pool_profile
+#                (default: all)
 #
 # The last line reads "fuzz: N passed, N failed", counting each replayed
 # input and each session; the exit status is non-zero when anything failed.
@@ -22,10 +23,10 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 usage()
 {
-    sed -n '3,19s/^# \{0,1\}//p' "$0"
+    sed -n '3,20s/^# \{0,1\}//p' "$0"
 }
 
-all_targets=(fuzz_model fuzz_control_file fuzz_csv_chart)
+all_targets=(fuzz_model fuzz_control_file fuzz_csv_chart fuzz_pool_profile)
 seconds=60
 seed=1
 build=build/fuzz
@@ -48,7 +49,7 @@ while (($#)); do
         usage
         exit 0
         ;;
-    fuzz_model | fuzz_control_file | fuzz_csv_chart)
+    fuzz_model | fuzz_control_file | fuzz_csv_chart | fuzz_pool_profile)
         targets+=("$1")
         shift
         ;;
@@ -79,9 +80,10 @@ seeds()
     fuzz_model) printf '%s\n' models/*.json tests/data/bad_models/*.json tests/data/models/*.json ;;
     fuzz_control_file) printf '%s\n' models/controls/* fuzz/seeds/control_file/* ;;
     fuzz_csv_chart) printf '%s\n' models/data/hill-curves.csv fuzz/seeds/csv_chart/* ;;
+    fuzz_pool_profile) printf '%s\n' models/worm-pool.png fuzz/seeds/pool_profile/* ;;
     esac
 }
-declare -A max_len=([fuzz_model]=32768 [fuzz_control_file]=4096 [fuzz_csv_chart]=16384)
+declare -A max_len=([fuzz_model]=32768 [fuzz_control_file]=4096 [fuzz_csv_chart]=16384 [fuzz_pool_profile]=8192)
 
 # ---- Build --------------------------------------------------------------------
 # Debug keeps the assertions; -O1 as the asan preset, for speed.

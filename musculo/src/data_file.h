@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: MIT */
-/* The muscle layer's data files: the built-in models (`arm.json`, ...) and
- * the digitised Hill curves (`hill-curves.csv`), private to the layer.
+/* The muscle layer's data files: the built-in models (`arm.json`, ...), the
+ * files they name (the worm's profile image `worm-pool.png`) and the
+ * digitised Hill curves (`hill-curves.csv`), private to the layer.
  *
- * The files are compiled into the library (the build turns the models/NAME.json
- * and models/data/hill-curves.csv into the byte arrays of
+ * The files are compiled into the library (the build turns the models/NAME.json,
+ * models/worm-pool.png and models/data/hill-curves.csv into the byte arrays of
  * embedded_files.c), so a program finds them wherever it and the library
  * are installed, and nothing reads the source tree at run time. To try
  * other versions of them without rebuilding, set the environment variable
@@ -27,7 +28,7 @@
 
 /* One file compiled into the library. */
 typedef struct mu_embedded_file {
-    const char *name;          /* "arm.json", "hill-curves.csv" */
+    const char *name;          /* "arm.json", "worm-pool.png", "hill-curves.csv" */
     const unsigned char *data; /* the file's bytes, not terminated */
     size_t size;
 } mu_embedded_file;

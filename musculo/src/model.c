@@ -486,8 +486,11 @@ static rb_status build_torque_muscles(mu_model *model)
             def.reaction_body = model->bodies[model->parts[part_of(desc, muscle->reaction_body)].body];
         }
         def.peak_torque = muscle->peak_torque;
-        rb_status status =
-            mu_motor_pool_create_exponential(muscle->neurons, muscle->weakest, muscle->strongest, &model->pools[built]);
+        /* A file's pool was read at load; a generated one is made here. */
+        rb_status status = muscle->strengths != NULL
+                               ? mu_motor_pool_create(muscle->strengths, muscle->neurons, &model->pools[built])
+                               : mu_motor_pool_create_exponential(muscle->neurons, muscle->weakest, muscle->strongest,
+                                                                  &model->pools[built]);
         if (status == RB_OK) {
             status = mu_torque_actuator_create(model->world, &def, &model->actuators[built]);
         }
@@ -1021,8 +1024,33 @@ static int find_torque_muscle(const mu_model *model, const char *name, const cha
             return t;
         }
     }
-    rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: no torque muscle named \"%s\" is built in this model", function,
-                    name);
+    /* The names a caller may use, in the model's order: "A", "B" (the
+     * engine's message holds 512 bytes, so a long list is cut short). */
+    char names[320] = "";
+    size_t used = 0;
+    for (int t = 0; t < model->built_torque_muscle_count && used < sizeof names; ++t) {
+        const char *other = model->desc->torque_muscles[model->built_torque_muscles[t]].name;
+        const int written = snprintf(names + used, sizeof names - used, "%s\"%s\"", t > 0 ? ", " : "", other);
+        used += written > 0 ? (size_t)written : 0;
+    }
+    if (used >= sizeof names) {
+        /* Cut at the start of a UTF-8 character, room left for ", …". */
+        size_t cut = sizeof names - sizeof ", …";
+        while (cut > 0 && ((unsigned char)names[cut] & 0xc0u) == 0x80u) {
+            --cut;
+        }
+        snprintf(names + cut, sizeof names - cut, ", …");
+    }
+    if (model->built_torque_muscle_count == 0) {
+        rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                        "%s: no torque muscle named \"%s\": this model builds no torque muscle (in this variant "
+                        "and level)",
+                        function, name);
+    } else {
+        rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                        "%s: no torque muscle named \"%s\" is built in this model, expected %s%s", function, name,
+                        model->built_torque_muscle_count == 1 ? "" : "one of ", names);
+    }
     return -1;
 }
 

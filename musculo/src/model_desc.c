@@ -59,9 +59,22 @@ static rb_status read_file(const char *path, char **text, size_t *length)
 }
 
 /* Parses and validates the model text (`length` bytes, not terminated),
- * named `path` in messages. */
-static rb_status parse_text(const char *path, const char *text, size_t length, mu_model_desc **out)
+ * named `path` in messages: a file's, whose folder holds the files it
+ * names, or one built into libmu (`builtin`), whose files are built in. */
+static rb_status parse_text(const char *path, bool builtin, const char *text, size_t length, mu_model_desc **out)
 {
+    char folder[4096] = ".";
+    const char *slash = strrchr(path, '/');
+    if (!builtin && slash != NULL) {
+        /* "/m.json" is in "/", "a/b/m.json" in "a/b". */
+        const size_t length_of_folder = slash == path ? 1 : (size_t)(slash - path);
+        if (length_of_folder >= sizeof folder) {
+            return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: the path is too long, expected under %zu bytes", path,
+                                   sizeof folder);
+        }
+        memcpy(folder, path, length_of_folder);
+        folder[length_of_folder] = '\0';
+    }
     /* Duplicate keys are rejected here, so that every JSON path names one value. */
     json_error_t error;
     json_t *root = json_loadb(text, length, JSON_REJECT_DUPLICATES, &error);
@@ -79,7 +92,7 @@ static rb_status parse_text(const char *path, const char *text, size_t length, m
             status = rb_report_error(RB_ERR_OUT_OF_MEMORY, "mu_model_desc_load: out of memory");
         } else {
             memcpy(desc->source, path, strlen(path) + 1);
-            mu_json_reader reader = {.file = path, .text = text, .length = length};
+            mu_json_reader reader = {.file = path, .folder = builtin ? NULL : folder, .text = text, .length = length};
             status = mu_model_parse(&reader, root, desc);
         }
     }
@@ -107,7 +120,7 @@ rb_status mu_model_desc_load(const char *path, mu_model_desc **out)
     if (status != RB_OK) {
         return status;
     }
-    status = parse_text(path, text, length, out);
+    status = parse_text(path, false, text, length, out);
     free(text);
     return status;
 }
@@ -161,7 +174,7 @@ rb_status mu_model_desc_load_builtin(const char *name, mu_model_desc **out)
     }
     char label[300];
     snprintf(label, sizeof label, "%s (built into libmu)", file_name);
-    return parse_text(label, (const char *)file->data, file->size, out);
+    return parse_text(label, true, (const char *)file->data, file->size, out);
 }
 
 int mu_builtin_model_count(void) { return (int)mu_builtin_model_name_count; }
@@ -214,6 +227,9 @@ void mu_model_desc_destroy(mu_model_desc *desc)
     free(desc->groups);
     for (int i = 0; i < desc->torque_muscle_count; ++i) {
         free(desc->torque_muscles[i].name);
+        free(desc->torque_muscles[i].pool_file);
+        free(desc->torque_muscles[i].pool_path);
+        free(desc->torque_muscles[i].strengths);
     }
     free(desc->torque_muscles);
     for (int i = 0; i < desc->variant_count; ++i) {

@@ -25,7 +25,11 @@
 #define MU_JSON_MAX_DEPTH 8
 
 typedef struct mu_json_reader {
-    const char *file;                     /* as given to the loader */
+    const char *file; /* as given to the loader */
+    /* The folder of the files the document names by a relative path (a
+     * motor pool's image); NULL for a document built into libmu, whose
+     * files are built in beside it (data_file.h). */
+    const char *folder;
     const char *text;                     /* the document, for positions */
     size_t length;                        /* bytes of text */
     int depth;                            /* 0 .. MU_JSON_MAX_DEPTH */

@@ -3,17 +3,21 @@
  * bones first, so that the joints, the weight and the muscles after them
  * can name them; muscles before the groups and variants that list them.
  * The first problem found stops the read. */
+#define _POSIX_C_SOURCE 200809L /* fmemopen */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "data_file.h"
 #include "model_schema.h"
 #include "mu/geometry_lengths.h"
 #include "mu/motor_pool.h"
 #include "mu/muscle.h"
 #include "mu/muscle_statics.h"
 #include "name_index.h"
+#include "pool_profile.h"
 #include "rb/geometry.h"
 
 /* The defaults of Castanyer's framework ("Implementació d'un model
@@ -865,17 +869,106 @@ static rb_status parse_muscle(mu_json_reader *reader, const json_t *object, mu_m
     return RB_OK;
 }
 
-/* The torque muscle's exponential motor pool (motor_pool.h). */
+/* What a model file's "motor_pool" may be, for messages. */
+#define POOL_FORMS "{\"image\": PNG}, {\"csv\": CSV} or {neurons, weakest, strongest}"
+
+/* Opens the file `name` that the member `key` (at the current path) names:
+ * relative to the model file's folder, or, beside a model built into
+ * libmu, the file built in with it. *label names what was opened. */
+static rb_status open_pool_file(mu_json_reader *reader, const char *key, const char *name, const char *what, FILE **out,
+                                char *label, size_t label_size)
+{
+    mu_json_push_key(reader, key);
+    if (reader->folder == NULL) {
+        snprintf(label, label_size, "%s (built into libmu)", name);
+        const mu_embedded_file *file = mu_embedded_file_find(name);
+        if (file == NULL) {
+            return mu_json_fail(reader, MU_JSON_AT_VALUE, "no file named \"%s\" is built into libmu, expected %s", name,
+                                what);
+        }
+        /* fmemopen takes a non-const buffer; in mode "r" it never writes it. */
+        *out = fmemopen((void *)file->data, file->size, "r");
+        if (*out == NULL) {
+            return mu_json_fail(reader, MU_JSON_AT_VALUE, "%s: cannot open: %s, expected %s", label, strerror(errno),
+                                what);
+        }
+    } else {
+        const bool absolute = name[0] == '/';
+        const int written =
+            snprintf(label, label_size, "%s%s%s", absolute ? "" : reader->folder, absolute ? "" : "/", name);
+        if (written < 0 || (size_t)written >= label_size) {
+            return mu_json_fail(reader, MU_JSON_AT_VALUE, "the path of \"%s\" is too long, expected under %zu bytes",
+                                name, label_size);
+        }
+        char problem[MU_POOL_PROBLEM_SIZE];
+        *out = mu_pool_profile_open(label, problem, sizeof problem);
+        if (*out == NULL) {
+            return mu_json_fail(reader, MU_JSON_AT_VALUE, "%s: %s, expected %s", label, problem, what);
+        }
+    }
+    return RB_OK;
+}
+
+/* The motor pool's strengths from the profile image or CSV that `key`
+ * ("image" or "csv") names, read now, so that `sinew check` validates
+ * them. A failure names the model file, the JSON path and the file. */
+static rb_status read_pool_file(mu_json_reader *reader, const json_t *pool, const char *key,
+                                mu_model_torque_muscle *muscle)
+{
+    const bool image = strcmp(key, "image") == 0;
+    const char *what = image ? "a profile image: a PNG 1 pixel high, white to red (docs/model-format.md)"
+                             : "a CSV of strengths (docs/model-format.md)";
+    const char *name;
+    MU_JSON_TRY(mu_json_read_string(reader, pool, key, MU_JSON_REQUIRED, what, &name));
+    char label[4096];
+    FILE *file;
+    MU_JSON_TRY(open_pool_file(reader, key, name, what, &file, label, sizeof label));
+    char problem[MU_POOL_PROBLEM_SIZE];
+    const bool read =
+        image ? mu_pool_profile_read_png(file, &muscle->strengths, &muscle->neurons, problem, sizeof problem)
+              : mu_pool_profile_read_csv(file, label, &muscle->strengths, &muscle->neurons, problem, sizeof problem);
+    fclose(file);
+    if (!read) {
+        /* A CSV's problem starts with its own "LABEL:LINE:". */
+        return image ? mu_json_fail(reader, MU_JSON_AT_VALUE, "%s: %s", label, problem)
+                     : mu_json_fail(reader, MU_JSON_AT_VALUE, "%s", problem);
+    }
+    mu_json_pop(reader);
+    muscle->pool_source = image ? MU_MODEL_POOL_IMAGE : MU_MODEL_POOL_CSV;
+    MU_JSON_TRY(copy_string(name, &muscle->pool_file));
+    return copy_string(label, &muscle->pool_path);
+}
+
+/* The torque muscle's motor pool (motor_pool.h), in one of three forms: a
+ * profile image, a CSV of strengths, or a generated exponential profile. */
 static rb_status parse_motor_pool(mu_json_reader *reader, const json_t *object, mu_model_torque_muscle *muscle)
 {
-    static const char *const keys[] = {"neurons", "weakest", "strongest", NULL};
+    static const char *const keys[] = {"neurons", "weakest", "strongest", "image", "csv", NULL};
     const json_t *pool = json_object_get(object, "motor_pool");
     if (pool == NULL) {
         return mu_json_fail(reader, MU_JSON_AT_VALUE,
-                            "missing key \"motor_pool\", expected the motor pool {neurons, weakest, strongest}");
+                            "missing key \"motor_pool\", expected the motor pool " POOL_FORMS);
     }
     mu_json_push_key(reader, "motor_pool");
     MU_JSON_TRY(mu_json_check_object(reader, pool, keys));
+    const char *file_key = json_object_get(pool, "image") != NULL ? "image"
+                           : json_object_get(pool, "csv") != NULL ? "csv"
+                                                                  : NULL;
+    if (file_key != NULL) {
+        /* One form only: a file's pool has no generated parameters. */
+        for (int k = 0; keys[k] != NULL; ++k) {
+            if (strcmp(keys[k], file_key) != 0 && json_object_get(pool, keys[k]) != NULL) {
+                mu_json_push_key(reader, keys[k]);
+                return mu_json_fail(reader, MU_JSON_AT_KEY,
+                                    "\"%s\" beside \"%s\", expected one form of motor pool: " POOL_FORMS, keys[k],
+                                    file_key);
+            }
+        }
+        MU_JSON_TRY(read_pool_file(reader, pool, file_key, muscle));
+        mu_json_pop(reader);
+        return RB_OK;
+    }
+    muscle->pool_source = MU_MODEL_POOL_EXPONENTIAL;
     MU_JSON_TRY(mu_json_read_int(reader, pool, "neurons", MU_JSON_REQUIRED, 1, MU_MAX_MOTOR_NEURONS,
                                  "the number of motor neurons", &muscle->neurons));
     MU_JSON_TRY(mu_json_read_number(reader, pool, "weakest", MU_JSON_REQUIRED, neuron_strength,

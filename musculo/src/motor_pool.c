@@ -3,17 +3,15 @@
  * (motor_pool.h). cumulative[n] = s_0 + … + s_{n-1}, so cumulative[0] = 0
  * and e(n) = cumulative[n]/cumulative[count] needs no special case for
  * n = 0. */
-#include <cairo.h>
 #include <errno.h>
 #include <math.h>
-#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "arguments.h"
-#include "csv_reader.h"
 #include "mu/motor_pool.h"
+#include "pool_profile.h"
 
 struct mu_motor_pool {
     int count;
@@ -113,176 +111,42 @@ rb_status mu_motor_pool_create_exponential(int count, double weakest, double str
     return status;
 }
 
-/* 255 − blue of one pixel of a Cairo image surface. The pixel is a native
- * 32-bit word, blue in its low byte; ARGB32 stores colour premultiplied by
- * alpha, undone here (a transparent pixel is white, strength 0). */
-static double pixel_strength(uint32_t pixel, cairo_format_t format)
+/* Reads the profile image (`image`) or CSV at `path` into a new pool. */
+static rb_status load_profile(const char *f, const char *path, bool image, mu_motor_pool **out)
 {
-    double blue = (double)(pixel & 0xffu);
-    if (format == CAIRO_FORMAT_ARGB32) {
-        const double alpha = (double)(pixel >> 24);
-        blue = alpha > 0.0 ? fmin(255.0, blue * 255.0 / alpha) : 255.0;
+    if (path == NULL || out == NULL) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: path and out must not be NULL", f);
     }
-    return 255.0 - blue;
-}
-
-/* Whether the file opens and starts with the PNG signature (PNG spec
- * §5.2). Checked before Cairo reads it because Cairo 1.16 reports a file
- * that is not a PNG as "out of memory". errno is 0 when the file opened. */
-static bool has_png_signature(const char *path)
-{
-    static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-    errno = 0;
-    FILE *file = fopen(path, "rb");
+    *out = NULL;
+    char problem[MU_POOL_PROBLEM_SIZE];
+    FILE *file = mu_pool_profile_open(path, problem, sizeof problem);
     if (file == NULL) {
-        return false;
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s: %s, expected %s", f, path, problem,
+                               image ? "a PNG profile image" : "a CSV of strengths");
     }
-    unsigned char head[8];
-    const bool png = fread(head, 1, sizeof head, file) == sizeof head && memcmp(head, signature, sizeof head) == 0;
+    double *strengths = NULL;
+    int count = 0;
+    const bool read = image ? mu_pool_profile_read_png(file, &strengths, &count, problem, sizeof problem)
+                            : mu_pool_profile_read_csv(file, path, &strengths, &count, problem, sizeof problem);
     fclose(file);
-    errno = 0;
-    return png;
+    if (!read) {
+        /* A CSV's problem names the file and line itself. */
+        return image ? rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s: %s", f, path, problem)
+                     : rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s", f, problem);
+    }
+    rb_status status = create_pool(f, strengths, count, out);
+    free(strengths);
+    return status;
 }
 
 rb_status mu_motor_pool_load_png(const char *path, mu_motor_pool **out)
 {
-    const char *f = "mu_motor_pool_load_png";
-    if (path == NULL || out == NULL) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: path and out must not be NULL", f);
-    }
-    *out = NULL;
-    if (!has_png_signature(path)) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s: cannot read: %s, expected a PNG profile image", f,
-                               path, errno != 0 ? strerror(errno) : "not a PNG file");
-    }
-    cairo_surface_t *image = cairo_image_surface_create_from_png(path);
-    rb_status status = RB_OK;
-    const cairo_status_t read = cairo_surface_status(image);
-    if (read != CAIRO_STATUS_SUCCESS) {
-        status = rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s: cannot read: %s, expected a PNG profile image", f,
-                                 path, cairo_status_to_string(read));
-        cairo_surface_destroy(image);
-        return status;
-    }
-    const int width = cairo_image_surface_get_width(image);
-    const int height = cairo_image_surface_get_height(image);
-    const cairo_format_t format = cairo_image_surface_get_format(image);
-    if (height != 1) {
-        status = rb_report_error(RB_ERR_INVALID_ARGUMENT,
-                                 "%s: %s: the image is %d × %d pixels, expected 1 pixel high (one neuron per pixel)", f,
-                                 path, width, height);
-    } else if (width > MU_MAX_MOTOR_NEURONS) {
-        status = rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s: the image is %d pixels wide, expected at most %d", f,
-                                 path, width, MU_MAX_MOTOR_NEURONS);
-    } else if (format != CAIRO_FORMAT_ARGB32 && format != CAIRO_FORMAT_RGB24) {
-        status = rb_report_error(RB_ERR_INVALID_ARGUMENT,
-                                 "%s: %s: Cairo read the image in pixel format %d, expected "
-                                 "ARGB32 or RGB24",
-                                 f, path, (int)format);
-    }
-    double *strengths = status == RB_OK ? malloc((size_t)width * sizeof *strengths) : NULL;
-    if (status == RB_OK && strengths == NULL) {
-        status = rb_report_error(RB_ERR_OUT_OF_MEMORY, "%s: %s: out of memory for %d neurons", f, path, width);
-    }
-    if (status == RB_OK) {
-        cairo_surface_flush(image);
-        const unsigned char *row = cairo_image_surface_get_data(image);
-        for (int x = 0; x < width; ++x) {
-            uint32_t pixel;
-            memcpy(&pixel, row + 4 * x, sizeof pixel);
-            strengths[x] = pixel_strength(pixel, format);
-        }
-        status = create_pool(f, strengths, width, out);
-        if (status == RB_ERR_INVALID_ARGUMENT) {
-            status = rb_report_error(status,
-                                     "%s: %s: every pixel is white (255 − blue is 0), expected a profile "
-                                     "with some strength",
-                                     f, path);
-        }
-    }
-    free(strengths);
-    cairo_surface_destroy(image);
-    return status;
-}
-
-/* Appends one value to a growing array. */
-static bool push_strength(double **values, int *count, int *capacity, double value)
-{
-    if (*count == *capacity) {
-        const int grown = *capacity > 0 ? 2 * *capacity : 64;
-        double *more = realloc(*values, (size_t)grown * sizeof *more);
-        if (more == NULL) {
-            return false;
-        }
-        *values = more;
-        *capacity = grown;
-    }
-    (*values)[(*count)++] = value;
-    return true;
-}
-
-/* Every field of every record of the file as a strength, appended. */
-static rb_status read_strengths(const char *f, mu_csv_reader *csv, double **values, int *count)
-{
-    int capacity = 0;
-    mu_csv_result result;
-    while ((result = mu_csv_reader_next(csv)) == MU_CSV_RECORD) {
-        for (int k = 0; k < csv->field_count; ++k) {
-            double value = 0.0;
-            if (mu_csv_number(csv->fields[k], &value) != MU_CSV_NUMBER || !(value >= 0.0 && isfinite(value))) {
-                return rb_report_error(RB_ERR_INVALID_ARGUMENT,
-                                       "%s: %s:%ld: \"%s\" is not a strength, expected a finite number >= 0", f,
-                                       csv->path, csv->line_number, csv->fields[k]);
-            }
-            if (*count == MU_MAX_MOTOR_NEURONS) {
-                return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s:%ld: more than %d strengths", f, csv->path,
-                                       csv->line_number, MU_MAX_MOTOR_NEURONS);
-            }
-            if (!push_strength(values, count, &capacity, value)) {
-                return rb_report_error(RB_ERR_OUT_OF_MEMORY, "%s: %s: out of memory", f, csv->path);
-            }
-        }
-    }
-    if (result == MU_CSV_ERROR) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s", f, csv->error);
-    }
-    return RB_OK;
+    return load_profile("mu_motor_pool_load_png", path, true, out);
 }
 
 rb_status mu_motor_pool_load_csv(const char *path, mu_motor_pool **out)
 {
-    const char *f = "mu_motor_pool_load_csv";
-    if (path == NULL || out == NULL) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: path and out must not be NULL", f);
-    }
-    *out = NULL;
-    FILE *file = fopen(path, "r");
-    if (file == NULL) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s: cannot open: %s, expected a CSV of strengths", f, path,
-                               strerror(errno));
-    }
-    /* The profile's own format (mu/motor_pool.h): numbers separated by
-     * commas or blanks, '#' comments. */
-    mu_csv_reader csv;
-    mu_csv_reader_init(&csv, path, file, MU_CSV_SPACE_SEPARATES | MU_CSV_COMMENTS);
-    double *values = NULL;
-    int count = 0;
-    rb_status status = read_strengths(f, &csv, &values, &count);
-    mu_csv_reader_free(&csv);
-    fclose(file);
-    if (status == RB_OK && count == 0) {
-        status =
-            rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s: no strengths, expected at least one number", f, path);
-    }
-    if (status == RB_OK) {
-        status = create_pool(f, values, count, out);
-        if (status == RB_ERR_INVALID_ARGUMENT) {
-            status = rb_report_error(status, "%s: %s: the strengths sum to 0, expected a profile with some strength", f,
-                                     path);
-        }
-    }
-    free(values);
-    return status;
+    return load_profile("mu_motor_pool_load_csv", path, false, out);
 }
 
 void mu_motor_pool_destroy(mu_motor_pool *pool)

@@ -17,7 +17,7 @@ static const cli_command models_command = {
     .operands = "",
     .operand = "",
     .about = "Lists the built-in models (models/*.json) with their variants, weight choices,\n"
-             "muscles and groups: the names `sinew run` takes.\n",
+             "muscles, groups and torque muscles: the names `sinew run` takes.\n",
 };
 
 static const cli_command check_command = {
@@ -41,6 +41,27 @@ static void print_counts(const mu_model_desc *desc)
            plural(desc->bone_count), desc->hinge_count, plural(desc->hinge_count), desc->glue_count,
            plural(desc->glue_count), desc->muscle_count, plural(desc->muscle_count), desc->group_count,
            plural(desc->group_count));
+    if (desc->torque_muscle_count > 0) {
+        printf(", %d torque muscle%s", desc->torque_muscle_count, plural(desc->torque_muscle_count));
+    }
+}
+
+/* "200 neurons from the image worm-pool.png, peak 0.01 N·m". */
+static void print_torque_muscle(const mu_model_torque_muscle *muscle)
+{
+    printf("\"%s\" (%d neurons ", muscle->name, muscle->neurons);
+    switch (muscle->pool_source) {
+    case MU_MODEL_POOL_IMAGE:
+        printf("from the image %s", muscle->pool_file);
+        break;
+    case MU_MODEL_POOL_CSV:
+        printf("from the CSV %s", muscle->pool_file);
+        break;
+    case MU_MODEL_POOL_EXPONENTIAL:
+        printf("rising exponentially from %g to %g", muscle->weakest, muscle->strongest);
+        break;
+    }
+    printf(", peak %g N·m; recruit with --recruit \"%s=N\")", muscle->peak_torque, muscle->name);
 }
 
 static void print_builtin(const char *name, const mu_model_desc *desc)
@@ -69,6 +90,14 @@ static void print_builtin(const char *name, const mu_model_desc *desc)
         printf("%s\"%s\"", g == 0 ? "" : ", ", desc->groups[g].name);
     }
     printf("%s\n", desc->group_count == 0 ? "none" : "");
+    if (desc->torque_muscle_count > 0) {
+        printf("  torque muscles: ");
+        for (int t = 0; t < desc->torque_muscle_count; ++t) {
+            printf("%s", t == 0 ? "" : ",\n                  ");
+            print_torque_muscle(&desc->torque_muscles[t]);
+        }
+        printf("\n");
+    }
 }
 
 int cmd_models(int argc, char **argv)

@@ -14,6 +14,9 @@ static const char *const muscle_columns[RECORDER_MUSCLE_COLUMNS] = {
     "passive_force_N",   "total_force_N",          "excitation",
     "fibre_length_m",    "tendon_length_m",        "pennation_angle_deg",
 };
+/* Per torque muscle: neurons recruited (a count), the exertion (the pool's
+ * share, 0 to 1) and the torque on its body in N·m. */
+static const char *const torque_columns[RECORDER_TORQUE_COLUMNS] = {"recruited_neurons", "exertion", "torque_N_m"};
 static const char *const part_columns[RECORDER_PART_COLUMNS] = {"x_m", "y_m", "angle_deg"};
 
 /* Writes ",NAME.QUANTITY", quoted when RFC 4180 requires it. */
@@ -39,6 +42,11 @@ static void write_header(FILE *stream, const recorder *csv, const mu_model *mode
     for (int m = 0; m < mu_model_muscle_count(model); ++m) {
         for (int c = 0; c < RECORDER_MUSCLE_COLUMNS; ++c) {
             write_header_field(stream, mu_model_muscle_name(model, m), muscle_columns[c]);
+        }
+    }
+    for (int t = 0; t < mu_model_torque_muscle_count(model); ++t) {
+        for (int c = 0; c < RECORDER_TORQUE_COLUMNS; ++c) {
+            write_header_field(stream, mu_model_torque_muscle_name(model, t), torque_columns[c]);
         }
     }
     for (int h = 0; h < csv->hinge_count; ++h) {
@@ -122,6 +130,11 @@ bool recorder_write_row(recorder *csv, const mu_model *model, double time, char 
         fprintf(stream, ",%.10g,%.10g,%.10g,%.10g", r.excitation, r.fibre_length, r.tendon_length,
                 r.pennation_angle * 180.0 / RB_PI);
     }
+    for (int t = 0; t < mu_model_torque_muscle_count(model); ++t) {
+        const mu_motor_pool *pool = mu_model_motor_pool(model, t);
+        fprintf(stream, ",%d,%.10g,%.10g", mu_motor_pool_recruited(pool), mu_motor_pool_exertion(pool),
+                mu_torque_actuator_torque(mu_model_torque_actuator(model, t)));
+    }
     for (int h = 0; h < csv->hinge_count; ++h) {
         fprintf(stream, ",%.10g", mu_model_hinge_angle(model, csv->hinges[h]));
     }
@@ -166,6 +179,7 @@ void recorder_abandon(recorder *csv)
 
 int recorder_column_count(const recorder *csv, const mu_model *model)
 {
-    return 1 + RECORDER_MUSCLE_COLUMNS * mu_model_muscle_count(model) + RECORDER_HINGE_COLUMNS * csv->hinge_count +
+    return 1 + RECORDER_MUSCLE_COLUMNS * mu_model_muscle_count(model) +
+           RECORDER_TORQUE_COLUMNS * mu_model_torque_muscle_count(model) + RECORDER_HINGE_COLUMNS * csv->hinge_count +
            RECORDER_PART_COLUMNS * csv->part_count;
 }

@@ -7,8 +7,11 @@
  * the model's order, NAME.activation, NAME.target_tension_N, NAME.length_m,
  * NAME.normalized_length, NAME.velocity_m_s, NAME.normalized_velocity,
  * NAME.contraction_m, NAME.normalized_contraction, NAME.active_force_N,
- * NAME.passive_force_N, NAME.total_force_N (mu_muscle_readout); for every
- * built hinge NAME.angle_deg; for every built part (nails, then bones)
+ * NAME.passive_force_N, NAME.total_force_N, NAME.excitation,
+ * NAME.fibre_length_m, NAME.tendon_length_m, NAME.pennation_angle_deg
+ * (mu_muscle_readout); for every built torque muscle
+ * NAME.recruited_neurons, NAME.exertion (0 to 1) and NAME.torque_N_m; for
+ * every built hinge NAME.angle_deg; for every built part (nails, then bones)
  * NAME.x_m, NAME.y_m, NAME.angle_deg. A header field holding a comma, a
  * quote or a line break is quoted as RFC 4180 says.
  *
@@ -27,7 +30,12 @@
 #include "mu/model.h"
 
 /* Quantities recorded per muscle, per hinge and per part. */
-enum { RECORDER_MUSCLE_COLUMNS = 15, RECORDER_HINGE_COLUMNS = 1, RECORDER_PART_COLUMNS = 3 };
+enum {
+    RECORDER_MUSCLE_COLUMNS = 15,
+    RECORDER_TORQUE_COLUMNS = 3,
+    RECORDER_HINGE_COLUMNS = 1,
+    RECORDER_PART_COLUMNS = 3
+};
 
 typedef struct recorder {
     atomic_file file;

@@ -94,7 +94,8 @@ static const cli_option options_table[] = {
      .id = OPT_RECRUIT,
      .kind = CLI_TEXT,
      .value_name = "NAME=N",
-     .help = "neurons 0 .. pool size recruited by a torque muscle from t = 0 (repeatable)"},
+     .help = "neurons 0 .. pool size recruited by a torque muscle from t = 0 (repeatable;\n"
+             "the worm's is \"Torque Muscle\", `sinew models` lists each model's)"},
     {.name = "control",
      .id = OPT_CONTROL,
      .kind = CLI_PATH,
@@ -139,7 +140,8 @@ static const cli_command command = {
              "NAME.normalized_length, NAME.velocity_m_s, NAME.normalized_velocity,\n"
              "NAME.contraction_m, NAME.normalized_contraction, NAME.active_force_N,\n"
              "NAME.passive_force_N, NAME.total_force_N, NAME.excitation, NAME.fibre_length_m,\n"
-             "NAME.tendon_length_m, NAME.pennation_angle_deg; per hinge NAME.angle_deg; per part\n"
+             "NAME.tendon_length_m, NAME.pennation_angle_deg; per torque muscle NAME.recruited_neurons,\n"
+             "NAME.exertion, NAME.torque_N_m; per hinge NAME.angle_deg; per part\n"
              "NAME.x_m, NAME.y_m, NAME.angle_deg (docs/cli.md, \"The CSV\").\n",
 };
 
@@ -553,6 +555,13 @@ static void print_summary(const run_state *run)
     }
     if (muscles == 0) {
         printf("peak force   (no muscles built)\n");
+    }
+    for (int t = 0; t < mu_model_torque_muscle_count(run->model); ++t) {
+        const mu_motor_pool *pool = mu_model_motor_pool(run->model, t);
+        printf("%-13s%-24s %d of %d neurons: exertion %.4f, torque %.4g N·m at the end\n", t == 0 ? "torque" : "",
+               mu_model_torque_muscle_name(run->model, t), mu_motor_pool_recruited(pool),
+               mu_motor_pool_neuron_count(pool), mu_motor_pool_exertion(pool),
+               mu_torque_actuator_torque(mu_model_torque_actuator(run->model, t)));
     }
     bool any_hinge = false;
     for (int h = 0; h < mu_model_hinge_count(run->model); ++h) {

@@ -4,7 +4,8 @@
  * weakest first (Henneman's size principle, mu/motor_pool.h). For each
  * count n: the share of the pool, the strength of the n-th neuron, the
  * exertion e(n) (the pool's cumulative strength over its total) and the
- * torque the actuator then applies. With strengths rising exponentially
+ * torque the actuator then applies. The pool is read from the worm's
+ * profile image (models/worm-pool.png). With strengths rising exponentially
  * the curve is convex: each neuron added is stronger than the last, so
  * the first 30 % of the pool give only a few per cent of the force.
  */
@@ -62,12 +63,13 @@ static int draw(const experiment *self, const experiment_options *options, const
     };
     chart_series strength = experiment_series(table, COL_NEURONS, COL_STRENGTH, 1, "strength");
     chart charts[2] = {
-        {.title = "R1 recruitment: exertion against the share of the pool recruited (worm, 200 neurons)",
+        {.title = "R1 recruitment: exertion against the share of the pool recruited (worm, 200 neurons "
+                  "read from worm-pool.png)",
          .x_label = "recruited share of the pool",
          .y_label = "exertion",
          .series = exertion,
          .series_count = 2},
-        {.title = "each neuron's strength, in recruitment order",
+        {.title = "each neuron's strength (255 − blue of its pixel), in recruitment order",
          .x_label = "neuron",
          .y_label = "strength",
          .series = &strength,
@@ -81,9 +83,11 @@ static void print_figures(const experiment_model *worm, const csv_table *table)
 {
     const mu_motor_pool *pool = mu_model_motor_pool(worm->model, TORQUE_MUSCLE);
     int count = mu_motor_pool_neuron_count(pool);
-    printf("pool         %s: %d neurons, strengths %g to %g (exponential, weak first), total %.1f; peak torque "
+    const mu_model_torque_muscle *muscle = &worm->desc->torque_muscles[0];
+    printf("pool         %s: %d neurons from %s, strengths %g to %g (weak first), total %.1f; peak torque "
            "%g N m\n",
-           mu_model_torque_muscle_name(worm->model, TORQUE_MUSCLE), count, mu_motor_pool_strength(pool, 0),
+           mu_model_torque_muscle_name(worm->model, TORQUE_MUSCLE), count,
+           muscle->pool_file != NULL ? muscle->pool_file : "a generated profile", mu_motor_pool_strength(pool, 0),
            mu_motor_pool_strength(pool, count - 1), mu_motor_pool_total_strength(pool),
            mu_torque_actuator_peak_torque(mu_model_torque_actuator(worm->model, TORQUE_MUSCLE)));
     static const double shares[] = {0.1, 0.3, 0.5, 0.7, 0.9};

@@ -141,17 +141,24 @@ MU_API rb_vec2 mu_model_part_centre(const mu_model *model, int index);
 MU_API double mu_model_part_angle(const mu_model *model, int index);
 
 /** The built torque muscles (motor-pool muscles after McIntyre,
- * "Simulated Muscles"), in the description's order: each
- * a motor pool whose exertion drives a torque actuator, applied before
- * every step. Recruiting sets the number of neurons, 0 .. the pool's
- * size (a count outside it is refused, and recruits nothing), by name or
- * by index (0 .. mu_model_torque_muscle_count - 1; 0 of them for a NULL
- * model). */
+ * "Simulated Muscles"), in the description's order: each a motor pool
+ * (its profile image, CSV or generated strengths) whose exertion drives a
+ * torque actuator, applied before every step. 0 of them for a NULL model;
+ * the name is NULL for a bad index. */
 MU_API int mu_model_torque_muscle_count(const mu_model *model);
 MU_API const char *mu_model_torque_muscle_name(const mu_model *model, int index); /**< NULL for a bad index */
+/** Recruits the first `neurons` (0 .. the pool's size) of the torque
+ * muscle named `name`, or of the one at `index` (0 ..
+ * mu_model_torque_muscle_count - 1): the pool's exertion, and so the
+ * actuator's torque, from the next step on, until recruited again (the
+ * command line's `--recruit NAME=N` and a control file's `recruit` lines
+ * call these). A count outside the pool is refused and recruits nothing,
+ * as is an unknown name, whose message lists the names of the torque
+ * muscles built (RB_ERR_INVALID_ARGUMENT, rb_last_error()). */
 MU_API rb_status mu_model_recruit(mu_model *model, const char *name, int neurons);
 MU_API rb_status mu_model_recruit_at(mu_model *model, int index, int neurons);
-/** The pool (recruited count, exertion) and actuator (torque); NULL for a bad index. */
+/** The pool (recruited count, exertion) and actuator (torque, N·m); NULL
+ * for a bad index. */
 MU_API const mu_motor_pool *mu_model_motor_pool(const mu_model *model, int index);
 MU_API const mu_torque_actuator *mu_model_torque_actuator(const mu_model *model, int index);
 

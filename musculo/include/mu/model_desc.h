@@ -179,20 +179,39 @@ typedef struct mu_model_muscle {
     double fibre_damping;              /**< in [0.001, 10]; default 0.1 */
 } mu_model_muscle;
 
+/** Where a torque muscle's motor pool comes from (motor_pool.h). */
+typedef enum mu_model_pool_source {
+    MU_MODEL_POOL_EXPONENTIAL, /**< generated: neurons strengths from weakest to strongest */
+    MU_MODEL_POOL_IMAGE,       /**< a profile image (PNG), one neuron per pixel */
+    MU_MODEL_POOL_CSV,         /**< a CSV of strengths */
+} mu_model_pool_source;
+
 /** A torque muscle (after McIntyre, "Simulated Muscles"; torque_actuator.h and
  * motor_pool.h): exertion · peak_torque on `body` about the axis out of
  * the plane, its reaction on `reaction_body` (or the world), the exertion
- * set by recruiting neurons of an exponential motor pool. Built at level 3
- * and above when its bones are in the variant. */
+ * set by recruiting neurons of its motor pool: a generated exponential
+ * profile, or the strengths of a profile image or a CSV, read when the
+ * file is loaded. Built at level 3 and above when its bones are in the
+ * variant. */
 typedef struct mu_model_torque_muscle {
     char *name;
     mu_model_ref body;          /**< a bone */
     bool has_reaction_body;     /**< default false: the reaction goes to the world */
     mu_model_ref reaction_body; /**< a nail or bone other than body */
-    double peak_torque;        /**< N·m in [-1000, 1000]: the torque at full recruitment, counter-clockwise when > 0 */
-    int neurons;               /**< 1 .. MU_MAX_MOTOR_NEURONS */
-    double weakest, strongest; /**< strengths of the first and last neuron, 1e-6 <= weakest <= strongest <= 1e6 */
-    int recruited;             /**< neurons recruited at the start, 0 .. neurons; default 0 */
+    double peak_torque; /**< N·m in [-1000, 1000]: the torque at full recruitment, counter-clockwise when > 0 */
+    mu_model_pool_source pool_source;
+    int neurons; /**< 1 .. MU_MAX_MOTOR_NEURONS: the pool's size, the image's width or the CSV's count */
+    /** MU_MODEL_POOL_EXPONENTIAL only (0 otherwise): strengths of the first
+     * and last neuron, 1e-6 <= weakest <= strongest <= 1e6. */
+    double weakest, strongest;
+    /** MU_MODEL_POOL_IMAGE and _CSV (NULL otherwise): the file as the
+     * model file names it, and the path it was read from (relative to the
+     * model file's folder; "NAME (built into libmu)" for a built-in
+     * model's), and its `neurons` strengths, each >= 0, their sum > 0. */
+    char *pool_file;
+    char *pool_path;
+    double *strengths;
+    int recruited; /**< neurons recruited at the start, 0 .. neurons; default 0 */
 } mu_model_torque_muscle;
 
 /** Muscles driven together. Each muscle is also a group of its own, which

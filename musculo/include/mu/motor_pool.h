@@ -16,7 +16,8 @@
  * muscle's activation or a torque actuator's share of its peak torque.
  *
  * The strengths come from an array, a profile image, a CSV file or a
- * generated exponential profile. The order given is the recruitment order.
+ * generated exponential profile; a model file names any of the last three
+ * (docs/model-format.md). The order given is the recruitment order.
  */
 #ifndef MU_MOTOR_POOL_H
 #define MU_MOTOR_POOL_H
@@ -48,10 +49,25 @@ MU_API rb_status mu_motor_pool_create(const double *strengths, int count, mu_mot
 MU_API rb_status mu_motor_pool_create_exponential(int count, double weakest, double strongest, mu_motor_pool **out);
 
 /** McIntyre's profile image: a PNG exactly 1 pixel high, one neuron per
- * pixel from left to right, strength = 255 − blue (white is 0, dark red
- * 255). A pixel with alpha is unpremultiplied first; a fully transparent
- * pixel counts as white. Errors name the file: unreadable or not a PNG,
- * not 1 pixel high, more than MU_MAX_MOTOR_NEURONS wide, all white. */
+ * pixel from left to right, strength = 255 − blue: white (255, 255, 255)
+ * is 0, red (255, 0, 0) and dark red (139, 0, 0) are 255.
+ *
+ * - The colours between white, red and black, red >= green = blue, are
+ *   the scale; any other pixel (a blue, a green, a yellow) is refused,
+ *   naming it: its strength would not show in its colour. A grey is on
+ *   the scale (red = green = blue), black the strongest.
+ * - RGB and RGBA images of 8 or 16 bits a sample, palette images (their
+ *   colours) and grey images (each grey g as (g, g, g)) are read; a
+ *   16-bit sample b counts as b/257 on the 8-bit scale, so a 16-bit image
+ *   gives strengths between the 8-bit steps.
+ * - Every pixel must be opaque: a pixel whose alpha is below full (an
+ *   alpha channel or a transparent palette entry) is refused, as its
+ *   colour depends on what lies behind it.
+ *
+ * Read with libpng. Errors name the file and say what is wrong: cannot
+ * open, not a PNG (no PNG signature), damaged (libpng's complaint), not 1
+ * pixel high, wider than MU_MAX_MOTOR_NEURONS, a pixel off the scale or
+ * translucent (with its position and colour), all white. */
 MU_API rb_status mu_motor_pool_load_png(const char *path, mu_motor_pool **out);
 
 /** Strengths as numbers separated by commas, spaces, tabs or line breaks,
