@@ -29,6 +29,7 @@ bool controls_init(controls *schedule, const mu_model_desc *desc, int variant)
         schedule->channels[c] = (control_channel){
             .kind = c < desc->muscle_count ? CONTROL_ACTIVATION : CONTROL_RECRUIT,
             .shape = {.kind = CONTROL_STEP},
+            .pulse_end = CONTROLS_NO_PULSE,
         };
     }
     return true;
@@ -400,7 +401,7 @@ static void act(controls *schedule, const control_event *event, long substep)
         } else {
             channel->kind = event->kind;
             channel->shape = event->shape;
-            channel->pulse_end = 0;
+            channel->pulse_end = CONTROLS_NO_PULSE;
         }
         channel->due = true;
     }

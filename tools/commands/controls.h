@@ -55,10 +55,15 @@ typedef struct control_event {
 } control_event;
 
 /* What drives one muscle or torque muscle. */
+/* A channel's pulse_end when no pulse has acted: below every substep, so
+ * that a channel no line drives is never driven (a torque muscle keeps
+ * the recruitment `--recruit` gave it, a muscle its activation). */
+#define CONTROLS_NO_PULSE (-1L)
+
 typedef struct control_channel {
     control_kind kind;   /* CONTROL_ACTIVATION or CONTROL_TENSION; CONTROL_RECRUIT for a torque muscle */
     control_shape shape; /* the command */
-    long pulse_end;      /* a pulse holds the activation before this substep (0: no pulse) */
+    long pulse_end;      /* a pulse holds the activation before this substep (CONTROLS_NO_PULSE: none) */
     double pulse_value;
     bool due;     /* to be driven at the substep being applied */
     double value; /* the value last driven (activation, N or neurons) */
