@@ -205,22 +205,25 @@ static void expect_covering_log_ticks(double min, double max, int intervals)
     /* No tick to spare: the second is above min, the last but one below max. */
     cr_expect(ticks.values[1] > min && ticks.values[ticks.count - 2] < max, "[%g, %g]: ticks %g .. %g too wide", min,
               max, ticks.values[0], ticks.values[ticks.count - 1]);
-    bool short_range = max / min <= 100.0;
+    bool decades_only = true;
     for (int i = 0; i < ticks.count; ++i) {
-        cr_expect(is_decade_tick(ticks.values[i], !short_range), "[%g, %g]: tick %d is %g", min, max, i,
-                  ticks.values[i]);
+        cr_expect(is_decade_tick(ticks.values[i], false), "[%g, %g]: tick %d is %g", min, max, i, ticks.values[i]);
+        decades_only = decades_only && is_decade_tick(ticks.values[i], true);
         if (i > 0) {
             cr_expect_gt(ticks.values[i], ticks.values[i - 1], "[%g, %g]: ticks not increasing at %d", min, max, i);
         }
     }
-    if (!short_range) {
-        /* Evenly spaced decades, at most `intervals` + 1 of them. */
+    if (decades_only) {
+        /* Evenly spaced decades, at most `intervals` + 1 intervals. */
         double ratio = ticks.values[1] / ticks.values[0];
         for (int i = 2; i < ticks.count; ++i) {
             cr_expect_float_eq(ticks.values[i] / ticks.values[i - 1], ratio, 1e-9 * ratio, "[%g, %g]: uneven at %d",
                                min, max, i);
         }
         cr_expect_leq(ticks.count, intervals + 2, "[%g, %g]: %d ticks for %d intervals", min, max, ticks.count,
+                      intervals);
+    } else {
+        cr_expect_leq(ticks.count, intervals + 1, "[%g, %g]: %d ticks for %d intervals", min, max, ticks.count,
                       intervals);
     }
 }
@@ -229,7 +232,8 @@ Test(chart_log_ticks, are_decades_or_1_2_5_and_cover_the_range)
 {
     expect_covering_log_ticks(0.003, 0.05, 5);    /* 0.002 0.005 0.01 0.02 0.05 */
     expect_covering_log_ticks(2.0, 3.0, 5);       /* 2 5 */
-    expect_covering_log_ticks(1.0, 100.0, 5);     /* 1 2 5 10 20 50 100 */
+    expect_covering_log_ticks(1.0, 100.0, 5);     /* 1 10 100: 1 2 5 .. 100 would be 6 intervals */
+    expect_covering_log_ticks(6.4, 130.0, 10);    /* 5 10 20 50 100 200 */
     expect_covering_log_ticks(1e-5, 20.0, 10);    /* decades 1e-5 .. 100 */
     expect_covering_log_ticks(3.3e-5, 0.5, 10);   /* decades 1e-5 .. 1 */
     expect_covering_log_ticks(1e-300, 1e300, 10); /* every 60 decades */
@@ -242,6 +246,14 @@ Test(chart_log_ticks, are_decades_or_1_2_5_and_cover_the_range)
     for (int i = 0; i < 5; ++i) {
         cr_expect_float_eq(ticks.values[i], expected[i], 1e-15, "tick %d: %g", i, ticks.values[i]);
     }
+    cr_assert(chart_log_ticks_make(6.4, 130.0, 10, &ticks, NULL, 0));
+    const double few_decades[] = {5.0, 10.0, 20.0, 50.0, 100.0, 200.0};
+    cr_assert_eq(ticks.count, 6);
+    for (int i = 0; i < 6; ++i) {
+        cr_expect_float_eq(ticks.values[i], few_decades[i], 1e-12, "tick %d: %g", i, ticks.values[i]);
+    }
+    cr_assert(chart_log_ticks_make(1.0, 100.0, 5, &ticks, NULL, 0));
+    cr_expect(ticks.count == 3 && ticks.values[1] == 10.0, "[1, 100] in 5 intervals: %d ticks", ticks.count);
     /* Equal ends get the ticks around them. */
     cr_assert(chart_log_ticks_make(7.0, 7.0, 5, &ticks, NULL, 0));
     cr_expect(ticks.count == 2 && ticks.values[0] == 5.0 && ticks.values[1] == 10.0, "[7, 7]: %d ticks, %g ..",
@@ -761,7 +773,7 @@ Test(series_groups, a_front_keeps_the_points_no_cheaper_one_beats)
 Test(series_groups, more_keys_than_a_chart_draws_are_refused)
 {
     enum { ROWS = CHART_MAX_SERIES + 1 };
-    char texts[ROWS][8];
+    char texts[ROWS][16];
     const char *keys[ROWS];
     double values[ROWS];
     for (int r = 0; r < ROWS; ++r) {

@@ -26,14 +26,15 @@ static int clamp_decade(double d)
 }
 
 /* The 1-2-5 ticks from the largest at or below min to the smallest at or
- * above max; the range spans at most two decades, so at most 7 ticks
- * beyond the first. */
-static void one_two_five(double min, double max, int low_decade, chart_log_ticks *ticks)
+ * above max, which is at most 10^high_decade; at most
+ * CHART_MAX_LOG_TICKS of them (more would be refused by the caller's
+ * interval count anyway). */
+static void one_two_five(double min, double max, int low_decade, int high_decade, chart_log_ticks *ticks)
 {
     static const int mantissas[3] = {1, 2, 5};
     ticks->count = 0;
-    for (int k = low_decade; k <= low_decade + 3 && ticks->count < CHART_MAX_LOG_TICKS; ++k) {
-        for (int m = 0; m < 3; ++m) {
+    for (int k = low_decade; k <= high_decade && ticks->count < CHART_MAX_LOG_TICKS; ++k) {
+        for (int m = 0; m < 3 && ticks->count < CHART_MAX_LOG_TICKS; ++m) {
             double value = decimal(mantissas[m], k);
             double next = m < 2 ? decimal(mantissas[m + 1], k) : power_of_ten(k + 1);
             /* Skip ticks wholly below min (the next one is still at or
@@ -76,8 +77,6 @@ bool chart_log_ticks_make(double min, double max, int intervals, chart_log_ticks
         }
         return false;
     }
-    /* The decades around the range; log10 of an exact power of ten is
-     * exact in glibc, and 1e-9 absorbs the rounding of any other. */
     /* Equal ends: a range around their value, a quarter of it either
      * way on the log scale's terms (÷ and × 1.25), so that a constant
      * shows off the axis's ends. */
@@ -85,15 +84,20 @@ bool chart_log_ticks_make(double min, double max, int intervals, chart_log_ticks
         min /= 1.25;
         max *= 1.25;
     }
+    /* The decades around the range; log10 of an exact power of ten is
+     * exact in glibc, and 1e-9 absorbs the rounding of any other. */
     int low = clamp_decade(floor(log10(min) + 1e-9));
     int high = clamp_decade(ceil(log10(max) - 1e-9));
     if (high <= low) {
         high = low + 1 <= CHART_LOG_MAX_DECADE ? low + 1 : low;
         low = high - 1;
     }
-    if (high - low <= 2) {
-        one_two_five(min, max, low, ticks);
-        if (ticks->count >= 2) {
+    /* 1, 2 and 5 times the powers of ten, when they make no more than
+     * `intervals` intervals (three a decade: a range of up to about
+     * intervals / 3 decades); else decades alone. */
+    if (3 * (high - low) <= intervals + 3) {
+        one_two_five(min, max, low, high, ticks);
+        if (ticks->count >= 2 && ticks->count - 1 <= intervals) {
             return true;
         }
     }
