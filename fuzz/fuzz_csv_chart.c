@@ -3,7 +3,9 @@
  * (csv_table_read) and, when accepted, drawn as it draws them: the first
  * numeric column against the others, each a series named by its header,
  * the axes labelled from the names (column_label), by chart_draw into a
- * small image. The same bytes then go through the muscle layer's CSV
+ * small image, then again on logarithmic axes (`sinew plot --log-x
+ * --log-y`), where only a value at or below 0 may be refused. The same
+ * bytes then go through the muscle layer's CSV
  * reader with the flags of the curve tables and motor-pool profiles
  * (spaces separate, '#' comments), every field read as a number. */
 #define _POSIX_C_SOURCE 200809L /* fmemopen */
@@ -12,6 +14,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "chart/chart.h"
 #include "chart/column_label.h"
@@ -64,6 +67,12 @@ static void draw(const csv_table *table)
     if (!chart_draw(&figure, cr, 0, 0, WIDTH, HEIGHT, error, sizeof error)) {
         /* Every argument above is valid: a refusal is a defect. */
         fprintf(stderr, "fuzz_csv_chart: chart_draw: %s\n", error);
+        abort();
+    }
+    figure.x_scale = CHART_LOG;
+    figure.y_scale = CHART_LOG;
+    if (!chart_draw(&figure, cr, 0, 0, WIDTH, HEIGHT, error, sizeof error) && strstr(error, "logarithmic") == NULL) {
+        fprintf(stderr, "fuzz_csv_chart: chart_draw on log axes: %s\n", error);
         abort();
     }
     cairo_destroy(cr);

@@ -5,7 +5,11 @@
  * in them, read back through Cairo; SVG files; degenerate data drawn
  * without failing; bad arguments refused with a message; a failed write
  * leaves nothing; CSV reading with quotes, CRLF and errors by line;
- * axis labels from column names.
+ * axis labels from column names. Logarithmic axes: decade and 1-2-5
+ * ticks covering the range, points placed by their logarithm, values at
+ * or below 0 refused by name; a table's rows split into series by a key
+ * column, sorted by x or split into their front, against sets worked out
+ * by hand; a column's cells as text with their lines.
  */
 #define _POSIX_C_SOURCE 200809L /* mkdtemp */
 
@@ -20,8 +24,11 @@
 #include <unistd.h>
 
 #include "chart/chart.h"
+#include "chart/chart_log_ticks.h"
 #include "chart/chart_ticks.h"
 #include "chart/column_label.h"
+#include "chart/series_groups.h"
+#include "io/csv_cells.h"
 #include "io/csv_table.h"
 
 /* ------------------------------------------------------------------ ticks */
@@ -175,6 +182,116 @@ Test(chart_ticks, labels_have_the_decimals_of_the_step)
     cr_assert(chart_nice_ticks(0.0, 3e7, 3, &ticks, NULL, 0));
     chart_tick_label(&ticks, 1, label, sizeof label);
     cr_expect_str_eq(label, "1e+07");
+}
+
+/* ------------------------------------------------------------ log ticks */
+
+/* Whether v is 1, 2 or 5 times a power of ten (decades only: 1). */
+static bool is_decade_tick(double v, bool decades_only)
+{
+    double mantissa = v / pow(10.0, floor(log10(v) + 1e-12));
+    bool one = fabs(mantissa - 1.0) < 1e-9 || fabs(mantissa - 10.0) < 1e-9;
+    return decades_only ? one : one || fabs(mantissa - 2.0) < 1e-9 || fabs(mantissa - 5.0) < 1e-9;
+}
+
+static void expect_covering_log_ticks(double min, double max, int intervals)
+{
+    chart_log_ticks ticks;
+    char error[256];
+    cr_assert(chart_log_ticks_make(min, max, intervals, &ticks, error, sizeof error), "[%g, %g]: %s", min, max, error);
+    cr_assert(ticks.count >= 2 && ticks.count <= CHART_MAX_LOG_TICKS, "[%g, %g]: %d ticks", min, max, ticks.count);
+    cr_expect(ticks.values[0] <= min * (1.0 + 1e-12) && ticks.values[ticks.count - 1] >= max * (1.0 - 1e-12),
+              "[%g, %g]: ticks %g .. %g do not cover it", min, max, ticks.values[0], ticks.values[ticks.count - 1]);
+    /* No tick to spare: the second is above min, the last but one below max. */
+    cr_expect(ticks.values[1] > min && ticks.values[ticks.count - 2] < max, "[%g, %g]: ticks %g .. %g too wide", min,
+              max, ticks.values[0], ticks.values[ticks.count - 1]);
+    bool decades_only = true;
+    for (int i = 0; i < ticks.count; ++i) {
+        cr_expect(is_decade_tick(ticks.values[i], false), "[%g, %g]: tick %d is %g", min, max, i, ticks.values[i]);
+        decades_only = decades_only && is_decade_tick(ticks.values[i], true);
+        if (i > 0) {
+            cr_expect_gt(ticks.values[i], ticks.values[i - 1], "[%g, %g]: ticks not increasing at %d", min, max, i);
+        }
+    }
+    if (decades_only) {
+        /* Evenly spaced decades, at most `intervals` + 1 intervals. */
+        double ratio = ticks.values[1] / ticks.values[0];
+        for (int i = 2; i < ticks.count; ++i) {
+            cr_expect_float_eq(ticks.values[i] / ticks.values[i - 1], ratio, 1e-9 * ratio, "[%g, %g]: uneven at %d",
+                               min, max, i);
+        }
+        cr_expect_leq(ticks.count, intervals + 2, "[%g, %g]: %d ticks for %d intervals", min, max, ticks.count,
+                      intervals);
+    } else {
+        cr_expect_leq(ticks.count, intervals + 1, "[%g, %g]: %d ticks for %d intervals", min, max, ticks.count,
+                      intervals);
+    }
+}
+
+Test(chart_log_ticks, are_decades_or_1_2_5_and_cover_the_range)
+{
+    expect_covering_log_ticks(0.003, 0.05, 5);    /* 0.002 0.005 0.01 0.02 0.05 */
+    expect_covering_log_ticks(2.0, 3.0, 5);       /* 2 5 */
+    expect_covering_log_ticks(1.0, 100.0, 5);     /* 1 10 100: 1 2 5 .. 100 would be 6 intervals */
+    expect_covering_log_ticks(6.4, 130.0, 10);    /* 5 10 20 50 100 200 */
+    expect_covering_log_ticks(1e-5, 20.0, 10);    /* decades 1e-5 .. 100 */
+    expect_covering_log_ticks(3.3e-5, 0.5, 10);   /* decades 1e-5 .. 1 */
+    expect_covering_log_ticks(1e-300, 1e300, 10); /* every 60 decades */
+    expect_covering_log_ticks(1e-12, 1e12, 4);    /* every 6 decades */
+    expect_covering_log_ticks(0.9, 1e308, 10);
+    chart_log_ticks ticks;
+    cr_assert(chart_log_ticks_make(0.003, 0.05, 5, &ticks, NULL, 0));
+    const double expected[] = {0.002, 0.005, 0.01, 0.02, 0.05};
+    cr_assert_eq(ticks.count, 5);
+    for (int i = 0; i < 5; ++i) {
+        cr_expect_float_eq(ticks.values[i], expected[i], 1e-15, "tick %d: %g", i, ticks.values[i]);
+    }
+    cr_assert(chart_log_ticks_make(6.4, 130.0, 10, &ticks, NULL, 0));
+    const double few_decades[] = {5.0, 10.0, 20.0, 50.0, 100.0, 200.0};
+    cr_assert_eq(ticks.count, 6);
+    for (int i = 0; i < 6; ++i) {
+        cr_expect_float_eq(ticks.values[i], few_decades[i], 1e-12, "tick %d: %g", i, ticks.values[i]);
+    }
+    cr_assert(chart_log_ticks_make(1.0, 100.0, 5, &ticks, NULL, 0));
+    cr_expect(ticks.count == 3 && ticks.values[1] == 10.0, "[1, 100] in 5 intervals: %d ticks", ticks.count);
+    /* Equal ends get the ticks around them. */
+    cr_assert(chart_log_ticks_make(7.0, 7.0, 5, &ticks, NULL, 0));
+    cr_expect(ticks.count == 2 && ticks.values[0] == 5.0 && ticks.values[1] == 10.0, "[7, 7]: %d ticks, %g ..",
+              ticks.count, ticks.values[0]);
+    cr_assert(chart_log_ticks_make(100.0, 100.0, 5, &ticks, NULL, 0));
+    cr_expect(ticks.count == 3 && ticks.values[0] == 50.0 && ticks.values[1] == 100.0 && ticks.values[2] == 200.0,
+              "[100, 100]: %d ticks, %g ..", ticks.count, ticks.values[0]);
+    /* A denormal minimum: the least decade a double has, short of it. */
+    cr_assert(chart_log_ticks_make(5e-324, 1.0, 10, &ticks, NULL, 0));
+    cr_expect(ticks.values[0] > 0.0 && isfinite(ticks.values[ticks.count - 1]));
+}
+
+Test(chart_log_ticks, refuse_ends_at_or_below_zero)
+{
+    chart_log_ticks ticks;
+    char error[256] = "";
+    const double bad[][2] = {{0.0, 1.0}, {-1.0, 10.0}, {2.0, 1.0}, {NAN, 1.0}, {1.0, INFINITY}};
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
+        cr_expect_not(chart_log_ticks_make(bad[k][0], bad[k][1], 5, &ticks, error, sizeof error), "[%g, %g]", bad[k][0],
+                      bad[k][1]);
+        cr_expect(strstr(error, "above 0") != NULL, "[%g, %g]: %s", bad[k][0], bad[k][1], error);
+    }
+    cr_expect_not(chart_log_ticks_make(1.0, 10.0, 0, &ticks, error, sizeof error));
+    cr_expect(strstr(error, "intervals") != NULL, "%s", error);
+}
+
+Test(chart_log_ticks, labels_are_plain_or_powers_of_ten)
+{
+    const struct {
+        double value;
+        const char *label;
+    } cases[] = {{0.001, "0.001"}, {0.002, "0.002"}, {0.5, "0.5"}, {1.0, "1"},         {20.0, "20"},    {1e4, "10000"},
+                 {1e-4, "1e-4"},   {5e-5, "5e-5"},   {2e6, "2e6"}, {1e-300, "1e-300"}, {1e300, "1e300"}};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        char label[64];
+        chart_log_tick_label(cases[k].value, label, sizeof label);
+        cr_expect_str_eq(label, cases[k].label, "%g", cases[k].value);
+    }
 }
 
 /* ------------------------------------------------------------------ files */
@@ -483,4 +600,232 @@ Test(column_label, units_from_sinew_column_names)
         column_label(cases[k][0], label, sizeof label);
         cr_expect_str_eq(label, cases[k][1]);
     }
+}
+
+/* -------------------------------------------------------- logarithmic axes */
+
+/* The rows holding a pixel of `rgb`, averaged: where a horizontal line
+ * of that colour was drawn. */
+static double mean_row_of_colour(cairo_surface_t *image, const double rgb[3])
+{
+    cairo_surface_flush(image);
+    const unsigned char *data = cairo_image_surface_get_data(image);
+    int stride = cairo_image_surface_get_stride(image);
+    double sum = 0.0;
+    long found = 0;
+    for (int y = 0; y < cairo_image_surface_get_height(image); ++y) {
+        const uint32_t *row = (const uint32_t *)(const void *)(data + (size_t)y * (size_t)stride);
+        for (int x = 0; x < cairo_image_surface_get_width(image); ++x) {
+            double r = ((row[x] >> 16) & 0xFF) / 255.0, g = ((row[x] >> 8) & 0xFF) / 255.0, b = (row[x] & 0xFF) / 255.0;
+            if (fabs(r - rgb[0]) < 0.15 && fabs(g - rgb[1]) < 0.15 && fabs(b - rgb[2]) < 0.15) {
+                sum += y;
+                ++found;
+            }
+        }
+    }
+    return found > 0 ? sum / (double)found : NAN;
+}
+
+/* On a log axis each decade has the same length: lines at 2, 20 and 200
+ * are evenly spaced (log10 20 - log10 2 = log10 200 - log10 20 = 1), where
+ * a linear axis would put the first two 9 times closer than the last two. */
+Test(chart_draw, a_log_axis_places_values_by_their_logarithm)
+{
+    double x[2] = {0.0, 1.0}, low[2] = {2.0, 2.0}, middle[2] = {20.0, 20.0}, high[2] = {200.0, 200.0};
+    /* No labels, so no legend whose samples share the lines' colours. */
+    chart_series series[3] = {
+        {.x = x, .y = low, .count = 2}, {.x = x, .y = middle, .count = 2}, {.x = x, .y = high, .count = 2}};
+    chart plot = {.series = series,
+                  .series_count = 3,
+                  .y_scale = CHART_LOG,
+                  .y_range = {.fixed = true, .min = 1.0, .max = 1000.0}};
+    cairo_surface_t *surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 400, 400);
+    cairo_t *cr = cairo_create(surface);
+    char error[CHART_ERROR_SIZE];
+    cr_assert(chart_draw(&plot, cr, 0.0, 0.0, 400.0, 400.0, error, sizeof error), "%s", error);
+    cairo_destroy(cr);
+    double rows[3];
+    for (int s = 0; s < 3; ++s) {
+        double rgb[3];
+        chart_series_colour(s, rgb);
+        rows[s] = mean_row_of_colour(surface, rgb);
+        cr_assert(!isnan(rows[s]), "series %d not drawn", s);
+    }
+    cairo_surface_destroy(surface);
+    cr_expect(rows[0] > rows[1] && rows[1] > rows[2], "2, 20, 200 upwards: rows %g %g %g", rows[0], rows[1], rows[2]);
+    cr_expect_float_eq(rows[0] - rows[1], rows[1] - rows[2], 1.0, "decades of %g and %g px", rows[0] - rows[1],
+                       rows[1] - rows[2]);
+    /* And both log axes with data alone: drawn. */
+    plot = (chart){.series = series, .series_count = 3, .y_scale = CHART_LOG};
+    double positive_x[2] = {1e-3, 1e3};
+    series[0].x = series[1].x = series[2].x = positive_x;
+    plot.x_scale = CHART_LOG;
+    cr_expect(draw_to_image(&plot, error, sizeof error), "%s", error);
+}
+
+Test(chart_draw, a_log_axis_refuses_values_at_or_below_zero_by_name)
+{
+    double x[3] = {1.0, 2.0, 3.0}, y[3] = {1.0, 0.0, 4.0}, holes[3] = {1.0, NAN, 4.0};
+    chart_series series[2] = {{.label = "fine", .x = x, .y = holes, .count = 3},
+                              {.label = "ngs", .x = x, .y = y, .count = 3}};
+    chart plot = {.series = series, .series_count = 2, .y_scale = CHART_LOG};
+    char error[CHART_ERROR_SIZE] = "";
+    cr_expect_not(draw_to_image(&plot, error, sizeof error));
+    cr_expect(strstr(error, "series[1]") != NULL && strstr(error, "\"ngs\"") != NULL &&
+                  strstr(error, "point 1 has y = 0") != NULL && strstr(error, "above 0") != NULL,
+              "message: %s", error);
+    /* The same values on a linear axis, or the NaN alone on a log one: drawn. */
+    plot.y_scale = CHART_LINEAR;
+    cr_expect(draw_to_image(&plot, error, sizeof error), "%s", error);
+    plot = (chart){.series = series, .series_count = 1, .y_scale = CHART_LOG};
+    cr_expect(draw_to_image(&plot, error, sizeof error), "%s", error);
+    /* x too, and the marks. */
+    double negative_x[3] = {-1.0, 2.0, 3.0};
+    chart_series marked = {
+        .label = "m", .x = x, .y = holes, .count = 3, .mark_x = negative_x, .mark_y = x, .mark_count = 3};
+    plot = (chart){.series = &marked, .series_count = 1, .x_scale = CHART_LOG};
+    cr_expect_not(draw_to_image(&plot, error, sizeof error));
+    cr_expect(strstr(error, "mark 0 has x = -1") != NULL, "message: %s", error);
+    /* A fixed range from 0 on a log axis. */
+    plot = (chart){.series_count = 0, .y_scale = CHART_LOG, .y_range = {.fixed = true, .min = 0.0, .max = 1.0}};
+    cr_expect_not(draw_to_image(&plot, error, sizeof error));
+    cr_expect(strstr(error, "y_range") != NULL && strstr(error, "logarithmic") != NULL, "message: %s", error);
+}
+
+/* ----------------------------------------------------------- series groups */
+
+static void expect_points(const series_groups *groups, int k, const char *key, const double *x, const double *y,
+                          size_t count)
+{
+    cr_assert_lt(k, groups->count, "no series %d (%s)", k, key);
+    cr_expect_str_eq(groups->keys[k], key);
+    cr_assert_eq(groups->points[k], count, "series %s: %zu points, expected %zu", key, groups->points[k], count);
+    for (size_t i = 0; i < count; ++i) {
+        cr_expect(groups->x[k][i] == x[i] || (isnan(groups->x[k][i]) && isnan(x[i])), "%s point %zu: x %g, not %g", key,
+                  i, groups->x[k][i], x[i]);
+        cr_expect(groups->y[k][i] == y[i] || (isnan(groups->y[k][i]) && isnan(y[i])), "%s point %zu: y %g, not %g", key,
+                  i, groups->y[k][i], y[i]);
+    }
+}
+
+/* A solver benchmark in miniature: three solvers' rows interleaved, one
+ * row left out. */
+static const char *const solver_keys[] = {"ngs", "soft", "ngs", "baum", "soft", "ngs", "ngs", "baum"};
+static const double solver_x[] = {3.0, 1.0, 1.0, 2.0, 2.0, 2.0, 4.0, 1.0};
+static const double solver_y[] = {0.5, 9.0, 4.0, 7.0, 3.0, 5.0, 0.1, 8.0};
+static const bool solver_keep[] = {true, true, true, true, true, true, true, false};
+
+Test(series_groups, split_rows_by_key_in_order_of_first_appearance)
+{
+    series_groups groups;
+    char error[256];
+    cr_assert(series_groups_build(solver_keys, solver_keep, solver_x, solver_y, 8, SERIES_AS_READ, &groups, error,
+                                  sizeof error),
+              "%s", error);
+    cr_assert_eq(groups.count, 3);
+    expect_points(&groups, 0, "ngs", (double[]){3.0, 1.0, 2.0, 4.0}, (double[]){0.5, 4.0, 5.0, 0.1}, 4);
+    expect_points(&groups, 1, "soft", (double[]){1.0, 2.0}, (double[]){9.0, 3.0}, 2);
+    expect_points(&groups, 2, "baum", (double[]){2.0}, (double[]){7.0}, 1); /* the other baum row is left out */
+    cr_expect_eq(groups.front[0], 4, "no front: every point is on the line");
+    series_groups_free(&groups);
+    cr_expect_eq(groups.count, 0);
+
+    /* Sorted by x. */
+    cr_assert(series_groups_build(solver_keys, NULL, solver_x, solver_y, 8, SERIES_BY_X, &groups, error, sizeof error));
+    expect_points(&groups, 0, "ngs", (double[]){1.0, 2.0, 3.0, 4.0}, (double[]){4.0, 5.0, 0.5, 0.1}, 4);
+    expect_points(&groups, 2, "baum", (double[]){1.0, 2.0}, (double[]){8.0, 7.0}, 2);
+    series_groups_free(&groups);
+
+    /* No keys: one series of every row. */
+    cr_assert(series_groups_build(NULL, NULL, solver_x, solver_y, 8, SERIES_AS_READ, &groups, error, sizeof error));
+    cr_assert_eq(groups.count, 1);
+    cr_expect_eq(groups.points[0], 8);
+    series_groups_free(&groups);
+}
+
+/* The front worked out by hand: ngs at x 1, 2, 3, 4 has y 4, 5, 0.5, 0.1;
+ * (2, 5) is beaten by (1, 4), cheaper and more accurate, so the front is
+ * (1, 4), (3, 0.5), (4, 0.1) and (2, 5) is off it. A NaN y is never on it;
+ * a tie in x goes to the lower y. */
+Test(series_groups, a_front_keeps_the_points_no_cheaper_one_beats)
+{
+    series_groups groups;
+    char error[256];
+    cr_assert(
+        series_groups_build(solver_keys, NULL, solver_x, solver_y, 8, SERIES_FRONT, &groups, error, sizeof error));
+    expect_points(&groups, 0, "ngs", (double[]){1.0, 3.0, 4.0, 2.0}, (double[]){4.0, 0.5, 0.1, 5.0}, 4);
+    cr_expect_eq(groups.front[0], 3);
+    expect_points(&groups, 1, "soft", (double[]){1.0, 2.0}, (double[]){9.0, 3.0}, 2);
+    cr_expect_eq(groups.front[1], 2);
+    expect_points(&groups, 2, "baum", (double[]){1.0, 2.0}, (double[]){8.0, 7.0}, 2);
+    cr_expect_eq(groups.front[2], 2);
+    series_groups_free(&groups);
+
+    const double x[] = {1.0, 1.0, 2.0, NAN, 3.0, 5.0};
+    const double y[] = {3.0, 2.0, NAN, 0.0, 2.0, 1.0};
+    cr_assert(series_groups_build(NULL, NULL, x, y, 6, SERIES_FRONT, &groups, error, sizeof error));
+    expect_points(&groups, 0, "", (double[]){1.0, 5.0, 1.0, 2.0, 3.0, NAN}, (double[]){2.0, 1.0, 3.0, NAN, 2.0, 0.0},
+                  6);
+    cr_expect_eq(groups.front[0], 2);
+    series_groups_free(&groups);
+}
+
+Test(series_groups, more_keys_than_a_chart_draws_are_refused)
+{
+    enum { ROWS = CHART_MAX_SERIES + 1 };
+    char texts[ROWS][16];
+    const char *keys[ROWS];
+    double values[ROWS];
+    for (int r = 0; r < ROWS; ++r) {
+        snprintf(texts[r], sizeof texts[r], "k%d", r);
+        keys[r] = texts[r];
+        values[r] = r;
+    }
+    series_groups groups;
+    char error[256] = "";
+    cr_expect_not(series_groups_build(keys, NULL, values, values, ROWS, SERIES_AS_READ, &groups, error, sizeof error));
+    cr_expect(strstr(error, "more than 64 distinct values") != NULL && strstr(error, "\"k64\"") != NULL, "%s", error);
+    cr_expect_eq(groups.count, 0);
+    /* One fewer fits. */
+    cr_expect(series_groups_build(keys, NULL, values, values, ROWS - 1, SERIES_AS_READ, &groups, error, sizeof error));
+    cr_expect_eq(groups.count, CHART_MAX_SERIES);
+    series_groups_free(&groups);
+}
+
+/* ---------------------------------------------------------------- CSV cells */
+
+Test(csv_cells, a_column_as_text_with_each_row_s_line)
+{
+    make_dir();
+    char path[512], error[1024];
+    path_in_dir(path, sizeof path, "cells.csv");
+    write_text(path, "scene,\"solver, name\",ms\n"
+                     "chain,ngs,0.5\n"
+                     "\n"
+                     "chain,\"soft, step\",0.25\r\n"
+                     "grid,,12\n");
+    csv_cells cells;
+    cr_assert(csv_cells_read(path, "solver, name", &cells, error, sizeof error), "%s", error);
+    cr_assert_eq(cells.count, 3);
+    cr_expect_str_eq(cells.text[0], "ngs");
+    cr_expect_str_eq(cells.text[1], "soft, step");
+    cr_expect_str_eq(cells.text[2], "");
+    cr_expect(cells.line[0] == 2 && cells.line[1] == 4 && cells.line[2] == 5, "lines %ld %ld %ld", cells.line[0],
+              cells.line[1], cells.line[2]);
+    csv_cells_free(&cells);
+    /* The same rows as the table's. */
+    csv_table table;
+    cr_assert(csv_table_read(path, &table, error, sizeof error), "%s", error);
+    cr_expect_eq(table.row_count, 3);
+    cr_expect_float_eq(table.columns[2].values[1], 0.25, 1e-15);
+    csv_table_free(&table);
+
+    cr_expect_not(csv_cells_read(path, "solver", &cells, error, sizeof error));
+    cr_expect(strstr(error, "cells.csv") != NULL && strstr(error, "no column \"solver\"") != NULL, "%s", error);
+    write_text(path, "a,b\n1,2\n3\n");
+    cr_expect_not(csv_cells_read(path, "b", &cells, error, sizeof error));
+    cr_expect(strstr(error, "cells.csv:3: 1 fields") != NULL, "%s", error);
+    cr_expect_eq(cells.count, 0);
+    remove(path);
+    rmdir(dir);
 }

@@ -7,6 +7,7 @@
 
 #include <cairo.h>
 #include <criterion/criterion.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -319,4 +320,82 @@ Test(simulation, a_model_runs_on_after_the_engine_panel_changes_its_solver)
                   rb_solver_type_name(settings.type), elbow);
     }
     simulation_free(&sim);
+}
+
+/* Where a value falls in a range, 0 at its min, 1 at its max. */
+static double fraction_in(chart_range range, double value) { return (value - range.min) / (range.max - range.min); }
+
+/* A line at the data's least or greatest value is drawn inside the plot,
+ * off its frame: at least LIVE_GRAPH_HEADROOM / (1 + 2 LIVE_GRAPH_HEADROOM)
+ * of the height (5.4 %, 11 px of a 200 px plot) from either edge. */
+Test(live_graph, ranges_leave_headroom_so_a_constant_line_shows)
+{
+    const double inside = LIVE_GRAPH_HEADROOM / (1.0 + 2.0 * LIVE_GRAPH_HEADROOM) - 1e-12;
+    /* A constant activation of 1, then of 0: the graph keeps 0 .. 1 with room
+     * above and below, 1 and 0 at the same places. */
+    chart_range full = live_graph_y_range(LIVE_GRAPH_ACTIVATION, 1.0, 1.0);
+    cr_expect(full.fixed && full.min < 0.0 && full.max > 1.0, "[%g, %g]", full.min, full.max);
+    cr_expect_geq(1.0 - fraction_in(full, 1.0), inside, "activation 1 at %g of the height", fraction_in(full, 1.0));
+    cr_expect_geq(fraction_in(full, 0.0), inside, "activation 0 at %g of the height", fraction_in(full, 0.0));
+    chart_range rest = live_graph_y_range(LIVE_GRAPH_ACTIVATION, 0.0, 0.0);
+    cr_expect(rest.min == full.min && rest.max == full.max, "[%g, %g] for 0, [%g, %g] for 1", rest.min, rest.max,
+              full.min, full.max);
+    /* Tensions of 0 .. 100 N: 6 N of room either side. */
+    chart_range tension = live_graph_y_range(LIVE_GRAPH_TENSION, 0.0, 100.0);
+    cr_expect_float_eq(tension.min, -6.0, 1e-12);
+    cr_expect_float_eq(tension.max, 106.0, 1e-12);
+    /* A constant tension, at 250 N or at 0 N: the line in the middle. */
+    const double constants[] = {250.0, 0.0, -3e-5};
+    for (size_t k = 0; k < sizeof constants / sizeof constants[0]; ++k) {
+        chart_range range = live_graph_y_range(LIVE_GRAPH_TENSION, constants[k], constants[k]);
+        cr_expect(range.fixed && range.min < range.max, "%g: [%g, %g]", constants[k], range.min, range.max);
+        cr_expect_float_eq(fraction_in(range, constants[k]), 0.5, 1e-9, "%g at %g of the height", constants[k],
+                           fraction_in(range, constants[k]));
+    }
+    /* Nothing shown yet, or values at the ends of a double: a finite range. */
+    const double ends[][2] = {{NAN, NAN}, {INFINITY, -INFINITY}, {-DBL_MAX, DBL_MAX}, {DBL_MAX, DBL_MAX}};
+    for (size_t k = 0; k < sizeof ends / sizeof ends[0]; ++k) {
+        for (int kind = 0; kind < LIVE_GRAPH_COUNT; ++kind) {
+            chart_range range = live_graph_y_range((live_graph_kind)kind, ends[k][0], ends[k][1]);
+            cr_expect(range.fixed && isfinite(range.min) && isfinite(range.max) && range.min < range.max,
+                      "[%g, %g], graph %d: [%g, %g]", ends[k][0], ends[k][1], kind, range.min, range.max);
+        }
+    }
+}
+
+/* The leg at 200 kg: the weight's disc, larger than the shank, is drawn
+ * under the bones, so they show as many ivory pixels as without the
+ * weight (level 3 builds no weight; the pose at t = 0 is the same). */
+static long leg_bone_pixels(int level, long *rim)
+{
+    simulation sim;
+    simulation_init(&sim);
+    mu_model_options options = mu_default_model_options();
+    options.weight_index = 3; /* 200 kg */
+    options.level = level;
+    char error[SIMULATION_ERROR_SIZE];
+    cr_assert(simulation_load_model(&sim, "leg", &options, error, sizeof error), "load leg: %s", error);
+    cairo_surface_t *surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 400, 400);
+    cairo_t *cr = cairo_create(surface);
+    view_transform view = view_transform_make(mu_model_part_centre(sim.model, 0), 300.0);
+    view_transform_resize(&view, 400.0, 400.0);
+    canvas_overlays overlays = {.joints = false};
+    canvas_draw(cr, &view, &sim, &overlays);
+    long bone = count_colour(surface, CANVAS_BONE, 1);
+    *rim = count_colour(surface, CANVAS_WEIGHT, 1);
+    cairo_destroy(cr);
+    cairo_surface_destroy(surface);
+    simulation_free(&sim);
+    return bone;
+}
+
+Test(canvas_draw, bones_stay_visible_under_a_heavy_weight)
+{
+    long rim_with = 0, rim_without = 0;
+    long with_weight = leg_bone_pixels(4, &rim_with), without = leg_bone_pixels(3, &rim_without);
+    cr_assert_gt(without, 1000, "ivory bones of the leg: %ld pixels", without);
+    cr_expect_gt(rim_with, 100, "the weight's rim: %ld pixels", rim_with);
+    cr_expect_eq(rim_without, 0, "no weight at level 3: %ld pixels", rim_without);
+    cr_expect_geq(with_weight, without * 95 / 100, "bones with the weight: %ld pixels, without: %ld", with_weight,
+                  without);
 }

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "chart/chart.h"
+#include "chart/chart_log_ticks.h"
 #include "chart/chart_ticks.h"
 
 /* Okabe & Ito's palette without its yellow, which is hard to see on white. */
@@ -48,13 +49,49 @@ static bool fail(char *error, size_t error_size, const char *format, ...)
 
 /* ------------------------------------------------------------ checks */
 
-static bool check_range(const chart_range *range, const char *name, char *error, size_t error_size)
+static bool check_range(const chart_range *range, chart_scale scale, const char *name, char *error, size_t error_size)
 {
     if (range->fixed && !(isfinite(range->min) && isfinite(range->max) && range->min < range->max)) {
         return fail(error, error_size, "chart_draw: chart->%s is fixed to [%g, %g]; expected finite min < max", name,
                     range->min, range->max);
     }
+    if (range->fixed && scale == CHART_LOG && !(range->min > 0.0)) {
+        return fail(error, error_size,
+                    "chart_draw: chart->%s is fixed to [%g, %g] on a logarithmic axis; expected 0 < min < max", name,
+                    range->min, range->max);
+    }
     return true;
+}
+
+/* A logarithmic axis shows only values above 0: the first finite point
+ * of the series at or below 0 on one is refused (a NaN or infinite point
+ * is a gap in the line, as on a linear axis). */
+static bool check_log_points(const chart *chart, int s, const double *x, const double *y, size_t count,
+                             const char *what, const char *function, char *error, size_t error_size)
+{
+    const chart_series *series = &chart->series[s];
+    for (size_t i = 0; i < count; ++i) {
+        if (!isfinite(x[i]) || !isfinite(y[i])) {
+            continue;
+        }
+        bool bad_x = chart->x_scale == CHART_LOG && x[i] <= 0.0;
+        if (bad_x || (chart->y_scale == CHART_LOG && y[i] <= 0.0)) {
+            return fail(error, error_size,
+                        "%s: chart->series[%d] (\"%s\") %s %zu has %s = %g; a logarithmic %s axis shows only "
+                        "values above 0",
+                        function, s, series->label != NULL ? series->label : "", what, i, bad_x ? "x" : "y",
+                        bad_x ? x[i] : y[i], bad_x ? "x" : "y");
+        }
+    }
+    return true;
+}
+
+static bool check_log_values(const chart *chart, int s, const char *function, char *error, size_t error_size)
+{
+    const chart_series *series = &chart->series[s];
+    return check_log_points(chart, s, series->x, series->y, series->count, "point", function, error, error_size) &&
+           check_log_points(chart, s, series->mark_x, series->mark_y, series->mark_count, "mark", function, error,
+                            error_size);
 }
 
 static bool check_chart(const chart *chart, const char *function, char *error, size_t error_size)
@@ -75,26 +112,58 @@ static bool check_chart(const chart *chart, const char *function, char *error, s
             return fail(error, error_size, "%s: chart->series[%d] has %zu points and a NULL x or y", function, s,
                         series->count);
         }
+        if (series->mark_count > 0 && (series->mark_x == NULL || series->mark_y == NULL)) {
+            return fail(error, error_size, "%s: chart->series[%d] has %zu marks and a NULL mark_x or mark_y", function,
+                        s, series->mark_count);
+        }
         if (!(series->marker_radius >= 0.0 && series->marker_radius <= 100.0)) {
             return fail(error, error_size, "%s: chart->series[%d].marker_radius %g, expected 0 .. 100", function, s,
                         series->marker_radius);
         }
+        if (!check_log_values(chart, s, function, error, error_size)) {
+            return false;
+        }
     }
-    return check_range(&chart->x_range, "x_range", error, error_size) &&
-           check_range(&chart->y_range, "y_range", error, error_size);
+    if ((chart->x_scale != CHART_LINEAR && chart->x_scale != CHART_LOG) ||
+        (chart->y_scale != CHART_LINEAR && chart->y_scale != CHART_LOG)) {
+        return fail(error, error_size, "%s: chart->x_scale %d, y_scale %d: expected CHART_LINEAR or CHART_LOG",
+                    function, (int)chart->x_scale, (int)chart->y_scale);
+    }
+    return check_range(&chart->x_range, chart->x_scale, "x_range", error, error_size) &&
+           check_range(&chart->y_range, chart->y_scale, "y_range", error, error_size);
 }
 
 /* ------------------------------------------------------------ layout */
 
 typedef struct axis {
-    chart_ticks ticks;
-    double min, max; /* the values at the two ends of the plot area */
+    bool log;                  /* logarithmic: log_ticks, else ticks */
+    chart_ticks ticks;         /* linear */
+    chart_log_ticks log_ticks; /* logarithmic */
+    double min, max;           /* the values at the two ends of the plot area */
 } axis;
+
+static int tick_count(const axis *a) { return a->log ? a->log_ticks.count : a->ticks.count; }
+
+static double tick_value(const axis *a, int i)
+{
+    return a->log ? a->log_ticks.values[i] : chart_tick_value(&a->ticks, i);
+}
+
+static void tick_label(const axis *a, int i, char *text, size_t text_size)
+{
+    if (a->log) {
+        chart_log_tick_label(a->log_ticks.values[i], text, text_size);
+    } else {
+        chart_tick_label(&a->ticks, i, text, text_size);
+    }
+}
 
 /* The axis covering the finite values of the series (x when `use_x`),
  * or the caller's fixed range. */
-static void fit_axis(const chart *chart, bool use_x, const chart_range *range, int intervals, axis *out)
+static void fit_axis(const chart *chart, bool use_x, const chart_range *range, chart_scale scale, int intervals,
+                     axis *out)
 {
+    out->log = scale == CHART_LOG;
     double low = INFINITY, high = -INFINITY;
     if (range->fixed) {
         low = range->min;
@@ -102,9 +171,13 @@ static void fit_axis(const chart *chart, bool use_x, const chart_range *range, i
     } else {
         for (int s = 0; s < chart->series_count; ++s) {
             const chart_series *series = &chart->series[s];
-            for (size_t i = 0; i < series->count; ++i) {
-                double v = use_x ? series->x[i] : series->y[i];
-                double other = use_x ? series->y[i] : series->x[i];
+            size_t total = series->count + series->mark_count;
+            for (size_t k = 0; k < total; ++k) {
+                bool mark = k >= series->count;
+                size_t i = mark ? k - series->count : k;
+                const double *xs = mark ? series->mark_x : series->x, *ys = mark ? series->mark_y : series->y;
+                double v = use_x ? xs[i] : ys[i];
+                double other = use_x ? ys[i] : xs[i];
                 if (isfinite(v) && isfinite(other)) {
                     low = fmin(low, v);
                     high = fmax(high, v);
@@ -112,26 +185,34 @@ static void fit_axis(const chart *chart, bool use_x, const chart_range *range, i
             }
         }
         if (!(low <= high)) {
-            low = 0.0; /* nothing to draw */
+            low = out->log ? 0.1 : 0.0; /* nothing to draw */
             high = 1.0;
         }
     }
-    /* Both ends are finite and ordered here, so this cannot fail. */
-    chart_nice_ticks(low, high, intervals, &out->ticks, NULL, 0);
+    /* Both ends are finite and ordered here, and above 0 on a log axis
+     * (check_chart), so this cannot fail. */
+    if (out->log) {
+        chart_log_ticks_make(low, high, intervals, &out->log_ticks, NULL, 0);
+    } else {
+        chart_nice_ticks(low, high, intervals, &out->ticks, NULL, 0);
+    }
     if (range->fixed) {
         out->min = low;
         out->max = high;
     } else {
         /* The end ticks, or the data's end where no finite tick lies
-         * beyond it (near ±DBL_MAX). */
-        out->min = fmin(chart_tick_value(&out->ticks, 0), low);
-        out->max = fmax(chart_tick_value(&out->ticks, out->ticks.count - 1), high);
+         * beyond it (near ±DBL_MAX, or below 10^-323). */
+        out->min = fmin(tick_value(out, 0), low);
+        out->max = fmax(tick_value(out, tick_count(out) - 1), high);
     }
 }
 
 static bool tick_inside(const axis *a, int i)
 {
-    double v = chart_tick_value(&a->ticks, i);
+    double v = tick_value(a, i);
+    if (a->log) {
+        return v >= a->min * (1.0 - 1e-9) && v <= a->max * (1.0 + 1e-9);
+    }
     double slack = 2e-9 * (a->max / 2.0 - a->min / 2.0);
     return v >= a->min - slack && v <= a->max + slack;
 }
@@ -250,10 +331,14 @@ typedef struct plot_area {
     axis x, y;
 } plot_area;
 
-/* Where v lies between the axis's ends, 0 .. 1, in halves: the width of
- * an axis from -DBL_MAX to DBL_MAX overflows. */
+/* Where v lies between the axis's ends, 0 .. 1: on a linear axis in
+ * halves (the width of an axis from -DBL_MAX to DBL_MAX overflows), on a
+ * logarithmic one by the logarithms (each decade the same length). */
 static double axis_fraction(const axis *a, double v)
 {
+    if (a->log) {
+        return (log10(v) - log10(a->min)) / (log10(a->max) - log10(a->min));
+    }
     return (v / 2.0 - a->min / 2.0) / (a->max / 2.0 - a->min / 2.0);
 }
 
@@ -265,11 +350,11 @@ static void draw_grid_and_ticks(cairo_t *cr, const plot_area *p, double font_siz
 {
     char label[64];
     cairo_set_line_width(cr, 1.0);
-    for (int i = 0; i < p->x.ticks.count; ++i) {
+    for (int i = 0; i < tick_count(&p->x); ++i) {
         if (!tick_inside(&p->x, i)) {
             continue;
         }
-        double px = map_x(p, chart_tick_value(&p->x.ticks, i));
+        double px = map_x(p, tick_value(&p->x, i));
         cairo_set_source_rgb(cr, 0.9, 0.9, 0.9);
         cairo_move_to(cr, px, p->top);
         cairo_line_to(cr, px, p->top + p->height);
@@ -278,15 +363,15 @@ static void draw_grid_and_ticks(cairo_t *cr, const plot_area *p, double font_siz
         cairo_move_to(cr, px, p->top + p->height);
         cairo_line_to(cr, px, p->top + p->height + 0.4 * font_size);
         cairo_stroke(cr);
-        chart_tick_label(&p->x.ticks, i, label, sizeof label);
+        tick_label(&p->x, i, label, sizeof label);
         cairo_move_to(cr, px - 0.5 * text_width(cr, label), p->top + p->height + 1.5 * font_size);
         show_text(cr, label);
     }
-    for (int i = 0; i < p->y.ticks.count; ++i) {
+    for (int i = 0; i < tick_count(&p->y); ++i) {
         if (!tick_inside(&p->y, i)) {
             continue;
         }
-        double py = map_y(p, chart_tick_value(&p->y.ticks, i));
+        double py = map_y(p, tick_value(&p->y, i));
         cairo_set_source_rgb(cr, 0.9, 0.9, 0.9);
         cairo_move_to(cr, p->left, py);
         cairo_line_to(cr, p->left + p->width, py);
@@ -295,7 +380,7 @@ static void draw_grid_and_ticks(cairo_t *cr, const plot_area *p, double font_siz
         cairo_move_to(cr, p->left - 0.4 * font_size, py);
         cairo_line_to(cr, p->left, py);
         cairo_stroke(cr);
-        chart_tick_label(&p->y.ticks, i, label, sizeof label);
+        tick_label(&p->y, i, label, sizeof label);
         cairo_move_to(cr, p->left - 0.6 * font_size - text_width(cr, label), py + 0.35 * font_size);
         show_text(cr, label);
     }
@@ -363,6 +448,17 @@ static void draw_series(cairo_t *cr, const plot_area *p, const chart_series *ser
             }
         }
     }
+    /* Marks are rings, told apart from the line's filled dots. */
+    double mark_radius = series->marker_radius > 0.0 ? series->marker_radius : 3.0;
+    cairo_set_dash(cr, NULL, 0, 0.0);
+    cairo_set_line_width(cr, fmax(1.0, 0.3 * mark_radius));
+    for (size_t i = 0; i < series->mark_count; ++i) {
+        if (isfinite(series->mark_x[i]) && isfinite(series->mark_y[i])) {
+            cairo_new_sub_path(cr);
+            cairo_arc(cr, map_x(p, series->mark_x[i]), map_y(p, series->mark_y[i]), mark_radius, 0.0, 2.0 * PI);
+            cairo_stroke(cr);
+        }
+    }
 }
 
 static void draw_legend(cairo_t *cr, const chart *chart, double left, double top, double bottom, double font_size)
@@ -405,8 +501,8 @@ static double widest_label(cairo_t *cr, const axis *a)
 {
     char label[64];
     double widest = 0.0;
-    for (int i = 0; i < a->ticks.count; ++i) {
-        chart_tick_label(&a->ticks, i, label, sizeof label);
+    for (int i = 0; i < tick_count(a); ++i) {
+        tick_label(a, i, label, sizeof label);
         widest = fmax(widest, text_width(cr, label));
     }
     return widest;
@@ -454,8 +550,9 @@ bool chart_draw(const chart *chart, cairo_t *cr, double x, double y, double widt
 
     plot_area p;
     /* Tick density: one label per ~7 font sizes across, ~3 up. */
-    fit_axis(chart, true, &chart->x_range, (int)fmax(2.0, fmin(10.0, width / (7.0 * font_size))), &p.x);
-    fit_axis(chart, false, &chart->y_range, (int)fmax(2.0, fmin(10.0, height / (3.5 * font_size))), &p.y);
+    fit_axis(chart, true, &chart->x_range, chart->x_scale, (int)fmax(2.0, fmin(10.0, width / (7.0 * font_size))), &p.x);
+    fit_axis(chart, false, &chart->y_range, chart->y_scale, (int)fmax(2.0, fmin(10.0, height / (3.5 * font_size))),
+             &p.y);
     bool has_title = chart->title != NULL && chart->title[0] != '\0';
     bool has_x_label = chart->x_label != NULL && chart->x_label[0] != '\0';
     bool has_y_label = chart->y_label != NULL && chart->y_label[0] != '\0';

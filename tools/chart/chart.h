@@ -7,7 +7,10 @@
  * and one or more series of (x, y) points, each drawn as a polyline in its
  * own colour (chart_series_colour) and named in a legend at the right of
  * the plot area. The axes cover the data with "nice" ticks (chart_ticks.h)
- * unless the chart fixes a range.
+ * unless the chart fixes a range. An axis is linear or logarithmic
+ * (chart_scale); a logarithmic one has decade ticks (chart_log_ticks.h)
+ * and shows only values above 0: chart_draw refuses a finite point at or
+ * below 0 on it, naming the series and the point.
  *
  * Degenerate data is drawn, not refused: an empty series draws nothing
  * (the axes of an empty chart span 0 .. 1), a single point is a dot,
@@ -43,6 +46,12 @@ typedef struct chart_series {
     /* 0 draws lines; > 0 also marks each point with a dot of this
      * radius, in device units (px). */
     double marker_radius;
+    /* Further points, marked with rings (of marker_radius, or 3 px when
+     * it is 0) in the series' colour but not joined: the measurements
+     * off the line drawn through x and y, when that line is their front
+     * (chart/series_groups.h). mark_count 0 (the default) has none. */
+    const double *mark_x, *mark_y;
+    size_t mark_count;
 } chart_series;
 
 /* An axis range fixed by the caller; with `fixed` false the chart picks
@@ -52,13 +61,18 @@ typedef struct chart_range {
     double min, max; /* min < max, finite, when fixed */
 } chart_range;
 
+/* How values map to an axis: evenly, or by their logarithm (each decade
+ * the same length), for data spanning several decades. */
+typedef enum chart_scale { CHART_LINEAR, CHART_LOG } chart_scale;
+
 typedef struct chart {
     const char *title;   /* may be NULL */
     const char *x_label; /* may be NULL; give the unit: "time (s)" */
     const char *y_label;
     const chart_series *series;
-    int series_count; /* 0 .. CHART_MAX_SERIES */
-    chart_range x_range, y_range;
+    int series_count;             /* 0 .. CHART_MAX_SERIES */
+    chart_range x_range, y_range; /* a fixed range on a log axis needs min > 0 */
+    chart_scale x_scale, y_scale; /* CHART_LINEAR when zero-initialised */
 } chart;
 
 /* Draws the chart onto `cr` inside the rectangle (x, y, width, height) in

@@ -1,7 +1,14 @@
 /* SPDX-License-Identifier: MIT */
-/* `sinew plot CSV [--x COL] [--y COL ...] [--out FILE] [--title TEXT]`:
+/* `sinew plot CSV [--x COL] [--y COL ...] [--group COL] [--where COL=VALUE ...]
+ *  [--log-x] [--log-y] [--points] [--out FILE] [--title TEXT]`:
  * draws columns of any CSV file with a header row as a line chart
  * (chart/chart.h), into a PNG or an SVG file.
+ *
+ * A benchmark's CSV (bench/bench_solver.c) holds one row per scene and
+ * setting: --where keeps one scene's rows, --group draws one series per
+ * solver (chart/series_groups.h), --points marks each measurement and
+ * joins a series' points in order of x (cost), and --log-x, --log-y put
+ * data spanning decades on logarithmic axes.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -9,12 +16,27 @@
 
 #include "chart/chart.h"
 #include "chart/column_label.h"
+#include "chart/series_groups.h"
 #include "cli/options.h"
 #include "commands.h"
 #include "io/atomic_file.h"
+#include "io/csv_cells.h"
 #include "io/csv_table.h"
 
-enum { OPT_X, OPT_Y, OPT_OUT, OPT_TITLE };
+enum {
+    OPT_X,
+    OPT_Y,
+    OPT_GROUP,
+    OPT_WHERE,
+    OPT_LOG_X,
+    OPT_LOG_Y,
+    OPT_POINTS,
+    OPT_FRONT,
+    OPT_X_LABEL,
+    OPT_Y_LABEL,
+    OPT_OUT,
+    OPT_TITLE
+};
 
 static const cli_option options_table[] = {
     {.name = "x",
@@ -29,6 +51,43 @@ static const cli_option options_table[] = {
      .value_name = "COLUMN",
      .help = "a column along y (repeatable; by default every other numeric column,\n"
              "the first 8 when there are more)"},
+    {.name = "group",
+     .id = OPT_GROUP,
+     .kind = CLI_TEXT,
+     .value_name = "COLUMN",
+     .help = "one series per distinct value of COLUMN (text or numbers), named by\n"
+             "the value in the legend"},
+    {.name = "where",
+     .id = OPT_WHERE,
+     .kind = CLI_TEXT,
+     .value_name = "COLUMN=VALUE",
+     .help = "only the rows whose COLUMN holds VALUE, as written in the file\n"
+             "(repeatable: rows that match every one)"},
+    {.name = "log-x", .id = OPT_LOG_X, .kind = CLI_FLAG, .help = "a logarithmic x axis (values above 0 only)"},
+    {.name = "log-y", .id = OPT_LOG_Y, .kind = CLI_FLAG, .help = "a logarithmic y axis (values above 0 only)"},
+    {.name = "points",
+     .id = OPT_POINTS,
+     .kind = CLI_FLAG,
+     .help = "mark every point and join each series' points in order of x\n"
+             "(measurements rather than a time series)"},
+    {.name = "front",
+     .id = OPT_FRONT,
+     .kind = CLI_FLAG,
+     .help = "mark every point and join only each series' front: the points no\n"
+             "point of lower or equal x matches in y (with x a cost and y an\n"
+             "error, the best accuracy each cost buys); the others are rings"},
+    {.name = "x-label",
+     .id = OPT_X_LABEL,
+     .kind = CLI_TEXT,
+     .value_name = "TEXT",
+     .help = "the x axis's label",
+     .fallback = "the column's name with its unit"},
+    {.name = "y-label",
+     .id = OPT_Y_LABEL,
+     .kind = CLI_TEXT,
+     .value_name = "TEXT",
+     .help = "the y axis's label",
+     .fallback = "from the columns' names"},
     {.name = "out",
      .id = OPT_OUT,
      .kind = CLI_PATH,
@@ -52,7 +111,10 @@ static const cli_command command = {
              "`sinew experiment` write) as a line chart.\n",
     .options = options_table,
     .option_count = sizeof options_table / sizeof options_table[0],
-    .notes = "Columns are named as in the header, units included: --y \"Biceps Long.total_force_N\".\n",
+    .notes = "Columns are named as in the header, units included: --y \"Biceps Long.total_force_N\".\n"
+             "A solver benchmark's accuracy against cost, one curve per solver:\n"
+             "  sinew plot bench_solver.csv --where scene=pendulum --where diverged=no --x median_ms\n"
+             "    --y energy_drift_max --group correction --front --log-x --log-y\n",
 };
 
 /* Series drawn when --y is not given: more lines than this cannot be
@@ -63,12 +125,20 @@ static const cli_command command = {
 #define PLOT_WIDTH 960
 #define PLOT_HEIGHT 600
 
+/* Radius of a point's mark with --points, px. */
+#define POINT_RADIUS 3.5
+
 typedef struct plot_options {
     const char *csv_path;
     const char *x; /* NULL: the first column */
     const char **y;
     int y_count;
-    const char *out; /* NULL: the CSV's name with .png */
+    const char *group;  /* NULL: no grouping */
+    const char **where; /* "COLUMN=VALUE" each */
+    int where_count;
+    bool log_x, log_y, points, front;
+    const char *x_label, *y_label; /* NULL: from the columns' names */
+    const char *out;               /* NULL: the CSV's name with .png */
     const char *title;
 } plot_options;
 
@@ -87,6 +157,30 @@ static int parse_arguments(int argc, char **argv, plot_options *opts)
             break;
         case OPT_Y:
             opts->y[opts->y_count++] = value.text;
+            break;
+        case OPT_GROUP:
+            opts->group = value.text;
+            break;
+        case OPT_WHERE:
+            opts->where[opts->where_count++] = value.text;
+            break;
+        case OPT_LOG_X:
+            opts->log_x = true;
+            break;
+        case OPT_LOG_Y:
+            opts->log_y = true;
+            break;
+        case OPT_POINTS:
+            opts->points = true;
+            break;
+        case OPT_FRONT:
+            opts->front = true;
+            break;
+        case OPT_X_LABEL:
+            opts->x_label = value.text;
+            break;
+        case OPT_Y_LABEL:
+            opts->y_label = value.text;
             break;
         case OPT_OUT:
             opts->out = value.text;
@@ -110,12 +204,18 @@ static int parse_arguments(int argc, char **argv, plot_options *opts)
         return cli_usage_error(&command, "%d columns with --y; a chart draws at most %d", opts->y_count,
                                CHART_MAX_SERIES);
     }
+    for (int k = 0; k < opts->where_count; ++k) {
+        const char *equals = strchr(opts->where[k], '=');
+        if (equals == NULL || equals == opts->where[k]) {
+            return cli_usage_error(&command, "--where \"%s\": expected COLUMN=VALUE", opts->where[k]);
+        }
+    }
     return 0;
 }
 
-/* The column `name` of the table, which must be numeric; returns its
- * index, or -1 after one line on stderr. */
-static int numeric_column(const csv_table *table, const char *path, const char *option, const char *name)
+/* The column `name` of the table; returns its index, or -1 after one
+ * line on stderr naming the option, the column and the file. */
+static int find_column(const csv_table *table, const char *path, const char *option, const char *name)
 {
     int c = csv_table_find(table, name);
     if (c < 0) {
@@ -124,6 +224,16 @@ static int numeric_column(const csv_table *table, const char *path, const char *
             fprintf(stderr, "%s \"%s\"", k == 0 ? "" : ",", table->columns[k].name);
         }
         fprintf(stderr, "%s)\n", table->column_count > 6 ? ", ..." : "");
+    }
+    return c;
+}
+
+/* The column `name` of the table, which must be numeric; returns its
+ * index, or -1 after one line on stderr. */
+static int numeric_column(const csv_table *table, const char *path, const char *option, const char *name)
+{
+    int c = find_column(table, path, option, name);
+    if (c < 0) {
         return -1;
     }
     const csv_column *column = &table->columns[c];
@@ -181,17 +291,153 @@ static void y_axis_label(const csv_table *table, const int *columns, int count, 
     snprintf(label, label_size, first[0] != '\0' ? "value (%s)" : "value", first);
 }
 
-static int draw(const plot_options *opts, const csv_table *table, int x, const int *y, int y_count)
+/* The rows --where keeps, into `keep` (row_count values). Returns 0, or
+ * an exit status after one line on stderr. */
+static int select_rows(const plot_options *opts, const csv_table *table, bool *keep)
 {
-    chart_series series[CHART_MAX_SERIES];
-    for (int k = 0; k < y_count; ++k) {
-        series[k] = (chart_series){
-            .label = table->columns[y[k]].name,
-            .x = table->columns[x].values,
-            .y = table->columns[y[k]].values,
-            .count = (size_t)table->row_count,
-        };
+    for (long r = 0; r < table->row_count; ++r) {
+        keep[r] = true;
     }
+    for (int k = 0; k < opts->where_count; ++k) {
+        const char *equals = strchr(opts->where[k], '=');
+        char name[512];
+        snprintf(name, sizeof name, "%.*s", (int)(equals - opts->where[k]), opts->where[k]);
+        if (find_column(table, opts->csv_path, "--where", name) < 0) {
+            return EXIT_FAILURE;
+        }
+        csv_cells cells;
+        char error[ATOMIC_FILE_ERROR_SIZE];
+        if (!csv_cells_read(opts->csv_path, name, &cells, error, sizeof error)) {
+            fprintf(stderr, "sinew: %s\n", error);
+            return EXIT_FAILURE;
+        }
+        bool any = false;
+        for (long r = 0; r < table->row_count && r < cells.count; ++r) {
+            keep[r] = keep[r] && strcmp(cells.text[r], equals + 1) == 0;
+            any = any || strcmp(cells.text[r], equals + 1) == 0;
+        }
+        if (!any) {
+            /* Say what the column does hold: its first few values. */
+            fprintf(stderr, "sinew: --where %s: no row of %s has \"%s\" in column \"%s\" (it holds", opts->where[k],
+                    opts->csv_path, equals + 1, name);
+            int shown = 0;
+            for (long r = 0; r < cells.count && shown < 6; ++r) {
+                bool seen = false;
+                for (long q = 0; q < r && !seen; ++q) {
+                    seen = strcmp(cells.text[q], cells.text[r]) == 0;
+                }
+                if (!seen) {
+                    fprintf(stderr, "%s \"%s\"", shown++ == 0 ? "" : ",", cells.text[r]);
+                }
+            }
+            fprintf(stderr, "%s)\n", shown == 0 ? " no rows" : "");
+            csv_cells_free(&cells);
+            return EXIT_FAILURE;
+        }
+        csv_cells_free(&cells);
+    }
+    return 0;
+}
+
+/* A logarithmic axis shows only values above 0: the first kept row whose
+ * column `c` holds 0 or less is named by its line. Returns 0, or an exit
+ * status after one line on stderr. */
+static int check_log_column(const plot_options *opts, const csv_table *table, int c, const char *option,
+                            const bool *keep)
+{
+    const csv_column *column = &table->columns[c];
+    for (long r = 0; r < table->row_count; ++r) {
+        if (!keep[r] || !(column->values[r] <= 0.0)) {
+            continue;
+        }
+        /* The row's line, from the file itself (blank lines are skipped). */
+        csv_cells cells;
+        char error[ATOMIC_FILE_ERROR_SIZE];
+        long line = csv_cells_read(opts->csv_path, column->name, &cells, error, sizeof error) && r < cells.count
+                        ? cells.line[r]
+                        : 0;
+        csv_cells_free(&cells);
+        fprintf(stderr,
+                "sinew: %s:%ld: %s: column \"%s\" holds %g; a logarithmic axis shows only values above 0 (leave such "
+                "rows out with --where, or drop %s)\n",
+                opts->csv_path, line, option, column->name, column->values[r], option);
+        return EXIT_FAILURE;
+    }
+    return 0;
+}
+
+/* The series of the chart: each y column, split by --group's column when
+ * given, of the rows kept. Returns 0, or an exit status after one line on
+ * stderr. */
+static int build_series(const plot_options *opts, const csv_table *table, int x, const int *y, int y_count,
+                        const bool *keep, series_groups *groups, chart_series *series, char (*labels)[256],
+                        int *series_count)
+{
+    csv_cells keys = {.text = NULL};
+    char error[ATOMIC_FILE_ERROR_SIZE];
+    if (opts->group != NULL) {
+        if (find_column(table, opts->csv_path, "--group", opts->group) < 0) {
+            return EXIT_FAILURE;
+        }
+        if (!csv_cells_read(opts->csv_path, opts->group, &keys, error, sizeof error)) {
+            fprintf(stderr, "sinew: %s\n", error);
+            return EXIT_FAILURE;
+        }
+    }
+    int code = 0;
+    *series_count = 0;
+    for (int k = 0; code == 0 && k < y_count; ++k) {
+        if (!series_groups_build((const char *const *)keys.text, keep, table->columns[x].values,
+                                 table->columns[y[k]].values, (size_t)table->row_count,
+                                 opts->front    ? SERIES_FRONT
+                                 : opts->points ? SERIES_BY_X
+                                                : SERIES_AS_READ,
+                                 &groups[k], error, sizeof error)) {
+            fprintf(stderr, "sinew: --group %s: %s: %s\n", opts->group != NULL ? opts->group : "", opts->csv_path,
+                    error);
+            code = EXIT_FAILURE;
+            break;
+        }
+        if (*series_count + groups[k].count > CHART_MAX_SERIES) {
+            fprintf(stderr, "sinew: %s: %d columns of %d groups each; a chart draws at most %d series\n",
+                    opts->csv_path, y_count, groups[k].count, CHART_MAX_SERIES);
+            code = EXIT_FAILURE;
+            break;
+        }
+        for (int g = 0; g < groups[k].count; ++g) {
+            char *label = labels[*series_count];
+            const char *column = table->columns[y[k]].name;
+            if (opts->group == NULL) {
+                snprintf(label, 256, "%s", column);
+            } else if (y_count == 1) {
+                snprintf(label, 256, "%s", groups[k].keys[g]);
+            } else {
+                snprintf(label, 256, "%s: %s", groups[k].keys[g], column);
+            }
+            size_t front = groups[k].front[g];
+            series[(*series_count)++] = (chart_series){
+                .label = label,
+                .x = groups[k].x[g],
+                .y = groups[k].y[g],
+                .count = front,
+                .marker_radius = opts->points || opts->front ? POINT_RADIUS : 0.0,
+                .mark_x = groups[k].x[g] + front,
+                .mark_y = groups[k].y[g] + front,
+                .mark_count = groups[k].points[g] - front,
+            };
+        }
+    }
+    csv_cells_free(&keys);
+    return code;
+}
+
+static int draw(const plot_options *opts, const csv_table *table, int x, const int *y, int y_count, const bool *keep)
+{
+    series_groups groups[CHART_MAX_SERIES] = {{.count = 0}};
+    chart_series series[CHART_MAX_SERIES];
+    char labels[CHART_MAX_SERIES][256];
+    int series_count = 0;
+    int code = build_series(opts, table, x, y, y_count, keep, groups, series, labels, &series_count);
     char x_label[256], y_label[256], path[ATOMIC_FILE_PATH_MAX];
     column_label(table->columns[x].name, x_label, sizeof x_label);
     y_axis_label(table, y, y_count, y_label, sizeof y_label);
@@ -200,26 +446,45 @@ static int draw(const plot_options *opts, const csv_table *table, int x, const i
         .title = opts->title != NULL ? opts->title
                  : slash != NULL     ? slash + 1
                                      : opts->csv_path,
-        .x_label = x_label,
-        .y_label = y_label,
+        .x_label = opts->x_label != NULL ? opts->x_label : x_label,
+        .y_label = opts->y_label != NULL ? opts->y_label : y_label,
         .series = series,
-        .series_count = y_count,
+        .series_count = series_count,
+        .x_scale = opts->log_x ? CHART_LOG : CHART_LINEAR,
+        .y_scale = opts->log_y ? CHART_LOG : CHART_LINEAR,
     };
-    int code = output_path(opts, path, sizeof path);
-    if (code != 0) {
-        return code;
+    code = code != 0 ? code : output_path(opts, path, sizeof path);
+    if (code == 0) {
+        chart_figure figure = {
+            .charts = &plot, .chart_count = 1, .columns = 1, .width = PLOT_WIDTH, .height = PLOT_HEIGHT};
+        char error[CHART_ERROR_SIZE];
+        if (!chart_write_file(&figure, path, error, sizeof error)) {
+            fprintf(stderr, "sinew: %s\n", error);
+            code = EXIT_FAILURE;
+        } else {
+            long rows = 0;
+            for (long r = 0; r < table->row_count; ++r) {
+                rows += keep[r];
+            }
+            printf("%s: %ld rows, %d series against %s\n", path, rows, series_count, table->columns[x].name);
+            /* Each series and its points, for a reader (or a test) to check
+             * what was drawn. */
+            for (int s = 0; opts->group != NULL && s < series_count; ++s) {
+                printf("  %s: %zu points", series[s].label, series[s].count + series[s].mark_count);
+                if (opts->front) {
+                    printf(", %zu on the front", series[s].count);
+                }
+                printf("\n");
+            }
+        }
     }
-    chart_figure figure = {.charts = &plot, .chart_count = 1, .columns = 1, .width = PLOT_WIDTH, .height = PLOT_HEIGHT};
-    char error[CHART_ERROR_SIZE];
-    if (!chart_write_file(&figure, path, error, sizeof error)) {
-        fprintf(stderr, "sinew: %s\n", error);
-        return EXIT_FAILURE;
+    for (int k = 0; k < y_count; ++k) {
+        series_groups_free(&groups[k]);
     }
-    printf("%s: %ld rows, %d series against %s\n", path, table->row_count, y_count, table->columns[x].name);
-    return EXIT_SUCCESS;
+    return code;
 }
 
-/* Chooses the columns and draws them; returns the exit status. */
+/* Chooses the columns and rows and draws them; returns the exit status. */
 static int plot_table(const plot_options *opts, const csv_table *table)
 {
     int x = opts->x != NULL ? numeric_column(table, opts->csv_path, "--x", opts->x) : 0;
@@ -257,21 +522,41 @@ static int plot_table(const plot_options *opts, const csv_table *table)
         fprintf(stderr, "sinew: drawing the first %d of %d numeric columns; choose others with --y\n", y_count,
                 candidates);
     }
-    return draw(opts, table, x, y, y_count);
+    bool *keep = malloc(((size_t)table->row_count + 1) * sizeof *keep);
+    if (keep == NULL) {
+        fputs("sinew: out of memory\n", stderr);
+        return EXIT_FAILURE;
+    }
+    int code = select_rows(opts, table, keep);
+    if (code == 0 && opts->log_x) {
+        code = check_log_column(opts, table, x, "--log-x", keep);
+    }
+    for (int k = 0; code == 0 && opts->log_y && k < y_count; ++k) {
+        code = check_log_column(opts, table, y[k], "--log-y", keep);
+    }
+    if (code == 0) {
+        code = draw(opts, table, x, y, y_count, keep);
+    }
+    free(keep);
+    return code;
 }
 
 int cmd_plot(int argc, char **argv)
 {
     plot_options opts = {.csv_path = NULL};
     opts.y = malloc(((size_t)argc + 1) * sizeof *opts.y);
-    if (opts.y == NULL) {
+    opts.where = malloc(((size_t)argc + 1) * sizeof *opts.where);
+    if (opts.y == NULL || opts.where == NULL) {
         fputs("sinew: out of memory\n", stderr);
+        free(opts.y);
+        free(opts.where);
         return EXIT_FAILURE;
     }
     int code = parse_arguments(argc, argv, &opts);
     if (code == PARSE_HELP) {
         cli_print_help(&command, stdout);
         free(opts.y);
+        free(opts.where);
         return EXIT_SUCCESS;
     }
     if (code == 0) {
@@ -286,5 +571,6 @@ int cmd_plot(int argc, char **argv)
         }
     }
     free(opts.y);
+    free(opts.where);
     return code;
 }

@@ -144,7 +144,9 @@ GtkWidget *canvas_widget_new(viewer *app)
     app->canvas = area;
     gtk_widget_set_hexpand(area, TRUE);
     gtk_widget_set_vexpand(area, TRUE);
-    gtk_widget_set_size_request(area, 480, 360);
+    /* Its least size: with the graphs' (graphs_panel.c) and the panes'
+     * handles, a 1280 x 720 window holds it all. */
+    gtk_widget_set_size_request(area, 480, 240);
     gtk_drawing_area_set_draw_func(GTK_DRAWING_AREA(area), draw_canvas, input, g_free);
     g_signal_connect(area, "resize", G_CALLBACK(on_resize), input);
 

@@ -111,7 +111,10 @@ graphs_panel *graphs_panel_new(viewer *app)
         view->panel = panel;
         view->graph.kind = (live_graph_kind)k;
         view->area = gtk_drawing_area_new();
-        gtk_widget_set_size_request(view->area, 320, 180);
+        /* Its least size: two rows of graphs and their Export buttons
+         * take about 360 px, which the window's left pane keeps for them
+         * (viewer_main.c). */
+        gtk_widget_set_size_request(view->area, 320, 140);
         gtk_widget_set_hexpand(view->area, TRUE);
         gtk_widget_set_vexpand(view->area, TRUE);
         gtk_drawing_area_set_draw_func(GTK_DRAWING_AREA(view->area), draw_graph, view, NULL);

@@ -36,6 +36,9 @@
  *   wait-for FILE           wait until FILE exists, then let the window handle its input: an
  *                           input tool (xdotool) acts meanwhile and creates FILE when done
  *   screenshot FILE         write the window as a PNG
+ *   visible                 check that every control and graph is drawn whole, or can be
+ *                           scrolled to with a scrollbar shown (layout_check.h); print
+ *                           "visible WIDTHxHEIGHT: N widgets", or fail naming the first cut one
  *   export GRAPH FILE       write a graph's CSV (activation, tension, selected_forces, contraction)
  *   quit                    close the viewer
  *

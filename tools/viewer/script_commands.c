@@ -7,6 +7,7 @@
 #include "controls_panel.h"
 #include "engine_panel.h"
 #include "graphs_panel.h"
+#include "layout_check.h"
 #include "script_commands.h"
 #include "widget_input.h"
 
@@ -345,6 +346,21 @@ static bool run_export(script_run_state *state, char *const *arguments, char *er
     return false;
 }
 
+/* Every control and graph drawn whole, or in a scrolled window with a
+ * scrollbar (layout_check.h): prints "visible WIDTHxHEIGHT: N widgets". */
+static bool run_visible(script_run_state *state, char *const *arguments, char *error, size_t error_size)
+{
+    (void)arguments;
+    GtkWidget *window = state->app->window;
+    int checked = 0;
+    if (!layout_check_window(window, &checked, error, error_size)) {
+        return false;
+    }
+    printf("visible %dx%d: %d widgets\n", gtk_widget_get_width(window), gtk_widget_get_height(window), checked);
+    fflush(stdout);
+    return true;
+}
+
 static bool run_quit(script_run_state *state, char *const *arguments, char *error, size_t error_size)
 {
     (void)arguments;
@@ -374,6 +390,7 @@ static const script_command_spec commands[] = {
     {"print", 1, run_print},
     {"wait-for", 1, run_wait_for},
     {"screenshot", 1, run_screenshot},
+    {"visible", 0, run_visible},
     {"export", 2, run_export},
     {"quit", 0, run_quit},
 };

@@ -49,11 +49,11 @@ static GtkWidget *framed(const char *title, GtkWidget *child)
     return frame;
 }
 
-static void build_window(viewer *app)
+static void build_window(viewer *app, int width, int height)
 {
     app->window = gtk_window_new();
     gtk_window_set_title(GTK_WINDOW(app->window), "sinew view");
-    gtk_window_set_default_size(GTK_WINDOW(app->window), 1400, 900);
+    gtk_window_set_default_size(GTK_WINDOW(app->window), width, height);
     g_signal_connect(app->window, "close-request", G_CALLBACK(on_close), app);
 
     app->message_bar = gtk_info_bar_new();
@@ -78,12 +78,23 @@ static void build_window(viewer *app)
     gtk_paned_set_start_child(GTK_PANED(left), canvas_box);
     gtk_paned_set_end_child(GTK_PANED(left), graphs_panel_widget(app->graphs));
     gtk_paned_set_position(GTK_PANED(left), 480);
+    /* The graphs keep at least their least size, Export buttons whole:
+     * the canvas gives way when the window is short. */
+    gtk_paned_set_shrink_start_child(GTK_PANED(left), FALSE);
+    gtk_paned_set_shrink_end_child(GTK_PANED(left), FALSE);
 
     GtkWidget *right = gtk_box_new(GTK_ORIENTATION_VERTICAL, 6);
     gtk_box_append(GTK_BOX(right), framed("Controls", controls_panel_widget(app->controls)));
     gtk_box_append(GTK_BOX(right), framed("Engine", engine_panel_widget(app->engine)));
     GtkWidget *scroll = gtk_scrolled_window_new();
-    gtk_scrolled_window_set_policy(GTK_SCROLLED_WINDOW(scroll), GTK_POLICY_NEVER, GTK_POLICY_AUTOMATIC);
+    /* A vertical scrollbar always there, not an overlay: the panels are
+     * taller than most windows (at 1400 x 900 the engine panel's bottom
+     * looked cut off under an overlay scrollbar that shows only while the
+     * pointer moves over it), and GTK counts a scrollbar in the panels'
+     * width only when it is always shown (an automatic one would cover
+     * their right edge). */
+    gtk_scrolled_window_set_policy(GTK_SCROLLED_WINDOW(scroll), GTK_POLICY_NEVER, GTK_POLICY_ALWAYS);
+    gtk_scrolled_window_set_overlay_scrolling(GTK_SCROLLED_WINDOW(scroll), FALSE);
     gtk_scrolled_window_set_child(GTK_SCROLLED_WINDOW(scroll), right);
     gtk_widget_set_size_request(scroll, 440, -1);
 
@@ -165,7 +176,7 @@ int main(int argc, char **argv)
     simulation_init(&app.sim);
     app.view = view_transform_make(rb_v2(0.0, 0.0), 400.0);
     app.loop = g_main_loop_new(NULL, FALSE);
-    build_window(&app);
+    build_window(&app, options.width, options.height);
     load_first(&app, &options);
     gtk_window_present(GTK_WINDOW(app.window));
     gtk_widget_grab_focus(app.canvas);

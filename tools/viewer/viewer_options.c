@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: MIT */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -6,7 +7,7 @@
 #include "scenes/registry.h"
 #include "viewer_options.h"
 
-enum { OPT_VARIANT, OPT_WEIGHT, OPT_LEVEL, OPT_SCENE, OPT_PLAY, OPT_SCRIPT };
+enum { OPT_VARIANT, OPT_WEIGHT, OPT_LEVEL, OPT_SCENE, OPT_PLAY, OPT_SCRIPT, OPT_SIZE };
 
 static const cli_option options_table[] = {
     {.name = "variant",
@@ -42,6 +43,12 @@ static const cli_option options_table[] = {
      .kind = CLI_PATH,
      .value_name = "FILE",
      .help = "run scripted commands (tools/viewer/script.h lists them)"},
+    {.name = "size",
+     .id = OPT_SIZE,
+     .kind = CLI_TEXT,
+     .value_name = "WxH",
+     .help = "the window's size at the start, px (each 320 .. 16384)",
+     .fallback = "1400x900"},
 };
 
 static const cli_command command = {
@@ -68,9 +75,25 @@ void viewer_print_usage(FILE *stream)
     }
 }
 
+/* "WIDTHxHEIGHT", each a whole number in VIEWER_MIN_SIZE .. VIEWER_MAX_SIZE
+ * and nothing after. */
+static bool parse_size(const char *text, int *width, int *height)
+{
+    int w, h, end = 0;
+    if (sscanf(text, "%5dx%5d%n", &w, &h, &end) != 2 || text[end] != '\0' || text[0] < '0' || text[0] > '9') {
+        return false;
+    }
+    if (w < VIEWER_MIN_SIZE || w > VIEWER_MAX_SIZE || h < VIEWER_MIN_SIZE || h > VIEWER_MAX_SIZE) {
+        return false;
+    }
+    *width = w;
+    *height = h;
+    return true;
+}
+
 viewer_parse_result viewer_options_parse(int argc, char **argv, viewer_options *options)
 {
-    *options = (viewer_options){.model = "arm"};
+    *options = (viewer_options){.model = "arm", .width = VIEWER_DEFAULT_WIDTH, .height = VIEWER_DEFAULT_HEIGHT};
     cli_parser parser;
     cli_parser_start(&parser, &command, argc, argv);
     cli_value value;
@@ -103,6 +126,13 @@ viewer_parse_result viewer_options_parse(int argc, char **argv, viewer_options *
             break;
         case OPT_SCRIPT:
             options->script = value.text;
+            break;
+        case OPT_SIZE:
+            if (!parse_size(value.text, &options->width, &options->height)) {
+                cli_usage_error(&command, "--size \"%s\": expected WIDTHxHEIGHT in px, each %d .. %d (1280x720)",
+                                value.text, VIEWER_MIN_SIZE, VIEWER_MAX_SIZE);
+                id = CLI_ERROR;
+            }
             break;
         default:
             break;

@@ -10,6 +10,11 @@
 #define LINE_WIDTH_PX 1.5
 #define BONE_CORNER_FRACTION 0.3 /* of the bone's shorter side */
 #define WEIGHT_HOLE_FRACTION 0.25
+/* The weight's disc is filled translucent under the bones and ringed
+ * opaque over them: at 200 kg it is larger than the leg's shank, which it
+ * hid when drawn whole on top, and at 1 kg it lies under the hand. */
+#define WEIGHT_FILL_ALPHA 0.35
+#define WEIGHT_RIM_WIDTH_PX 2.5
 #define EXERTION_BAR_WIDTH_PX 200.0
 #define EXERTION_BAR_HEIGHT_PX 14.0
 
@@ -372,8 +377,10 @@ static bool find_weight_disc(rb_shape_id shape, void *context)
     return true;
 }
 
+/* The weight's disc (a ring: the hole is the rod's), in two layers: its
+ * fill under the bones, `rim` false, and its rim over them, `rim` true. */
 static void draw_weight(const painter *p, const rb_world *world, const mu_model *model, const mu_model_desc *desc,
-                        const part_map *map)
+                        const part_map *map, bool rim)
 {
     const mu_model_weight *weight = &desc->weight;
     int part = part_of(map, weight->body);
@@ -402,11 +409,15 @@ static void draw_weight(const painter *p, const rb_world *world, const mu_model 
     cairo_arc(p->cr, s.x, s.y, radius, 0.0, 2.0 * RB_PI);
     cairo_new_sub_path(p->cr);
     cairo_arc_negative(p->cr, s.x, s.y, WEIGHT_HOLE_FRACTION * radius, 2.0 * RB_PI, 0.0);
-    set_colour(p->cr, from_hex(CANVAS_WEIGHT));
-    cairo_fill_preserve(p->cr);
-    cairo_set_source_rgb(p->cr, 0.1, 0.2, 0.45);
-    cairo_set_line_width(p->cr, 1.0);
-    cairo_stroke(p->cr);
+    rgb colour = from_hex(CANVAS_WEIGHT);
+    if (rim) {
+        set_colour(p->cr, colour);
+        cairo_set_line_width(p->cr, WEIGHT_RIM_WIDTH_PX);
+        cairo_stroke(p->cr);
+    } else {
+        cairo_set_source_rgba(p->cr, colour.r, colour.g, colour.b, WEIGHT_FILL_ALPHA);
+        cairo_fill(p->cr);
+    }
 }
 
 static void draw_exertion_bars(const painter *p, const mu_model *model)
@@ -439,12 +450,15 @@ static void draw_model(const painter *p, const simulation *sim)
     if (!map_parts(model, desc, &map)) {
         return;
     }
+    /* The weight's fill first, the bones on it, then its rim, so that
+     * both the bones and the weight show. */
+    draw_weight(p, world, model, desc, &map, false);
     for (int k = 0; k < desc->bone_count; ++k) {
         if (map.bone_part[k] >= 0) {
             draw_bone(p, model, map.bone_part[k], &desc->bones[k]);
         }
     }
-    draw_weight(p, world, model, desc, &map);
+    draw_weight(p, world, model, desc, &map, true);
     for (int k = 0; k < mu_model_hinge_count(model); ++k) {
         mu_model_ref ref;
         if (mu_model_desc_find(desc, mu_model_hinge_name(model, k), &ref) && ref.kind == MU_MODEL_HINGE) {

@@ -3,7 +3,8 @@
  * the grid; a model's bones (ivory rounded boxes), nails (dots), hinges
  * (circles), muscles (ellipses of constant area coloured from pale pink
  * to dark red by activation, on their tendon and via-point lines), the
- * weight (a blue disc with a hole) and the worm's exertion bar; an engine
+ * weight (a blue disc with a hole, its fill translucent under the bones
+ * and its rim opaque over them: both show) and the worm's exertion bar; an engine
  * scene through the engine's debug draw; the overlays chosen in the
  * engine panel over either. Pure Cairo: the GTK canvas and the headless
  * screenshot both call it.
@@ -21,7 +22,7 @@
 enum {
     CANVAS_BACKGROUND = 0xfbfbf7,
     CANVAS_BONE = 0xf3ead2,   /* ivory */
-    CANVAS_WEIGHT = 0x3366cc, /* iron, drawn blue */
+    CANVAS_WEIGHT = 0x3366cc, /* iron, drawn blue: the weight's rim (its fill is translucent) */
 };
 
 /* What the engine's debug draw adds on top (rb_debug_draw's flags). */

@@ -1,4 +1,6 @@
 /* SPDX-License-Identifier: MIT */
+#include <float.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -118,6 +120,26 @@ static bool gather(const live_graph *graph, const history *samples, series_block
     return true;
 }
 
+chart_range live_graph_y_range(live_graph_kind kind, double low, double high)
+{
+    if (!(low <= high) || !isfinite(low) || !isfinite(high)) {
+        low = 0.0; /* nothing shown yet */
+        high = kind == LIVE_GRAPH_ACTIVATION ? 1.0 : 0.0;
+    }
+    if (kind == LIVE_GRAPH_ACTIVATION) {
+        low = fmin(low, 0.0);
+        high = fmax(high, 1.0);
+    }
+    if (high - low <= 1e-12 * fmax(fabs(low), fabs(high))) {
+        double half = low != 0.0 ? 0.1 * fabs(low) : 1.0;
+        low -= half;
+        high += half;
+    }
+    /* Halves, so that a span near ±DBL_MAX does not overflow. */
+    double margin = LIVE_GRAPH_HEADROOM * (high / 2.0 - low / 2.0) * 2.0;
+    return (chart_range){.fixed = true, .min = fmax(low - margin, -DBL_MAX), .max = fmin(high + margin, DBL_MAX)};
+}
+
 bool live_graph_draw(const live_graph *graph, const history *samples, cairo_t *cr, double width, double height,
                      char *error, size_t error_size)
 {
@@ -136,6 +158,17 @@ bool live_graph_draw(const live_graph *graph, const history *samples, cairo_t *c
     double end = data.count > 0 ? data.times[data.count - 1] : 0.0;
     end = end > LIVE_GRAPH_SECONDS ? end : LIVE_GRAPH_SECONDS;
     double start = end - LIVE_GRAPH_SECONDS;
+    /* The y range of the samples shown, with headroom. */
+    double low = INFINITY, high = -INFINITY;
+    for (int c = 0; c < graph->channel_count; ++c) {
+        for (long k = 0; k < data.count; ++k) {
+            double v = data.values[c][k];
+            if (data.times[k] >= start && isfinite(v)) {
+                low = fmin(low, v);
+                high = fmax(high, v);
+            }
+        }
+    }
     chart figure = {
         .title = titles[graph->kind],
         .x_label = "time (s)",
@@ -143,6 +176,7 @@ bool live_graph_draw(const live_graph *graph, const history *samples, cairo_t *c
         .series = series,
         .series_count = graph->channel_count,
         .x_range = {.fixed = true, .min = start, .max = end},
+        .y_range = live_graph_y_range(graph->kind, low, high),
     };
     bool drawn = chart_draw(&figure, cr, 0.0, 0.0, width, height, error, error_size);
     free(data.block);

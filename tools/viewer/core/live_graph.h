@@ -46,6 +46,20 @@ const char *live_graph_file_stem(live_graph_kind kind);
  * without a model). */
 void live_graph_select(live_graph *graph, live_graph_kind kind, const simulation *sim);
 
+/* Fraction of the shown span left free above and below the data, so
+ * that a line at the data's least or greatest value (a constant
+ * activation of 1, a tension at rest at 0) is drawn inside the plot, not
+ * on its frame. */
+#define LIVE_GRAPH_HEADROOM 0.06
+
+/* The y range graph `kind` shows for data from `low` to `high` (the least
+ * and greatest finite values shown; low > high, or NaN, when there are
+ * none): the data, and for the activation graph all of 0 .. 1 (its
+ * scale then never changes), widened by LIVE_GRAPH_HEADROOM of the span
+ * on either side; constant data gets ±10 % of its value around it (±1
+ * about 0) before that. Always fixed, finite, min < max. */
+chart_range live_graph_y_range(live_graph_kind kind, double low, double high);
+
 /* Draws the graph of the held samples onto `cr` inside (0, 0, width,
  * height). */
 bool live_graph_draw(const live_graph *graph, const history *samples, cairo_t *cr, double width, double height,
