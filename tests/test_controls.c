@@ -322,7 +322,8 @@ Test(controls, unknown_names_are_refused_with_the_names_there_are)
     REFUSED("worm", "0 recruit Torque 5\n", 1, "no torque muscle named \"Torque\"",
             "torque muscles (recruit): \"Torque Muscle\"");
     REFUSED("worm", "0 activation \"Torque Muscle\" 0.5\n", 1,
-            "\"Torque Muscle\" is a torque muscle, driven by recruit lines, not activation");
+            "\"Torque Muscle\" is a torque muscle, driven by recruitment (a recruit line, or --recruit NAME=NEURONS), "
+            "not activation");
     REFUSED("arm", "0 recruit \"Biceps Short\" 5\n", 1,
             "recruit drives a torque muscle, and \"Biceps Short\" is a muscle or group");
 }

@@ -149,7 +149,9 @@ static bool resolve_target(const controls *schedule, control_kind kind, const ch
     }
     if (kind != CONTROL_RECRUIT && !muscle) {
         if (torque) {
-            used = (size_t)snprintf(error, error_size, "\"%s\" is a torque muscle, driven by recruit lines, not %s (",
+            used = (size_t)snprintf(error, error_size,
+                                    "\"%s\" is a torque muscle, driven by recruitment (a recruit line, or --recruit "
+                                    "NAME=NEURONS), not %s (",
                                     name, control_kind_name(kind));
         } else {
             append(error, error_size, &used, "no muscle or group named \"%s\" (", name);
