@@ -384,6 +384,7 @@ static void storm_model_running(void)
     REFUSED_STATUS(mu_model_set_gravity(model, rb_v2(NAN, -9.8)), "mu_model_set_gravity", "gravity");
     REFUSED_VALUE(mu_model_warnings(NULL), NULL, "mu_model_warnings", "model");
     REFUSED_VALUE(mu_model_failure(NULL), NULL, "mu_model_failure", "model");
+    REFUSED_NAN(mu_model_energy_account(NULL).created, "mu_model_energy_account", "model");
     REFUSED_VALUE(mu_model_body_count(NULL), 0, "mu_model_body_count", "model");
     REFUSED_VALUE(mu_model_joint_count(NULL), 0, "mu_model_joint_count", "model");
     /* The model still runs after all that. */
@@ -745,6 +746,8 @@ static void storm_torque_actuator(void)
     REFUSED_NAN(mu_torque_actuator_exertion(NULL), "mu_torque_actuator_exertion", "actuator");
     REFUSED_NAN(mu_torque_actuator_torque(NULL), "mu_torque_actuator_torque", "actuator");
     REFUSED_NAN(mu_torque_actuator_peak_torque(NULL), "mu_torque_actuator_peak_torque", "actuator");
+    REFUSED_NAN(mu_torque_actuator_power(NULL, rig.world), "mu_torque_actuator_power", "actuator");
+    REFUSED_NAN(mu_torque_actuator_power(actuator, NULL), "mu_torque_actuator_power", "world");
     REFUSED_STATUS(mu_torque_actuator_apply(NULL, rig.world), "mu_torque_actuator_apply", "actuator");
     REFUSED_STATUS(mu_torque_actuator_apply(actuator, NULL), "mu_torque_actuator_apply", "world");
     cr_expect_eq(mu_torque_actuator_exertion(actuator), 0.0, "refused exertions left it at 0");
@@ -775,7 +778,8 @@ static const api_storm storms[] = {
     {"mu_lengths_from_geometry", storm_geometry_lengths},
     {"mu_model_create mu_model_destroy", storm_model_create},
     {"mu_model_world mu_model_description mu_model_step mu_model_substep mu_model_time mu_model_frame_duration "
-     "mu_model_substep_duration mu_model_set_gravity mu_model_warnings mu_model_failure mu_model_body_count "
+     "mu_model_substep_duration mu_model_set_gravity mu_model_warnings mu_model_failure mu_model_energy_account "
+     "mu_model_body_count "
      "mu_model_joint_count",
      storm_model_running},
     {"mu_model_set_activation mu_model_set_tension mu_model_set_activation_at mu_model_set_tension_at "
@@ -809,7 +813,7 @@ static const api_storm storms[] = {
      "mu_tendon_stiffness",
      storm_pennation_and_tendon},
     {"mu_default_torque_actuator_def mu_torque_actuator_create mu_torque_actuator_destroy "
-     "mu_torque_actuator_set_exertion mu_torque_actuator_exertion mu_torque_actuator_torque "
+     "mu_torque_actuator_set_exertion mu_torque_actuator_exertion mu_torque_actuator_torque mu_torque_actuator_power "
      "mu_torque_actuator_peak_torque mu_torque_actuator_apply",
      storm_torque_actuator},
 };

@@ -55,7 +55,11 @@ struct mu_model {
     rb_status substep_status; /* the first error of the muscles' updates in this step */
     char substep_error[512];  /* its message, which later engine calls of the step would clear */
     char warnings[WARNINGS_SIZE];
-    char failure[512]; /* mu_model_failure: the first sign the run has failed, "" until then */
+    char failure[512];      /* mu_model_failure: the first sign the run has failed, "" until then */
+    mu_model_energy energy; /* mu_model_energy_account */
+    bool energy_started;    /* the account holds a start */
+    rb_vec2 energy_gravity; /* m/s², the gravity the account started with */
+    double work_rate_h;     /* s, the substep over which the bodies' present velocities acted */
 };
 
 mu_model_options mu_default_model_options(void) { return (mu_model_options){.level = 4}; }
@@ -536,6 +540,82 @@ static rb_status measure_muscles(mu_model *model)
     return status;
 }
 
+/* ---- the energy account (mu_model_energy_account) --------------------- */
+
+/* J: kinetic energy plus potential energy in gravity of the moving bodies. */
+static double mechanical_energy(const mu_model *model)
+{
+    const rb_vec2 g = rb_world_gravity(model->world);
+    double energy = 0.0;
+    for (int b = 0; b < model->body_count; ++b) {
+        const rb_mass_data mass = rb_body_mass_data(model->world, model->bodies[b]);
+        if (rb_body_mass(model->world, model->bodies[b]) == 0.0) {
+            continue; /* static: neither moves nor falls */
+        }
+        const rb_vec2 v = rb_body_linear_velocity(model->world, model->bodies[b]);
+        const double w = rb_body_angular_velocity(model->world, model->bodies[b]);
+        const rb_vec2 x = rb_body_world_center(model->world, model->bodies[b]);
+        energy += 0.5 * mass.mass * rb_dot(v, v) + 0.5 * mass.rotational_inertia * w * w - mass.mass * rb_dot(g, x);
+    }
+    return energy;
+}
+
+/* W: the rate at which the muscles and torque muscles do work on the
+ * bodies at their present velocities. A cable's tension T shortening it
+ * at −L' does T·(−L'); a torque τ turning its body against its reaction
+ * body at Δω does τ·Δω. The engine moves the bodies with the velocities
+ * a substep ends with (semi-implicit Euler), so that rate times the
+ * substep is the work of the substep. */
+static double work_rate(const mu_model *model)
+{
+    double rate = 0.0;
+    for (int i = 0; i < model->built_muscle_count; ++i) {
+        const rb_cable_id cable = mu_muscle_cable(model->muscles[model->built_muscles[i]]);
+        rate -= rb_cable_tension(model->world, cable) * rb_cable_lengthening_speed(model->world, cable);
+    }
+    for (int t = 0; t < model->built_torque_muscle_count; ++t) {
+        rate += mu_torque_actuator_power(model->actuators[t], model->world);
+    }
+    return rate;
+}
+
+/* Adds the work of the substep that just ended (of work_rate_h s) to the
+ * account; called as every substep starts, and after the step's last. */
+static void account_substep_work(mu_model *model)
+{
+    if (model->energy_started && model->work_rate_h > 0.0) {
+        const double work = model->work_rate_h * work_rate(model);
+        model->energy.muscle_work += work;
+        model->energy.muscle_work_gross += fabs(work);
+    }
+    model->work_rate_h = 0.0;
+}
+
+/* After a step: the energy now, and the account started again when it
+ * had not started or something outside the model acted on its world. */
+static void account_energy(mu_model *model)
+{
+    const rb_vec2 g = rb_world_gravity(model->world);
+    const bool outside = rb_world_statistics(model->world).joint_count != model->joint_count;
+    model->energy.mechanical = mechanical_energy(model);
+    if (!model->energy_started || outside || g.x != model->energy_gravity.x || g.y != model->energy_gravity.y) {
+        model->energy.at_start = model->energy.mechanical;
+        model->energy.muscle_work = 0.0;
+        model->energy.muscle_work_gross = 0.0;
+        model->energy_gravity = g;
+        model->energy_started = !outside;
+    }
+    model->energy.created = model->energy.mechanical - model->energy.at_start - model->energy.muscle_work;
+}
+
+mu_model_energy mu_model_energy_account(const mu_model *model)
+{
+    if (mu_refuse_null("mu_model_energy_account", "model", model)) {
+        return (mu_model_energy){NAN, NAN, NAN, NAN, NAN};
+    }
+    return model->energy;
+}
+
 /* The engine's substep callback: each substep after the first starts by
  * reading what the previous one did to the muscles; then every muscle
  * sets its cable's tension law from its state now. The first error is
@@ -543,6 +623,8 @@ static rb_status measure_muscles(mu_model *model)
 static void update_muscles(rb_world *world, int substep, double h, void *context)
 {
     mu_model *model = context;
+    account_substep_work(model);
+    model->work_rate_h = h;
     rb_status status = RB_OK;
     int failed = -1;
     for (int i = 0; status == RB_OK && i < model->built_muscle_count; ++i) {
@@ -715,8 +797,9 @@ static const char *body_name(const mu_model *model, int b)
 }
 
 /* Keeps in model->failure the first sign, after a step, that the run no
- * longer describes a body: a non-finite or runaway pose or speed, or a
- * hinge torn open (MU_MODEL_MAX_HINGE_GAP and the others, in mu/model.h).
+ * longer describes a body: a non-finite or runaway pose or speed, a
+ * hinge torn open, or energy no muscle gave (MU_MODEL_MAX_HINGE_GAP and
+ * the others, in mu/model.h).
  * The engine's solver answers forces it cannot hold (a huge weight, a
  * huge Fmax) with joints that stretch rather than with an error, so this
  * is where a run is told it has left physics. */
@@ -752,6 +835,13 @@ static void watch(mu_model *model)
                      MU_MODEL_MAX_ANGULAR_SPEED);
         }
     }
+    const mu_model_energy *energy = &model->energy;
+    if (model->failure[0] == '\0' && !(energy->created <= MU_MODEL_MAX_CREATED_ENERGY + energy->muscle_work_gross)) {
+        snprintf(model->failure, sizeof model->failure,
+                 "t = %.4f s: the bodies gained %.3g J that no muscle gave them (more than %g J plus the muscles' "
+                 "%.3g J of work): the solver, or something outside the model, added energy",
+                 t, energy->created, MU_MODEL_MAX_CREATED_ENERGY, energy->muscle_work_gross);
+    }
     mu_c_locale_end(scope);
 }
 
@@ -777,6 +867,8 @@ static rb_status advance(mu_model *model, int substeps)
     }
     if (status == RB_OK) {
         model->substeps_taken += substeps;
+        account_substep_work(model);
+        account_energy(model);
         watch(model);
     }
     return status;

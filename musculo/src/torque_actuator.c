@@ -91,6 +91,24 @@ double mu_torque_actuator_peak_torque(const mu_torque_actuator *actuator)
     return mu_refuse_null("mu_torque_actuator_peak_torque", "actuator", actuator) ? NAN : actuator->peak_torque;
 }
 
+double mu_torque_actuator_power(const mu_torque_actuator *actuator, const rb_world *world)
+{
+    const char *f = "mu_torque_actuator_power";
+    if (mu_refuse_null(f, "actuator", actuator) || mu_refuse_null(f, "world", world)) {
+        return NAN;
+    }
+    if (!rb_body_is_valid(world, actuator->body) ||
+        (!rb_body_id_is_null(actuator->reaction_body) && !rb_body_is_valid(world, actuator->reaction_body))) {
+        rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: a body of the actuator is no longer in the world", f);
+        return NAN;
+    }
+    double spin = rb_body_angular_velocity(world, actuator->body);
+    if (!rb_body_id_is_null(actuator->reaction_body)) {
+        spin -= rb_body_angular_velocity(world, actuator->reaction_body);
+    }
+    return mu_torque_actuator_torque(actuator) * spin;
+}
+
 rb_status mu_torque_actuator_apply(const mu_torque_actuator *actuator, rb_world *world)
 {
     if (actuator == NULL || world == NULL) {

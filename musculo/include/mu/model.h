@@ -103,14 +103,19 @@ MU_API const char *mu_model_warnings(const mu_model *model);
  * MU_MODEL_MAX_HINGE_GAP (m), a body whose centre moves faster than
  * MU_MODEL_MAX_SPEED (m/s) or that turns faster than
  * MU_MODEL_MAX_ANGULAR_SPEED (rad/s, about 11,500°/s), or a non-finite
- * speed. A human limb's joints do not open; a pitched ball leaves the hand
- * at about 40 m/s, and the shoulder's internal rotation while pitching,
- * the fastest joint rotation measured in people, peaks near 7,000°/s
- * (Fleisig et al., "Kinetics of baseball pitching with implications about
- * injury mechanisms", 1995). The built-in models, in every variant, with every weight,
- * at activation 0 and 1 for 3 s, stay inside all three (at most 0.016 m,
- * 4 m/s and 39 rad/s measured over frames; tests/test_model_failure.c). */
+ * speed, or energy created beyond MU_MODEL_MAX_CREATED_ENERGY. A human limb's joints do not open; a pitched ball leaves
+ * the hand at about 40 m/s, and the shoulder's internal rotation while pitching, the fastest joint rotation measured in
+ * people, peaks near 7,000°/s (Fleisig et al., "Kinetics of baseball pitching with implications about injury
+ * mechanisms", 1995). The built-in models, in every variant, with every weight, at activation 0 and 1 for 3 s, stay
+ * inside all three (at most 0.016 m, 4 m/s and 39 rad/s measured over frames; tests/test_model_failure.c). */
 #define MU_MODEL_MAX_HINGE_GAP 0.05
+/** J: a run has also failed when its energy account (mu_model_energy_account)
+ * shows more energy created than this plus the muscles' gross work: the
+ * solver (or something outside the model) has added energy no muscle
+ * did. Over the built-in models' sweep above the most created was 2.8 J
+ * (the arm, all biceps fully active, no weight, with 5.4 J of muscle
+ * work); damping, contacts and limits otherwise take energy away. */
+#define MU_MODEL_MAX_CREATED_ENERGY 1.0
 #define MU_MODEL_MAX_SPEED 50.0
 #define MU_MODEL_MAX_ANGULAR_SPEED 200.0
 /** NULL while the run looks physical; after the first step that ended past
@@ -120,6 +125,29 @@ MU_API const char *mu_model_warnings(const mu_model *model);
  * (`sinew run --strict` does). Typical causes: a weight or a muscle force
  * far beyond what the joints' solver can hold within a frame. */
 MU_API const char *mu_model_failure(const mu_model *model);
+
+/** The model's mechanical energy account, in J. `mechanical` is the
+ * kinetic energy of the moving bodies (½·m·v² + ½·I·ω²) plus their
+ * potential energy in gravity (−m·g·x of the centre of mass) now;
+ * `muscle_work` is the work the muscles' tensions and the torque muscles'
+ * torques did on the bodies since the account started, summed substep by
+ * substep (tension × shortening, torque × turn). What nothing else
+ * explains, `created` = mechanical − at_start − muscle_work, is what the
+ * solver added: damping, contacts and limits only take energy away, so a
+ * sound run keeps it at or below zero up to the integrator's error.
+ * The account starts at the first step, and starts again (created back
+ * to 0) after a step in which something outside the model acted on its
+ * world (a joint the model did not build, such as the viewer's mouse) or
+ * gravity changed. Before the first step every field is 0; NaN fields
+ * (and an error) for a NULL model. */
+typedef struct mu_model_energy {
+    double mechanical;        /**< J, now */
+    double at_start;          /**< J, when the account (re)started */
+    double muscle_work;       /**< J, done on the bodies since then */
+    double muscle_work_gross; /**< J, the same with every substep's work counted positive */
+    double created;           /**< J, mechanical − at_start − muscle_work */
+} mu_model_energy;
+MU_API mu_model_energy mu_model_energy_account(const mu_model *model);
 
 /** The built hinges, in the description's order, with their joint angle
  * (degrees, angle(bone B) - angle(bone A), as the file's limits): 0

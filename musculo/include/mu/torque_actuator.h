@@ -52,6 +52,11 @@ MU_API double mu_torque_actuator_torque(const mu_torque_actuator *actuator);
 /** N·m; NaN (and an error) for NULL. */
 MU_API double mu_torque_actuator_peak_torque(const mu_torque_actuator *actuator);
 
+/** W: the rate at which the torque does work on the bodies now,
+ * torque · (ω(body) − ω(reaction body)) (the world's ω is 0); NaN (and
+ * an error) for a NULL argument or a body no longer in the world. */
+MU_API double mu_torque_actuator_power(const mu_torque_actuator *actuator, const rb_world *world);
+
 /** Adds the torque to the body and its opposite to the reaction body for
  * the next step. A static or kinematic body takes none (the engine's rule). */
 MU_API rb_status mu_torque_actuator_apply(const mu_torque_actuator *actuator, rb_world *world);
