@@ -23,6 +23,7 @@
 #include "commands.h"
 #include "control_file.h"
 #include "controls.h"
+#include "load_peaks.h"
 #include "progress.h"
 #include "recorder.h"
 
@@ -412,6 +413,7 @@ typedef struct run_state {
     double *peak_time;  /* s */
     double *angle_min;  /* deg, by hinge; NaN for a hinge not built */
     double *angle_max;
+    load_peaks loads; /* the joints' peak loads */
     double wall_seconds, step_seconds;
     bool failure_reported; /* mu_model_failure said on stderr */
 } run_state;
@@ -438,6 +440,7 @@ static void track_extremes(run_state *run, double time)
         run->angle_min[h] = fmin(run->angle_min[h], angle);
         run->angle_max[h] = fmax(run->angle_max[h], angle);
     }
+    load_peaks_track(&run->loads, run->model, time);
 }
 
 /* Steps every frame, applying the controls before it and recording it
@@ -566,6 +569,7 @@ static void print_summary(const run_state *run)
     if (!any_hinge) {
         printf("final angle  (no hinges built)\n");
     }
+    load_peaks_print(&run->loads, run->model);
     printf("csv          %s (%ld rows, %d columns)\n", run->csv_path, run->csv.rows,
            recorder_column_count(&run->csv, run->model));
 }
@@ -635,7 +639,8 @@ static int prepare(run_state *run)
     size_t hinges = (size_t)mu_model_hinge_count(run->model) + 1;
     run->angle_min = malloc(hinges * sizeof *run->angle_min);
     run->angle_max = malloc(hinges * sizeof *run->angle_max);
-    if (run->peak_force == NULL || run->peak_time == NULL || run->angle_min == NULL || run->angle_max == NULL) {
+    if (run->peak_force == NULL || run->peak_time == NULL || run->angle_min == NULL || run->angle_max == NULL ||
+        !load_peaks_start(&run->loads, run->model)) {
         fputs("sinew: out of memory\n", stderr);
         return EXIT_FAILURE;
     }
@@ -689,6 +694,7 @@ int cmd_run(int argc, char **argv)
     free(run.peak_time);
     free(run.angle_min);
     free(run.angle_max);
+    load_peaks_free(&run.loads);
     free(opts.controls);
     free(opts.recruits);
     return code;
