@@ -58,9 +58,9 @@ static mu_joint_load load_of(const mu_model *model, rb_joint_id joint, rb_vec2 a
     };
 }
 
-rb_vec2 mu_model_hinge_bone_axis(const mu_model *model, int hinge)
+/* The hinge's proximal bone axis, the arguments checked in the name of `f`. */
+static rb_vec2 checked_axis(const mu_model *model, int hinge, const char *f)
 {
-    const char *f = "mu_model_hinge_bone_axis";
     if (mu_refuse_null(f, "model", model) || mu_refuse_index(f, "hinge", hinge, mu_model_hinge_count(model)) ||
         rb_joint_id_is_null(mu_model_hinge_joint(model, hinge))) {
         return rb_v2(NAN, NAN);
@@ -70,9 +70,14 @@ rb_vec2 mu_model_hinge_bone_axis(const mu_model *model, int hinge)
     return bone_axis(model, part_of(desc, h->body_a), h->anchor_a);
 }
 
+rb_vec2 mu_model_hinge_bone_axis(const mu_model *model, int hinge)
+{
+    return checked_axis(model, hinge, "mu_model_hinge_bone_axis");
+}
+
 mu_joint_load mu_model_hinge_load(const mu_model *model, int hinge)
 {
-    const rb_vec2 axis = mu_model_hinge_bone_axis(model, hinge);
+    const rb_vec2 axis = checked_axis(model, hinge, "mu_model_hinge_load");
     return isnan(axis.x) ? nan_load() : load_of(model, mu_model_hinge_joint(model, hinge), axis);
 }
 

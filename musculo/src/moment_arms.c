@@ -78,11 +78,11 @@ rb_status mu_model_moment_arms(const mu_model *model, int hinge, double *arms)
     return RB_OK;
 }
 
-double mu_model_moment_arm(const mu_model *model, int muscle, int hinge)
+/* The moment arm, the arguments checked in the name of `function`. */
+static double checked_arm(const mu_model *model, int muscle, int hinge, const char *function)
 {
-    const char *f = "mu_model_moment_arm";
     rb_joint_id joint;
-    if (refuse_hinge(model, hinge, f, &joint) || refuse_muscle(model, muscle, f)) {
+    if (refuse_hinge(model, hinge, function, &joint) || refuse_muscle(model, muscle, function)) {
         return NAN;
     }
     if (rb_joint_id_is_null(joint)) {
@@ -97,9 +97,14 @@ double mu_model_moment_arm(const mu_model *model, int muscle, int hinge)
     return arm;
 }
 
+double mu_model_moment_arm(const mu_model *model, int muscle, int hinge)
+{
+    return checked_arm(model, muscle, hinge, "mu_model_moment_arm");
+}
+
 double mu_model_muscle_torque(const mu_model *model, int muscle, int hinge)
 {
-    const double arm = mu_model_moment_arm(model, muscle, hinge);
+    const double arm = checked_arm(model, muscle, hinge, "mu_model_muscle_torque");
     return isnan(arm) ? NAN : mu_model_muscle_readout(model, muscle).total_force * arm;
 }
 
