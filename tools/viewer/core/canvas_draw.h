@@ -5,7 +5,8 @@
  * to dark red by activation, on their tendon and via-point lines), the
  * weight (a blue disc with a hole) and the worm's exertion bar; an engine
  * scene through the engine's debug draw; the overlays chosen in the
- * engine panel over either. Pure Cairo: the GTK canvas and the headless
+ * engine panel over either (on a model, the "reactions" overlay draws the
+ * joint loads as labelled arrows to a legend's scale: load_arrows.h). Pure Cairo: the GTK canvas and the headless
  * screenshot both call it.
  */
 #ifndef VIEWER_CANVAS_DRAW_H
