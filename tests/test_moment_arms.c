@@ -146,7 +146,7 @@ Test(moment_arms, the_arms_paths_match_a_central_difference)
  * lengths of human upper limb muscles as functions of joint angles", 1996,
  * whose fit peaks near 100° of flexion). The arm's biceps has that shape
  * and size: positive through flexion, one interior peak of a few cm. Its
- * peak lies near 52°, not 100°: the model's insertion on the radius is
+ * peak lies at 53-56°, not near 100°: the model's insertion on the radius is
  * 3.9 cm in front of the forearm's axis (the radial tuberosity is about
  * 1 cm), and the peak falls where the insertion's arm from the pivot
  * stands square to the muscle's line (docs/loads.md). */

@@ -141,7 +141,10 @@ static const cli_command command = {
              "NAME.contraction_m, NAME.normalized_contraction, NAME.active_force_N,\n"
              "NAME.passive_force_N, NAME.total_force_N, NAME.excitation, NAME.fibre_length_m,\n"
              "NAME.tendon_length_m, NAME.pennation_angle_deg; per hinge NAME.angle_deg; per part\n"
-             "NAME.x_m, NAME.y_m, NAME.angle_deg (docs/cli.md, \"The CSV\").\n",
+             "NAME.x_m, NAME.y_m, NAME.angle_deg; per joint NAME.reaction_x_N, NAME.reaction_y_N,\n"
+             "NAME.reaction_along_N, NAME.reaction_across_N, NAME.reaction_torque_N_m,\n"
+             "NAME.muscle_torque_N_m; per muscle and hinge it crosses MUSCLE.HINGE.moment_arm_m,\n"
+             "MUSCLE.HINGE.torque_N_m (docs/cli.md, \"The CSV\"; docs/loads.md).\n",
 };
 
 /* Most frames a run may have: beyond any useful run (46 hours of
