@@ -49,7 +49,11 @@ void recorder_loads_close(recorder_loads *loads)
     free(loads->glues);
     free(loads->crossing);
     free(loads->arms);
-    *loads = (recorder_loads){.hinges = NULL};
+    /* The counts stay: the summary reports the columns after the commit. */
+    loads->hinges = NULL;
+    loads->glues = NULL;
+    loads->crossing = NULL;
+    loads->arms = NULL;
 }
 
 void recorder_loads_write_header(const recorder_loads *loads, FILE *stream, const mu_model *model,

@@ -31,7 +31,8 @@ typedef struct recorder_loads {
     double *arms; /* one hinge's moment arms, by muscle: scratch for a row */
 } recorder_loads;
 
-/* Finds the joints and crossings of the model as built; false on memory. */
+/* Finds the joints and crossings of the model as built; false on memory.
+ * Closing frees the lists and keeps the counts. */
 bool recorder_loads_open(recorder_loads *loads, const mu_model *model);
 void recorder_loads_close(recorder_loads *loads);
 
