@@ -25,6 +25,7 @@
 #include "cli/user_error.h"
 #include "commands.h"
 #include "io/atomic_file.h"
+#include "io/csv_table.h"
 #include "io/provenance.h"
 #include "mu/moment_arms.h"
 
@@ -305,60 +306,50 @@ static bool run_sweep(mu_model *model, int hinge, sweep *s)
 static const char *const column_names[COLUMNS_PER_MUSCLE] = {"moment_arm_m", "length_m", "active_force_N",
                                                              "passive_force_N", "max_torque_N_m"};
 
-/* Writes ",NAME.QUANTITY", quoted when RFC 4180 requires it. */
-static void write_header_field(FILE *stream, const char *name, const char *quantity)
-{
-    if (strpbrk(name, ",\"\r\n") == NULL) {
-        fprintf(stream, ",%s.%s", name, quantity);
-        return;
-    }
-    fputs(",\"", stream);
-    for (const char *c = name; *c != '\0'; ++c) {
-        if (*c == '"') {
-            fputc('"', stream);
-        }
-        fputc(*c, stream);
-    }
-    fprintf(stream, ".%s\"", quantity);
-}
-
+/* The sweep as a table (io/csv_table.h: names quoted as RFC 4180 needs,
+ * written all or nothing), then its sidecar, which takes `settings`. */
 static bool write_csv(const char *path, const sweep *s, const mu_model *model, json_t *settings)
 {
-    char error[ATOMIC_FILE_ERROR_SIZE];
-    atomic_file file;
-    if (!atomic_file_open(&file, path, error, sizeof error)) {
-        fprintf(stderr, "sinew: %s\n", error);
-        json_decref(settings);
-        return false;
-    }
-    fputs("angle_deg", file.stream);
-    for (int k = 0; k < s->muscle_count; ++k) {
-        for (int c = 0; c < COLUMNS_PER_MUSCLE; ++c) {
-            write_header_field(file.stream, mu_model_muscle_name(model, s->muscles[k]), column_names[c]);
+    const int count = 1 + COLUMNS_PER_MUSCLE * s->muscle_count;
+    char *names = malloc((size_t)count * 512);
+    const char **name_of = malloc((size_t)count * sizeof *name_of);
+    double *row = malloc((size_t)count * sizeof *row);
+    csv_table table = {0};
+    char error[ATOMIC_FILE_ERROR_SIZE] = "out of memory";
+    bool ok = names != NULL && name_of != NULL && row != NULL;
+    for (int c = 0; ok && c < count; ++c) {
+        char *name = names + (size_t)c * 512;
+        const int k = (c - 1) / COLUMNS_PER_MUSCLE;
+        if (c == 0) {
+            snprintf(name, 512, "angle_deg");
+        } else {
+            snprintf(name, 512, "%s.%s", mu_model_muscle_name(model, s->muscles[k]),
+                     column_names[(c - 1) % COLUMNS_PER_MUSCLE]);
         }
+        name_of[c] = name;
     }
-    fputc('\n', file.stream);
-    for (int a = 0; a < s->angle_count; ++a) {
-        fprintf(file.stream, "%.10g", s->angles[a]);
-        for (int k = 0; k < s->muscle_count; ++k) {
-            for (int c = 0; c < COLUMNS_PER_MUSCLE; ++c) {
-                fprintf(file.stream, ",%.10g", *value_at(s, a, k, c));
-            }
+    ok = ok && csv_table_init(&table, count, name_of, error, sizeof error);
+    for (int a = 0; ok && a < s->angle_count; ++a) {
+        row[0] = s->angles[a];
+        for (int c = 1; c < count; ++c) {
+            row[c] = *value_at(s, a, (c - 1) / COLUMNS_PER_MUSCLE, (c - 1) % COLUMNS_PER_MUSCLE);
         }
-        fputc('\n', file.stream);
+        ok = csv_table_add_row(&table, row, error, sizeof error);
     }
-    if (ferror(file.stream)) {
-        fprintf(stderr, "sinew: cannot write %s: %s\n", file.temp_path, strerror(errno));
-        atomic_file_abandon(&file);
+    ok = ok && csv_table_write(&table, path, error, sizeof error);
+    if (ok) {
+        ok = provenance_write_sidecar(path, settings, error, sizeof error);
+    } else {
         json_decref(settings);
-        return false;
     }
-    if (!atomic_file_commit(&file, error, sizeof error) ||
-        !provenance_write_sidecar(path, settings, error, sizeof error)) {
+    if (!ok) {
         fprintf(stderr, "sinew: %s\n", error);
-        return false;
     }
-    return true;
+    csv_table_free(&table);
+    free(names);
+    free(name_of);
+    free(row);
+    return ok;
 }
 
 /* Four charts against the angle: moment arm, length, active and passive
@@ -414,8 +405,12 @@ static bool write_figure(const char *path, const sweep *s, const mu_model *model
 static int output_path(const sweep_options *opts, const char *extension, char *path, size_t path_size)
 {
     struct stat info;
-    if (stat(opts->out_dir, &info) != 0 || !S_ISDIR(info.st_mode)) {
-        fprintf(stderr, "sinew: --out %s: %s\n", opts->out_dir, errno != 0 ? strerror(errno) : "not a directory");
+    if (stat(opts->out_dir, &info) != 0) {
+        fprintf(stderr, "sinew: --out %s: %s\n", opts->out_dir, strerror(errno));
+        return EXIT_FAILURE;
+    }
+    if (!S_ISDIR(info.st_mode)) {
+        fprintf(stderr, "sinew: --out %s: not a directory\n", opts->out_dir);
         return EXIT_FAILURE;
     }
     char stem[MODEL_STEM_SIZE];
