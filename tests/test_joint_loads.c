@@ -193,3 +193,68 @@ Test(joint_loads, the_muscles_torque_is_the_moment_of_their_cable_forces)
     mu_model_destroy(model);
     mu_model_desc_destroy(desc);
 }
+
+/* The arm at rest, its forearm held by the biceps against gravity and a
+ * 1 kg weight: the forearm (one body with the hand, the fingers and the
+ * weight) is in equilibrium under the elbow's reaction, the muscles'
+ * cable forces and its weight, so the reaction is minus the others' sum
+ * and, about the pivot, the muscles' torque balances the weight's moment
+ * (the free hinge carries no torque). Both hold to the rest the run
+ * reaches (the residual speeds measured below). */
+Test(joint_loads, the_forearm_at_rest_balances_its_loads)
+{
+    mu_model_desc *desc = NULL;
+    cr_assert_eq(mu_model_desc_load_builtin("arm", &desc), RB_OK);
+    mu_model_options options = mu_default_model_options();
+    options.weight_index = 1; /* 1 kg */
+    mu_model *model = NULL;
+    cr_assert_eq(mu_model_create(desc, &options, &model), RB_OK);
+    cr_assert_eq(mu_model_set_activation(model, "Biceps Long", 0.3), RB_OK);
+    for (int frame = 0; frame < 600; ++frame) {
+        cr_assert_eq(mu_model_step(model), RB_OK);
+    }
+    int elbow = -1;
+    for (int h = 0; h < mu_model_hinge_count(model); ++h) {
+        elbow = strcmp(mu_model_hinge_name(model, h), "Elbow") == 0 ? h : elbow;
+    }
+    const rb_world *world = mu_model_world_to_read(model);
+    const rb_joint_id joint = mu_model_hinge_joint(model, elbow);
+    const rb_body_id forearm = rb_joint_body_b(world, joint);
+    cr_assert_lt(rb_length(rb_body_linear_velocity(world, forearm)), 1e-6, "the forearm is at rest");
+    const double angle = mu_model_hinge_angle(model, elbow);
+    cr_expect(angle > -10.0 && angle < 150.0, "the elbow rests inside its limits (%g deg)", angle);
+    const rb_vec2 pivot = rb_joint_world_anchor_b(world, joint);
+    const rb_vec2 weight = rb_scale(rb_body_mass(world, forearm), rb_v2(0.0, -G));
+    /* The cable forces on the forearm's points: each pulled towards its neighbours. */
+    rb_vec2 cables = {0.0, 0.0};
+    for (int m = 0; m < mu_model_muscle_count(model); ++m) {
+        const mu_model_muscle *muscle = &desc->muscles[mu_model_muscle_description_index(model, m)];
+        rb_vec2 points[RB_MAX_CABLE_POINTS];
+        const int count =
+            rb_cable_points(world, mu_muscle_cable(mu_model_built_muscle(model, m)), points, RB_MAX_CABLE_POINTS);
+        const double tension = mu_model_muscle_readout(model, m).total_force;
+        for (int i = 0; i < count; ++i) {
+            const mu_model_ref ref = muscle->path[i].body;
+            const int part = ref.kind == MU_MODEL_NAIL ? ref.index : desc->nail_count + ref.index;
+            if (!rb_body_id_equals(mu_model_body(model, mu_model_part_body(model, part)), forearm)) {
+                continue;
+            }
+            if (i > 0) {
+                cables = rb_mul_add(cables, tension, rb_normalize(rb_sub(points[i - 1], points[i])));
+            }
+            if (i + 1 < count) {
+                cables = rb_mul_add(cables, tension, rb_normalize(rb_sub(points[i + 1], points[i])));
+            }
+        }
+    }
+    const mu_joint_load load = mu_model_hinge_load(model, elbow);
+    const rb_vec2 expected = rb_neg(rb_add(weight, cables));
+    cr_expect(rb_distance(load.force, expected) <= 1e-6 * rb_length(expected),
+              "reaction (%.9g, %.9g), expected (%.9g, %.9g) N", load.force.x, load.force.y, expected.x, expected.y);
+    const double gravity_moment = rb_cross(rb_sub(rb_body_world_center(world, forearm), pivot), weight);
+    cr_expect(fabs(load.muscle_torque + gravity_moment) <= 1e-6 * fabs(gravity_moment),
+              "muscles %.9g N·m against the weight's %.9g N·m", load.muscle_torque, gravity_moment);
+    cr_expect_eq(load.torque, 0.0, "a free hinge carries no torque");
+    mu_model_destroy(model);
+    mu_model_desc_destroy(desc);
+}
