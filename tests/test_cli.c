@@ -56,8 +56,11 @@ Test(cli, a_run_writes_one_row_per_frame_with_every_readout)
     static char line[1 << 16];
     cr_assert_not_null(fgets(line, sizeof line, f), "empty CSV");
     /* time, 15 readouts for each of the 5 muscles, 2 hinge angles, and
-     * x, y, angle for each of the 11 parts (1 nail, 10 bones). */
-    const int columns = 1 + 15 * 5 + 2 + 3 * 11;
+     * x, y, angle for each of the 11 parts (1 nail, 10 bones); then 6
+     * joint loads for each of the 2 hinges, and a moment arm and a torque
+     * for each muscle about each hinge it crosses (3 the shoulder, 5 the
+     * elbow). */
+    const int columns = 1 + 15 * 5 + 2 + 3 * 11 + 6 * 2 + 2 * (3 + 5);
     cr_expect_eq(count_fields(line), columns, "%d columns in the header, expected %d", count_fields(line), columns);
     cr_expect(strstr(line, "time_s") == line, "the header starts with time_s: %.40s", line);
     cr_expect(strstr(line, "Biceps Short.total_force_N") != NULL, "a total force column per muscle");
@@ -65,6 +68,11 @@ Test(cli, a_run_writes_one_row_per_frame_with_every_readout)
                            "Biceps Short.tendon_length_m,Biceps Short.pennation_angle_deg,") != NULL,
               "the physiology columns after the forces, with their units");
     cr_expect(strstr(line, "Elbow.angle_deg") != NULL, "an angle column per hinge");
+    cr_expect(strstr(line, "Elbow.reaction_x_N,Elbow.reaction_y_N,Elbow.reaction_along_N,Elbow.reaction_across_N,"
+                           "Elbow.reaction_torque_N_m,Elbow.muscle_torque_N_m") != NULL,
+              "the joint loads per hinge");
+    cr_expect(strstr(line, "Biceps Long.Elbow.moment_arm_m,Biceps Long.Elbow.torque_N_m") != NULL,
+              "a moment arm and torque per muscle and hinge it crosses");
     int rows = 0;
     while (fgets(line, sizeof line, f) != NULL) {
         cr_expect_eq(count_fields(line), columns, "row %d has %d fields", rows + 1, count_fields(line));

@@ -153,7 +153,19 @@ Test(csv_round_trip, sinew_run_writes_names_it_reads_back)
     cr_expect_geq(csv_table_find(&table, "Bi,ceps \"Long\".total_force_N"), 0);
     cr_expect_geq(csv_table_find(&table, "El, bow.angle_deg"), 0);
     cr_expect_geq(csv_table_find(&table, " Radius .x_m"), 0);
+    cr_expect_geq(csv_table_find(&table, "El, bow.reaction_along_N"), 0);
+    cr_expect_geq(csv_table_find(&table, "Bi,ceps \"Long\".El, bow.moment_arm_m"), 0);
     expect_all_numeric(path, &table, 6);
+    csv_table_free(&table);
+    /* The hinge sweep's table, named after the hinge with '-' for what is
+     * not a letter or a digit. */
+    cr_assert_eq(run_sinew("moment-arms names.json --hinge \"El, bow\" --step 10 --out ."), 0,
+                 "sinew moment-arms failed");
+    snprintf(path, sizeof path, "%s/names-moment-arms-El--bow.csv", dir);
+    cr_assert(csv_table_read(path, &table, error, sizeof error), "%s", error);
+    cr_expect_geq(csv_table_find(&table, "Bi,ceps \"Long\".moment_arm_m"), 0);
+    cr_expect_geq(csv_table_find(&table, "#Bíceps; curto.passive_force_N"), 0);
+    expect_all_numeric(path, &table, 17);
     csv_table_free(&table);
     cr_expect_eq(run_sinew("plot names.csv --y \"Bi,ceps \\\"Long\\\".total_force_N\" --out names.png"), 0,
                  "sinew plot of the run failed");

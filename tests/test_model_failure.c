@@ -227,4 +227,3 @@ Test(model_failure, the_viewer_is_told_once_per_built_model)
     remove(model);
     rmdir(dir);
 }
-

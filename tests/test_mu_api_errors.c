@@ -26,8 +26,10 @@
 #include "mu/calcium_force.h"
 #include "mu/curves.h"
 #include "mu/geometry_lengths.h"
+#include "mu/joint_loads.h"
 #include "mu/model.h"
 #include "mu/model_desc.h"
+#include "mu/moment_arms.h"
 #include "mu/motor_pool.h"
 #include "mu/muscle.h"
 #include "mu/muscle_statics.h"
@@ -665,6 +667,17 @@ static void storm_muscle_use(void)
     REFUSED_STATUS(mu_muscle_advance(NULL, rig.world, h), "mu_muscle_advance", "muscle");
     REFUSED_STATUS(mu_muscle_advance(rig.muscle, NULL, h), "mu_muscle_advance", "world");
     REFUSED_NAN(mu_muscle_read(NULL).total_force, "mu_muscle_read", "muscle");
+    double active = 0.0, passive = 0.0;
+    REFUSED_STATUS(mu_muscle_isometric_forces(NULL, rig.world, 1.0, &active, &passive), "mu_muscle_isometric_forces",
+                   "muscle");
+    REFUSED_STATUS(mu_muscle_isometric_forces(rig.muscle, NULL, 1.0, &active, &passive), "mu_muscle_isometric_forces",
+                   "world");
+    REFUSED_STATUS(mu_muscle_isometric_forces(rig.muscle, rig.world, 1.0, NULL, &passive), "mu_muscle_isometric_forces",
+                   "active");
+    REFUSED_STATUS(mu_muscle_isometric_forces(rig.muscle, rig.world, 1.0, &active, NULL), "mu_muscle_isometric_forces",
+                   "passive");
+    REFUSED_STATUS(mu_muscle_isometric_forces(rig.muscle, rig.world, 1.5, &active, &passive),
+                   "mu_muscle_isometric_forces", "activation");
     double bad;
     FOR_BAD_DOUBLES(bad)
     {
@@ -672,6 +685,8 @@ static void storm_muscle_use(void)
         REFUSED_STATUS(mu_muscle_set_target_tension(rig.muscle, bad), "mu_muscle_set_target_tension", "target");
         REFUSED_STATUS(mu_muscle_prepare(rig.muscle, rig.world, bad), "mu_muscle_prepare", "h");
         REFUSED_STATUS(mu_muscle_advance(rig.muscle, rig.world, bad), "mu_muscle_advance", "h");
+        REFUSED_STATUS(mu_muscle_isometric_forces(rig.muscle, rig.world, bad, &active, &passive),
+                       "mu_muscle_isometric_forces", "activation");
     }
     REFUSED_STATUS(mu_muscle_prepare(rig.muscle, rig.world, 0.0), "mu_muscle_prepare", "h");
     /* The muscle still works. */
@@ -680,6 +695,108 @@ static void storm_muscle_use(void)
     cr_expect_eq(mu_muscle_measure(rig.muscle, rig.world), RB_OK, "%s", rb_last_error());
     cr_expect(isfinite(mu_muscle_read(rig.muscle).total_force));
     free_rig(&rig);
+}
+
+static void storm_model_objects(void)
+{
+    mu_model_desc *desc = load("arm");
+    mu_model *model = build(desc);
+    REFUSED_VALUE(mu_model_world_to_read(NULL), NULL, "mu_model_world_to_read", "model");
+    clear_error();
+    cr_expect(rb_joint_id_is_null(mu_model_hinge_joint(NULL, 0)));
+    expect_refused("mu_model_hinge_joint", "model", __LINE__);
+    REFUSED_VALUE(mu_model_glue_count(NULL), 0, "mu_model_glue_count", "model");
+    REFUSED_VALUE(mu_model_glue_name(NULL, 0), NULL, "mu_model_glue_name", "model");
+    clear_error();
+    cr_expect(rb_joint_id_is_null(mu_model_glue_joint(NULL, 0)));
+    expect_refused("mu_model_glue_joint", "model", __LINE__);
+    clear_error();
+    cr_expect(rb_joint_id_is_null(mu_model_weight_joint(NULL)));
+    expect_refused("mu_model_weight_joint", "model", __LINE__);
+    clear_error();
+    cr_expect(rb_body_id_is_null(mu_model_body(NULL, 0)));
+    expect_refused("mu_model_body", "model", __LINE__);
+    REFUSED_VALUE(mu_model_part_body(NULL, 0), -1, "mu_model_part_body", "model");
+    REFUSED_VALUE(mu_model_muscle_description_index(NULL, 0), -1, "mu_model_muscle_description_index", "model");
+    REFUSED_VALUE(mu_model_muscle_at(NULL, 0), NULL, "mu_model_muscle_at", "model");
+    int index;
+    FOR_BAD_INDICES(index, mu_model_hinge_count(model))
+    {
+        clear_error();
+        cr_expect(rb_joint_id_is_null(mu_model_hinge_joint(model, index)));
+        expect_refused("mu_model_hinge_joint", "index", __LINE__);
+    }
+    FOR_BAD_INDICES(index, mu_model_glue_count(model))
+    {
+        REFUSED_VALUE(mu_model_glue_name(model, index), NULL, "mu_model_glue_name", "index");
+        clear_error();
+        cr_expect(rb_joint_id_is_null(mu_model_glue_joint(model, index)));
+        expect_refused("mu_model_glue_joint", "index", __LINE__);
+    }
+    FOR_BAD_INDICES(index, mu_model_body_count(model))
+    {
+        clear_error();
+        cr_expect(rb_body_id_is_null(mu_model_body(model, index)));
+        expect_refused("mu_model_body", "index", __LINE__);
+    }
+    FOR_BAD_INDICES(index, mu_model_part_count(model))
+    {
+        REFUSED_VALUE(mu_model_part_body(model, index), -1, "mu_model_part_body", "index");
+    }
+    FOR_BAD_INDICES(index, mu_model_muscle_count(model))
+    {
+        REFUSED_VALUE(mu_model_muscle_description_index(model, index), -1, "mu_model_muscle_description_index",
+                      "index");
+        REFUSED_VALUE(mu_model_muscle_at(model, index), NULL, "mu_model_muscle_at", "index");
+    }
+    mu_model_destroy(model);
+    mu_model_desc_destroy(desc);
+}
+
+static void storm_loads_and_moment_arms(void)
+{
+    mu_model_desc *desc = load("arm");
+    mu_model *model = build(desc);
+    double arms[8];
+    REFUSED_VALUE(mu_model_muscle_crosses(NULL, 0, 0), false, "mu_model_muscle_crosses", "model");
+    REFUSED_NAN(mu_model_moment_arm(NULL, 0, 0), "mu_model_moment_arm", "model");
+    REFUSED_STATUS(mu_model_moment_arms(NULL, 0, arms), "mu_model_moment_arms", "model");
+    REFUSED_STATUS(mu_model_moment_arms(model, 0, NULL), "mu_model_moment_arms", "arms");
+    REFUSED_NAN(mu_model_muscle_torque(NULL, 0, 0), "mu_model_muscle_torque", "model");
+    REFUSED_NAN(mu_model_hinge_muscle_torque(NULL, 0), "mu_model_hinge_muscle_torque", "model");
+    REFUSED_STATUS(mu_model_pose_hinge(NULL, 0, 0.0), "mu_model_pose_hinge", "model");
+    REFUSED_NAN(mu_model_hinge_load(NULL, 0).force.x, "mu_model_hinge_load", "model");
+    REFUSED_NAN(mu_model_glue_load(NULL, 0).torque, "mu_model_glue_load", "model");
+    REFUSED_NAN(mu_model_hinge_bone_axis(NULL, 0).x, "mu_model_hinge_bone_axis", "model");
+    int index;
+    FOR_BAD_INDICES(index, mu_model_hinge_count(model))
+    {
+        REFUSED_VALUE(mu_model_muscle_crosses(model, 0, index), false, "mu_model_muscle_crosses", "hinge");
+        REFUSED_NAN(mu_model_moment_arm(model, 0, index), "mu_model_moment_arm", "hinge");
+        REFUSED_STATUS(mu_model_moment_arms(model, index, arms), "mu_model_moment_arms", "hinge");
+        REFUSED_NAN(mu_model_muscle_torque(model, 0, index), "mu_model_muscle_torque", "hinge");
+        REFUSED_NAN(mu_model_hinge_muscle_torque(model, index), "mu_model_hinge_muscle_torque", "hinge");
+        REFUSED_STATUS(mu_model_pose_hinge(model, index, 0.0), "mu_model_pose_hinge", "hinge");
+        REFUSED_NAN(mu_model_hinge_load(model, index).along, "mu_model_hinge_load", "hinge");
+        REFUSED_NAN(mu_model_hinge_bone_axis(model, index).y, "mu_model_hinge_bone_axis", "hinge");
+    }
+    FOR_BAD_INDICES(index, mu_model_muscle_count(model))
+    {
+        REFUSED_VALUE(mu_model_muscle_crosses(model, index, 0), false, "mu_model_muscle_crosses", "muscle");
+        REFUSED_NAN(mu_model_moment_arm(model, index, 0), "mu_model_moment_arm", "muscle");
+        REFUSED_NAN(mu_model_muscle_torque(model, index, 0), "mu_model_muscle_torque", "muscle");
+    }
+    FOR_BAD_INDICES(index, mu_model_glue_count(model))
+    {
+        REFUSED_NAN(mu_model_glue_load(model, index).force.y, "mu_model_glue_load", "glue");
+    }
+    double bad;
+    FOR_BAD_DOUBLES(bad) { REFUSED_STATUS(mu_model_pose_hinge(model, 0, bad), "mu_model_pose_hinge", "degrees"); }
+    /* Outside the hinge's limits (the elbow's are -10 .. 150). */
+    REFUSED_STATUS(mu_model_pose_hinge(model, 1, 151.0), "mu_model_pose_hinge", "limits");
+    cr_expect(isfinite(mu_model_moment_arm(model, 0, 1)), "%s", rb_last_error());
+    mu_model_destroy(model);
+    mu_model_desc_destroy(desc);
 }
 
 static void storm_statics(void)
@@ -786,6 +903,13 @@ static const api_storm storms[] = {
      "mu_model_group_activation mu_model_muscle_count mu_model_muscle_name mu_model_muscle_readout "
      "mu_model_built_muscle",
      storm_model_muscles},
+    {"mu_model_world_to_read mu_model_hinge_joint mu_model_glue_count mu_model_glue_name mu_model_glue_joint "
+     "mu_model_weight_joint mu_model_body mu_model_part_body mu_model_muscle_description_index mu_model_muscle_at",
+     storm_model_objects},
+    {"mu_model_muscle_crosses mu_model_moment_arm mu_model_moment_arms mu_model_muscle_torque "
+     "mu_model_hinge_muscle_torque mu_model_pose_hinge mu_model_hinge_load mu_model_glue_load "
+     "mu_model_hinge_bone_axis",
+     storm_loads_and_moment_arms},
     {"mu_model_hinge_count mu_model_hinge_name mu_model_hinge_angle mu_model_part_count mu_model_part_name "
      "mu_model_part_centre mu_model_part_angle",
      storm_model_parts},
@@ -804,7 +928,8 @@ static const api_storm storms[] = {
      storm_motor_pool_use},
     {"mu_muscle_create mu_muscle_destroy", storm_muscle_create},
     {"mu_muscle_set_activation mu_muscle_set_target_tension mu_muscle_solve_equilibrium mu_muscle_max_force "
-     "mu_muscle_tendon_length mu_muscle_cable mu_muscle_prepare mu_muscle_measure mu_muscle_advance mu_muscle_read",
+     "mu_muscle_tendon_length mu_muscle_cable mu_muscle_prepare mu_muscle_measure mu_muscle_advance mu_muscle_read "
+     "mu_muscle_isometric_forces",
      storm_muscle_use},
     {"mu_max_force_from_pcsa mu_pcsa_from_volume mu_pcsa_from_anatomical mu_fibre_length_from_sarcomeres "
      "mu_fibre_length_normalized",

@@ -17,6 +17,7 @@
 #include "canvas_draw.h"
 #include "history.h"
 #include "live_graph.h"
+#include "load_arrows.h"
 #include "simulation.h"
 #include "test_support.h"
 #include "view_transform.h"
@@ -398,4 +399,64 @@ Test(canvas_draw, bones_stay_visible_under_a_heavy_weight)
     cr_expect_eq(rim_without, 0, "no weight at level 3: %ld pixels", rim_without);
     cr_expect_geq(with_weight, without * 95 / 100, "bones with the weight: %ld pixels, without: %ld", with_weight,
                   without);
+}
+
+/* ---- joint-load arrows ------------------------------------------------------------ */
+
+Test(load_arrows, the_scale_is_a_round_step_that_keeps_the_largest_arrow_short)
+{
+    /* 120 px / 230 N = 0.52 px/N, rounded down to 0.5. */
+    cr_expect_float_eq(load_arrow_scale(230.0), 0.5, 1e-15);
+    cr_expect_float_eq(load_arrow_scale(1.0), 100.0, 1e-12);
+    cr_expect_float_eq(load_arrow_scale(24.0), 5.0, 1e-15);
+    cr_expect_eq(load_arrow_scale(0.0), 0.0);
+    cr_expect_eq(load_arrow_scale(NAN), 0.0);
+    for (double force = 0.013; force < 1e6; force *= 1.37) {
+        const double px = force * load_arrow_scale(force);
+        cr_expect(px <= LOAD_ARROW_MAX_PX * (1.0 + 1e-12) && px > LOAD_ARROW_MAX_PX / 2.5, "%g N drawn %g px", force,
+                  px);
+        double length = 0.0;
+        const double legend = load_arrow_legend_force(load_arrow_scale(force), &length);
+        cr_expect(length >= 40.0 - 1e-9 && length <= 100.0 + 1e-9, "legend %g N is %g px", legend, length);
+    }
+}
+
+Test(load_arrows, an_arrow_leaving_the_canvas_is_cut_at_its_margin)
+{
+    bool cut = true;
+    rb_vec2 tip = load_arrow_clip(rb_v2(100.0, 100.0), rb_v2(150.0, 80.0), 400.0, 300.0, &cut);
+    cr_expect(!cut && tip.x == 150.0 && tip.y == 80.0);
+    /* Right and up past the corner: cut where it first meets the margin. */
+    tip = load_arrow_clip(rb_v2(380.0, 50.0), rb_v2(420.0, 10.0), 400.0, 300.0, &cut);
+    cr_expect(cut);
+    expect_vec_near(tip, rb_v2(392.0, 38.0), 1e-12, "cut at x = 400 - 8");
+    tip = load_arrow_clip(rb_v2(50.0, 280.0), rb_v2(50.0, 900.0), 400.0, 300.0, &cut);
+    cr_expect(cut);
+    expect_vec_near(tip, rb_v2(50.0, 292.0), 1e-12, "cut at y = 300 - 8");
+}
+
+/* The "reactions" overlay draws the model's joint loads in orange with a
+ * legend; without it there is no orange. */
+Test(load_arrows, the_reactions_overlay_draws_labelled_loads)
+{
+    simulation sim = load_arm();
+    char error[SIMULATION_ERROR_SIZE];
+    for (int k = 0; k < 10; ++k) {
+        cr_assert(simulation_step(&sim, error, sizeof error), "%s", error);
+    }
+    long orange[2];
+    for (int on = 0; on < 2; ++on) {
+        cairo_surface_t *surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 400, 300);
+        cairo_t *cr = cairo_create(surface);
+        view_transform view = view_transform_make(mu_model_part_centre(sim.model, 2), 500.0);
+        view_transform_resize(&view, 400.0, 300.0);
+        canvas_overlays overlays = {.joint_reactions = on == 1};
+        canvas_draw(cr, &view, &sim, &overlays);
+        orange[on] = count_colour(surface, 0xcc5900, 2);
+        cairo_destroy(cr);
+        cairo_surface_destroy(surface);
+    }
+    cr_expect_eq(orange[0], 0, "no load arrows without the overlay");
+    cr_expect_gt(orange[1], 80, "the legend's bar and the arrows (%ld px)", orange[1]);
+    simulation_free(&sim);
 }

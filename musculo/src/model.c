@@ -49,7 +49,9 @@ struct mu_model {
     mu_motor_pool **pools;
     mu_torque_actuator **actuators;
     int built_torque_muscle_count;
-    rb_joint_id *hinges; /* by description index; null id when not built */
+    rb_joint_id *hinges;     /* by description index; null id when not built */
+    rb_joint_id *welds;      /* by glue index: the weld kept with weld_glues; null id when merged or not built */
+    rb_joint_id weight_weld; /* the weight's weld with weld_glues; null id otherwise */
     int joint_count;
     long substeps_taken;      /* since creation; the time is counted, not summed, so it does not drift */
     rb_status substep_status; /* the first error of the muscles' updates in this step */
@@ -340,9 +342,8 @@ static rb_status build_welds(mu_model *model)
         rb_body_id body_a = model->bodies[model->parts[a].body];
         rb_body_id body_b = model->bodies[model->parts[b].body];
         rb_status status = rb_weld_joint_def_at(&def, model->world, body_a, body_b, part_pose(desc, b).p);
-        rb_joint_id joint;
         if (status == RB_OK) {
-            status = rb_weld_joint_create(model->world, &def, &joint);
+            status = rb_weld_joint_create(model->world, &def, &model->welds[g]);
         }
         if (status != RB_OK) {
             return build_failed(model, status, "glue \"%s\" (glues[%d])", desc->glues[g].name, g);
@@ -400,9 +401,8 @@ static rb_status build_weight(mu_model *model, bool merge)
     if (status == RB_OK) {
         status = rb_weld_joint_def_at(&weld, model->world, carrier_body, body, centre);
     }
-    rb_joint_id joint;
     if (status == RB_OK) {
-        status = rb_weld_joint_create(model->world, &weld, &joint);
+        status = rb_weld_joint_create(model->world, &weld, &model->weight_weld);
     }
     if (status != RB_OK) {
         return build_failed(model, status, "weight \"%s\" of %g kg", weight->name, mass);
@@ -521,11 +521,13 @@ static rb_status allocate(mu_model *model)
     model->muscles = calloc((size_t)desc->muscle_count + 1, sizeof *model->muscles);
     model->built_muscles = calloc((size_t)desc->muscle_count + 1, sizeof *model->built_muscles);
     model->hinges = calloc((size_t)desc->hinge_count + 1, sizeof *model->hinges);
+    model->welds = calloc((size_t)desc->glue_count + 1, sizeof *model->welds);
     model->built_torque_muscles = calloc((size_t)desc->torque_muscle_count + 1, sizeof *model->built_torque_muscles);
     model->pools = calloc((size_t)desc->torque_muscle_count + 1, sizeof *model->pools);
     model->actuators = calloc((size_t)desc->torque_muscle_count + 1, sizeof *model->actuators);
     if (model->parts == NULL || model->muscles == NULL || model->built_muscles == NULL || model->hinges == NULL ||
-        model->built_torque_muscles == NULL || model->pools == NULL || model->actuators == NULL) {
+        model->welds == NULL || model->built_torque_muscles == NULL || model->pools == NULL ||
+        model->actuators == NULL) {
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "mu_model_create: out of memory");
     }
     return RB_OK;
@@ -752,6 +754,7 @@ void mu_model_destroy(mu_model *model)
     free(model->muscles);
     free(model->built_muscles);
     free(model->hinges);
+    free(model->welds);
     free(model);
 }
 
@@ -760,6 +763,10 @@ void mu_model_destroy(mu_model *model)
 rb_world *mu_model_world(mu_model *model)
 {
     return mu_refuse_null("mu_model_world", "model", model) ? NULL : model->world;
+}
+const rb_world *mu_model_world_to_read(const mu_model *model)
+{
+    return mu_refuse_null("mu_model_world_to_read", "model", model) ? NULL : model->world;
 }
 const mu_model_desc *mu_model_description(const mu_model *model)
 {
@@ -1195,4 +1202,64 @@ const mu_motor_pool *mu_model_motor_pool(const mu_model *model, int index)
 const mu_torque_actuator *mu_model_torque_actuator(const mu_model *model, int index)
 {
     return torque_index_ok(model, index, "mu_model_torque_actuator") ? model->actuators[index] : NULL;
+}
+
+/* ---- the engine objects behind the names --------------------------------------------- */
+
+rb_joint_id mu_model_hinge_joint(const mu_model *model, int index)
+{
+    return refuse_hinge(model, index, "mu_model_hinge_joint") ? (rb_joint_id){0} : model->hinges[index];
+}
+
+int mu_model_glue_count(const mu_model *model)
+{
+    return mu_refuse_null("mu_model_glue_count", "model", model) ? 0 : model->desc->glue_count;
+}
+
+static bool refuse_glue(const mu_model *model, int index, const char *function)
+{
+    return mu_refuse_null(function, "model", model) ||
+           mu_refuse_index(function, "index", index, model->desc->glue_count);
+}
+
+const char *mu_model_glue_name(const mu_model *model, int index)
+{
+    return refuse_glue(model, index, "mu_model_glue_name") ? NULL : model->desc->glues[index].name;
+}
+
+rb_joint_id mu_model_glue_joint(const mu_model *model, int index)
+{
+    return refuse_glue(model, index, "mu_model_glue_joint") ? (rb_joint_id){0} : model->welds[index];
+}
+
+rb_joint_id mu_model_weight_joint(const mu_model *model)
+{
+    return mu_refuse_null("mu_model_weight_joint", "model", model) ? (rb_joint_id){0} : model->weight_weld;
+}
+
+rb_body_id mu_model_body(const mu_model *model, int index)
+{
+    if (mu_refuse_null("mu_model_body", "model", model) ||
+        mu_refuse_index("mu_model_body", "index", index, model->body_count)) {
+        return (rb_body_id){0};
+    }
+    return model->bodies[index];
+}
+
+int mu_model_part_body(const mu_model *model, int index)
+{
+    if (refuse_part(model, index, "mu_model_part_body")) {
+        return -1;
+    }
+    return model->parts[index].built ? model->parts[index].body : -1;
+}
+
+int mu_model_muscle_description_index(const mu_model *model, int index)
+{
+    return refuse_built(model, index, "mu_model_muscle_description_index") ? -1 : model->built_muscles[index];
+}
+
+mu_muscle *mu_model_muscle_at(mu_model *model, int index)
+{
+    return refuse_built(model, index, "mu_model_muscle_at") ? NULL : model->muscles[model->built_muscles[index]];
 }

@@ -564,3 +564,35 @@ mu_muscle_readout mu_muscle_read(const mu_muscle *muscle)
 {
     return mu_refuse_null("mu_muscle_read", "muscle", muscle) ? mu_nan_readout() : muscle->readout;
 }
+
+rb_status mu_muscle_isometric_forces(const mu_muscle *muscle, const rb_world *world, double activation, double *active,
+                                     double *passive)
+{
+    const char *f = "mu_muscle_isometric_forces";
+    if (mu_refuse_null(f, "muscle", muscle) || mu_refuse_null(f, "world", world) ||
+        mu_refuse_null(f, "active", active) || mu_refuse_null(f, "passive", passive)) {
+        return RB_ERR_INVALID_ARGUMENT;
+    }
+    if (!(activation >= 0.0 && activation <= 1.0)) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: activation is %g, expected 0 .. 1", f, activation);
+    }
+    const double path = rb_cable_length(world, muscle->cable);
+    if (!isfinite(path)) {
+        return RB_ERR_INVALID_ARGUMENT; /* rb_cable_length reported why */
+    }
+    if (muscle->compliant) {
+        /* The fibre where its force along the tendon balances the tendon's. */
+        const double fibre = mu_fibre_tendon_static_length(&muscle->unit, path, activation);
+        const mu_fibre_forces forces = mu_fibre_forces_at(&muscle->unit, fibre, 0.0, activation);
+        *active = forces.active;
+        *passive = forces.passive;
+        return RB_OK;
+    }
+    const double fibre_length = rigid_fibre_length(muscle, path);
+    const double cosine = pennation_cosine(fibre_length, muscle->width);
+    const double l = fibre_length / muscle->rest_length;
+    *active = muscle->max_force * activation * mu_curve_active_length(muscle->curves, l) *
+              mu_curve_velocity(muscle->curves, 0.0) * cosine;
+    *passive = muscle->max_force * mu_curve_passive_length(muscle->curves, l) * cosine;
+    return RB_OK;
+}

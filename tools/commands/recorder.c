@@ -57,6 +57,7 @@ static void write_header(FILE *stream, const recorder *csv, const mu_model *mode
             write_header_field(stream, mu_model_part_name(model, csv->parts[p]), part_columns[c]);
         }
     }
+    recorder_loads_write_header(&csv->loads, stream, model, write_header_field);
     fputc('\n', stream);
 }
 
@@ -87,6 +88,7 @@ static void free_lists(recorder *csv)
 {
     free(csv->hinges);
     free(csv->parts);
+    recorder_loads_close(&csv->loads);
     json_decref(csv->settings);
     csv->hinges = NULL;
     csv->parts = NULL;
@@ -98,7 +100,7 @@ bool recorder_open(recorder *csv, const char *path, mu_model *model, const mu_mo
 {
     *csv = (recorder){.hinges = NULL};
     csv->settings = provenance_model_settings(model, options);
-    if (csv->settings == NULL || !collect_built(csv, model)) {
+    if (csv->settings == NULL || !collect_built(csv, model) || !recorder_loads_open(&csv->loads, model)) {
         snprintf(error, error_size, "out of memory");
         free_lists(csv);
         return false;
@@ -142,6 +144,10 @@ bool recorder_write_row(recorder *csv, const mu_model *model, double time, char 
         rb_vec2 centre = mu_model_part_centre(model, csv->parts[p]);
         fprintf(stream, ",%.10g,%.10g,%.10g", centre.x, centre.y, mu_model_part_angle(model, csv->parts[p]));
     }
+    if (!recorder_loads_write_row(&csv->loads, stream, model)) {
+        snprintf(error, error_size, "cannot compute the moment arms: %s", rb_last_error());
+        return false;
+    }
     /* A failed write (a full disk) stops the run at once rather than at
      * the commit. */
     if (fputc('\n', stream) == EOF || ferror(stream)) {
@@ -181,5 +187,5 @@ int recorder_column_count(const recorder *csv, const mu_model *model)
 {
     return 1 + RECORDER_MUSCLE_COLUMNS * mu_model_muscle_count(model) +
            RECORDER_TORQUE_COLUMNS * mu_model_torque_muscle_count(model) + RECORDER_HINGE_COLUMNS * csv->hinge_count +
-           RECORDER_PART_COLUMNS * csv->part_count;
+           RECORDER_PART_COLUMNS * csv->part_count + recorder_loads_column_count(&csv->loads);
 }

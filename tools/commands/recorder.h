@@ -12,7 +12,8 @@
  * (mu_muscle_readout); for every built torque muscle
  * NAME.recruited_neurons, NAME.exertion (0 to 1) and NAME.torque_N_m; for
  * every built hinge NAME.angle_deg; for every built part (nails, then bones)
- * NAME.x_m, NAME.y_m, NAME.angle_deg. A header field holding a comma, a
+ * NAME.x_m, NAME.y_m, NAME.angle_deg; then the joint loads and moment
+ * arms (recorder_loads.h). A header field holding a comma, a
  * quote or a line break is quoted as RFC 4180 says.
  *
  * Beside it, PATH-metadata.json names the version, the command line and
@@ -28,6 +29,7 @@
 #include "io/atomic_file.h"
 #include "io/provenance.h"
 #include "mu/model.h"
+#include "recorder_loads.h"
 
 /* Quantities recorded per muscle, per hinge and per part. */
 enum {
@@ -43,6 +45,7 @@ typedef struct recorder {
     int hinge_count;
     int *parts; /* model indices of the built parts */
     int part_count;
+    recorder_loads loads;
     long rows;
     json_t *settings; /* of the sidecar: the model's, taken at the start */
 } recorder;

@@ -23,6 +23,7 @@
 #include "commands.h"
 #include "control_file.h"
 #include "controls.h"
+#include "load_peaks.h"
 #include "progress.h"
 #include "recorder.h"
 
@@ -142,7 +143,10 @@ static const cli_command command = {
              "NAME.passive_force_N, NAME.total_force_N, NAME.excitation, NAME.fibre_length_m,\n"
              "NAME.tendon_length_m, NAME.pennation_angle_deg; per torque muscle NAME.recruited_neurons,\n"
              "NAME.exertion, NAME.torque_N_m; per hinge NAME.angle_deg; per part\n"
-             "NAME.x_m, NAME.y_m, NAME.angle_deg (docs/cli.md, \"The CSV\").\n",
+             "NAME.x_m, NAME.y_m, NAME.angle_deg; per joint NAME.reaction_x_N, NAME.reaction_y_N,\n"
+             "NAME.reaction_along_N, NAME.reaction_across_N, NAME.reaction_torque_N_m,\n"
+             "NAME.muscle_torque_N_m; per muscle and hinge it crosses MUSCLE.HINGE.moment_arm_m,\n"
+             "MUSCLE.HINGE.torque_N_m (docs/cli.md, \"The CSV\"; docs/loads.md).\n",
 };
 
 /* Most frames a run may have: beyond any useful run (46 hours of
@@ -414,6 +418,7 @@ typedef struct run_state {
     double *peak_time;  /* s */
     double *angle_min;  /* deg, by hinge; NaN for a hinge not built */
     double *angle_max;
+    load_peaks loads; /* the joints' peak loads */
     double wall_seconds, step_seconds;
     bool failure_reported; /* mu_model_failure said on stderr */
 } run_state;
@@ -440,6 +445,7 @@ static void track_extremes(run_state *run, double time)
         run->angle_min[h] = fmin(run->angle_min[h], angle);
         run->angle_max[h] = fmax(run->angle_max[h], angle);
     }
+    load_peaks_track(&run->loads, run->model, time);
 }
 
 /* Steps every frame, applying the controls before it and recording it
@@ -575,6 +581,7 @@ static void print_summary(const run_state *run)
     if (!any_hinge) {
         printf("final angle  (no hinges built)\n");
     }
+    load_peaks_print(&run->loads, run->model);
     printf("csv          %s (%ld rows, %d columns)\n", run->csv_path, run->csv.rows,
            recorder_column_count(&run->csv, run->model));
 }
@@ -644,7 +651,8 @@ static int prepare(run_state *run)
     size_t hinges = (size_t)mu_model_hinge_count(run->model) + 1;
     run->angle_min = malloc(hinges * sizeof *run->angle_min);
     run->angle_max = malloc(hinges * sizeof *run->angle_max);
-    if (run->peak_force == NULL || run->peak_time == NULL || run->angle_min == NULL || run->angle_max == NULL) {
+    if (run->peak_force == NULL || run->peak_time == NULL || run->angle_min == NULL || run->angle_max == NULL ||
+        !load_peaks_start(&run->loads, run->model)) {
         fputs("sinew: out of memory\n", stderr);
         return EXIT_FAILURE;
     }
@@ -698,6 +706,7 @@ int cmd_run(int argc, char **argv)
     free(run.peak_time);
     free(run.angle_min);
     free(run.angle_max);
+    load_peaks_free(&run.loads);
     free(opts.controls);
     free(opts.recruits);
     return code;

@@ -26,6 +26,8 @@ static const command commands[] = {
     {"run", "MODEL [options]", "run a muscle model, write a CSV, print a summary", cmd_run},
     {"scene", "NAME [options]", "run an engine scene, print a summary, write a CSV trace", cmd_scene},
     {"plot", "CSV [options]", "draw columns of a CSV file as a PNG or SVG chart", cmd_plot},
+    {"moment-arms", "MODEL --hinge NAME [options]", "sweep a hinge: moment arms, lengths, forces (CSV, figure)",
+     cmd_moment_arms},
     {"experiment", "NAME [options]", "run an experiment: a CSV, its figure and a few figures", cmd_experiment},
     {"view", "[MODEL] [options]", "the interactive viewer (GTK 4): models and engine scenes", cmd_view},
     {"version", "", "print the version (also --version)", cmd_version},

@@ -308,8 +308,9 @@ RB_API rb_vec2 rb_joint_world_anchor_a(const rb_world *world,
                                        rb_joint_id joint); /**< m; the target for a mouse joint */
 RB_API rb_vec2 rb_joint_world_anchor_b(const rb_world *world, rb_joint_id joint); /**< m */
 /** The force (N, world frame) and torque (N·m) the joint applied to body
- * B during the last step: accumulated impulses divided by the step's dt.
- * Body A received the opposite. */
+ * B during the last substep of the last step: that substep's accumulated
+ * impulses divided by the substep's duration h (at rest, the static
+ * reaction). Body A received the opposite. */
 RB_API rb_vec2 rb_joint_reaction_force(const rb_world *world, rb_joint_id joint);
 RB_API double rb_joint_reaction_torque(const rb_world *world, rb_joint_id joint);
 RB_API void *rb_joint_user_data(const rb_world *world, rb_joint_id joint);

@@ -59,6 +59,8 @@ MU_API void mu_model_destroy(mu_model *model);
 
 /** The model's world; NULL for a NULL model. */
 MU_API rb_world *mu_model_world(mu_model *model);
+/** The same, to read only. */
+MU_API const rb_world *mu_model_world_to_read(const mu_model *model);
 /** The description it was built from; NULL for a NULL model. */
 MU_API const mu_model_desc *mu_model_description(const mu_model *model);
 
@@ -193,6 +195,33 @@ MU_API const mu_torque_actuator *mu_model_torque_actuator(const mu_model *model,
 /** Counts of the engine objects made: bodies, joints; 0 for a NULL model. */
 MU_API int mu_model_body_count(const mu_model *model);
 MU_API int mu_model_joint_count(const mu_model *model);
+
+/** The engine objects behind the names, for analyses that work on the
+ * bodies themselves (joint_loads.h, moment_arms.h). Bad indices are
+ * refused as above, giving a null id, -1 or NULL.
+ * - mu_model_hinge_joint: the hinge's revolute joint (body A the file's
+ *   body_a); the null id when the variant does not build it.
+ * - mu_model_glue_count/name/joint: the description's glues (0 for a NULL
+ *   model); the joint is the weld kept with weld_glues (body A the file's
+ *   body_a, anchored at part B's centre), the null id when the glue was
+ *   merged or not built.
+ * - mu_model_weight_joint: the weight disc's weld to its carrier with
+ *   weld_glues; the null id otherwise (merged, 0 kg, or no weight).
+ * - mu_model_body: engine body `index` (0 .. mu_model_body_count - 1).
+ * - mu_model_part_body: the index of the body a part (as
+ *   mu_model_part_name) became part of; -1 when it is not built.
+ * - mu_model_muscle_description_index: a built muscle's index in the
+ *   description's muscles.
+ * - mu_model_muscle_at: a built muscle, to change (NULL for a bad index). */
+MU_API rb_joint_id mu_model_hinge_joint(const mu_model *model, int index);
+MU_API int mu_model_glue_count(const mu_model *model);
+MU_API const char *mu_model_glue_name(const mu_model *model, int index);
+MU_API rb_joint_id mu_model_glue_joint(const mu_model *model, int index);
+MU_API rb_joint_id mu_model_weight_joint(const mu_model *model);
+MU_API rb_body_id mu_model_body(const mu_model *model, int index);
+MU_API int mu_model_part_body(const mu_model *model, int index);
+MU_API int mu_model_muscle_description_index(const mu_model *model, int index);
+MU_API mu_muscle *mu_model_muscle_at(mu_model *model, int index);
 
 #ifdef __cplusplus
 }

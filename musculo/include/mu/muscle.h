@@ -141,6 +141,15 @@ MU_API rb_status mu_muscle_set_target_tension(mu_muscle *muscle, double target);
  * the readout is refreshed, at zero velocity. */
 MU_API rb_status mu_muscle_solve_equilibrium(mu_muscle *muscle, const rb_world *world);
 
+/** The forces along the path (N, >= 0) the muscle would carry held still
+ * at the path's present length with `activation` (0 .. 1), its state
+ * left as it is: the active part Fmax·a·f_L·f_V(0)·cos α and the passive
+ * part Fmax·f_P·cos α, with a compliant tendon at the fibre length that
+ * balances the tendon (as mu_muscle_solve_equilibrium). For analyses that
+ * move the bones without simulating (moment_arms.h). */
+MU_API rb_status mu_muscle_isometric_forces(const mu_muscle *muscle, const rb_world *world, double activation,
+                                            double *active, double *passive);
+
 MU_API double mu_muscle_max_force(const mu_muscle *muscle); /**< N */
 /** m: the rigid tendon's length, or the compliant tendon's slack length. */
 MU_API double mu_muscle_tendon_length(const mu_muscle *muscle);

@@ -5,6 +5,8 @@
 #include <string.h>
 
 #include "canvas_draw.h"
+#include "load_arrows.h"
+#include "mu/joint_loads.h"
 
 #define NAIL_RADIUS_PX 3.5
 #define LINE_WIDTH_PX 1.5
@@ -441,6 +443,105 @@ static void draw_exertion_bars(const painter *p, const mu_model *model)
     }
 }
 
+/* ---- joint loads ---------------------------------------------------------------- */
+
+#define LOAD_COLOUR 0.80, 0.35, 0.0 /* orange */
+
+/* An arrow from `base` to `tip` (px) with its head, dashed when cut. */
+static void draw_arrow(cairo_t *cr, rb_vec2 base, rb_vec2 tip, bool cut)
+{
+    const double length = rb_distance(base, tip);
+    cairo_set_line_width(cr, 2.0);
+    if (cut) {
+        const double dashes[] = {6.0, 3.0};
+        cairo_set_dash(cr, dashes, 2, 0.0);
+    }
+    cairo_move_to(cr, base.x, base.y);
+    cairo_line_to(cr, tip.x, tip.y);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, NULL, 0, 0.0);
+    if (length < 1.0) {
+        return;
+    }
+    const rb_vec2 back = rb_scale(fmin(8.0, 0.5 * length) / length, rb_sub(base, tip));
+    const rb_vec2 side = rb_scale(0.45, rb_v2(-back.y, back.x));
+    cairo_move_to(cr, tip.x, tip.y);
+    cairo_line_to(cr, tip.x + back.x + side.x, tip.y + back.y + side.y);
+    cairo_line_to(cr, tip.x + back.x - side.x, tip.y + back.y - side.y);
+    cairo_close_path(cr);
+    cairo_fill(cr);
+}
+
+/* One joint's arrow and label: "NAME 230 N, 0.0 N·m (muscles 5.7 N·m)". */
+static void draw_load(const painter *p, const mu_model *model, rb_joint_id joint, const char *name, mu_joint_load load,
+                      double scale)
+{
+    const rb_vec2 base = to_screen(p, rb_joint_world_anchor_b(mu_model_world_to_read(model), joint));
+    /* Screen y points down. */
+    const rb_vec2 tip = rb_add(base, rb_v2(scale * load.force.x, -scale * load.force.y));
+    bool cut = false;
+    const rb_vec2 end = load_arrow_clip(base, tip, p->view->width, p->view->height, &cut);
+    cairo_set_source_rgb(p->cr, LOAD_COLOUR);
+    draw_arrow(p->cr, base, end, cut);
+    char text[256];
+    snprintf(text, sizeof text, "%s %.1f N, %.2f N·m (muscles %.2f N·m)", name, hypot(load.force.x, load.force.y),
+             load.torque, load.muscle_torque);
+    cairo_text_extents_t extents;
+    cairo_text_extents(p->cr, text, &extents);
+    /* Beside the tip, kept on the canvas. */
+    double x = fmin(end.x + 6.0, p->view->width - extents.x_advance - LOAD_ARROW_MARGIN_PX);
+    double y = fmin(fmax(end.y - 4.0, extents.height + LOAD_ARROW_MARGIN_PX), p->view->height - LOAD_ARROW_MARGIN_PX);
+    cairo_set_source_rgb(p->cr, 0.35, 0.15, 0.0);
+    cairo_move_to(p->cr, fmax(x, LOAD_ARROW_MARGIN_PX), y);
+    cairo_show_text(p->cr, text);
+}
+
+/* The legend: a bar of a round force at the arrows' scale. */
+static void draw_load_legend(const painter *p, double scale)
+{
+    double length = 0.0;
+    const double force = load_arrow_legend_force(scale, &length);
+    const double x = 12.0, y = p->view->height - 16.0;
+    cairo_set_source_rgb(p->cr, LOAD_COLOUR);
+    draw_arrow(p->cr, rb_v2(x, y), rb_v2(x + length, y), false);
+    char text[160];
+    snprintf(text, sizeof text, "%g N: reaction on the distal bone (torques counter-clockwise)", force);
+    cairo_set_source_rgb(p->cr, 0.1, 0.1, 0.1);
+    cairo_move_to(p->cr, x + length + 8.0, y + 4.0);
+    cairo_show_text(p->cr, text);
+}
+
+static void draw_joint_loads(const painter *p, const mu_model *model)
+{
+    double largest = 0.0;
+    for (int h = 0; h < mu_model_hinge_count(model); ++h) {
+        const mu_joint_load load = mu_model_hinge_load(model, h);
+        largest = isnan(load.force.x) ? largest : fmax(largest, hypot(load.force.x, load.force.y));
+    }
+    for (int g = 0; g < mu_model_glue_count(model); ++g) {
+        const mu_joint_load load = mu_model_glue_load(model, g);
+        largest = isnan(load.force.x) ? largest : fmax(largest, hypot(load.force.x, load.force.y));
+    }
+    const double scale = load_arrow_scale(largest);
+    if (scale == 0.0) {
+        return;
+    }
+    cairo_set_font_size(p->cr, 11.0);
+    for (int h = 0; h < mu_model_hinge_count(model); ++h) {
+        const mu_joint_load load = mu_model_hinge_load(model, h);
+        if (!isnan(load.force.x)) {
+            draw_load(p, model, mu_model_hinge_joint(model, h), mu_model_hinge_name(model, h), load, scale);
+        }
+    }
+    for (int g = 0; g < mu_model_glue_count(model); ++g) {
+        const mu_joint_load load = mu_model_glue_load(model, g);
+        if (!isnan(load.force.x)) {
+            draw_load(p, model, mu_model_glue_joint(model, g), mu_model_glue_name(model, g), load, scale);
+        }
+    }
+    draw_load_legend(p, scale);
+}
+
 static void draw_model(const painter *p, const simulation *sim)
 {
     const mu_model *model = sim->model;
@@ -477,7 +578,15 @@ static void draw_model(const painter *p, const simulation *sim)
             draw_dot(p, mu_model_part_centre(model, map.nail_part[k]), NAIL_RADIUS_PX);
         }
     }
-    draw_engine(p, world, false);
+    /* The joints' reactions drawn here, labelled and to a legend's scale,
+     * rather than as the engine's bare segments. */
+    canvas_overlays overlays = *p->overlays;
+    overlays.joint_reactions = false;
+    const painter engine = {.cr = p->cr, .view = p->view, .overlays = &overlays};
+    draw_engine(&engine, world, false);
+    if (p->overlays->joint_reactions) {
+        draw_joint_loads(p, model);
+    }
     draw_exertion_bars(p, model);
     free(map.nail_part);
     free(map.bone_part);

@@ -6,7 +6,8 @@
  * weight (a blue disc with a hole, its fill translucent under the bones
  * and its rim opaque over them: both show) and the worm's exertion bar; an engine
  * scene through the engine's debug draw; the overlays chosen in the
- * engine panel over either. Pure Cairo: the GTK canvas and the headless
+ * engine panel over either (on a model, the "reactions" overlay draws the
+ * joint loads as labelled arrows to a legend's scale: load_arrows.h). Pure Cairo: the GTK canvas and the headless
  * screenshot both call it.
  */
 #ifndef VIEWER_CANVAS_DRAW_H

@@ -1,0 +1,96 @@
+/* SPDX-License-Identifier: MIT */
+/* The joint loads' extremes over a run (load_peaks.h). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "load_peaks.h"
+#include "mu/joint_loads.h"
+
+static void reset(load_peak *peaks, int count)
+{
+    for (int i = 0; i < count; ++i) {
+        peaks[i] = (load_peak){.force = -1.0};
+    }
+}
+
+bool load_peaks_start(load_peaks *peaks, const mu_model *model)
+{
+    const int hinges = mu_model_hinge_count(model);
+    const int glues = mu_model_glue_count(model);
+    peaks->hinges = malloc(((size_t)hinges + 1) * sizeof *peaks->hinges);
+    peaks->glues = malloc(((size_t)glues + 1) * sizeof *peaks->glues);
+    if (peaks->hinges == NULL || peaks->glues == NULL) {
+        load_peaks_free(peaks);
+        return false;
+    }
+    reset(peaks->hinges, hinges);
+    reset(peaks->glues, glues);
+    return true;
+}
+
+/* Keeps `value` and `time` when |value| is the largest yet. */
+static void keep_largest(double *peak, double *peak_time, double value, double time)
+{
+    if (fabs(value) > fabs(*peak)) {
+        *peak = value;
+        *peak_time = time;
+    }
+}
+
+static void track(load_peak *peak, mu_joint_load load, double time)
+{
+    if (isnan(load.force.x)) {
+        return; /* not built as a joint */
+    }
+    const double force = hypot(load.force.x, load.force.y);
+    if (force > peak->force) {
+        peak->force = force;
+        peak->force_time = time;
+    }
+    keep_largest(&peak->torque, &peak->torque_time, load.torque, time);
+    keep_largest(&peak->muscle_torque, &peak->muscle_torque_time, load.muscle_torque, time);
+}
+
+void load_peaks_track(load_peaks *peaks, const mu_model *model, double time)
+{
+    for (int h = 0; h < mu_model_hinge_count(model); ++h) {
+        track(&peaks->hinges[h], mu_model_hinge_load(model, h), time);
+    }
+    for (int g = 0; g < mu_model_glue_count(model); ++g) {
+        track(&peaks->glues[g], mu_model_glue_load(model, g), time);
+    }
+}
+
+static void print_peak(const load_peak *peak, const char *name, bool *first)
+{
+    if (peak->force < 0.0) {
+        return; /* never tracked: not built */
+    }
+    printf("%-13s%-24s %10.2f N at %.3f s; reaction torque %.2f N·m at %.3f s; muscles %.2f N·m at %.3f s\n",
+           *first ? "peak load" : "", name, peak->force, peak->force_time, peak->torque, peak->torque_time,
+           peak->muscle_torque, peak->muscle_torque_time);
+    *first = false;
+}
+
+void load_peaks_print(const load_peaks *peaks, const mu_model *model)
+{
+    bool first = true;
+    for (int h = 0; h < mu_model_hinge_count(model); ++h) {
+        print_peak(&peaks->hinges[h], mu_model_hinge_name(model, h), &first);
+    }
+    for (int g = 0; g < mu_model_glue_count(model); ++g) {
+        print_peak(&peaks->glues[g], mu_model_glue_name(model, g), &first);
+    }
+    if (first) {
+        printf("peak load    (no joints built)\n");
+    }
+}
+
+void load_peaks_free(load_peaks *peaks)
+{
+    free(peaks->hinges);
+    free(peaks->glues);
+    peaks->hinges = NULL;
+    peaks->glues = NULL;
+}
