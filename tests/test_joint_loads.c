@@ -13,25 +13,12 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "model_support.h"
 #include "mu/joint_loads.h"
 #include "mu/moment_arms.h"
 
 #define G 9.8
 #define DENSITY 1900.0
-
-static mu_model_desc *load_text(const char *text)
-{
-    char path[] = "/tmp/sinew-joint-loads-XXXXXX.json";
-    const int fd = mkstemps(path, 5);
-    cr_assert(fd >= 0);
-    cr_assert_eq(write(fd, text, strlen(text)), (ssize_t)strlen(text));
-    close(fd);
-    mu_model_desc *desc = NULL;
-    const rb_status status = mu_model_desc_load(path, &desc);
-    unlink(path);
-    cr_assert_eq(status, RB_OK, "%s", rb_last_error());
-    return desc;
-}
 
 /* A beam 0.4 m long, 0.02 m square in section, on a hinge at its left end
  * locked at 0°, with a 5 kg weight 0.3 m out (or none) and a block glued
@@ -57,7 +44,7 @@ static void expect_relative(double actual, double expected, double tolerance, co
 
 static void hold_beam(bool weld_glues)
 {
-    mu_model_desc *desc = load_text(beam_model);
+    mu_model_desc *desc = load_model_text(beam_model);
     mu_model_options options = mu_default_model_options();
     options.weld_glues = weld_glues;
     options.weight_index = weld_glues ? 1 : 0;

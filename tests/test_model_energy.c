@@ -9,7 +9,7 @@
  * put into a body from outside is reported, while the viewer's mouse,
  * also from outside, restarts the account instead.
  */
-#define _POSIX_C_SOURCE 200809L /* mkdtemp */
+#define _DEFAULT_SOURCE /* mkstemps (model_support.h) */
 
 #include <criterion/criterion.h>
 #include <math.h>
@@ -18,30 +18,13 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "model_support.h"
 #include "mu/model.h"
 #include "mu/model_desc.h"
 #include "rb/rb.h"
 
 #define ROD_LENGTH 0.5 /* m */
 #define GRAVITY 9.8    /* m/s² */
-
-/* Loads the model file written from `text`. */
-static mu_model_desc *load_text(const char *text)
-{
-    char dir[] = "/tmp/sinew-energy-XXXXXX";
-    cr_assert_not_null(mkdtemp(dir));
-    char path[256];
-    snprintf(path, sizeof path, "%s/model.json", dir);
-    FILE *file = fopen(path, "w");
-    cr_assert_not_null(file);
-    fputs(text, file);
-    fclose(file);
-    mu_model_desc *desc = NULL;
-    cr_assert_eq(mu_model_desc_load(path, &desc), RB_OK, "%s", rb_last_error());
-    remove(path);
-    rmdir(dir);
-    return desc;
-}
 
 /* A rod hinged at one end to a nail, released horizontal; damping in 1/s. */
 static mu_model *pendulum(double damping, mu_model_desc **desc)
@@ -55,7 +38,7 @@ static mu_model *pendulum(double damping, mu_model_desc **desc)
              " \"hinges\": [{\"name\": \"Pivot\", \"body_a\": \"Nail\", \"anchor_a\": [0, 0], \"body_b\": \"Rod\","
              " \"anchor_b\": [-0.25, 0], \"radius\": 0.02}]}",
              GRAVITY, damping);
-    *desc = load_text(text);
+    *desc = load_model_text(text);
     mu_model *model = NULL;
     mu_model_options options = mu_default_model_options();
     cr_assert_eq(mu_model_create(*desc, &options, &model), RB_OK, "%s", rb_last_error());
@@ -122,7 +105,7 @@ Test(model_energy, a_muscle_gives_a_free_block_the_work_it_does)
 {
     /* A block held only by a muscle to a nail, no gravity, no damping:
      * every joule the block gains is the muscle's. */
-    mu_model_desc *desc = load_text(
+    mu_model_desc *desc = load_model_text(
         "{\"name\": \"pull\", \"gravity\": [0, 0], \"frame_rate\": 60, \"substeps\": 10, \"damping\": 0,"
         " \"nails\": [{\"name\": \"Nail\", \"position\": [0, 0]}],"
         " \"bones\": [{\"name\": \"Block\", \"centre\": [0.35, 0], \"size\": [0.1, 0.1], \"density\": 100}],"

@@ -13,23 +13,10 @@
 #include <unistd.h>
 
 #include "io/csv_table.h"
+#include "model_support.h"
 #include "mu/moment_arms.h"
 
 #define DEG (RB_PI / 180.0)
-
-static mu_model_desc *load_text(const char *text)
-{
-    char path[] = "/tmp/sinew-moment-arms-XXXXXX.json";
-    const int fd = mkstemps(path, 5);
-    cr_assert(fd >= 0);
-    cr_assert_eq(write(fd, text, strlen(text)), (ssize_t)strlen(text));
-    close(fd);
-    mu_model_desc *desc = NULL;
-    const rb_status status = mu_model_desc_load(path, &desc);
-    unlink(path);
-    cr_assert_eq(status, RB_OK, "%s", rb_last_error());
-    return desc;
-}
 
 static mu_model *build(const mu_model_desc *desc)
 {
@@ -68,7 +55,7 @@ static mu_model_desc *pulley_model(void)
              "              {\"body\": \"Lever\", \"point\": [0.05, 0]}]}],"
              " \"groups\": [], \"variants\": [{\"name\": \"all\", \"muscles\": [\"Cord\"]}]}",
              D, R * cos(beta) - 0.1, R * sin(beta));
-    return load_text(text);
+    return load_model_text(text);
 }
 
 Test(moment_arms, a_via_point_on_an_arc_has_the_closed_form_arm)

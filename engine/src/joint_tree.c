@@ -488,6 +488,26 @@ void rb_joint_tree_solve_velocities(rb_world *world)
     }
 }
 
+/* A pin's two anchor offsets at the bodies' current poses. */
+typedef struct pin_offsets {
+    rb_body_state *a, *b;
+    rb_vec2 ra, rb; /* m, from each body's centre to its anchor */
+} pin_offsets;
+
+static pin_offsets offsets_now(rb_world *world, const rb_joint *joint)
+{
+    pin_offsets p = {.a = &world->states[joint->body_a], .b = &world->states[joint->body_b]};
+    p.ra = rb_rotate(p.a->rotation, joint->frame.local_a);
+    p.rb = rb_rotate(p.b->rotation, joint->frame.local_b);
+    return p;
+}
+
+/* m: anchor B less anchor A. */
+static rb_vec2 pin_gap(const pin_offsets *p)
+{
+    return rb_sub(rb_add(p->b->center, p->rb), rb_add(p->a->center, p->ra));
+}
+
 /* The soft step's pass. Its relax pass comes after the positions have
  * moved, so the pins are taken where they are now: the trees factored at
  * the current poses, the rows' velocities at the current anchors (Box2D
@@ -520,17 +540,12 @@ void rb_joint_tree_solve_soft(rb_world *world)
             memset(node->value, 0, sizeof node->value);
             continue;
         }
-        const rb_joint *joint = &world->joints[node->joint];
-        const rb_body_state *a = &world->states[joint->body_a];
-        const rb_body_state *b = &world->states[joint->body_b];
-        rb_vec2 ra = rb_rotate(a->rotation, joint->frame.local_a);
-        rb_vec2 rb = rb_rotate(b->rotation, joint->frame.local_b);
-        rb_vec2 va = rb_add(a->linear_velocity, rb_cross_sv(a->angular_velocity, ra));
-        rb_vec2 vb = rb_add(b->linear_velocity, rb_cross_sv(b->angular_velocity, rb));
+        const pin_offsets p = offsets_now(world, &world->joints[node->joint]);
+        rb_vec2 va = rb_add(p.a->linear_velocity, rb_cross_sv(p.a->angular_velocity, p.ra));
+        rb_vec2 vb = rb_add(p.b->linear_velocity, rb_cross_sv(p.b->angular_velocity, p.rb));
         rb_vec2 cdot = rb_sub(vb, va);
         if (response->bias_rate > 0.0) {
-            rb_vec2 gap = rb_sub(rb_add(b->center, rb), rb_add(a->center, ra));
-            cdot = rb_mul_add(cdot, response->bias_rate, gap);
+            cdot = rb_mul_add(cdot, response->bias_rate, pin_gap(&p));
         }
         node->value[0] = cdot.x;
         node->value[1] = cdot.y;
@@ -546,14 +561,11 @@ void rb_joint_tree_solve_soft(rb_world *world)
         rb_revolute_data *r = &joint->as.revolute;
         rb_vec2 impulse = rb_soften(response, rb_v2(node->value[0], node->value[1]), r->point_impulse);
         r->point_impulse = rb_add(r->point_impulse, impulse);
-        rb_body_state *a = &world->states[joint->body_a];
-        rb_body_state *b = &world->states[joint->body_b];
-        rb_vec2 ra = rb_rotate(a->rotation, f->local_a);
-        rb_vec2 rb = rb_rotate(b->rotation, f->local_b);
-        a->linear_velocity = rb_mul_sub(a->linear_velocity, f->inv_mass_a, impulse);
-        a->angular_velocity -= f->inv_inertia_a * rb_cross(ra, impulse);
-        b->linear_velocity = rb_mul_add(b->linear_velocity, f->inv_mass_b, impulse);
-        b->angular_velocity += f->inv_inertia_b * rb_cross(rb, impulse);
+        const pin_offsets p = offsets_now(world, joint);
+        p.a->linear_velocity = rb_mul_sub(p.a->linear_velocity, f->inv_mass_a, impulse);
+        p.a->angular_velocity -= f->inv_inertia_a * rb_cross(p.ra, impulse);
+        p.b->linear_velocity = rb_mul_add(p.b->linear_velocity, f->inv_mass_b, impulse);
+        p.b->angular_velocity += f->inv_inertia_b * rb_cross(p.rb, impulse);
     }
 }
 
@@ -571,12 +583,8 @@ bool rb_joint_tree_correct_positions(rb_world *world)
             memset(node->value, 0, sizeof node->value);
             continue;
         }
-        const rb_joint *joint = &world->joints[node->joint];
-        const rb_body_state *a = &world->states[joint->body_a];
-        const rb_body_state *b = &world->states[joint->body_b];
-        rb_vec2 ra = rb_rotate(a->rotation, joint->frame.local_a);
-        rb_vec2 rb = rb_rotate(b->rotation, joint->frame.local_b);
-        rb_vec2 gap = rb_sub(rb_add(b->center, rb), rb_add(a->center, ra));
+        const pin_offsets p = offsets_now(world, &world->joints[node->joint]);
+        rb_vec2 gap = pin_gap(&p);
         double error = rb_length(gap);
         largest = rb_max(largest, error);
         if (error > cap) {

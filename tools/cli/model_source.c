@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cli/model_source.h"
+#include "cli/option_value.h"
 #include "cli/options.h"
 #include "cli/user_error.h"
 
@@ -77,4 +78,24 @@ void model_source_stem(const char *argument, char *stem, size_t stem_size)
         return;
     }
     snprintf(stem, stem_size, "%.*s", (int)length, name);
+}
+
+int model_source_choose_variant(const mu_model_desc *desc, const char *text, int *variant)
+{
+    *variant = 0;
+    if (text == NULL) {
+        return 0;
+    }
+    *variant = mu_model_desc_find_variant(desc, text);
+    char error[OPTION_ERROR_SIZE];
+    if (*variant >= 0 ||
+        option_parse_int("--variant", text, 0, desc->variant_count - 1, variant, error, sizeof error)) {
+        return 0;
+    }
+    fprintf(stderr, "sinew: unknown variant \"%s\" of model %s; the variants are", text, desc->name);
+    for (int v = 0; v < desc->variant_count; ++v) {
+        fprintf(stderr, "%s %d \"%s\"", v == 0 ? "" : ",", v, desc->variants[v].name);
+    }
+    fputs("\n", stderr);
+    return CLI_EXIT_USAGE;
 }

@@ -40,6 +40,12 @@ model_source_result model_source_open(const char *argument, mu_model_desc **out,
  * invalid. */
 int model_source_load(const char *argument, mu_model_desc **out);
 
+/* The variant `text` names or numbers (a name first: a variant may be
+ * called "2"), for a command's --variant; NULL gives 0. Returns 0 with
+ * *variant set, or CLI_EXIT_USAGE after one line on stderr listing the
+ * variants. */
+int model_source_choose_variant(const mu_model_desc *desc, const char *text, int *variant);
+
 /* The name outputs are called after: a built-in name as it is, a path's
  * file name without its directory and ".json" (truncated to fit; "model"
  * when nothing is left). */

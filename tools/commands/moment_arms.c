@@ -173,26 +173,6 @@ static int find_hinge(const mu_model_desc *desc, const char *name)
     return -1;
 }
 
-static int choose_variant(const mu_model_desc *desc, const char *text, int *variant)
-{
-    *variant = 0;
-    if (text == NULL) {
-        return 0;
-    }
-    *variant = mu_model_desc_find_variant(desc, text);
-    char error[OPTION_ERROR_SIZE];
-    if (*variant >= 0 ||
-        option_parse_int("--variant", text, 0, desc->variant_count - 1, variant, error, sizeof error)) {
-        return 0;
-    }
-    fprintf(stderr, "sinew: unknown variant \"%s\" of model %s; the variants are", text, desc->name);
-    for (int v = 0; v < desc->variant_count; ++v) {
-        fprintf(stderr, "%s %d \"%s\"", v == 0 ? "" : ",", v, desc->variants[v].name);
-    }
-    fputs("\n", stderr);
-    return EXIT_USAGE;
-}
-
 /* The range swept: the options within the hinge's limits; returns 0 or
  * an exit status. */
 static int choose_range(const mu_model_hinge *hinge, sweep_options *opts)
@@ -450,7 +430,7 @@ static json_t *sweep_settings(mu_model *model, const mu_model_options *options, 
 static int analyse(sweep_options *opts, mu_model_desc *desc, sweep *s)
 {
     int variant = 0;
-    int code = choose_variant(desc, opts->variant, &variant);
+    int code = model_source_choose_variant(desc, opts->variant, &variant);
     const int hinge = code == 0 ? find_hinge(desc, opts->hinge) : -1;
     if (code != 0 || hinge < 0) {
         return code != 0 ? code : EXIT_USAGE;

@@ -261,28 +261,6 @@ static void print_weight_choices(FILE *stream, const mu_model_desc *desc)
     fputs(" kg", stream);
 }
 
-/* The variant named or numbered `text` (a name first: a variant may be
- * called "2"); returns 0 or an exit status. */
-static int choose_variant(const mu_model_desc *desc, const char *text, int *variant)
-{
-    *variant = 0;
-    if (text == NULL) {
-        return 0;
-    }
-    *variant = mu_model_desc_find_variant(desc, text);
-    char error[OPTION_ERROR_SIZE];
-    if (*variant >= 0 ||
-        option_parse_int("--variant", text, 0, desc->variant_count - 1, variant, error, sizeof error)) {
-        return 0;
-    }
-    fprintf(stderr, "sinew: unknown variant \"%s\" of model %s; the variants are", text, desc->name);
-    for (int v = 0; v < desc->variant_count; ++v) {
-        fprintf(stderr, "%s %d \"%s\"", v == 0 ? "" : ",", v, desc->variants[v].name);
-    }
-    fputs("\n", stderr);
-    return EXIT_USAGE;
-}
-
 /* The weight choice asked for; returns 0 or an exit status. */
 static int choose_weight(const mu_model_desc *desc, const run_options *opts, int *weight_index)
 {
@@ -594,7 +572,7 @@ static int prepare(run_state *run)
     const run_options *opts = run->opts;
     int code = model_source_load(opts->model, &run->desc);
     if (code == 0) {
-        code = choose_variant(run->desc, opts->variant, &run->variant);
+        code = model_source_choose_variant(run->desc, opts->variant, &run->variant);
     }
     if (code == 0) {
         code = choose_weight(run->desc, opts, &run->weight_index);
