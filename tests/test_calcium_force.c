@@ -30,6 +30,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "cli_support.h"
 #include "io/csv_table.h"
 #include "mu/calcium_force.h"
 #include "mu/model.h"
@@ -188,19 +189,7 @@ static char dir[] = "/tmp/sinew-twitch-XXXXXX";
  * its exit status. */
 static int run_sinew(const char *args, char *log, size_t log_size)
 {
-    char command[2048];
-    snprintf(command, sizeof command, "'%s' %s > '%s/log.txt' 2>&1", SINEW_TOOL, args, dir);
-    const int status = system(command);
-    cr_assert(status != -1 && WIFEXITED(status), "could not run: %s", command);
-    char path[600];
-    snprintf(path, sizeof path, "%s/log.txt", dir);
-    FILE *f = fopen(path, "r");
-    cr_assert_not_null(f);
-    size_t n = fread(log, 1, log_size - 1, f);
-    log[n] = '\0';
-    fclose(f);
-    remove(path);
-    return WEXITSTATUS(status);
+    return run_sinew_capture(dir, args, SINEW_STDOUT_AND_STDERR, log, log_size);
 }
 
 static const double *column(const csv_table *table, const char *name)

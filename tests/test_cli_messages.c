@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "cli/user_error.h"
+#include "cli_support.h"
 #include "mu/model_desc.h"
 
 static char dir[] = "/tmp/sinew-messages-XXXXXX";
@@ -22,18 +23,7 @@ static char dir[] = "/tmp/sinew-messages-XXXXXX";
 /* Runs sinew with `args` in `dir`; its stderr in `log`. Returns the status. */
 static int run_sinew(const char *args, char *log, size_t log_size)
 {
-    char command[2048], path[600];
-    snprintf(path, sizeof path, "%s/err.txt", dir);
-    snprintf(command, sizeof command, "cd '%s' && '%s' %s > /dev/null 2> err.txt", dir, SINEW_TOOL, args);
-    const int status = system(command);
-    cr_assert(status != -1 && WIFEXITED(status), "could not run: %s", command);
-    FILE *f = fopen(path, "r");
-    cr_assert_not_null(f);
-    const size_t n = fread(log, 1, log_size - 1, f);
-    log[n] = '\0';
-    fclose(f);
-    remove(path);
-    return WEXITSTATUS(status);
+    return run_sinew_capture(dir, args, SINEW_STDERR_ONLY, log, log_size);
 }
 
 /* Whether `text` holds a word that starts "rb_" or "mu_" and goes on in

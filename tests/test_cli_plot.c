@@ -14,22 +14,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "cli_support.h"
+
 static char dir[] = "/tmp/sinew-plot-XXXXXX";
 
 static int run_sinew(const char *args, char *log, size_t log_size)
 {
-    char command[2048], log_path[600];
-    snprintf(log_path, sizeof log_path, "%s/log.txt", dir);
-    snprintf(command, sizeof command, "cd '%s' && '%s' %s > log.txt 2>&1", dir, SINEW_TOOL, args);
-    const int status = system(command);
-    cr_assert(status != -1 && WIFEXITED(status), "could not run: %s", command);
-    FILE *f = fopen(log_path, "r");
-    cr_assert_not_null(f);
-    size_t n = fread(log, 1, log_size - 1, f);
-    log[n] = '\0';
-    fclose(f);
-    remove(log_path);
-    return WEXITSTATUS(status);
+    return run_sinew_capture(dir, args, SINEW_STDOUT_AND_STDERR, log, log_size);
 }
 
 static void write_file(const char *name, const char *text)

@@ -16,6 +16,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "cli_support.h"
 #include "control_file.h"
 #include "mu/model.h"
 #include "test_support.h"
@@ -373,14 +374,7 @@ Test(controls, malformed_lines_say_what_was_expected)
 /* Runs `sinew ARGS`; returns its status, stdout and stderr in `output`. */
 static int run_sinew(const char *args, char *output, size_t size)
 {
-    char command[2048];
-    snprintf(command, sizeof command, "'%s' %s 2>&1", SINEW_TOOL, args);
-    FILE *pipe = popen(command, "r");
-    cr_assert_not_null(pipe);
-    output[fread(output, 1, size - 1, pipe)] = '\0';
-    int status = pclose(pipe);
-    cr_assert(WIFEXITED(status), "%s", command);
-    return WEXITSTATUS(status);
+    return run_sinew_capture(NULL, args, SINEW_STDOUT_AND_STDERR, output, size);
 }
 
 /* `sinew run --control`: a ramp reaches the CSV (each row, taken at the

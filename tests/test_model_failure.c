@@ -16,6 +16,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "cli_support.h"
 #include "mu/model.h"
 #include "mu/model_desc.h"
 #include "simulation.h"
@@ -122,20 +123,7 @@ Test(model_failure, a_megatorque_worm_reports_its_hinges)
  * status. */
 static int run_sinew(const char *args, char *output, size_t size)
 {
-    char log[] = "/tmp/sinew-failure-log-XXXXXX";
-    int fd = mkstemp(log);
-    cr_assert(fd >= 0);
-    close(fd);
-    char command[2048];
-    snprintf(command, sizeof command, "'%s' %s > '%s' 2>&1", SINEW_TOOL, args, log);
-    int status = system(command);
-    cr_assert(status != -1 && WIFEXITED(status), "could not run: %s", command);
-    FILE *f = fopen(log, "r");
-    cr_assert_not_null(f);
-    output[fread(output, 1, size - 1, f)] = '\0';
-    fclose(f);
-    remove(log);
-    return WEXITSTATUS(status);
+    return run_sinew_capture(NULL, args, SINEW_STDOUT_AND_STDERR, output, size);
 }
 
 /* Writes DIR/heavy_arm.json, the arm with its 1 kg weight choice (index 1)

@@ -15,6 +15,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "cli_support.h"
 #include "test_support.h"
 #include "worm_pool_image.h"
 
@@ -23,15 +24,7 @@
 /* Runs `sinew ARGS` with stdout and stderr into `output`; returns its exit status. */
 static int run_sinew(const char *args, char *output, size_t size)
 {
-    char command[2048];
-    snprintf(command, sizeof command, "'%s' %s 2>&1", SINEW_TOOL, args);
-    FILE *pipe = popen(command, "r");
-    cr_assert_not_null(pipe, "could not run: %s", command);
-    size_t used = fread(output, 1, size - 1, pipe);
-    output[used] = '\0';
-    const int status = pclose(pipe);
-    cr_assert(WIFEXITED(status), "%s did not exit", command);
-    return WEXITSTATUS(status);
+    return run_sinew_capture(NULL, args, SINEW_STDOUT_AND_STDERR, output, size);
 }
 
 /* The whole of a file, for the test to free. */
