@@ -342,6 +342,41 @@ Test(inverse_command, inverts_a_forward_run_of_the_arm)
     remove_dir();
 }
 
+/* The worm, in zero gravity on its static bottom segment, its torque
+ * muscle turning the top segment against the one below: after the start
+ * the top segment spins steadily about Joint 5 and the muscle's torque
+ * only balances the segment's damping (c·I·ω and the drag on its centre),
+ * so inverse dynamics must give the muscle's torque about Joint 5 and
+ * nothing about the free hinges below. */
+Test(inverse_command, gives_the_worms_torque_muscle_back_through_its_damping)
+{
+    cr_assert_not_null(mkdtemp(dir));
+    cr_assert_eq(run_sinew("run worm --recruit \"Torque Muscle=100\" --duration 3"), 0, "%s", error_text());
+    cr_assert_eq(run_sinew("inverse worm --motion worm.csv --cutoff 0"), 0, "%s", error_text());
+    csv_table run, inverse;
+    read_table("worm.csv", &run);
+    read_table("worm-inverse.csv", &inverse);
+    const int time = csv_table_find(&run, "time_s"), muscle = csv_table_find(&run, "Torque Muscle.torque_N_m");
+    const int top = csv_table_find(&inverse, "Joint 5.net_torque_N_m");
+    cr_assert(time >= 0 && muscle >= 0 && top >= 0);
+    for (long r = 30; r + 1 < run.row_count; ++r) {
+        const double expected = run.columns[muscle].values[r];
+        cr_expect(fabs(inverse.columns[top].values[r] - expected) <= 5e-4 * fabs(expected),
+                  "t = %g s: %.10g N·m, the muscle's %.10g N·m", run.columns[time].values[r],
+                  inverse.columns[top].values[r], expected);
+        for (int j = 1; j <= 4; ++j) {
+            char name[64];
+            snprintf(name, sizeof name, "Joint %d.net_torque_N_m", j);
+            const double free_hinge = inverse.columns[csv_table_find(&inverse, name)].values[r];
+            cr_expect(fabs(free_hinge) <= 1e-3 * fabs(expected), "t = %g s: %s %.3g N·m", run.columns[time].values[r],
+                      name, free_hinge);
+        }
+    }
+    csv_table_free(&run);
+    csv_table_free(&inverse);
+    remove_dir();
+}
+
 static void expect_refused(const char *args, const char *message)
 {
     cr_expect_neq(run_sinew(args), 0, "%s succeeded", args);

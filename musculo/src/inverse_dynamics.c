@@ -246,10 +246,6 @@ static void forward_pass(const mu_model *model, const joint_tree *tree, const do
     }
 }
 
-/* The engine damps a velocity once per substep h as v ← v/(1 + h·c): a
- * drag of c/(1 + h·c) per second on the velocity reached. */
-static double drag_rate(double damping, double h) { return damping / (1.0 + h * damping); }
-
 rb_status mu_model_inverse_dynamics(const mu_model *model, const double *angles_deg, const double *rates,
                                     const double *accelerations, double *torques)
 {
@@ -282,7 +278,6 @@ rb_status mu_model_inverse_dynamics(const mu_model *model, const double *angles_
         forward_pass(model, &tree, angles_deg, rates, accelerations, motion, pivots);
         const rb_world *world = mu_model_world_to_read(model);
         const rb_vec2 gravity = rb_world_gravity(world);
-        const double h = mu_model_substep_duration(model);
         /* The backward pass: each moving body's contribution to the sum of
          * every joint between it and the ground. */
         for (int k = 0; k < tree.order_count; ++k) {
@@ -291,8 +286,11 @@ rb_status mu_model_inverse_dynamics(const mu_model *model, const double *angles_
             const rb_mass_data mass = rb_body_mass_data(world, body);
             const body_motion *m = &motion[b];
             const rb_vec2 g = rb_scale(rb_body_gravity_scale(world, body), gravity);
-            const double linear_drag = drag_rate(rb_body_linear_damping(world, body), h);
-            const double angular_drag = drag_rate(rb_body_angular_damping(world, body), h);
+            /* The engine damps once per substep h, after the solve, as
+             * v' = (v + h·a)/(1 + h·c), i.e. (v' − v)/h = a − c·v': a
+             * drag c times the velocity reached (engine/src/solver.c). */
+            const double linear_drag = rb_body_linear_damping(world, body);
+            const double angular_drag = rb_body_angular_damping(world, body);
             /* m·(a − g + d·v): the force the rest must supply to the centre. */
             const rb_vec2 force =
                 rb_scale(mass.mass, rb_add(rb_sub(m->acceleration, g), rb_scale(linear_drag, m->velocity)));

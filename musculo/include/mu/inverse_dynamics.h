@@ -21,9 +21,10 @@
  * (rb_body_mass_data: glued bones are one merged body, the weight
  * included), a_k, v_k its centre's acceleration and velocity, α_k, ω_k
  * its angular ones, g_k the world's gravity times its gravity scale, and
- * d_k, D_k its linear and angular damping as the engine applies them
- * over one substep h (v ← v/(1 + h·c), i.e. a drag of c/(1 + h·c) per
- * second). This is the backward pass of Newton–Euler summed in one step.
+ * d_k, D_k its linear and angular damping (1/s): the engine damps a
+ * velocity once per substep h, after the solve, as v' = (v + h·a)/(1 + h·c),
+ * that is (v' − v)/h = a − c·v', a drag of c times the velocity reached.
+ * This is the backward pass of Newton–Euler summed in one step.
  * When the side that leaves the ground is A's, the same sum over A's side
  * is −τ.
  *
