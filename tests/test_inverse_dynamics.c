@@ -141,6 +141,52 @@ Test(inverse_dynamics, a_double_pendulum_at_rest_carries_its_weights_moments) { 
 
 Test(inverse_dynamics, a_hinge_named_from_its_distal_bone_gets_the_opposite_torque) { expect_static_torques(true); }
 
+/* Two bars moving: the equations of motion of a planar two-link arm
+ * (Spong, Hutchinson and Vidyasagar, "Robot Modeling and Control", 2006,
+ * section 7.4), links of mass m_i, inertia I_i about the centre, centre
+ * d_i from the proximal joint, first link L1 long, gravity along −y:
+ *
+ *   τ1 = M11·θ1'' + M12·θ2'' − h·(2θ1'θ2' + θ2'²) + G1,
+ *   τ2 = M12·θ1'' + M22·θ2'' + h·θ1'² + G2,
+ *
+ * M11 = I1 + m1·d1² + I2 + m2·(L1² + d2² + 2·L1·d2·cos θ2),
+ * M12 = I2 + m2·(d2² + L1·d2·cos θ2), M22 = I2 + m2·d2²,
+ * h = m2·L1·d2·sin θ2, G1 = (m1·d1 + m2·L1)·g·cos θ1 + m2·d2·g·cos(θ1 + θ2),
+ * G2 = m2·d2·g·cos(θ1 + θ2). */
+Test(inverse_dynamics, a_moving_double_pendulum_follows_the_two_link_equations)
+{
+    mu_model_desc *desc = pendulum(true, false);
+    mu_model *model = build(desc);
+    const rb_mass_data one = bar_mass(model, 1), two = bar_mass(model, 2);
+    const double m1 = one.mass, m2 = two.mass, i1 = one.rotational_inertia, i2 = two.rotational_inertia;
+    const double d1 = L1 / 2, d2 = L2 / 2;
+    const double states[][6] = {{10, 20, 1.0, -2.0, 3.0, 5.0},
+                                {-70, 95, -3.0, 4.0, -20.0, 12.0},
+                                {150, -140, 6.0, 6.0, 0.0, -40.0},
+                                {0, 0, 2.0, 0.0, 0.0, 0.0}};
+    for (size_t k = 0; k < sizeof states / sizeof states[0]; ++k) {
+        const double t1 = states[k][0] * DEG, t2 = states[k][1] * DEG;
+        const double w1 = states[k][2], w2 = states[k][3], a1 = states[k][4], a2 = states[k][5];
+        const double m11 = i1 + m1 * d1 * d1 + i2 + m2 * (L1 * L1 + d2 * d2 + 2.0 * L1 * d2 * cos(t2));
+        const double m12 = i2 + m2 * (d2 * d2 + L1 * d2 * cos(t2)), m22 = i2 + m2 * d2 * d2;
+        const double h = m2 * L1 * d2 * sin(t2);
+        const double g1 = (m1 * d1 + m2 * L1) * G * cos(t1) + m2 * d2 * G * cos(t1 + t2);
+        const double g2 = m2 * d2 * G * cos(t1 + t2);
+        const double expected[2] = {m11 * a1 + m12 * a2 - h * (2.0 * w1 * w2 + w2 * w2) + g1,
+                                    m12 * a1 + m22 * a2 + h * w1 * w1 + g2};
+        const double angles[2] = {states[k][0], states[k][1]}, rates[2] = {w1, w2}, accelerations[2] = {a1, a2};
+        double torques[2];
+        cr_assert_eq(mu_model_inverse_dynamics(model, angles, rates, accelerations, torques), RB_OK, "%s",
+                     rb_last_error());
+        for (int j = 0; j < 2; ++j) {
+            cr_expect(fabs(torques[j] - expected[j]) <= 1e-9 * (fabs(expected[j]) + 1.0),
+                      "state %zu, hinge %d: %.12g N·m, expected %.12g N·m", k, j, torques[j], expected[j]);
+        }
+    }
+    mu_model_destroy(model);
+    mu_model_desc_destroy(desc);
+}
+
 /* The leg's chain closes between its two nails; two bars hinged together
  * in the air have no ground to grow the tree from. */
 Test(inverse_dynamics, closed_chains_and_floating_bodies_are_refused)
