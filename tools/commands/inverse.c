@@ -295,9 +295,9 @@ static const char *const column_names[COLUMNS_PER_HINGE] = {"angle_deg", "veloci
 
 static bool write_csv(const char *path, const result *r, const mu_model *model, json_t *settings)
 {
-    int built[1024];
+    int *built = malloc(((size_t)r->hinge_count + 1) * sizeof *built);
     int built_count = 0;
-    for (int h = 0; h < r->hinge_count && built_count < 1024; ++h) {
+    for (int h = 0; built != NULL && h < r->hinge_count; ++h) {
         if (!rb_joint_id_is_null(mu_model_hinge_joint(model, h))) {
             built[built_count++] = h;
         }
@@ -308,7 +308,7 @@ static bool write_csv(const char *path, const result *r, const mu_model *model, 
     double *row = malloc((size_t)count * sizeof *row);
     csv_table table = {0};
     char error[ATOMIC_FILE_ERROR_SIZE] = "out of memory";
-    bool ok = names != NULL && name_of != NULL && row != NULL;
+    bool ok = built != NULL && names != NULL && name_of != NULL && row != NULL;
     for (int c = 0; ok && c < count; ++c) {
         char *name = names + (size_t)c * 512;
         if (c == 0) {
@@ -337,6 +337,7 @@ static bool write_csv(const char *path, const result *r, const mu_model *model, 
         fprintf(stderr, "sinew: %s\n", error);
     }
     csv_table_free(&table);
+    free(built);
     free(names);
     free(name_of);
     free(row);
@@ -344,7 +345,8 @@ static bool write_csv(const char *path, const result *r, const mu_model *model, 
 }
 
 /* Two charts against time: the net torques, and the angles as read and
- * as smoothed. */
+ * as smoothed. A chart draws at most CHART_MAX_SERIES lines, so the
+ * figure shows the first CHART_MAX_SERIES / 2 hinges; the CSV has all. */
 static bool write_figure(const char *path, const result *r, const mu_model *model, double cutoff)
 {
     chart_series torque_series[CHART_MAX_SERIES], angle_series[CHART_MAX_SERIES];
@@ -457,6 +459,7 @@ static void print_summary(const result *r, const mu_model *model, const inverse_
     } else {
         printf("filter       none\n");
     }
+    const char *label = "peak torque";
     for (int h = 0; h < r->hinge_count; ++h) {
         if (rb_joint_id_is_null(mu_model_hinge_joint(model, h))) {
             continue;
@@ -466,8 +469,8 @@ static void print_summary(const result *r, const mu_model *model, const inverse_
         for (long i = 1; i < r->frames; ++i) {
             peak = fabs(torque[i]) > fabs(torque[peak]) ? i : peak;
         }
-        printf("%-13s%-12s %10.4f N·m at %.4f s\n", h == 0 ? "peak torque" : "", mu_model_hinge_name(model, h),
-               torque[peak], r->time[peak]);
+        printf("%-13s%-12s %10.4f N·m at %.4f s\n", label, mu_model_hinge_name(model, h), torque[peak], r->time[peak]);
+        label = "";
     }
     printf("csv          %s\nfigure       %s\n", csv_path, png_path);
 }
