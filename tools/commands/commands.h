@@ -20,6 +20,7 @@ int cmd_run(int argc, char **argv);         /* sinew run MODEL [options] */
 int cmd_plot(int argc, char **argv);        /* sinew plot CSV [options] */
 int cmd_experiment(int argc, char **argv);  /* sinew experiment NAME [options] */
 int cmd_moment_arms(int argc, char **argv); /* sinew moment-arms MODEL --hinge NAME [options] */
+int cmd_inverse(int argc, char **argv);     /* sinew inverse MODEL --motion FILE [options] */
 int cmd_view(int argc, char **argv);        /* sinew view [MODEL] [options]: runs sinew-view */
 
 #endif

@@ -28,6 +28,8 @@ static const command commands[] = {
     {"plot", "CSV [options]", "draw columns of a CSV file as a PNG or SVG chart", cmd_plot},
     {"moment-arms", "MODEL --hinge NAME [options]", "sweep a hinge: moment arms, lengths, forces (CSV, figure)",
      cmd_moment_arms},
+    {"inverse", "MODEL --motion FILE [options]", "inverse dynamics: net hinge torques of a motion (CSV, figure)",
+     cmd_inverse},
     {"experiment", "NAME [options]", "run an experiment: a CSV, its figure and a few figures", cmd_experiment},
     {"view", "[MODEL] [options]", "the interactive viewer (GTK 4): models and engine scenes", cmd_view},
     {"version", "", "print the version (also --version)", cmd_version},

@@ -9,6 +9,7 @@
 #include "mu/calcium_force.h"
 #include "mu/curves.h"
 #include "mu/geometry_lengths.h"
+#include "mu/inverse_dynamics.h"
 #include "mu/joint_loads.h"
 #include "mu/model.h"
 #include "mu/model_desc.h"
