@@ -26,6 +26,7 @@
 #include "mu/calcium_force.h"
 #include "mu/curves.h"
 #include "mu/geometry_lengths.h"
+#include "mu/inverse_dynamics.h"
 #include "mu/joint_loads.h"
 #include "mu/model.h"
 #include "mu/model_desc.h"
@@ -391,6 +392,35 @@ static void storm_model_running(void)
     REFUSED_VALUE(mu_model_joint_count(NULL), 0, "mu_model_joint_count", "model");
     /* The model still runs after all that. */
     cr_expect_eq(mu_model_step(model), RB_OK, "%s", rb_last_error());
+    mu_model_destroy(model);
+    mu_model_desc_destroy(desc);
+}
+
+static void storm_model_inverse(void)
+{
+    mu_model_desc *desc = load("arm");
+    mu_model *model = build(desc);
+    const int n = mu_model_hinge_count(model);
+    double zeros[16] = {0}, torques[16];
+    cr_assert_leq(n, 16);
+    REFUSED_STATUS(mu_model_check_tree(NULL), "mu_model_check_tree", "model");
+    REFUSED_STATUS(mu_model_inverse_dynamics(NULL, zeros, zeros, zeros, torques), "mu_model_inverse_dynamics", "model");
+    REFUSED_STATUS(mu_model_inverse_dynamics(model, NULL, zeros, zeros, torques), "mu_model_inverse_dynamics",
+                   "angles_deg");
+    REFUSED_STATUS(mu_model_inverse_dynamics(model, zeros, NULL, zeros, torques), "mu_model_inverse_dynamics", "rates");
+    REFUSED_STATUS(mu_model_inverse_dynamics(model, zeros, zeros, NULL, torques), "mu_model_inverse_dynamics",
+                   "accelerations");
+    REFUSED_STATUS(mu_model_inverse_dynamics(model, zeros, zeros, zeros, NULL), "mu_model_inverse_dynamics", "torques");
+    double bad[16] = {0};
+    bad[0] = NAN;
+    REFUSED_STATUS(mu_model_inverse_dynamics(model, bad, zeros, zeros, torques), "mu_model_inverse_dynamics",
+                   "angles_deg");
+    REFUSED_STATUS(mu_model_inverse_dynamics(model, zeros, bad, zeros, torques), "mu_model_inverse_dynamics", "rates");
+    REFUSED_STATUS(mu_model_inverse_dynamics(model, zeros, zeros, bad, torques), "mu_model_inverse_dynamics",
+                   "accelerations");
+    /* The arm is a tree; the model still answers after all that. */
+    cr_expect_eq(mu_model_check_tree(model), RB_OK, "%s", rb_last_error());
+    cr_expect_eq(mu_model_inverse_dynamics(model, zeros, zeros, zeros, torques), RB_OK, "%s", rb_last_error());
     mu_model_destroy(model);
     mu_model_desc_destroy(desc);
 }
@@ -899,6 +929,7 @@ static const api_storm storms[] = {
      "mu_model_body_count "
      "mu_model_joint_count",
      storm_model_running},
+    {"mu_model_check_tree mu_model_inverse_dynamics", storm_model_inverse},
     {"mu_model_set_activation mu_model_set_tension mu_model_set_activation_at mu_model_set_tension_at "
      "mu_model_group_activation mu_model_muscle_count mu_model_muscle_name mu_model_muscle_readout "
      "mu_model_built_muscle",

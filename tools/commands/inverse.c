@@ -163,26 +163,6 @@ static int parse_arguments(int argc, char **argv, inverse_options *opts)
 
 /* ---------------------------------------------------- choices against the model */
 
-static int choose_variant(const mu_model_desc *desc, const char *text, int *variant)
-{
-    *variant = 0;
-    if (text == NULL) {
-        return 0;
-    }
-    *variant = mu_model_desc_find_variant(desc, text);
-    char error[OPTION_ERROR_SIZE];
-    if (*variant >= 0 ||
-        option_parse_int("--variant", text, 0, desc->variant_count - 1, variant, error, sizeof error)) {
-        return 0;
-    }
-    fprintf(stderr, "sinew: unknown variant \"%s\" of model %s; the variants are", text, desc->name);
-    for (int v = 0; v < desc->variant_count; ++v) {
-        fprintf(stderr, "%s %d \"%s\"", v == 0 ? "" : ",", v, desc->variants[v].name);
-    }
-    fputs("\n", stderr);
-    return EXIT_USAGE;
-}
-
 /* The weight choice asked for by mass or by index; returns 0 or an exit
  * status. */
 static int choose_weight(const mu_model_desc *desc, const inverse_options *opts, int *weight_index)
@@ -480,7 +460,7 @@ static void print_summary(const result *r, const mu_model *model, const inverse_
 static int analyse(const inverse_options *opts, mu_model_desc *desc, motion *m, result *r)
 {
     int variant = 0, weight = 0;
-    int code = choose_variant(desc, opts->variant, &variant);
+    int code = model_source_choose_variant(desc, opts->variant, &variant);
     code = code == 0 ? choose_weight(desc, opts, &weight) : code;
     if (code != 0) {
         return code;
