@@ -6,6 +6,7 @@
 #include "arguments.h"
 #include "mu/bone_stress.h"
 #include "mu/model_desc.h"
+#include "mu/torque_actuator.h"
 
 #define DEGREES (180.0 / RB_PI)
 /* The defaults of a description made in code (model_desc.h, model_schema.c). */
@@ -119,6 +120,33 @@ static bool add_muscles(const mu_model *model, body_loads *b)
     return true;
 }
 
+/* A torque muscle's torque on its bone, the opposite on its reaction
+ * bone (a couple: placed at the bone's centre, where it acts alike). */
+static bool add_torque_muscles(const mu_model *model, body_loads *b)
+{
+    const mu_model_desc *desc = mu_model_description(model);
+    for (int t = 0; t < mu_model_torque_muscle_count(model); ++t) {
+        mu_model_ref ref;
+        if (!mu_model_desc_find(desc, mu_model_torque_muscle_name(model, t), &ref)) {
+            return false;
+        }
+        const mu_model_torque_muscle *muscle = &desc->torque_muscles[ref.index];
+        const double torque = mu_torque_actuator_torque(mu_model_torque_actuator(model, t));
+        const int part = part_of(desc, muscle->body);
+        bool ok =
+            !on_body(model, b, part) || add_load(b, part, mu_model_part_centre(model, part), rb_v2(0.0, 0.0), torque);
+        if (ok && muscle->has_reaction_body) {
+            const int reaction = part_of(desc, muscle->reaction_body);
+            ok = !on_body(model, b, reaction) ||
+                 add_load(b, reaction, mu_model_part_centre(model, reaction), rb_v2(0.0, 0.0), -torque);
+        }
+        if (!ok) {
+            return false;
+        }
+    }
+    return true;
+}
+
 /* The weight disc: merged into its carrier, a point mass of the body;
  * kept as a body of its own, its weld's reaction on the carrier. */
 static bool add_weight(const mu_model *model, body_loads *b)
@@ -197,7 +225,7 @@ static bool collect(const mu_model *model, int body, body_loads *b)
         const int bb = part_of(desc, desc->glues[g].body_b);
         ok = add_joint(model, b, mu_model_glue_joint(model, g), a, bb, mu_model_part_centre(model, bb));
     }
-    ok = ok && add_muscles(model, b) && add_weight(model, b);
+    ok = ok && add_muscles(model, b) && add_torque_muscles(model, b) && add_weight(model, b);
     if (ok) {
         solve_motion(model, b);
     }

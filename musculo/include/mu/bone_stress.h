@@ -17,6 +17,7 @@
  *   joint_loads.h reads them;
  * - the muscles' cable forces at their path points on it (a point is
  *   pulled towards its neighbours on the path with the cable's tension);
+ * - the torque muscles' torques on it, and their reactions (couples);
  * - the weight disc, when it is merged into the bone: its m·g at its
  *   centre, and its inertia;
  * - gravity, damping and inertia spread over the bone's box: per unit
