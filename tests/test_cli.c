@@ -59,8 +59,9 @@ Test(cli, a_run_writes_one_row_per_frame_with_every_readout)
      * x, y, angle for each of the 11 parts (1 nail, 10 bones); then 6
      * joint loads for each of the 2 hinges, and a moment arm and a torque
      * for each muscle about each hinge it crosses (3 the shoulder, 5 the
-     * elbow). */
-    const int columns = 1 + 15 * 5 + 2 + 3 * 11 + 6 * 2 + 2 * (3 + 5);
+     * elbow); then 6 stress columns for each of the 9 bones that move
+     * (the scapula is glued to the nail). */
+    const int columns = 1 + 15 * 5 + 2 + 3 * 11 + 6 * 2 + 2 * (3 + 5) + 6 * 9;
     cr_expect_eq(count_fields(line), columns, "%d columns in the header, expected %d", count_fields(line), columns);
     cr_expect(strstr(line, "time_s") == line, "the header starts with time_s: %.40s", line);
     cr_expect(strstr(line, "Biceps Short.total_force_N") != NULL, "a total force column per muscle");
@@ -73,6 +74,10 @@ Test(cli, a_run_writes_one_row_per_frame_with_every_readout)
               "the joint loads per hinge");
     cr_expect(strstr(line, "Biceps Long.Elbow.moment_arm_m,Biceps Long.Elbow.torque_N_m") != NULL,
               "a moment arm and torque per muscle and hinge it crosses");
+    cr_expect(strstr(line, "Ulna.max_stress_Pa,Ulna.max_strain,Ulna.safety_factor,Ulna.worst_section_m,"
+                           "Ulna.axial_force_N,Ulna.bending_moment_N_m") != NULL,
+              "the stress at the worst section per bone that moves");
+    cr_expect(strstr(line, "Scapula.max_stress_Pa") == NULL, "none for a bone fixed to the ground");
     int rows = 0;
     while (fgets(line, sizeof line, f) != NULL) {
         cr_expect_eq(count_fields(line), columns, "row %d has %d fields", rows + 1, count_fields(line));
