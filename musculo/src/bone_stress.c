@@ -282,41 +282,11 @@ static bone_frame frame_of(const mu_model *model, int bone)
     };
 }
 
-/* Everything acting on the parts glued to `part` through the tree,
- * entered from `from`, as a wrench about `about`. */
-static void subtree(const mu_model *model, const body_loads *b, int part, int from, bool *seen, rb_vec2 about,
-                    wrench *w)
-{
-    const mu_model_desc *desc = mu_model_description(model);
-    seen[part] = true;
-    for (int i = 0; i < b->count; ++i) {
-        if (b->loads[i].part == part) {
-            add_force(w, about, b->loads[i].point, b->loads[i].force, b->loads[i].couple);
-        }
-    }
-    if (part >= desc->nail_count) {
-        const bone_frame f = frame_of(model, part - desc->nail_count);
-        add_spread(w, b, about, f.centre, f.mass, f.mass * (f.length * f.length + f.width * f.width) / 12.0);
-    }
-    if (b->disc_part == part) {
-        add_spread(w, b, about, b->disc_centre, b->disc_mass, b->disc_inertia);
-    }
-    for (int g = 0; g < desc->glue_count; ++g) {
-        const int a = part_of(desc, desc->glues[g].body_a);
-        const int c = part_of(desc, desc->glues[g].body_b);
-        const int next = a == part ? c : c == part ? a : -1;
-        if (next >= 0 && next != from && !seen[next] && on_body(model, b, next) &&
-            rb_joint_id_is_null(mu_model_glue_joint(model, g))) {
-            subtree(model, b, next, part, seen, about, w);
-        }
-    }
-}
-
 /* The point loads on one bone, each with its coordinate along the axis. */
 typedef struct bone_loads {
     bone_frame frame;
     body_loads body;
-    point_load *loads; /* the body's on this bone, then the glues' */
+    point_load *loads; /* every load on the body (module comment) */
     double *s;
     int count;
 } bone_loads;
@@ -351,45 +321,34 @@ static rb_status gather(const mu_model *model, int bone, const char *f, bone_loa
     }
     l->frame = frame_of(model, bone);
     const int parts = mu_model_part_count(model);
-    bool *seen = calloc((size_t)parts + 1, sizeof *seen);
-    bool ok = seen != NULL && collect(model, body, &l->body);
-    const int most = l->body.count + desc->glue_count + 1;
+    bool ok = collect(model, body, &l->body);
+    const int most = l->body.count + parts + 1;
     l->loads = ok ? malloc((size_t)most * sizeof *l->loads) : NULL;
     l->s = ok ? malloc((size_t)most * sizeof *l->s) : NULL;
     if (l->loads == NULL || l->s == NULL) {
-        free(seen);
         free_bone(l);
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "%s: out of memory", f);
     }
-    const int part = l->frame.part;
+    /* The bone's own loads, and those of every part glued to it (the rest
+     * of its rigid body), each at its point; the other parts' spread loads
+     * and the disc's as one force and couple at their centres. */
     for (int i = 0; i < l->body.count; ++i) {
-        if (l->body.loads[i].part == part) {
-            l->loads[l->count++] = l->body.loads[i];
+        l->loads[l->count++] = l->body.loads[i];
+    }
+    for (int p = desc->nail_count; p < parts; ++p) {
+        if (p != l->frame.part && on_body(model, &l->body, p)) {
+            const bone_frame glued = frame_of(model, p - desc->nail_count);
+            wrench w = {{0.0, 0.0}, 0.0};
+            add_spread(&w, &l->body, glued.centre, glued.centre, glued.mass,
+                       glued.mass * (glued.length * glued.length + glued.width * glued.width) / 12.0);
+            l->loads[l->count++] = (point_load){p, glued.centre, w.force, w.moment};
         }
     }
-    if (l->body.disc_part == part) {
+    if (l->body.disc_part >= 0) {
         wrench w = {{0.0, 0.0}, 0.0};
         add_spread(&w, &l->body, l->body.disc_centre, l->body.disc_centre, l->body.disc_mass, l->body.disc_inertia);
-        l->loads[l->count++] = (point_load){part, l->body.disc_centre, w.force, w.moment};
+        l->loads[l->count++] = (point_load){l->body.disc_part, l->body.disc_centre, w.force, w.moment};
     }
-    /* Each glued neighbour's side of the tree, at the point of the axis
-     * nearest the neighbour's centre. */
-    seen[part] = true;
-    for (int g = 0; g < desc->glue_count; ++g) {
-        const int a = part_of(desc, desc->glues[g].body_a);
-        const int c = part_of(desc, desc->glues[g].body_b);
-        const int next = a == part ? c : c == part ? a : -1;
-        if (next < 0 || seen[next] || !on_body(model, &l->body, next) ||
-            !rb_joint_id_is_null(mu_model_glue_joint(model, g))) {
-            continue;
-        }
-        const rb_vec2 at =
-            rb_add(l->frame.centre, rb_scale(along(&l->frame, mu_model_part_centre(model, next)), l->frame.axis));
-        wrench w = {{0.0, 0.0}, 0.0};
-        subtree(model, &l->body, next, part, seen, at, &w);
-        l->loads[l->count++] = (point_load){part, at, w.force, w.moment};
-    }
-    free(seen);
     for (int i = 0; i < l->count; ++i) {
         l->s[i] = along(&l->frame, l->loads[i].point);
     }

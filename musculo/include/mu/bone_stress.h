@@ -24,7 +24,7 @@
  *   mass at a point p, g - a(p) - c·v(p), with a(p) and v(p) the rigid
  *   body's acceleration and velocity at p (c the body's damping, as the
  *   engine applies it);
- * - what the bones glued to it in one rigid body pass on (below).
+ * - the loads of the bones glued to it into one rigid body (below).
  * The body's acceleration (a at its centre of mass, α) is not read from
  * the engine, which keeps none: it is Newton's, from the body's loads:
  * m·a = ΣF + m·g - c·m·v, I·α = ΣM - c·I·ω. At rest it is zero to the
@@ -32,10 +32,12 @@
  *
  * Glued bones. Bones glued into one rigid body (the default, model.h)
  * pass loads to each other through the glue, which the engine does not
- * resolve. The glues within a body form a tree; the glue from bone P to
- * a neighbour Q carries everything acting on Q's side of the tree, as
- * one force and one couple, applied to P at the point of P's axis
- * nearest Q's centre (clamped to P's ends).
+ * resolve (how two glued bones share a load is statically indeterminate).
+ * Each bone is read as carrying the whole body's loads: its own, and each
+ * glued bone's at that bone's points (a glued bone's spread loads as one
+ * force and couple at its centre), each placed along the axis at its
+ * point's coordinate. So the forearm's ulna and radius each carry the
+ * whole forearm, hand and weight: a conservative bound, not a share.
  *
  * The sections. Cut the bone at s: the internal loads are those of every
  * load beyond the cut (on the side of larger s, a point load at its
