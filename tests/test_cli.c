@@ -91,6 +91,44 @@ Test(cli, a_run_writes_one_row_per_frame_with_every_readout)
     rmdir(dir);
 }
 
+/* The forearm swung into the elbow's limit with 5 kg: the rigid stop
+ * loads the ulna past its strength (docs/loads.md), and the summary and
+ * stderr say so; holding 1 kg at rest breaks nothing. */
+Test(cli, a_bone_past_its_strength_is_warned_of)
+{
+    char dir[] = "/tmp/sinew-cli-XXXXXX";
+    cr_assert_not_null(mkdtemp(dir));
+    char args[512], log[600], csv[600];
+    snprintf(log, sizeof log, "%s/log.txt", dir);
+    snprintf(csv, sizeof csv, "%s/arm.csv", dir);
+    static char text[1 << 16];
+    const char *const runs[] = {"--weight 5 --activation 'Biceps Short=1'",
+                                "--weight 1 --activation 'Biceps Long=0.3'"};
+    for (int r = 0; r < 2; ++r) {
+        snprintf(args, sizeof args, "run arm %s --duration 2 --out '%s'", runs[r], dir);
+        cr_assert_eq(run_sinew(args, log), 0, "sinew run failed; see %s", log);
+        FILE *f = fopen(log, "r");
+        cr_assert_not_null(f);
+        text[fread(text, 1, sizeof text - 1, f)] = '\0';
+        fclose(f);
+        cr_expect_not_null(strstr(text, "bone stress  Humerus "), "a bone stress line per bone: %s", text);
+        const char *warning = strstr(text, "warning: bone \"Ulna\" would break at 1.800 s: safety factor 0.6");
+        const char *marked = strstr(text, "(below 1: it would break)");
+        if (r == 0) {
+            cr_expect_not_null(warning, "the ulna's warning: %s", text);
+            cr_expect_not_null(marked, "the summary marks it: %s", text);
+        } else {
+            cr_expect(warning == NULL && marked == NULL, "nothing breaks holding 1 kg: %s", text);
+        }
+    }
+    remove(csv);
+    char sidecar[700];
+    snprintf(sidecar, sizeof sidecar, "%s-metadata.json", csv);
+    remove(sidecar);
+    remove(log);
+    rmdir(dir);
+}
+
 Test(cli, bad_arguments_fail_with_one_line_and_no_file)
 {
     char dir[] = "/tmp/sinew-cli-XXXXXX";
