@@ -176,6 +176,46 @@ Test(bone_stress, every_bone_of_the_moving_arm_is_in_balance)
     mu_model_desc_destroy(desc);
 }
 
+/* Newton's acceleration, from the loads the readout sees, against the
+ * engine's own change of velocity over one substep of a pendulum (the
+ * bone on a free hinge, let fall from level), which applies the hinge's
+ * impulse and gravity and then the damping: v' = (v + h·(g + F/m))/(1 +
+ * h·c), i.e. (v' - v)/h = g + F/m - c·v', the readout's form. The
+ * engine applies the impulse at the pose the substep began with, the
+ * readout takes the pose it ended with: the lever arm r of the hinge's
+ * force F about the centre has turned by ω·h, so the angular
+ * accelerations may differ by up to |F|·|r|·|ω|·h/I. */
+Test(bone_stress, the_acceleration_is_the_engines)
+{
+    mu_model_desc *desc = load_text(one_bone("[0.2, 0]", "[0.4, 0.02]", "", "[-0.2, 0]", "", "[0.4, 0]", 2.0));
+    mu_model_options options = mu_default_model_options();
+    mu_model *model = NULL;
+    cr_assert_eq(mu_model_create(desc, &options, &model), RB_OK, "%s", rb_last_error());
+    const rb_world *world = mu_model_world_to_read(model);
+    const rb_body_id body = mu_model_body(model, mu_model_part_body(model, 1));
+    const double inertia = rb_body_rotational_inertia(world, body);
+    const double h = mu_model_substep_duration(model);
+    for (int step = 0; step < 300; ++step) {
+        const rb_vec2 v = rb_body_linear_velocity(world, body);
+        const double omega = rb_body_angular_velocity(world, body);
+        cr_assert_eq(mu_model_substep(model), RB_OK);
+        rb_vec2 a;
+        double alpha;
+        cr_assert_eq(mu_model_bone_acceleration(model, 0, &a, &alpha), RB_OK, "%s", rb_last_error());
+        const rb_vec2 engine = rb_scale(1.0 / h, rb_sub(rb_body_linear_velocity(world, body), v));
+        const double engine_alpha = (rb_body_angular_velocity(world, body) - omega) / h;
+        cr_expect(rb_length(rb_sub(a, engine)) <= 1e-9 * rb_length(engine), "substep %d: a (%g, %g), engine (%g, %g)",
+                  step, a.x, a.y, engine.x, engine.y);
+        const rb_joint_id hinge = mu_model_hinge_joint(model, 0);
+        const double lever = rb_distance(rb_joint_world_anchor_b(world, hinge), rb_body_world_center(world, body));
+        const double bound = rb_length(rb_joint_reaction_force(world, hinge)) * lever * fabs(omega) * h / inertia;
+        cr_expect(fabs(alpha - engine_alpha) <= 1.01 * bound + 1e-6 * fabs(engine_alpha),
+                  "substep %d: α %g, engine %g, bound %g", step, alpha, engine_alpha, bound);
+    }
+    mu_model_destroy(model);
+    mu_model_desc_destroy(desc);
+}
+
 static void expect_refused(const char *extra, const char *message)
 {
     const char *path = write_text(one_bone("[0.2, 0]", "[0.4, 0.02]", extra, "[-0.2, 0]", "", "[0.4, 0]", 1.0));

@@ -6,6 +6,7 @@
 #include "arguments.h"
 #include "mu/bone_stress.h"
 #include "mu/model_desc.h"
+#include "mu/muscle.h"
 #include "mu/torque_actuator.h"
 
 #define DEGREES (180.0 / RB_PI)
@@ -31,11 +32,13 @@ typedef struct body_loads {
     int body;
     point_load *loads;
     int count, capacity;
-    rb_vec2 centre; /* C, m */
-    rb_vec2 f0;     /* m/s²: g - a_c - c·v_c */
-    double omega2;  /* 1/s² */
-    double beta;    /* 1/s²: α + c·ω */
-    int disc_part;  /* the part carrying the merged weight disc, or -1 */
+    rb_vec2 centre;       /* C, m */
+    rb_vec2 f0;           /* m/s²: g - a_c - c·v_c */
+    rb_vec2 acceleration; /* a_c, m/s² */
+    double alpha;         /* rad/s² */
+    double omega2;        /* 1/s² */
+    double beta;          /* 1/s²: α + c·ω */
+    int disc_part;        /* the part carrying the merged weight disc, or -1 */
     double disc_mass, disc_inertia;
     rb_vec2 disc_centre;
 } body_loads;
@@ -98,7 +101,9 @@ static bool add_muscles(const mu_model *model, body_loads *b)
     const mu_model_desc *desc = mu_model_description(model);
     for (int m = 0; m < mu_model_muscle_count(model); ++m) {
         const mu_model_muscle *muscle = &desc->muscles[mu_model_muscle_description_index(model, m)];
-        const double tension = mu_model_muscle_readout(model, m).total_force;
+        /* What the solver applied in the last substep (rb/cable.h). */
+        const double tension =
+            rb_cable_tension(mu_model_world_to_read(model), mu_muscle_cable(mu_model_built_muscle(model, m)));
         for (int k = 0; k < muscle->point_count; ++k) {
             const int part = part_of(desc, muscle->path[k].body);
             if (!on_body(model, b, part)) {
@@ -203,6 +208,8 @@ static void solve_motion(const mu_model *model, body_loads *b)
     const rb_vec2 gravity = rb_scale(rb_body_gravity_scale(world, id), rb_world_gravity(world));
     const rb_vec2 a = rb_add(rb_scale(1.0 / mass, force), rb_sub(gravity, rb_scale(linear_damping, v)));
     const double alpha = inertia > 0.0 ? moment / inertia - angular_damping * omega : 0.0;
+    b->acceleration = a;
+    b->alpha = alpha;
     b->f0 = rb_sub(rb_sub(gravity, a), rb_scale(linear_damping, v));
     b->omega2 = omega * omega;
     b->beta = alpha + angular_damping * omega;
@@ -503,4 +510,23 @@ rb_status mu_model_bone_balance(const mu_model *model, int bone, rb_vec2 *force,
     }
     free_bone(&l);
     return RB_OK;
+}
+
+rb_status mu_model_bone_acceleration(const mu_model *model, int bone, rb_vec2 *acceleration, double *alpha)
+{
+    const char *f = "mu_model_bone_acceleration";
+    if (mu_refuse_null(f, "acceleration", acceleration) || mu_refuse_null(f, "alpha", alpha)) {
+        return RB_ERR_INVALID_ARGUMENT;
+    }
+    bone_loads l;
+    const rb_status status = gather(model, bone, f, &l);
+    if (status == ABSENT) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: bone %d is not built or is fixed to the ground", f, bone);
+    }
+    if (status == RB_OK) {
+        *acceleration = l.body.acceleration;
+        *alpha = l.body.alpha;
+        free_bone(&l);
+    }
+    return status;
 }

@@ -27,8 +27,11 @@
  * - the loads of the bones glued to it into one rigid body (below).
  * The body's acceleration (a at its centre of mass, α) is not read from
  * the engine, which keeps none: it is Newton's, from the body's loads:
- * m·a = ΣF + m·g - c·m·v, I·α = ΣM - c·I·ω. At rest it is zero to the
- * engine's accuracy (tests/test_bone_stress.c checks it is).
+ * m·a = ΣF + m·g - c·m·v, I·α = ΣM - c·I·ω. a is the engine's own
+ * (v' - v)/h over the last substep; α differs from the engine's by the
+ * turn ω·h of the lever arms (the engine applies the impulses at the
+ * substep's starting pose, the readout has the end pose), a relative
+ * error of order ω·h in the moments (docs/loads.md).
  *
  * Glued bones. Bones glued into one rigid body (the default, model.h)
  * pass loads to each other through the glue, which the engine does not
@@ -118,6 +121,11 @@ MU_API mu_bone_section mu_model_bone_section(const mu_model *model, int bone, do
  * the loads' sizes (N) without the inertia. RB_OK, or the error. */
 MU_API rb_status mu_model_bone_balance(const mu_model *model, int bone, rb_vec2 *force, double *moment,
                                        double *load_scale);
+
+/** The acceleration of the bone's rigid body as this readout takes it
+ * (Newton's, above): of its centre of mass (m/s²) and angular (rad/s²).
+ * RB_OK, or the error. */
+MU_API rb_status mu_model_bone_acceleration(const mu_model *model, int bone, rb_vec2 *acceleration, double *alpha);
 
 #ifdef __cplusplus
 }
