@@ -454,6 +454,28 @@ mu_bone_section mu_model_bone_section(const mu_model *model, int bone, double s,
     return section;
 }
 
+rb_status mu_model_bone_sections(const mu_model *model, int bone, int count, mu_bone_section *sections)
+{
+    const char *f = "mu_model_bone_sections";
+    if (mu_refuse_null(f, "sections", sections) || mu_refuse_index(f, "count", count - 1, MU_MODEL_MAX_OBJECTS)) {
+        return RB_ERR_INVALID_ARGUMENT;
+    }
+    bone_loads l;
+    const rb_status status = gather(model, bone, f, &l);
+    if (status == ABSENT) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: bone %d is not built or is fixed to the ground", f, bone);
+    }
+    if (status != RB_OK) {
+        return status;
+    }
+    const mu_bone_beam beam = beam_of(&mu_model_description(model)->bones[bone]);
+    for (int k = 0; k < count; ++k) {
+        sections[k] = section_of(&l, &beam, beam.length * ((k + 0.5) / count - 0.5), false);
+    }
+    free_bone(&l);
+    return RB_OK;
+}
+
 static void keep_worse(mu_bone_section *worst, mu_bone_section candidate)
 {
     if (candidate.safety_factor < worst->safety_factor ||

@@ -115,6 +115,12 @@ MU_API mu_bone_stress mu_model_bone_stress(const mu_model *model, int bone);
  * loads at s beyond the cut when `include_at_s`. NaN as above. */
 MU_API mu_bone_section mu_model_bone_section(const mu_model *model, int bone, double s, bool include_at_s);
 
+/** `count` sections (1 .. 65535) at the middles of `count` equal pieces
+ * of the bone, s_k = L·((k + 1/2)/count - 1/2), for drawing the stress
+ * along it. RB_OK, or the error (also for a bone not built or fixed to
+ * the ground). */
+MU_API rb_status mu_model_bone_sections(const mu_model *model, int bone, int count, mu_bone_section *sections);
+
 /** The free-body balance of the bone: the resultant force (N) and the
  * moment about the bone's centre (N·m) of every load on it, inertia
  * included, which vanish for a rigid body; and, for scale, the sum of
