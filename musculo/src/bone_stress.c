@@ -24,6 +24,7 @@ typedef struct point_load {
     rb_vec2 point; /* m, world */
     rb_vec2 force; /* N */
     double couple; /* N·m */
+    double s;      /* m along the bone being read (gather), clamped to its ends */
 } point_load;
 
 /* One rigid body's loads and motion, and the field per unit mass
@@ -70,7 +71,7 @@ static bool add_load(body_loads *b, int part, rb_vec2 point, rb_vec2 force, doub
         b->loads = grown;
         b->capacity = capacity;
     }
-    b->loads[b->count++] = (point_load){part, point, force, couple};
+    b->loads[b->count++] = (point_load){part, point, force, couple, 0.0};
     return true;
 }
 
@@ -293,8 +294,9 @@ static bone_frame frame_of(const mu_model *model, int bone)
 typedef struct bone_loads {
     bone_frame frame;
     body_loads body;
-    point_load *loads; /* every load on the body (module comment) */
-    double *s;
+    point_load *loads; /* every load on the body (module comment), by s */
+    double *s;         /* each load's coordinate along the axis, ascending */
+    wrench *tail;      /* tail[i]: loads i .. count - 1 about the bone's centre */
     int count;
 } bone_loads;
 
@@ -309,6 +311,14 @@ static void free_bone(bone_loads *l)
     free(l->body.loads);
     free(l->loads);
     free(l->s);
+    free(l->tail);
+}
+
+/* Orders loads by their coordinate along the bone. */
+static int by_coordinate(const void *a, const void *b)
+{
+    const double sa = ((const point_load *)a)->s, sb = ((const point_load *)b)->s;
+    return (sa > sb) - (sa < sb);
 }
 
 /* RB_OK and the loads; ABSENT (no error recorded) for a bone not built or
@@ -332,7 +342,8 @@ static rb_status gather(const mu_model *model, int bone, const char *f, bone_loa
     const int most = l->body.count + parts + 1;
     l->loads = ok ? malloc((size_t)most * sizeof *l->loads) : NULL;
     l->s = ok ? malloc((size_t)most * sizeof *l->s) : NULL;
-    if (l->loads == NULL || l->s == NULL) {
+    l->tail = ok ? malloc(((size_t)most + 1) * sizeof *l->tail) : NULL;
+    if (l->loads == NULL || l->s == NULL || l->tail == NULL) {
         free_bone(l);
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "%s: out of memory", f);
     }
@@ -348,16 +359,25 @@ static rb_status gather(const mu_model *model, int bone, const char *f, bone_loa
             wrench w = {{0.0, 0.0}, 0.0};
             add_spread(&w, &l->body, glued.centre, glued.centre, glued.mass,
                        glued.mass * (glued.length * glued.length + glued.width * glued.width) / 12.0);
-            l->loads[l->count++] = (point_load){p, glued.centre, w.force, w.moment};
+            l->loads[l->count++] = (point_load){p, glued.centre, w.force, w.moment, 0.0};
         }
     }
     if (l->body.disc_part >= 0) {
         wrench w = {{0.0, 0.0}, 0.0};
         add_spread(&w, &l->body, l->body.disc_centre, l->body.disc_centre, l->body.disc_mass, l->body.disc_inertia);
-        l->loads[l->count++] = (point_load){l->body.disc_part, l->body.disc_centre, w.force, w.moment};
+        l->loads[l->count++] = (point_load){l->body.disc_part, l->body.disc_centre, w.force, w.moment, 0.0};
     }
+    /* Sorted along the axis, with the sums of the loads from each on: a
+     * section's loads beyond it are then one tail. */
     for (int i = 0; i < l->count; ++i) {
-        l->s[i] = along(&l->frame, l->loads[i].point);
+        l->loads[i].s = along(&l->frame, l->loads[i].point);
+    }
+    qsort(l->loads, (size_t)l->count, sizeof *l->loads, by_coordinate);
+    l->tail[l->count] = (wrench){{0.0, 0.0}, 0.0};
+    for (int i = l->count - 1; i >= 0; --i) {
+        l->s[i] = l->loads[i].s;
+        l->tail[i] = l->tail[i + 1];
+        add_force(&l->tail[i], l->frame.centre, l->loads[i].point, l->loads[i].force, l->loads[i].couple);
     }
     return RB_OK;
 }
@@ -369,12 +389,19 @@ static wrench beyond(const bone_loads *l, double s, bool include_at_s)
 {
     const bone_frame *f = &l->frame;
     const rb_vec2 q = rb_add(f->centre, rb_scale(s, f->axis));
-    wrench w = {{0.0, 0.0}, 0.0};
-    for (int i = 0; i < l->count; ++i) {
-        if (l->s[i] > s || (include_at_s && l->s[i] == s)) {
-            add_force(&w, q, l->loads[i].point, l->loads[i].force, l->loads[i].couple);
+    /* The first load beyond the cut: s_i > s, or s_i >= s including s. */
+    int low = 0, high = l->count;
+    while (low < high) {
+        const int mid = (low + high) / 2;
+        if (l->s[mid] > s || (include_at_s && l->s[mid] == s)) {
+            high = mid;
+        } else {
+            low = mid + 1;
         }
     }
+    /* Moved from the centre to q: M_q = M_centre - (q - centre)×F. */
+    wrench w = l->tail[low];
+    w.moment -= rb_cross(rb_sub(q, f->centre), w.force);
     /* The piece from s to L/2: a box of length piece and the bone's width. */
     const double piece = 0.5 * f->length - s;
     if (piece > 0.0) {
@@ -495,8 +522,7 @@ mu_bone_stress mu_model_bone_stress(const mu_model *model, int bone)
     mu_bone_section worst = section_of(&l, &beam, half, false);
     for (int j = 0; j <= MU_BONE_STRESS_SECTIONS; ++j) {
         const double s = -half + beam.length * j / MU_BONE_STRESS_SECTIONS;
-        keep_worse(&worst, section_of(&l, &beam, s, false));
-        keep_worse(&worst, section_of(&l, &beam, s, true));
+        keep_worse(&worst, section_of(&l, &beam, s, false)); /* a load at s: both sides below */
     }
     for (int i = 0; i < l.count; ++i) {
         keep_worse(&worst, section_of(&l, &beam, l.s[i], false));
