@@ -59,8 +59,9 @@ Test(cli, a_run_writes_one_row_per_frame_with_every_readout)
      * x, y, angle for each of the 11 parts (1 nail, 10 bones); then 6
      * joint loads for each of the 2 hinges, and a moment arm and a torque
      * for each muscle about each hinge it crosses (3 the shoulder, 5 the
-     * elbow). */
-    const int columns = 1 + 15 * 5 + 2 + 3 * 11 + 6 * 2 + 2 * (3 + 5);
+     * elbow); then 6 stress columns for each of the 9 bones that move
+     * (the scapula is glued to the nail). */
+    const int columns = 1 + 15 * 5 + 2 + 3 * 11 + 6 * 2 + 2 * (3 + 5) + 6 * 9;
     cr_expect_eq(count_fields(line), columns, "%d columns in the header, expected %d", count_fields(line), columns);
     cr_expect(strstr(line, "time_s") == line, "the header starts with time_s: %.40s", line);
     cr_expect(strstr(line, "Biceps Short.total_force_N") != NULL, "a total force column per muscle");
@@ -73,6 +74,10 @@ Test(cli, a_run_writes_one_row_per_frame_with_every_readout)
               "the joint loads per hinge");
     cr_expect(strstr(line, "Biceps Long.Elbow.moment_arm_m,Biceps Long.Elbow.torque_N_m") != NULL,
               "a moment arm and torque per muscle and hinge it crosses");
+    cr_expect(strstr(line, "Ulna.max_stress_Pa,Ulna.max_strain,Ulna.safety_factor,Ulna.worst_section_m,"
+                           "Ulna.axial_force_N,Ulna.bending_moment_N_m") != NULL,
+              "the stress at the worst section per bone that moves");
+    cr_expect(strstr(line, "Scapula.max_stress_Pa") == NULL, "none for a bone fixed to the ground");
     int rows = 0;
     while (fgets(line, sizeof line, f) != NULL) {
         cr_expect_eq(count_fields(line), columns, "row %d has %d fields", rows + 1, count_fields(line));
@@ -82,6 +87,44 @@ Test(cli, a_run_writes_one_row_per_frame_with_every_readout)
     /* 2 s at 60 frames per second. */
     cr_expect_eq(rows, 120, "%d rows, expected 120", rows);
     remove(csv);
+    remove(log);
+    rmdir(dir);
+}
+
+/* The forearm swung into the elbow's limit with 5 kg: the rigid stop
+ * loads the ulna past its strength (docs/loads.md), and the summary and
+ * stderr say so; holding 1 kg at rest breaks nothing. */
+Test(cli, a_bone_past_its_strength_is_warned_of)
+{
+    char dir[] = "/tmp/sinew-cli-XXXXXX";
+    cr_assert_not_null(mkdtemp(dir));
+    char args[512], log[600], csv[600];
+    snprintf(log, sizeof log, "%s/log.txt", dir);
+    snprintf(csv, sizeof csv, "%s/arm.csv", dir);
+    static char text[1 << 16];
+    const char *const runs[] = {"--weight 5 --activation 'Biceps Short=1'",
+                                "--weight 1 --activation 'Biceps Long=0.3'"};
+    for (int r = 0; r < 2; ++r) {
+        snprintf(args, sizeof args, "run arm %s --duration 2 --out '%s'", runs[r], dir);
+        cr_assert_eq(run_sinew(args, log), 0, "sinew run failed; see %s", log);
+        FILE *f = fopen(log, "r");
+        cr_assert_not_null(f);
+        text[fread(text, 1, sizeof text - 1, f)] = '\0';
+        fclose(f);
+        cr_expect_not_null(strstr(text, "bone stress  Humerus "), "a bone stress line per bone: %s", text);
+        const char *warning = strstr(text, "warning: bone \"Ulna\" would break at 1.800 s: safety factor 0.6");
+        const char *marked = strstr(text, "(below 1: it would break)");
+        if (r == 0) {
+            cr_expect_not_null(warning, "the ulna's warning: %s", text);
+            cr_expect_not_null(marked, "the summary marks it: %s", text);
+        } else {
+            cr_expect(warning == NULL && marked == NULL, "nothing breaks holding 1 kg: %s", text);
+        }
+    }
+    remove(csv);
+    char sidecar[700];
+    snprintf(sidecar, sizeof sidecar, "%s-metadata.json", csv);
+    remove(sidecar);
     remove(log);
     rmdir(dir);
 }

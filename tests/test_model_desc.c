@@ -519,7 +519,8 @@ static const bad_model bad_models[] = {
     {"comment_not_a_string.json",
      "comment_not_a_string.json:3:14: comment: found a number, expected a comment (a string)"},
     {"unknown_key.json", "unknown_key.json:7:66: bones[0].colour: unknown key \"colour\", expected one of name, "
-                         "centre, size, angle, depth, static, density, damping (or comment)"},
+                         "centre, size, angle, depth, static, density, damping, wall_thickness, youngs_modulus, "
+                         "tensile_strength, compressive_strength (or comment)"},
     {"unknown_top_level_key.json", "unknown_top_level_key.json:3:3: gravitation: unknown key \"gravitation\", "
                                    "expected one of name, gravity"},
     {"negative_size.json", "negative_size.json:8:62: bones[1].size[1]: -0.05 is out of range, expected the bone's x "

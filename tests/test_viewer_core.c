@@ -19,6 +19,7 @@
 #include "live_graph.h"
 #include "load_arrows.h"
 #include "simulation.h"
+#include "stress_colours.h"
 #include "test_support.h"
 #include "view_transform.h"
 
@@ -458,5 +459,46 @@ Test(load_arrows, the_reactions_overlay_draws_labelled_loads)
     }
     cr_expect_eq(orange[0], 0, "no load arrows without the overlay");
     cr_expect_gt(orange[1], 80, "the legend's bar and the arrows (%ld px)", orange[1]);
+    simulation_free(&sim);
+}
+
+/* Green unloaded, yellow at half the strength, red at and past it. */
+Test(stress_colours, run_from_green_through_yellow_to_red)
+{
+    double rgb[3];
+    stress_colour(INFINITY, rgb);
+    cr_expect(rgb[1] > 0.6 && rgb[0] < 0.2, "unloaded: green (%g, %g, %g)", rgb[0], rgb[1], rgb[2]);
+    stress_colour(2.0, rgb);
+    cr_expect(rgb[0] > 0.9 && rgb[1] > 0.75 && rgb[2] < 0.15, "half: yellow (%g, %g, %g)", rgb[0], rgb[1], rgb[2]);
+    stress_colour(1.0, rgb);
+    cr_expect(rgb[0] > 0.8 && rgb[1] < 0.15, "at the strength: red (%g, %g, %g)", rgb[0], rgb[1], rgb[2]);
+    double past[3];
+    stress_colour(0.25, past);
+    cr_expect(past[0] == rgb[0] && past[1] == rgb[1] && past[2] == rgb[2], "past it: red too");
+}
+
+/* The reactions overlay colours each moving bone along its axis. */
+Test(stress_colours, the_reactions_overlay_colours_the_bones)
+{
+    simulation sim = load_arm();
+    char error[SIMULATION_ERROR_SIZE];
+    for (int k = 0; k < 10; ++k) {
+        cr_assert(simulation_step(&sim, error, sizeof error), "%s", error);
+    }
+    long greenish[2];
+    for (int on = 0; on < 2; ++on) {
+        cairo_surface_t *surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 400, 300);
+        cairo_t *cr = cairo_create(surface);
+        view_transform view = view_transform_make(mu_model_part_centre(sim.model, 2), 500.0);
+        view_transform_resize(&view, 400.0, 300.0);
+        canvas_overlays overlays = {.joint_reactions = on == 1};
+        canvas_draw(cr, &view, &sim, &overlays);
+        /* The arm holding 1 kg uses a few per cent of its strength: green. */
+        greenish[on] = count_colour(surface, 0x26a640, 24);
+        cairo_destroy(cr);
+        cairo_surface_destroy(surface);
+    }
+    cr_expect_eq(greenish[0], 0, "no stress colours without the overlay");
+    cr_expect_gt(greenish[1], 200, "the bones' strips (%ld px)", greenish[1]);
     simulation_free(&sim);
 }

@@ -1237,6 +1237,18 @@ rb_joint_id mu_model_weight_joint(const mu_model *model)
     return mu_refuse_null("mu_model_weight_joint", "model", model) ? (rb_joint_id){0} : model->weight_weld;
 }
 
+double mu_model_weight_mass(const mu_model *model)
+{
+    if (mu_refuse_null("mu_model_weight_mass", "model", model)) {
+        return NAN;
+    }
+    const mu_model_desc *desc = model->desc;
+    if (!desc->has_weight || !model->parts[part_of(desc, desc->weight.body)].built) {
+        return 0.0;
+    }
+    return desc->weight.masses[model->options.weight_index];
+}
+
 rb_body_id mu_model_body(const mu_model *model, int index)
 {
     if (mu_refuse_null("mu_model_body", "model", model) ||

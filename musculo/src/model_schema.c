@@ -65,6 +65,10 @@ static const mu_json_bounds density = {1.0, 1e5, false, false};
 /* 1/s: a bone's velocity decays as exp(-c·t); 1000/s stops it within a
  * few milliseconds, and v/(1 + h·c) stays stable for any c. */
 static const mu_json_bounds damping = {0.0, 1e3, false, false};
+/* Pa: from soft tissue (1 MPa) to a thousand times cortical bone's 17 GPa. */
+static const mu_json_bounds modulus = {1e6, 1e12, false, false};
+/* Pa: 0.1 MPa (cancellous bone's weakest) to 10 GPa (fifty times cortical bone's). */
+static const mu_json_bounds strength = {1e5, 1e10, false, false};
 /* m: drawn size only, but a huge circle stalls the drawing. */
 static const mu_json_bounds radius = {0.0, 100.0, true, false};
 /* kg: 0 for no weight; a million kilograms tears the arm apart (which
@@ -294,10 +298,51 @@ static rb_status parse_nail(mu_json_reader *reader, const json_t *object, mu_mod
                              &nail->position);
 }
 
+/* Cortical bone (docs/loads.md, "Bone stress"): Reilly and Burstein, "The
+ * elastic and ultimate properties of compact bone tissue", 1975,
+ * longitudinal specimens of human femur, as quoted in the literature. */
+#define DEFAULT_CORTICAL_MODULUS 17e9               /* Pa */
+#define DEFAULT_CORTICAL_TENSILE_STRENGTH 133e6     /* Pa */
+#define DEFAULT_CORTICAL_COMPRESSIVE_STRENGTH 193e6 /* Pa */
+/* The wall: a quarter of the outer diameter (canal half of it). */
+#define DEFAULT_WALL_FRACTION 0.25
+
+/* The bone as a beam (bone_stress.h): the cortical tube's wall, at most
+ * the radius of the smaller extent, and the material's constants. */
+static rb_status parse_beam(mu_json_reader *reader, const json_t *object, mu_model_bone *bone)
+{
+    const double diameter = bone->size.x < bone->size.y ? bone->size.x : bone->size.y;
+    const mu_json_bounds wall = {1e-5, 0.5 * diameter, false, false};
+    bone->wall_thickness = DEFAULT_WALL_FRACTION * diameter;
+    MU_JSON_TRY(mu_json_read_number(reader, object, "wall_thickness", MU_JSON_OPTIONAL, wall,
+                                    "the cortical wall's thickness in m (at most half the bone's smaller extent)",
+                                    &bone->wall_thickness));
+    bone->youngs_modulus = DEFAULT_CORTICAL_MODULUS;
+    MU_JSON_TRY(mu_json_read_number(reader, object, "youngs_modulus", MU_JSON_OPTIONAL, modulus,
+                                    "the bone's Young's modulus in Pa", &bone->youngs_modulus));
+    bone->tensile_strength = DEFAULT_CORTICAL_TENSILE_STRENGTH;
+    MU_JSON_TRY(mu_json_read_number(reader, object, "tensile_strength", MU_JSON_OPTIONAL, strength,
+                                    "the bone's ultimate tensile strength in Pa", &bone->tensile_strength));
+    bone->compressive_strength = DEFAULT_CORTICAL_COMPRESSIVE_STRENGTH;
+    return mu_json_read_number(reader, object, "compressive_strength", MU_JSON_OPTIONAL, strength,
+                               "the bone's ultimate compressive strength in Pa", &bone->compressive_strength);
+}
+
 static rb_status parse_bone(mu_json_reader *reader, const json_t *object, mu_model_desc *desc)
 {
-    static const char *const keys[] = {"name",   "centre",  "size",    "angle", "depth",
-                                       "static", "density", "damping", NULL};
+    static const char *const keys[] = {"name",
+                                       "centre",
+                                       "size",
+                                       "angle",
+                                       "depth",
+                                       "static",
+                                       "density",
+                                       "damping",
+                                       "wall_thickness",
+                                       "youngs_modulus",
+                                       "tensile_strength",
+                                       "compressive_strength",
+                                       NULL};
     MU_JSON_TRY(mu_json_check_object(reader, object, keys));
     mu_model_bone *bone = &desc->bones[desc->bone_count++];
     MU_JSON_TRY(
@@ -317,8 +362,9 @@ static rb_status parse_bone(mu_json_reader *reader, const json_t *object, mu_mod
     MU_JSON_TRY(mu_json_read_number(reader, object, "density", MU_JSON_OPTIONAL, density, "the bone's density in kg/m³",
                                     &bone->density));
     bone->damping = desc->damping;
-    return mu_json_read_number(reader, object, "damping", MU_JSON_OPTIONAL, damping, "the bone's damping in 1/s",
-                               &bone->damping);
+    MU_JSON_TRY(mu_json_read_number(reader, object, "damping", MU_JSON_OPTIONAL, damping, "the bone's damping in 1/s",
+                                    &bone->damping));
+    return parse_beam(reader, object, bone);
 }
 
 /* Where `point`, in the frame of the nail or bone `body`, is at the model's

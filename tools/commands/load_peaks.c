@@ -5,6 +5,7 @@
 #include <stdlib.h>
 
 #include "load_peaks.h"
+#include "mu/bone_stress.h"
 #include "mu/joint_loads.h"
 
 static void reset(load_peak *peaks, int count)
@@ -20,9 +21,14 @@ bool load_peaks_start(load_peaks *peaks, const mu_model *model)
     const int glues = mu_model_glue_count(model);
     peaks->hinges = malloc(((size_t)hinges + 1) * sizeof *peaks->hinges);
     peaks->glues = malloc(((size_t)glues + 1) * sizeof *peaks->glues);
-    if (peaks->hinges == NULL || peaks->glues == NULL) {
+    const int bones = mu_model_description(model)->bone_count;
+    peaks->bones = malloc(((size_t)bones + 1) * sizeof *peaks->bones);
+    if (peaks->hinges == NULL || peaks->glues == NULL || peaks->bones == NULL) {
         load_peaks_free(peaks);
         return false;
+    }
+    for (int b = 0; b < bones; ++b) {
+        peaks->bones[b] = (stress_peak){NAN, NAN, NAN, NAN};
     }
     reset(peaks->hinges, hinges);
     reset(peaks->glues, glues);
@@ -60,6 +66,14 @@ void load_peaks_track(load_peaks *peaks, const mu_model *model, double time)
     for (int g = 0; g < mu_model_glue_count(model); ++g) {
         track(&peaks->glues[g], mu_model_glue_load(model, g), time);
     }
+    for (int b = 0; b < mu_model_description(model)->bone_count; ++b) {
+        const mu_bone_stress stress = mu_model_bone_stress(model, b);
+        stress_peak *peak = &peaks->bones[b];
+        /* The first frame's, then any lower (NaN: the bone does not move). */
+        if (!isnan(stress.worst.stress) && !(stress.worst.safety_factor >= peak->safety_factor)) {
+            *peak = (stress_peak){stress.worst.safety_factor, time, stress.worst.stress, stress.worst.s};
+        }
+    }
 }
 
 static void print_peak(const load_peak *peak, const char *name, bool *first)
@@ -85,12 +99,33 @@ void load_peaks_print(const load_peaks *peaks, const mu_model *model)
     if (first) {
         printf("peak load    (no joints built)\n");
     }
+    const mu_model_desc *desc = mu_model_description(model);
+    first = true;
+    for (int b = 0; b < desc->bone_count; ++b) {
+        const stress_peak *peak = &peaks->bones[b];
+        if (isnan(peak->time)) {
+            continue;
+        }
+        const bool breaks = peak->safety_factor < 1.0;
+        printf("%-13s%-24s safety factor %.3g at %.3f s: %.4g MPa at %+.4f m from its centre%s\n",
+               first ? "bone stress" : "", desc->bones[b].name, peak->safety_factor, peak->time, peak->stress / 1e6,
+               peak->section, breaks ? " (below 1: it would break)" : "");
+        if (breaks) {
+            fprintf(stderr,
+                    "warning: bone \"%s\" would break at %.3f s: safety factor %.3g, stress %.4g MPa at %+.4f m "
+                    "from its centre\n",
+                    desc->bones[b].name, peak->time, peak->safety_factor, peak->stress / 1e6, peak->section);
+        }
+        first = false;
+    }
 }
 
 void load_peaks_free(load_peaks *peaks)
 {
     free(peaks->hinges);
     free(peaks->glues);
+    free(peaks->bones);
     peaks->hinges = NULL;
     peaks->glues = NULL;
+    peaks->bones = NULL;
 }

@@ -3,7 +3,9 @@
  * every built hinge and every glue kept as a weld, the largest reaction
  * force (its magnitude, N), reaction torque and muscle torque (the
  * largest in magnitude, with its sign, N·m), each with the time it was
- * reached, sampled at the end of each frame (mu/joint_loads.h). */
+ * reached, sampled at the end of each frame (mu/joint_loads.h); and for
+ * every bone that moves, its lowest safety factor against fracture, with
+ * the section, stress and time (mu/bone_stress.h). */
 #ifndef SINEW_LOAD_PEAKS_H
 #define SINEW_LOAD_PEAKS_H
 
@@ -17,15 +19,23 @@ typedef struct load_peak {
     double muscle_torque, muscle_torque_time; /* N·m, s */
 } load_peak;
 
+typedef struct stress_peak {
+    double safety_factor, time; /* the lowest factor, NaN before any, and when, s */
+    double stress, section;     /* Pa (> 0 tension) and m along the bone, there and then */
+} stress_peak;
+
 typedef struct load_peaks {
-    load_peak *hinges; /* by model hinge index */
-    load_peak *glues;  /* by model glue index */
+    load_peak *hinges;  /* by model hinge index */
+    load_peak *glues;   /* by model glue index */
+    stress_peak *bones; /* by description bone index */
 } load_peaks;
 
 /* false on memory. */
 bool load_peaks_start(load_peaks *peaks, const mu_model *model);
 void load_peaks_track(load_peaks *peaks, const mu_model *model, double time);
-/* Prints the summary's "peak load" lines: one per joint built. */
+/* Prints the summary's "peak load" lines, one per joint built, and its
+ * "bone stress" lines, one per bone that moves; a bone whose factor fell
+ * below 1 is also warned of on stderr (it would break). */
 void load_peaks_print(const load_peaks *peaks, const mu_model *model);
 void load_peaks_free(load_peaks *peaks);
 

@@ -3,9 +3,14 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "mu/bone_stress.h"
 #include "mu/joint_loads.h"
 #include "mu/moment_arms.h"
 #include "recorder_loads.h"
+
+static const char *const stress_columns[RECORDER_BONE_STRESS_COLUMNS] = {
+    "max_stress_Pa", "max_strain", "safety_factor", "worst_section_m", "axial_force_N", "bending_moment_N_m",
+};
 
 static const char *const load_columns[RECORDER_JOINT_LOAD_COLUMNS] = {
     "reaction_x_N", "reaction_y_N", "reaction_along_N", "reaction_across_N", "reaction_torque_N_m", "muscle_torque_N_m",
@@ -20,7 +25,10 @@ bool recorder_loads_open(recorder_loads *loads, const mu_model *model)
     loads->glues = malloc(((size_t)mu_model_glue_count(model) + 1) * sizeof *loads->glues);
     loads->crossing = calloc((size_t)hinges * (size_t)muscles + 1, sizeof *loads->crossing);
     loads->arms = malloc(((size_t)muscles + 1) * sizeof *loads->arms);
-    if (loads->hinges == NULL || loads->glues == NULL || loads->crossing == NULL || loads->arms == NULL) {
+    const int bones = mu_model_description(model)->bone_count;
+    loads->bones = malloc(((size_t)bones + 1) * sizeof *loads->bones);
+    if (loads->hinges == NULL || loads->glues == NULL || loads->crossing == NULL || loads->arms == NULL ||
+        loads->bones == NULL) {
         recorder_loads_close(loads);
         return false;
     }
@@ -40,6 +48,11 @@ bool recorder_loads_open(recorder_loads *loads, const mu_model *model)
             loads->glues[loads->glue_count++] = g;
         }
     }
+    for (int b = 0; b < bones; ++b) {
+        if (!isnan(mu_model_bone_stress(model, b).worst.stress)) {
+            loads->bones[loads->bone_count++] = b;
+        }
+    }
     return true;
 }
 
@@ -49,11 +62,13 @@ void recorder_loads_close(recorder_loads *loads)
     free(loads->glues);
     free(loads->crossing);
     free(loads->arms);
+    free(loads->bones);
     /* The counts stay: the summary reports the columns after the commit. */
     loads->hinges = NULL;
     loads->glues = NULL;
     loads->crossing = NULL;
     loads->arms = NULL;
+    loads->bones = NULL;
 }
 
 void recorder_loads_write_header(const recorder_loads *loads, FILE *stream, const mu_model *model,
@@ -80,6 +95,12 @@ void recorder_loads_write_header(const recorder_loads *loads, FILE *stream, cons
                      mu_model_hinge_name(model, loads->hinges[h]));
             write_field(stream, name, "moment_arm_m");
             write_field(stream, name, "torque_N_m");
+        }
+    }
+    const mu_model_desc *desc = mu_model_description(model);
+    for (int b = 0; b < loads->bone_count; ++b) {
+        for (int c = 0; c < RECORDER_BONE_STRESS_COLUMNS; ++c) {
+            write_field(stream, desc->bones[loads->bones[b]].name, stress_columns[c]);
         }
     }
 }
@@ -110,11 +131,16 @@ bool recorder_loads_write_row(const recorder_loads *loads, FILE *stream, const m
             }
         }
     }
+    for (int b = 0; b < loads->bone_count; ++b) {
+        const mu_bone_stress stress = mu_model_bone_stress(model, loads->bones[b]);
+        fprintf(stream, ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g", stress.worst.stress, stress.strain,
+                stress.worst.safety_factor, stress.worst.s, stress.worst.axial_force, stress.worst.bending_moment);
+    }
     return true;
 }
 
 int recorder_loads_column_count(const recorder_loads *loads)
 {
     return RECORDER_JOINT_LOAD_COLUMNS * (loads->hinge_count + loads->glue_count) +
-           RECORDER_MOMENT_ARM_COLUMNS * loads->crossing_count;
+           RECORDER_MOMENT_ARM_COLUMNS * loads->crossing_count + RECORDER_BONE_STRESS_COLUMNS * loads->bone_count;
 }

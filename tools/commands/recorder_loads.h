@@ -9,7 +9,12 @@
  *   NAME.reaction_torque_N_m and NAME.muscle_torque_N_m (mu/joint_loads.h);
  * - for every built muscle and every built hinge its path crosses,
  *   MUSCLE.HINGE.moment_arm_m and MUSCLE.HINGE.torque_N_m
- *   (mu/moment_arms.h).
+ *   (mu/moment_arms.h);
+ * - for every bone that moves (built, not fixed to the ground), at its
+ *   worst section (mu/bone_stress.h): BONE.max_stress_Pa (the peak normal
+ *   stress, > 0 tension), BONE.max_strain, BONE.safety_factor,
+ *   BONE.worst_section_m (along the bone's axis from its centre),
+ *   BONE.axial_force_N and BONE.bending_moment_N_m.
  */
 #ifndef SINEW_RECORDER_LOADS_H
 #define SINEW_RECORDER_LOADS_H
@@ -19,7 +24,7 @@
 
 #include "mu/model.h"
 
-enum { RECORDER_JOINT_LOAD_COLUMNS = 6, RECORDER_MOMENT_ARM_COLUMNS = 2 };
+enum { RECORDER_JOINT_LOAD_COLUMNS = 6, RECORDER_MOMENT_ARM_COLUMNS = 2, RECORDER_BONE_STRESS_COLUMNS = 6 };
 
 typedef struct recorder_loads {
     int *hinges; /* model indices of the built hinges */
@@ -29,6 +34,8 @@ typedef struct recorder_loads {
     bool *crossing; /* [hinge slot · muscles + muscle]: whether the muscle crosses the hinge */
     int crossing_count;
     double *arms; /* one hinge's moment arms, by muscle: scratch for a row */
+    int *bones;   /* description indices of the bones that move */
+    int bone_count;
 } recorder_loads;
 
 /* Finds the joints and crossings of the model as built; false on memory.

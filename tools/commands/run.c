@@ -146,7 +146,9 @@ static const cli_command command = {
              "NAME.x_m, NAME.y_m, NAME.angle_deg; per joint NAME.reaction_x_N, NAME.reaction_y_N,\n"
              "NAME.reaction_along_N, NAME.reaction_across_N, NAME.reaction_torque_N_m,\n"
              "NAME.muscle_torque_N_m; per muscle and hinge it crosses MUSCLE.HINGE.moment_arm_m,\n"
-             "MUSCLE.HINGE.torque_N_m (docs/cli.md, \"The CSV\"; docs/loads.md).\n",
+             "MUSCLE.HINGE.torque_N_m; per bone that moves NAME.max_stress_Pa, NAME.max_strain,\n"
+             "NAME.safety_factor, NAME.worst_section_m, NAME.axial_force_N, NAME.bending_moment_N_m\n"
+             "(docs/cli.md, \"The CSV\"; docs/loads.md).\n",
 };
 
 /* Most frames a run may have: beyond any useful run (46 hours of

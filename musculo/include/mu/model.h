@@ -207,6 +207,8 @@ MU_API int mu_model_joint_count(const mu_model *model);
  *   merged or not built.
  * - mu_model_weight_joint: the weight disc's weld to its carrier with
  *   weld_glues; the null id otherwise (merged, 0 kg, or no weight).
+ * - mu_model_weight_mass: the weight disc's mass built, kg (0 without
+ *   one: no weight, 0 kg, or its carrier not built).
  * - mu_model_body: engine body `index` (0 .. mu_model_body_count - 1).
  * - mu_model_part_body: the index of the body a part (as
  *   mu_model_part_name) became part of; -1 when it is not built.
@@ -218,6 +220,7 @@ MU_API int mu_model_glue_count(const mu_model *model);
 MU_API const char *mu_model_glue_name(const mu_model *model, int index);
 MU_API rb_joint_id mu_model_glue_joint(const mu_model *model, int index);
 MU_API rb_joint_id mu_model_weight_joint(const mu_model *model);
+MU_API double mu_model_weight_mass(const mu_model *model);
 MU_API rb_body_id mu_model_body(const mu_model *model, int index);
 MU_API int mu_model_part_body(const mu_model *model, int index);
 MU_API int mu_model_muscle_description_index(const mu_model *model, int index);

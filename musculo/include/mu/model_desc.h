@@ -79,6 +79,15 @@ typedef struct mu_model_bone {
     /** 1/s, linear and angular, in [0, 1000]; default the model's damping.
      * Bones glued into one body take the first one's (in file order). */
     double damping;
+    /** The bone as a beam (bone_stress.h): a cortical tube of outer
+     * diameter the smaller extent D and wall wall_thickness (m, in
+     * [1e-5, D/2]; default D/4; D/2 is a solid rod), of cortical bone with
+     * Young's modulus youngs_modulus (Pa in [1e6, 1e12]; default 17 GPa)
+     * and ultimate strengths tensile_strength and compressive_strength
+     * (Pa in [1e5, 1e10]; default 133 MPa and 193 MPa). */
+    double wall_thickness;
+    double youngs_modulus;
+    double tensile_strength, compressive_strength;
 } mu_model_bone;
 
 /** A revolute joint pinning anchor_a on body A to anchor_b on body B. The

@@ -6,7 +6,9 @@
 
 #include "canvas_draw.h"
 #include "load_arrows.h"
+#include "mu/bone_stress.h"
 #include "mu/joint_loads.h"
+#include "stress_colours.h"
 
 #define NAIL_RADIUS_PX 3.5
 #define LINE_WIDTH_PX 1.5
@@ -542,6 +544,42 @@ static void draw_joint_loads(const painter *p, const mu_model *model)
     draw_load_legend(p, scale);
 }
 
+/* Each moving bone's stress along its axis, a strip of STRESS_PIECES
+ * pieces as wide as half the bone, coloured by the use of its strength
+ * at each piece's middle (stress_colours.h). */
+#define STRESS_PIECES 24
+static void draw_bone_stress(const painter *p, const mu_model *model, const mu_model_desc *desc)
+{
+    mu_bone_section sections[STRESS_PIECES];
+    cairo_set_line_cap(p->cr, CAIRO_LINE_CAP_BUTT);
+    for (int b = 0; b < desc->bone_count; ++b) {
+        if (isnan(mu_model_bone_stress(model, b).worst.stress) ||
+            mu_model_bone_sections(model, b, STRESS_PIECES, sections) != RB_OK) {
+            continue; /* not built, or the ground's */
+        }
+        const mu_bone_beam beam = mu_model_bone_beam(model, b);
+        const int part = desc->nail_count + b;
+        const bool along_x = desc->bones[b].size.x >= desc->bones[b].size.y;
+        const rb_vec2 axis = rb_rotate(rb_rot_from_angle(mu_model_part_angle(model, part) * RB_PI / 180.0),
+                                       along_x ? rb_v2(1.0, 0.0) : rb_v2(0.0, 1.0));
+        const rb_vec2 centre = mu_model_part_centre(model, part);
+        const double piece = beam.length / STRESS_PIECES;
+        cairo_set_line_width(p->cr, fmax(2.0, 0.5 * beam.outer_diameter * p->view->scale));
+        for (int k = 0; k < STRESS_PIECES; ++k) {
+            double rgb[3];
+            stress_colour(sections[k].safety_factor, rgb);
+            cairo_set_source_rgb(p->cr, rgb[0], rgb[1], rgb[2]);
+            move_to(p, rb_add(centre, rb_scale(sections[k].s - 0.5 * piece, axis)));
+            line_to(p, rb_add(centre, rb_scale(sections[k].s + 0.5 * piece, axis)));
+            cairo_stroke(p->cr);
+        }
+    }
+    cairo_set_source_rgb(p->cr, 0.1, 0.1, 0.1);
+    cairo_set_font_size(p->cr, 11.0);
+    cairo_move_to(p->cr, 12.0, p->view->height - 36.0);
+    cairo_show_text(p->cr, "bones: stress over strength, green 0, yellow 1/2, red 1 (it would break)");
+}
+
 static void draw_model(const painter *p, const simulation *sim)
 {
     const mu_model *model = sim->model;
@@ -560,6 +598,9 @@ static void draw_model(const painter *p, const simulation *sim)
         }
     }
     draw_weight(p, world, model, desc, &map, true);
+    if (p->overlays->joint_reactions) {
+        draw_bone_stress(p, model, desc);
+    }
     for (int k = 0; k < mu_model_hinge_count(model); ++k) {
         mu_model_ref ref;
         if (mu_model_desc_find(desc, mu_model_hinge_name(model, k), &ref) && ref.kind == MU_MODEL_HINGE) {
