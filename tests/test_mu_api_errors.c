@@ -23,6 +23,7 @@
 #include <string.h>
 
 #include "mu/activation.h"
+#include "mu/bone_stress.h"
 #include "mu/calcium_force.h"
 #include "mu/curves.h"
 #include "mu/geometry_lengths.h"
@@ -421,6 +422,46 @@ static void storm_model_inverse(void)
     /* The arm is a tree; the model still answers after all that. */
     cr_expect_eq(mu_model_check_tree(model), RB_OK, "%s", rb_last_error());
     cr_expect_eq(mu_model_inverse_dynamics(model, zeros, zeros, zeros, torques), RB_OK, "%s", rb_last_error());
+    mu_model_destroy(model);
+    mu_model_desc_destroy(desc);
+}
+
+static void storm_bone_stress(void)
+{
+    mu_model_desc *desc = load("arm");
+    mu_model *model = build(desc);
+    const int bones = desc->bone_count;
+    mu_bone_section sections[4];
+    rb_vec2 vector;
+    double number, scale;
+    REFUSED_NAN(mu_model_weight_mass(NULL), "mu_model_weight_mass", "model");
+    REFUSED_NAN(mu_model_bone_beam(NULL, 0).length, "mu_model_bone_beam", "model");
+    REFUSED_NAN(mu_model_bone_stress(NULL, 0).strain, "mu_model_bone_stress", "model");
+    REFUSED_NAN(mu_model_bone_section(NULL, 0, 0.0, false).axial_force, "mu_model_bone_section", "model");
+    REFUSED_NAN(mu_model_bone_section(model, 1, NAN, false).axial_force, "mu_model_bone_section", "s");
+    REFUSED_STATUS(mu_model_bone_sections(NULL, 0, 4, sections), "mu_model_bone_sections", "model");
+    REFUSED_STATUS(mu_model_bone_sections(model, 1, 4, NULL), "mu_model_bone_sections", "sections");
+    REFUSED_STATUS(mu_model_bone_sections(model, 1, 0, sections), "mu_model_bone_sections", "count");
+    REFUSED_STATUS(mu_model_bone_balance(NULL, 0, &vector, &number, &scale), "mu_model_bone_balance", "model");
+    REFUSED_STATUS(mu_model_bone_balance(model, 1, NULL, &number, &scale), "mu_model_bone_balance", "force");
+    REFUSED_STATUS(mu_model_bone_balance(model, 1, &vector, NULL, &scale), "mu_model_bone_balance", "moment");
+    REFUSED_STATUS(mu_model_bone_balance(model, 1, &vector, &number, NULL), "mu_model_bone_balance", "load_scale");
+    REFUSED_STATUS(mu_model_bone_acceleration(NULL, 0, &vector, &number), "mu_model_bone_acceleration", "model");
+    REFUSED_STATUS(mu_model_bone_acceleration(model, 1, NULL, &number), "mu_model_bone_acceleration", "acceleration");
+    REFUSED_STATUS(mu_model_bone_acceleration(model, 1, &vector, NULL), "mu_model_bone_acceleration", "alpha");
+    const int bad_bones[] = {-1, bones, INT_MAX};
+    for (size_t k = 0; k < sizeof bad_bones / sizeof bad_bones[0]; ++k) {
+        const int b = bad_bones[k];
+        REFUSED_NAN(mu_model_bone_beam(model, b).length, "mu_model_bone_beam", "bone");
+        REFUSED_NAN(mu_model_bone_stress(model, b).strain, "mu_model_bone_stress", "bone");
+        REFUSED_NAN(mu_model_bone_section(model, b, 0.0, false).axial_force, "mu_model_bone_section", "bone");
+        REFUSED_STATUS(mu_model_bone_sections(model, b, 4, sections), "mu_model_bone_sections", "bone");
+        REFUSED_STATUS(mu_model_bone_balance(model, b, &vector, &number, &scale), "mu_model_bone_balance", "bone");
+        REFUSED_STATUS(mu_model_bone_acceleration(model, b, &vector, &number), "mu_model_bone_acceleration", "bone");
+    }
+    /* The model still answers after all that. */
+    cr_expect_eq(mu_model_step(model), RB_OK, "%s", rb_last_error());
+    cr_expect(isfinite(mu_model_bone_beam(model, 0).length), "%s", rb_last_error());
     mu_model_destroy(model);
     mu_model_desc_destroy(desc);
 }
@@ -930,6 +971,9 @@ static const api_storm storms[] = {
      "mu_model_joint_count",
      storm_model_running},
     {"mu_model_check_tree mu_model_inverse_dynamics", storm_model_inverse},
+    {"mu_model_weight_mass mu_model_bone_beam mu_model_bone_stress mu_model_bone_section mu_model_bone_sections "
+     "mu_model_bone_balance mu_model_bone_acceleration",
+     storm_bone_stress},
     {"mu_model_set_activation mu_model_set_tension mu_model_set_activation_at mu_model_set_tension_at "
      "mu_model_group_activation mu_model_muscle_count mu_model_muscle_name mu_model_muscle_readout "
      "mu_model_built_muscle",

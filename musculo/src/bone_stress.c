@@ -472,7 +472,8 @@ mu_bone_beam mu_model_bone_beam(const mu_model *model, int bone)
 mu_bone_section mu_model_bone_section(const mu_model *model, int bone, double s, bool include_at_s)
 {
     bone_loads l;
-    if (gather(model, bone, "mu_model_bone_section", &l) != RB_OK) {
+    if (mu_refuse_non_finite("mu_model_bone_section", "s", s) ||
+        gather(model, bone, "mu_model_bone_section", &l) != RB_OK) {
         return nan_section(s);
     }
     const mu_bone_beam beam = beam_of(&mu_model_description(model)->bones[bone]);
