@@ -86,9 +86,12 @@ Test(cli, a_run_writes_one_row_per_frame_with_every_readout)
     fclose(f);
     /* 2 s at 60 frames per second. */
     cr_expect_eq(rows, 120, "%d rows, expected 120", rows);
+    char sidecar[700];
+    snprintf(sidecar, sizeof sidecar, "%s-metadata.json", csv);
+    remove(sidecar);
     remove(csv);
     remove(log);
-    rmdir(dir);
+    cr_expect_eq(rmdir(dir), 0, "%s holds more than the run wrote", dir);
 }
 
 /* The forearm swung into the elbow's limit with 5 kg: the rigid stop
@@ -326,10 +329,13 @@ Test(cli, scene_runs_every_scene_of_the_registry_with_the_shared_flags)
         }
         fclose(f);
         remove(path);
+        char sidecar[700];
+        snprintf(sidecar, sizeof sidecar, "%s-metadata.json", path);
+        remove(sidecar);
         /* Three steps of each dynamic body. */
         cr_expect(rows > 0 && rows % 3 == 0, "%s: %d rows", entry->name, rows);
     }
-    rmdir(dir);
+    cr_expect_eq(rmdir(dir), 0, "%s holds more than the scenes wrote", dir);
 
     /* The viewer, when it is built, offers the same scenes. */
     if (run_sinew_output("view --help", help, sizeof help) == 0) {
