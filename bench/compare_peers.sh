@@ -32,7 +32,7 @@
 #                  figure does not apply (default compare_peers.csv); written
 #                  to a temporary name and renamed
 #   --build-dir D  sinew's build directory (default build/release)
-#   --peers DIR    the peer harnesses (default ../shared/peers)
+#   --peers DIR    the peer harnesses' folder (default $SINEW_PEERS; one of the two is needed)
 #   --solver NAME  sinew's solver: baumgarte, ngs or soft_step (default the engine's)
 #   --substeps N, --vel N, --pos N
 #                  sinew's substeps (1 .. 1000), velocity passes (1 .. 1000) and
@@ -47,7 +47,7 @@ runs=3
 scenes=("${all_scenes[@]}")
 out=compare_peers.csv
 build_dir="$root/build/release"
-peers_dir="$root/../shared/peers"
+peers_dir=${SINEW_PEERS:-}
 # Sinew's settings when given, for bench_engine (pyramids) and bench_solver (joints).
 engine_settings=()
 solver_settings=()
@@ -147,6 +147,10 @@ for package in libbox2d-dev libchipmunk-dev; do
         exit 1
     fi
 done
+if [[ -z "$peers_dir" ]]; then
+    echo "compare_peers.sh: where are the peer harnesses? give --peers DIR or set SINEW_PEERS" >&2
+    exit 2
+fi
 if [[ ! -f "$peers_dir/Makefile" ]]; then
     echo "compare_peers.sh: no peer harnesses in $peers_dir (give --peers DIR)" >&2
     exit 1

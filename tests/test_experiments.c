@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* The experiments of Castanyer's report ("Implementació d'un model
- * computacional de sistemes musculoesquelètics", 2023-24; docs/muscle-experiments.md)
+ * computacional de sistemes musculoesquelètics", 2023-24; docs/validation.md)
  * as `sinew experiment` runs them, each qualitative result of the report
  * turned into a measured
  * one, read from the CSV the command writes:

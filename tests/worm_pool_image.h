@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The built-in worm's profile image, models/worm-pool.png, as a formula:
  * the worm's former generated pool (200 neurons rising exponentially from
- * 1 to 100, models.md's worm) drawn on the white-to-red scale in 16-bit
+ * 1 to 100, the worm of McIntyre's "Simulated Muscles") drawn on the white-to-red scale in 16-bit
  * samples. Neuron i's strength s_i = 100^(i/199) is drawn as 2.55·s_i on
  * the scale (255 − blue, so the strongest is 255): blue = green =
  * round(257·(255 − 2.55·s_i)); red fades from white's 65535 to dark red's

@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: MIT */
+#include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -96,6 +97,50 @@ int model_source_choose_variant(const mu_model_desc *desc, const char *text, int
     for (int v = 0; v < desc->variant_count; ++v) {
         fprintf(stderr, "%s %d \"%s\"", v == 0 ? "" : ",", v, desc->variants[v].name);
     }
+    fputs("\n", stderr);
+    return CLI_EXIT_USAGE;
+}
+
+void model_source_print_weights(FILE *stream, const mu_model_desc *desc)
+{
+    for (int w = 0; w < desc->weight.mass_count; ++w) {
+        fprintf(stream, "%s%g", w == 0 ? "" : ", ", desc->weight.masses[w]);
+    }
+    fputs(" kg", stream);
+}
+
+int model_source_choose_weight(const mu_model_desc *desc, bool has_kilograms, double kilograms, int index,
+                               int *weight_index)
+{
+    *weight_index = 0;
+    if ((has_kilograms || index >= 0) && !desc->has_weight) {
+        fprintf(stderr, "sinew: model %s has no weight; leave out %s\n", desc->name,
+                has_kilograms ? "--weight" : "--weight-index");
+        return CLI_EXIT_USAGE;
+    }
+    if (index >= desc->weight.mass_count) {
+        fprintf(stderr, "sinew: --weight-index %d: model %s has weight choices 0 .. %d (", index, desc->name,
+                desc->weight.mass_count - 1);
+        model_source_print_weights(stderr, desc);
+        fputs(")\n", stderr);
+        return CLI_EXIT_USAGE;
+    }
+    if (index >= 0) {
+        *weight_index = index;
+        return 0;
+    }
+    if (!has_kilograms) {
+        return 0;
+    }
+    for (int w = 0; w < desc->weight.mass_count; ++w) {
+        const double mass = desc->weight.masses[w];
+        if (fabs(mass - kilograms) <= 1e-9 * fmax(1.0, mass)) {
+            *weight_index = w;
+            return 0;
+        }
+    }
+    fprintf(stderr, "sinew: --weight %g: model %s has no such weight choice; its choices are ", kilograms, desc->name);
+    model_source_print_weights(stderr, desc);
     fputs("\n", stderr);
     return CLI_EXIT_USAGE;
 }

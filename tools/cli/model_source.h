@@ -8,6 +8,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdio.h>
 
 #include "mu/model_desc.h"
 
@@ -45,6 +46,17 @@ int model_source_load(const char *argument, mu_model_desc **out);
  * *variant set, or CLI_EXIT_USAGE after one line on stderr listing the
  * variants. */
 int model_source_choose_variant(const mu_model_desc *desc, const char *text, int *variant);
+
+/* Prints the model's weight choices: "0, 1, 5 kg". */
+void model_source_print_weights(FILE *stream, const mu_model_desc *desc);
+
+/* The weight choice a command's --weight KG (has_kilograms) or
+ * --weight-index N (index >= 0) asks for; neither gives choice 0.
+ * Returns 0 with *weight_index set, or CLI_EXIT_USAGE after one line on
+ * stderr: a weight asked of a model without one, an index beyond the
+ * choices, or a mass that is none of them (the choices listed). */
+int model_source_choose_weight(const mu_model_desc *desc, bool has_kilograms, double kilograms, int index,
+                               int *weight_index);
 
 /* The name outputs are called after: a built-in name as it is, a path's
  * file name without its directory and ".json" (truncated to fit; "model"

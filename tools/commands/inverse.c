@@ -163,38 +163,6 @@ static int parse_arguments(int argc, char **argv, inverse_options *opts)
 
 /* ---------------------------------------------------- choices against the model */
 
-/* The weight choice asked for by mass or by index; returns 0 or an exit
- * status. */
-static int choose_weight(const mu_model_desc *desc, const inverse_options *opts, int *weight_index)
-{
-    *weight_index = opts->weight_index >= 0 ? opts->weight_index : 0;
-    if ((opts->has_weight_kg || opts->weight_index >= 0) && !desc->has_weight) {
-        fprintf(stderr, "sinew: model %s has no weight; leave out --weight\n", desc->name);
-        return EXIT_USAGE;
-    }
-    if (opts->weight_index >= desc->weight.mass_count && desc->has_weight) {
-        fprintf(stderr, "sinew: --weight-index %d: model %s has weight choices 0 .. %d\n", opts->weight_index,
-                desc->name, desc->weight.mass_count - 1);
-        return EXIT_USAGE;
-    }
-    if (!opts->has_weight_kg) {
-        return 0;
-    }
-    for (int w = 0; w < desc->weight.mass_count; ++w) {
-        if (fabs(desc->weight.masses[w] - opts->weight_kg) <= 1e-9 * fmax(1.0, desc->weight.masses[w])) {
-            *weight_index = w;
-            return 0;
-        }
-    }
-    fprintf(stderr, "sinew: --weight %g: model %s has no such weight choice; its choices are", opts->weight_kg,
-            desc->name);
-    for (int w = 0; w < desc->weight.mass_count; ++w) {
-        fprintf(stderr, "%s %g", w == 0 ? "" : ",", desc->weight.masses[w]);
-    }
-    fputs(" kg\n", stderr);
-    return EXIT_USAGE;
-}
-
 /* -------------------------------------------------------------- the analysis */
 
 /* Per built hinge and frame: the smoothed angle (deg), its rate (deg/s),
@@ -461,7 +429,9 @@ static int analyse(const inverse_options *opts, mu_model_desc *desc, motion *m, 
 {
     int variant = 0, weight = 0;
     int code = model_source_choose_variant(desc, opts->variant, &variant);
-    code = code == 0 ? choose_weight(desc, opts, &weight) : code;
+    code = code == 0
+               ? model_source_choose_weight(desc, opts->has_weight_kg, opts->weight_kg, opts->weight_index, &weight)
+               : code;
     if (code != 0) {
         return code;
     }

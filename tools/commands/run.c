@@ -255,52 +255,6 @@ static parse_result parse_arguments(int argc, char **argv, run_options *opts)
 
 /* ------------------------------------------- choices against the model */
 
-static void print_weight_choices(FILE *stream, const mu_model_desc *desc)
-{
-    for (int w = 0; w < desc->weight.mass_count; ++w) {
-        fprintf(stream, "%s%g", w == 0 ? "" : ", ", desc->weight.masses[w]);
-    }
-    fputs(" kg", stream);
-}
-
-/* The weight choice asked for; returns 0 or an exit status. */
-static int choose_weight(const mu_model_desc *desc, const run_options *opts, int *weight_index)
-{
-    *weight_index = 0;
-    bool asked = opts->has_weight_kg || opts->weight_index >= 0;
-    if (asked && !desc->has_weight) {
-        fprintf(stderr, "sinew: model %s has no weight; leave out %s\n", desc->name,
-                opts->has_weight_kg ? "--weight" : "--weight-index");
-        return EXIT_USAGE;
-    }
-    if (opts->weight_index >= desc->weight.mass_count) {
-        fprintf(stderr, "sinew: --weight-index %d: model %s has weight choices 0 .. %d (", opts->weight_index,
-                desc->name, desc->weight.mass_count - 1);
-        print_weight_choices(stderr, desc);
-        fputs(")\n", stderr);
-        return EXIT_USAGE;
-    }
-    if (opts->weight_index >= 0) {
-        *weight_index = opts->weight_index;
-        return 0;
-    }
-    if (!opts->has_weight_kg) {
-        return 0;
-    }
-    for (int w = 0; w < desc->weight.mass_count; ++w) {
-        double mass = desc->weight.masses[w];
-        if (fabs(mass - opts->weight_kg) <= 1e-9 * fmax(1.0, mass)) {
-            *weight_index = w;
-            return 0;
-        }
-    }
-    fprintf(stderr, "sinew: --weight %g: model %s has no such weight choice; its choices are ", opts->weight_kg,
-            desc->name);
-    print_weight_choices(stderr, desc);
-    fputs("\n", stderr);
-    return EXIT_USAGE;
-}
-
 /* Adds the command line's controls at t = 0, in the order given; returns
  * 0 or an exit status. */
 static int add_command_line_controls(const run_options *opts, controls *schedule)
@@ -515,7 +469,7 @@ static void print_summary(const run_state *run)
            variant->muscle_count == 1 ? "" : "s");
     if (desc->has_weight) {
         printf("weight       %g kg, choice %d of ", desc->weight.masses[run->weight_index], run->weight_index);
-        print_weight_choices(stdout, desc);
+        model_source_print_weights(stdout, desc);
         printf("%s\n", run->opts->level < 4 ? " (not built below level 4)" : "");
     } else {
         printf("weight       none in this model\n");
@@ -577,7 +531,8 @@ static int prepare(run_state *run)
         code = model_source_choose_variant(run->desc, opts->variant, &run->variant);
     }
     if (code == 0) {
-        code = choose_weight(run->desc, opts, &run->weight_index);
+        code = model_source_choose_weight(run->desc, opts->has_weight_kg, opts->weight_kg, opts->weight_index,
+                                          &run->weight_index);
     }
     if (code != 0) {
         return code;

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* C1 the Hill curves (docs/muscle-experiments.md; figures 5.14-5.16 of
+/* C1 the Hill curves (docs/validation.md; figures 5.14-5.16 of
  * Castanyer, "Implementació d'un model computacional de sistemes musculoesquelètics", 2023-24): the original report's
  * tables (digitised from Ross et al., 2018) as the muscle reads them, with linear interpolation (the original
  * program's) and Steffen's monotone cubic, beside the analytic curves of

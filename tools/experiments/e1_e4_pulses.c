@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* E1 twitch and E4 summation and tetanus (docs/muscle-experiments.md;
+/* E1 twitch and E4 summation and tetanus (docs/validation.md;
  * sections 6.4.2 and 6.4.5 of Castanyer, "Implementació d'un model computacional de sistemes musculoesquelètics",
  * 2023-24): the arm, variant "All Muscles", hangs until it is at rest, then both biceps get activation pulses of 1,
  * each one frame long as the original program's space bar gave them (or --pulse-width, at substep resolution), with

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* E2 active and passive force during relaxation (docs/muscle-experiments.md;
+/* E2 active and passive force during relaxation (docs/validation.md;
  * section 6.4.3 of Castanyer, "Implementació d'un model computacional de sistemes musculoesquelètics", 2023-24): the
  * sample model with 50 kg, its muscle at activation 1 until the weight hangs still, then the activation falls linearly
  * to 0 over 3 s. The original report plots active, passive and total force against the normalized length along the

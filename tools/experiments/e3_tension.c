@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* E3.1 isometric and E3.2 isotonic contraction (docs/muscle-experiments.md;
+/* E3.1 isometric and E3.2 isotonic contraction (docs/validation.md;
  * the original report's section 6.4.4): the arm, variant "All Muscles", hangs until at rest; then
  * Biceps Short's tension target ramps up, holds and ramps down to 0, and
  * its controller (each substep activation += gain·(target − active
@@ -197,7 +197,7 @@ int experiment_e3_isotonic(const experiment *self, const experiment_options *opt
         /* A ramp of 0.2 s overshoots: the active force reaches 390 N
          * (+11 %) as the muscle's shortening slows and f_V rises faster
          * than the original program's controller follows. Over 1 s it
-         * stays within 5 % (docs/muscle-experiments.md). */
+         * stays within 5 % (docs/validation.md). */
         .ramp_time = 1.0,
         .hold_time = 0.7,
         .after = 1.5,

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* `sinew experiment NAME`: the experiments of docs/muscle-experiments.md, most
+/* `sinew experiment NAME`: the experiments of docs/validation.md, most
  * of them those of the original report (Castanyer, "Implementació d'un
  * model computacional de sistemes musculoesquelètics", 2023-2024; see
  * docs/README.md, "Sources"), each a scripted run or computation that

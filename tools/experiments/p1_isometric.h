@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* P1's isometric muscle (docs/muscle-experiments.md, P1): the arm's Biceps Long, the
+/* P1's isometric muscle (docs/validation.md, P1): the arm's Biceps Long, the
  * muscle E1 plots, taken out of the arm and held between two static
  * bodies with its belly at rest length, activation dynamics on, driven
  * by excitation pulses of whole substeps. The dynamics are first order by

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* P1 isometric twitch and tetanus (docs/muscle-experiments.md, P1): the muscle of
+/* P1 isometric twitch and tetanus (docs/validation.md, P1): the muscle of
  * p1_isometric.h, with a rigid and with a compliant tendon,
  * given one pulse of excitation (2 ms by default, --pulse-width) and
  * trains of such pulses at 1 ... 400 Hz.

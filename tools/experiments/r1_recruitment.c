@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* R1 recruitment (docs/muscle-experiments.md; McIntyre, "Simulated Muscles",
+/* R1 recruitment (docs/validation.md; McIntyre, "Simulated Muscles",
  * cited in docs/README.md): the worm's torque muscle, its motor pool recruited from 0 to every neuron,
  * weakest first (Henneman's size principle, mu/motor_pool.h). For each
  * count n: the share of the pool, the strength of the n-th neuron, the
