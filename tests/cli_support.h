@@ -6,7 +6,9 @@
 #define TESTS_CLI_SUPPORT_H
 
 #include <criterion/criterion.h>
+#include <stdbool.h>
 #include <stdio.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 /* What of the program's output a run keeps. */
@@ -34,6 +36,15 @@ static inline int run_sinew_capture(const char *dir, const char *args, sinew_out
     const int status = pclose(pipe);
     cr_assert(status != -1 && WIFEXITED(status), "%s did not exit (status %d)", command, status);
     return WEXITSTATUS(status);
+}
+
+/* Whether the folder `dir` holds a file `name`. */
+static inline bool file_exists_in(const char *dir, const char *name)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    struct stat info;
+    return stat(path, &info) == 0;
 }
 
 #endif

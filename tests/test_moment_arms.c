@@ -12,6 +12,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "cli_support.h"
 #include "io/csv_table.h"
 #include "model_support.h"
 #include "mu/moment_arms.h"
@@ -208,35 +209,17 @@ Test(moment_arms, a_hinge_in_a_closed_chain_cannot_be_posed)
 
 static char dir[] = "/tmp/sinew-moment-arms-XXXXXX";
 
+/* The last run's messages (its stderr). */
+static char errors[8192];
+
 static int run_sinew(const char *args)
 {
-    char command[2048];
-    snprintf(command, sizeof command, "cd '%s' && '%s' %s > out.txt 2> err.txt", dir, SINEW_TOOL, args);
-    const int status = system(command);
-    cr_assert(status != -1 && WIFEXITED(status), "could not run: %s", command);
-    return WEXITSTATUS(status);
+    return run_sinew_capture(dir, args, SINEW_STDERR_ONLY, errors, sizeof errors);
 }
 
-static bool exists(const char *name)
-{
-    char path[512];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    struct stat info;
-    return stat(path, &info) == 0;
-}
+static bool exists(const char *name) { return file_exists_in(dir, name); }
 
-static char *error_text(void)
-{
-    static char text[4096];
-    char path[512];
-    snprintf(path, sizeof path, "%s/err.txt", dir);
-    FILE *f = fopen(path, "r");
-    cr_assert_not_null(f);
-    const size_t n = fread(text, 1, sizeof text - 1, f);
-    text[n] = '\0';
-    fclose(f);
-    return text;
-}
+static const char *error_text(void) { return errors; }
 
 Test(moment_arms_command, writes_arms_that_match_its_lengths)
 {
