@@ -1,0 +1,112 @@
+# SPDX-License-Identifier: MIT
+"""A run from Python gives the numbers of ``sinew run`` with the same options.
+
+Both drive the same libmu: the Python package reproduces the program's
+schedule (controls before every substep they change, a frame stepped
+whole when nothing changes within it) and its CSV's columns. The program
+writes each value with 10 significant digits (recorder.c, "%.10g"), and
+integers with "%d"; every cell of its CSV is compared, as a string, with
+the Python value printed the same way, so every digit the file holds must
+agree. (Digits past the tenth are not in the file to compare.)
+"""
+import csv
+import os
+import subprocess
+
+import pytest
+
+import sinew
+
+
+def cli_table(program, folder, model, arguments):
+    subprocess.run(
+        [program, "run", model, "--out", str(folder)] + arguments,
+        check=True,
+        stdout=subprocess.DEVNULL,
+        env={k: v for k, v in os.environ.items() if k != "SINEW_DATA_DIR"},
+    )
+    stem = os.path.basename(model).removesuffix(".json")
+    with open(os.path.join(folder, stem + ".csv"), newline="") as stream:
+        rows = list(csv.reader(stream))
+    return rows[0], rows[1:]
+
+
+def assert_same(result, header, rows):
+    assert result.columns == header
+    assert len(result.table) == len(rows)
+    differences = []
+    for index, row in enumerate(rows):
+        for name, cell in zip(header, row):
+            value = result.table[name][index]
+            printed = "%d" % value if name.endswith(".recruited_neurons") else "%.10g" % value
+            if printed != cell:
+                differences.append(f"row {index} {name}: sinew run {cell}, Python {printed}")
+    assert not differences, "\n".join(differences[:20])
+
+
+def test_arm_with_activation_tension_and_weight(sinew_program, tmp_path):
+    header, rows = cli_table(
+        sinew_program,
+        tmp_path,
+        "arm",
+        ["--duration", "3", "--weight", "5", "--activation", "Biceps Short=0.5", "--tension", "Triceps Long=40"],
+    )
+    result = sinew.run(
+        "arm", duration=3, weight=5, activations={"Biceps Short": 0.5}, tensions={"Triceps Long": 40}
+    )
+    assert len(header) > 150  # muscles, hinges, parts, loads, moment arms, bone stress
+    assert_same(result, header, rows)
+
+
+def test_arm_with_control_file_shapes(sinew_program, tmp_path, repository):
+    """Ramps, sines and pulse trains drive the model substep by substep."""
+    control = os.path.join(repository, "models", "controls", "biceps_shapes.txt")
+    header, rows = cli_table(sinew_program, tmp_path, "arm", ["--duration", "8", "--control", control])
+    assert_same(sinew.run("arm", duration=8, control=control), header, rows)
+
+
+def test_arm_variant_level_and_weld_glues(sinew_program, tmp_path, repository):
+    control = os.path.join(repository, "models", "controls", "biceps_pulse.txt")
+    arguments = ["--duration", "4", "--variant", "All Biceps", "--weight-index", "3", "--weld-glues"]
+    header, rows = cli_table(sinew_program, tmp_path, "arm", arguments + ["--control", control])
+    result = sinew.run("arm", duration=4, variant="All Biceps", weight_index=3, weld_glues=True, control=control)
+    assert any(name.endswith(".reaction_along_N") for name in header)
+    assert_same(result, header, rows)
+
+
+def test_worm_recruitment(sinew_program, tmp_path, repository):
+    control = os.path.join(repository, "models", "controls", "worm_recruit.txt")
+    header, rows = cli_table(sinew_program, tmp_path, "worm", ["--duration", "6.5", "--control", control])
+    assert_same(sinew.run("worm", duration=6.5, control=control), header, rows)
+
+
+def test_model_file_by_path(sinew_program, tmp_path, repository):
+    path = os.path.join(repository, "models", "leg.json")
+    header, rows = cli_table(sinew_program, tmp_path, path, ["--duration", "1", "--activation", "Soleus=0.6"])
+    assert_same(sinew.run(path, duration=1, activations={"Soleus": 0.6}), header, rows)
+
+
+def test_a_run_is_deterministic_to_the_bit():
+    """Two runs, and the same run stepped by hand, end in the same state hash."""
+    first = sinew.run("arm", duration=1, activations={"Biceps Long": 0.7})
+    second = sinew.run("arm", duration=1, activations={"Biceps Long": 0.7})
+    assert first.table.tobytes() == second.table.tobytes()
+    with sinew.Model("arm") as a, sinew.Model("arm") as b:
+        a.set_activation("Biceps Long", 0.7)
+        b.set_activation("Biceps Long", 0.7)
+        a.step(60)
+        for _ in range(60):
+            b.step()
+        assert a.world.state_hash == b.world.state_hash
+        assert a.readouts().tobytes() == b.readouts().tobytes()
+        assert a.time == pytest.approx(1.0, abs=1e-12)
+
+
+def test_dataframe():
+    pandas = pytest.importorskip("pandas")
+    result = sinew.run("sample", duration=0.5, activations={"Muscle": 1.0})
+    frame = result.dataframe()
+    assert isinstance(frame, pandas.DataFrame)
+    assert list(frame.columns) == result.columns
+    assert len(frame) == 30
+    assert frame["Muscle.total_force_N"].iloc[-1] == result.table["Muscle.total_force_N"][-1]
