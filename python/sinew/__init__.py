@@ -46,6 +46,14 @@ from .run import RunResult, run
 from .shape import Shape
 from .world import SolverSettings, World, bytes_in_use
 
+__all__ = [
+    "AABB", "BODY_TYPES", "Body", "Cable", "Closed", "Contact", "DegenerateShape", "DistanceJoint", "Error",
+    "Filter", "ForeignId", "InvalidArgument", "Joint", "Locked", "MassData", "Model", "MouseJoint", "Muscle",
+    "NoMass", "NotConvex", "NotFinite", "OutOfMemory", "PrismaticJoint", "PulleyJoint", "RayHit", "RevoluteJoint",
+    "RunResult", "Schedule", "Shape", "SolverSettings", "StaleId", "Vec2", "WeldJoint", "World", "builtin_models",
+    "bytes_in_use", "run",
+]
+
 #: The version of the libraries loaded ("0.2.0").
 __version__ = _lib.rb.rb_version().decode()
 #: Where the libraries were loaded from.

@@ -4,8 +4,11 @@ for field in declaration order, and the argument and result types of every
 function the package calls. Private: the classes of the package wrap it.
 
 A structure here must match its header exactly (ctypes lays fields out as
-the C compiler does); tests/test_layout.py reads values through them that
-the C side computed, which a shifted field would garble.
+the C compiler does). The tests read values through them that the C side
+computed and that they know independently (the solver's documented
+defaults, a step's statistics, the arm's frame rate, variants and
+weights, every column of a run against sinew run's CSV), which a shifted
+field would garble.
 """
 import ctypes
 from ctypes import POINTER, Structure, c_bool, c_char_p, c_double, c_int, c_int32, c_uint32, c_uint64, c_void_p

@@ -53,20 +53,20 @@ def _installed_dir():
 
 
 def _locate():
-    """The paths of librb and libmu, and where they were found."""
+    """The paths (or sonames) of librb and libmu, and the places looked in."""
     tried = []
     env = os.environ.get("SINEW_LIBRARY_DIR")
     if env:
         folders = _candidates(os.path.abspath(env))
         rb, mu = _find_in(folders, "rb"), _find_in(folders, "mu")
         if rb and mu:
-            return rb, mu
+            return rb, mu, tried
         tried.append(f"SINEW_LIBRARY_DIR={env} (and its engine/ and musculo/)")
     installed = _installed_dir()
     if installed:
         rb, mu = _find_in([installed], "rb"), _find_in([installed], "mu")
         if rb and mu:
-            return rb, mu
+            return rb, mu, tried
         tried.append(f"the install's library folder {installed}")
     tried.append("the dynamic linker's search path")
     return f"librb.so.{SOVERSION}", f"libmu.so.{SOVERSION}", tried
@@ -74,13 +74,12 @@ def _locate():
 
 def load():
     """Loads the two libraries and declares their functions (_api.py)."""
-    found = _locate()
-    tried = found[2] if len(found) == 3 else None
+    rb_path, mu_path, tried = _locate()
     try:
-        rb = ctypes.CDLL(found[0], mode=ctypes.RTLD_GLOBAL)
-        mu = ctypes.CDLL(found[1], mode=ctypes.RTLD_GLOBAL)
+        rb = ctypes.CDLL(rb_path, mode=ctypes.RTLD_GLOBAL)
+        mu = ctypes.CDLL(mu_path, mode=ctypes.RTLD_GLOBAL)
     except OSError as error:
-        where = "; ".join(tried) if tried else f"{found[0]} and {found[1]}"
+        where = "; ".join(tried)
         raise LibraryNotFound(
             f"sinew: cannot load librb and libmu ({error}); looked in {where}. "
             "Set SINEW_LIBRARY_DIR to the folder of librb.so and libmu.so "

@@ -85,7 +85,9 @@ def parse_line(words):
         shape = words[1]
     if shape is None:
         got = f'"{words[1]}"' if len(words) >= 2 else "the end of the line"
-        raise ValueError(f"expected activation, tension, recruit, pulse, step, ramp, sine or pulses after the time, got {got}")
+        raise ValueError(
+            f"expected activation, tension, recruit, pulse, step, ramp, sine or pulses after the time, got {got}"
+        )
     if len(words) <= name_field or words[name_field] == "":
         raise ValueError(f'expected a name after "{words[name_field - 1]}"')
     name = words[name_field]

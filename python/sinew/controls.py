@@ -201,7 +201,9 @@ class Schedule:
         if kind not in KINDS:
             raise errors.InvalidArgument(f"control kind must be one of {', '.join(KINDS)}, got {kind!r}")
         if shape not in SHAPES or (kind == "pulse" and shape != "step"):
-            raise errors.InvalidArgument(f"control shape must be one of {', '.join(SHAPES)} (a pulse: step), got {shape!r}")
+            raise errors.InvalidArgument(
+                f"control shape must be one of {', '.join(SHAPES)} (a pulse: step), got {shape!r}"
+            )
         time = errors.real("time", time)
         if not 0.0 <= time <= MAX_TIME:
             raise errors.InvalidArgument(f"the time must be from 0 to {MAX_TIME:g} s, got {time!r}")
@@ -244,7 +246,8 @@ class Schedule:
                 self._check_value(check_kind, ref, "sine maximum", s.first + s.second, False)
             else:
                 s.first, s.frequency, s.width = p["level"], p["frequency"], p["width"]
-                if not (s.frequency > 0.0 and 0.0 < s.width < 1.0 / s.frequency and s.pulse_substeps(self.substep) >= 1):
+                period = 1.0 / s.frequency if s.frequency > 0.0 else 0.0
+                if not (s.frequency > 0.0 and 0.0 < s.width < period and s.pulse_substeps(self.substep) >= 1):
                     raise errors.InvalidArgument(
                         "the pulses' frequency must be > 0 Hz and their width at least half a substep and "
                         "less than the period"

@@ -12,13 +12,12 @@ it: ``close()`` (or leaving a ``with`` block) frees all three, after
 which every call raises :class:`sinew.Closed`.
 """
 import ctypes
-import math
 import os
 from collections import namedtuple
 
 import numpy as np
 
-from . import _api, errors, records
+from . import _api, errors
 from ._lib import mu
 from .errors import check, checked, integer, real, text
 
@@ -482,7 +481,8 @@ class Model:
         """m, r = -dL/dθ of every built muscle about the hinge (by name or index)."""
         m = self._m
         arms = np.zeros(max(mu.mu_model_muscle_count(m), 1))
-        check(mu.mu_model_moment_arms(m, self._hinge_index(hinge), arms.ctypes.data_as(ctypes.POINTER(ctypes.c_double))))
+        pointer = arms.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
+        check(mu.mu_model_moment_arms(m, self._hinge_index(hinge), pointer))
         return arms[: mu.mu_model_muscle_count(m)]
 
     def crosses(self, muscle, hinge):
@@ -547,7 +547,8 @@ class Model:
             arrays.append(array)
         torques = np.empty(max(count, 1))
         pointer = ctypes.POINTER(ctypes.c_double)
-        check(mu.mu_model_inverse_dynamics(m, *(a.ctypes.data_as(pointer) for a in arrays), torques.ctypes.data_as(pointer)))
+        inputs = (a.ctypes.data_as(pointer) for a in arrays)
+        check(mu.mu_model_inverse_dynamics(m, *inputs, torques.ctypes.data_as(pointer)))
         return torques[:count]
 
 
@@ -595,8 +596,3 @@ class Muscle:
         """m, about the hinge (name or index)."""
         model = self._model
         return checked(mu.mu_model_moment_arm, model._m, self.index, model._hinge_index(hinge))
-
-
-def pennation_degrees(radians):
-    """The CSV's pennation angle: degrees as ``sinew run`` converts them."""
-    return radians * 180.0 / math.pi

@@ -48,7 +48,14 @@ LOAD_COLUMNS = (
     "reaction_torque_N_m",
     "muscle_torque_N_m",
 )
-STRESS_COLUMNS = ("max_stress_Pa", "max_strain", "safety_factor", "worst_section_m", "axial_force_N", "bending_moment_N_m")
+STRESS_COLUMNS = (
+    "max_stress_Pa",
+    "max_strain",
+    "safety_factor",
+    "worst_section_m",
+    "axial_force_N",
+    "bending_moment_N_m",
+)
 
 #: Most frames a run may have (as `sinew run`): one row each.
 MAX_FRAMES = 1e7
@@ -144,7 +151,8 @@ class Recorder:
                     row += [self.arms[k], readouts[k].total_force * self.arms[k]]
         for b in self.bones:
             s = mu.mu_model_bone_stress(m, b)
-            row += [s.worst.stress, s.strain, s.worst.safety_factor, s.worst.s, s.worst.axial_force, s.worst.bending_moment]
+            w = s.worst
+            row += [w.stress, s.strain, w.safety_factor, w.s, w.axial_force, w.bending_moment]
         return row
 
 
@@ -213,7 +221,8 @@ def run(
 
     Returns a :class:`RunResult`.
     """
-    with Model(model, variant=variant, weight=weight, weight_index=weight_index, level=level, weld_glues=weld_glues) as m:
+    built = Model(model, variant=variant, weight=weight, weight_index=weight_index, level=level, weld_glues=weld_glues)
+    with built as m:
         duration = errors.real("duration", duration)
         frames = round(duration * m.frame_rate)  # nearbyint: halves to even
         if not 0.0 < duration or frames < 1:

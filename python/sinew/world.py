@@ -392,7 +392,9 @@ class World:
         from .joint import make_joint
 
         definition = _api.PulleyJointDef()
-        points = [_api.Vec2(*pair(n, v)) for n, v in zip(("ground_a", "ground_b", "anchor_a", "anchor_b"), (ground_a, ground_b, anchor_a, anchor_b))]
+        names = ("ground_a", "ground_b", "anchor_a", "anchor_b")
+        values = (ground_a, ground_b, anchor_a, anchor_b)
+        points = [_api.Vec2(*pair(name, value)) for name, value in zip(names, values)]
         check(
             rb.rb_pulley_joint_def_between(
                 ctypes.byref(definition), self._w, self._body_id(body_a), self._body_id(body_b), *points
@@ -484,7 +486,11 @@ class World:
         from .shape import Shape
 
         return records.RayHit(
-            Shape(self, hit.shape), Body(self, hit.body), records.vec2(hit.point), records.vec2(hit.normal), hit.fraction
+            Shape(self, hit.shape),
+            Body(self, hit.body),
+            records.vec2(hit.point),
+            records.vec2(hit.normal),
+            hit.fraction,
         )
 
     def ray_cast(self, origin, translation, category_bits=None, mask_bits=None, include_sensors=False):
@@ -563,7 +569,9 @@ class World:
         from .shape import Shape
 
         e = checked(rb.rb_world_sensor_events, self._w)
-        begin = [(Shape(self, x.sensor_shape), Shape(self, x.visitor_shape)) for x in e.begin_events[: e.begin_count]]
+        begin = [
+            (Shape(self, x.sensor_shape), Shape(self, x.visitor_shape)) for x in e.begin_events[: e.begin_count]
+        ]
         end = [(Shape(self, x.sensor_shape), Shape(self, x.visitor_shape)) for x in e.end_events[: e.end_count]]
         return records.SensorEvents(begin, end)
 
