@@ -145,9 +145,12 @@ def real(name, value):
 
 
 def integer(name, value):
-    if isinstance(value, numbers.Integral) and not isinstance(value, bool):
-        return int(value)
-    raise TypeError(f"{name} must be an integer, got {type(value).__name__} {value!r}")
+    """An int that fits the C int it is passed as (ctypes would wrap a larger one)."""
+    if not isinstance(value, numbers.Integral) or isinstance(value, bool):
+        raise TypeError(f"{name} must be an integer, got {type(value).__name__} {value!r}")
+    if not -(2**31) <= value < 2**31:
+        raise InvalidArgument(f"{name} is {value}, expected a 32-bit integer")
+    return int(value)
 
 
 def boolean(name, value):

@@ -22,8 +22,12 @@ REPOSITORY = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__fil
 
 @pytest.fixture(scope="session")
 def sinew_program():
-    """The sinew program to compare with: SINEW_EXECUTABLE, else the one on PATH."""
-    program = os.environ.get("SINEW_EXECUTABLE") or shutil.which("sinew")
+    """The sinew program to compare with: SINEW_EXECUTABLE (which must then
+    exist: ctest and check_install.sh set it), else the one on PATH."""
+    program = os.environ.get("SINEW_EXECUTABLE")
+    if program and not os.access(program, os.X_OK):
+        pytest.fail(f"SINEW_EXECUTABLE={program} is not an executable program")
+    program = program or shutil.which("sinew")
     if not program:
         pytest.skip("no sinew program: set SINEW_EXECUTABLE to the one built with the libraries")
     return program

@@ -99,6 +99,8 @@ def test_wrong_types_raise_type_error(world):
             model.set_activation("Muscle", "half")
         with pytest.raises(TypeError):
             model.step(1.5)
+        with pytest.raises(sinew.InvalidArgument, match="32-bit"):
+            model.set_activation(2**32, 0.5)
 
 
 def test_nan_is_refused_by_the_c_side_with_its_message(world):

@@ -110,3 +110,25 @@ def test_dataframe():
     assert list(frame.columns) == result.columns
     assert len(frame) == 30
     assert frame["Muscle.total_force_N"].iloc[-1] == result.table["Muscle.total_force_N"][-1]
+
+
+def test_controls_given_in_python_equal_the_control_file(repository):
+    """biceps_shapes.txt's lines as Schedule.add arguments give the same bits."""
+    control = os.path.join(repository, "models", "controls", "biceps_shapes.txt")
+    both = "Biceps Short + Biceps Long"
+    controls = [
+        dict(time=0.5, kind="activation", name=both, shape="ramp", start_value=0, end_value=0.4, duration=1.5),
+        dict(time=3.0, kind="activation", name=both, shape="sine", mean=0.25, amplitude=0.15, frequency=0.5,
+             duration=2),
+        dict(time=5.0, kind="activation", name="Biceps Long", shape="pulses", level=1, frequency=10, width=0.02,
+             duration=1),
+        (5.0, "activation", "Biceps Short", 0),
+        dict(time=6.5, kind="tension", name="Biceps Short", shape="ramp", start_value=0, end_value=60, duration=1),
+    ]
+    from_file = sinew.run("arm", duration=8, control=control)
+    from_python = sinew.run("arm", duration=8, controls=controls)
+    assert from_file.table.tobytes() == from_python.table.tobytes()
+    with pytest.raises(sinew.InvalidArgument, match="is no muscle or group"):
+        sinew.run("arm", duration=1, controls=[(0.0, "activation", "Biceps", 0.5)])
+    with pytest.raises(sinew.InvalidArgument, match="before the previous control"):
+        sinew.run("arm", duration=1, controls=[(0.5, "activation", both, 0.5), (0.2, "activation", both, 0)])
