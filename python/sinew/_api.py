@@ -594,7 +594,6 @@ D = c_void_p  # mu_model_desc * (opaque; read through ModelDesc)
 S = c_int  # rb_status
 P = c_void_p  # const mu_motor_pool *, const mu_torque_actuator *
 
-QUERY_FN = ctypes.CFUNCTYPE(c_bool, ShapeId, c_void_p)
 PRE_SOLVE_FN = ctypes.CFUNCTYPE(c_bool, ShapeId, ShapeId, POINTER(Manifold), c_void_p)
 SUBSTEP_FN = ctypes.CFUNCTYPE(None, c_void_p, c_int, c_double, c_void_p)
 

@@ -78,12 +78,20 @@ def test_contact_and_sensor_events(world):
 
 
 def test_pre_solve_can_disable_a_contact(world):
-    world.create_body().add_box(5.0, 0.5)
+    floor = world.create_body().add_box(5.0, 0.5)
     ball = world.create_body("dynamic", position=(0.0, 2.0))
-    ball.add_circle(0.25)
-    world.set_pre_solve(lambda a, b, manifold: False)
+    ball_shape = ball.add_circle(0.25)
+    asked = set()
+
+    def refuse(a, b, manifold):
+        asked.add(frozenset((a, b)))
+        assert manifold.points
+        return False
+
+    world.set_pre_solve(refuse)
     for _ in range(60):
         world.step(1.0 / 60.0)
+    assert asked == {frozenset((floor, ball_shape))}
     assert ball.position.y < 0.0  # fell through
 
 
