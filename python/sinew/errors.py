@@ -153,6 +153,15 @@ def integer(name, value):
     return int(value)
 
 
+def bits(name, value):
+    """A 32-bit unsigned mask (collision categories and masks)."""
+    if not isinstance(value, numbers.Integral) or isinstance(value, bool):
+        raise TypeError(f"{name} must be an integer, got {type(value).__name__} {value!r}")
+    if not 0 <= value < 2**32:
+        raise InvalidArgument(f"{name} is {value}, expected 32 bits (0 .. 0xFFFFFFFF)")
+    return int(value)
+
+
 def boolean(name, value):
     if isinstance(value, (bool, numbers.Integral)):
         return bool(value)

@@ -7,7 +7,7 @@ import ctypes
 
 from . import _api, errors, records
 from ._lib import rb
-from .errors import boolean, check, checked, integer, pair, real
+from .errors import bits, boolean, check, checked, integer, pair, real
 
 #: rb_shape_type names, in the enum's order.
 SHAPE_TYPES = ("circle", "polygon", "segment", "chain_segment")
@@ -32,7 +32,7 @@ def _filter(value):
         category, mask, group = value
     except (TypeError, ValueError):
         raise TypeError(f"filter must be (category_bits, mask_bits, group_index), got {value!r}") from None
-    return _api.Filter(integer("category_bits", category), integer("mask_bits", mask), integer("group_index", group))
+    return _api.Filter(bits("category_bits", category), bits("mask_bits", mask), integer("group_index", group))
 
 
 def create(body, function, geometry, material):

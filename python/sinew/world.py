@@ -88,7 +88,9 @@ def set_fields(structure, what, values):
             setattr(structure, name, boolean(name, value))
         elif kind is ctypes.c_double:
             setattr(structure, name, real(name, value))
-        elif kind in (ctypes.c_int, ctypes.c_int32, ctypes.c_uint32):
+        elif kind is ctypes.c_uint32:
+            setattr(structure, name, errors.bits(name, value))
+        elif kind in (ctypes.c_int, ctypes.c_int32):
             setattr(structure, name, integer(name, value))
         else:
             raise TypeError(f"{what}: field {name!r} is set by the function's own arguments")
@@ -455,9 +457,9 @@ class World:
     def _filter(self, category_bits, mask_bits):
         f = rb.rb_default_query_filter()
         if category_bits is not None:
-            f.category_bits = integer("category_bits", category_bits)
+            f.category_bits = errors.bits("category_bits", category_bits)
         if mask_bits is not None:
-            f.mask_bits = integer("mask_bits", mask_bits)
+            f.mask_bits = errors.bits("mask_bits", mask_bits)
         return f
 
     def _overlap(self, function, where, category_bits, mask_bits, include_sensors):

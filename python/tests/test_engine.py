@@ -161,8 +161,10 @@ def test_mouse_weld_and_shapes(world):
     assert shape.type == "polygon" and len(shape.geometry) == 4
     assert box.mass == pytest.approx(4.0 * 1.0 * 0.5, rel=1e-14)
     assert shape.friction == pytest.approx(0.3)
-    shape.filter = (2, 0xFFFF, -1)
-    assert shape.filter == sinew.Filter(2, 0xFFFF, -1)
+    shape.filter = (2, 0xFFFFFFFF, -1)
+    assert shape.filter == sinew.Filter(2, 0xFFFFFFFF, -1)
+    assert world.overlap_point((0.0, 0.0), category_bits=1, mask_bits=2) == [shape]
+    assert world.overlap_point((0.0, 0.0), mask_bits=1) == []
     mouse = world.create_mouse_joint(box, (0.0, 0.0), max_force=1000.0)
     mouse.target = (1.0, 0.0)
     for _ in range(120):
