@@ -185,3 +185,10 @@ def test_an_exception_in_a_callback_is_raised_by_the_step(world):
         world.step(1 / 60)
     world.set_substep_callback(None)
     world.step(1 / 60)
+
+
+def test_changing_the_world_inside_its_step_raises_locked(world):
+    world.create_body("dynamic").add_circle(0.1)
+    world.set_substep_callback(lambda w, substep, h: w.create_body("dynamic"))
+    with pytest.raises(sinew.Locked, match="rb_body_create"):
+        world.step(1 / 60)
