@@ -263,3 +263,114 @@ Test(static_optimization, refuses_bad_settings_and_models_without_actuators)
     mu_model_destroy(model);
     mu_model_desc_destroy(desc);
 }
+
+/* ---- the command ------------------------------------------------------------------ */
+
+static char dir[] = "/tmp/sinew-optimize-XXXXXX";
+
+/* The last run's messages (its stderr). */
+static char errors[8192];
+
+static int run_sinew(const char *args)
+{
+    return run_sinew_capture(dir, args, SINEW_STDERR_ONLY, errors, sizeof errors);
+}
+
+static bool exists(const char *name) { return file_exists_in(dir, name); }
+
+static void write_file(const char *name, const char *text)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    FILE *f = fopen(path, "w");
+    cr_assert_not_null(f);
+    fputs(text, f);
+    fclose(f);
+}
+
+static void remove_dir(void)
+{
+    char command[600];
+    snprintf(command, sizeof command, "rm -rf '%s'", dir);
+    cr_expect_eq(system(command), 0);
+}
+
+/* A forward run of the arm holding 1 kg, inverted and optimized: every
+ * frame solved, and after the first half second (the arm falling from
+ * horizontal, its muscles shortening near their top speed, where f_V
+ * leaves them almost no force) the reserves stay below 1e-3 N·m and the
+ * muscles' torques match the inverse-dynamics torques within 1e-3 N·m. */
+Test(optimize_command, shares_a_forward_runs_torques_among_the_arms_muscles)
+{
+    cr_assert_not_null(mkdtemp(dir));
+    write_file("sine.ctl", "0 activation sine \"Biceps Long\" 0.3 0.15 1 3\n0 activation \"Triceps Lateral\" 0.1\n");
+    cr_assert_eq(run_sinew("run arm --weight 1 --duration 3 --control sine.ctl"), 0, "%s", errors);
+    cr_assert_eq(run_sinew("optimize arm --weight 1 --motion arm.csv --exponent 3"), 0, "%s", errors);
+    cr_assert(exists("arm-optimize.csv") && exists("arm-optimize.csv-metadata.json") && exists("arm-optimize.png"));
+    csv_table table;
+    char path[512], error[1024];
+    snprintf(path, sizeof path, "%s/arm-optimize.csv", dir);
+    cr_assert(csv_table_read(path, &table, error, sizeof error), "%s", error);
+    const int time = csv_table_find(&table, "time_s"), solved = csv_table_find(&table, "solved");
+    cr_assert(time >= 0 && solved >= 0);
+    double worst = 0.0;
+    for (int h = 0; h < 2; ++h) {
+        const char *hinge = h == 0 ? "Shoulder" : "Elbow";
+        char name[128];
+        snprintf(name, sizeof name, "%s.net_torque_N_m", hinge);
+        const int net = csv_table_find(&table, name);
+        snprintf(name, sizeof name, "%s.muscle_torque_N_m", hinge);
+        const int muscles = csv_table_find(&table, name);
+        snprintf(name, sizeof name, "%s.reserve_torque_N_m", hinge);
+        const int reserve = csv_table_find(&table, name);
+        cr_assert(net >= 0 && muscles >= 0 && reserve >= 0);
+        for (long r = 0; r < table.row_count; ++r) {
+            cr_expect_eq(table.columns[solved].values[r], 1.0, "row %ld not solved", r);
+            if (table.columns[time].values[r] > 0.5) {
+                worst = fmax(worst, fabs(table.columns[net].values[r] - table.columns[muscles].values[r]));
+                cr_expect(fabs(table.columns[reserve].values[r]) <= 1e-3);
+            }
+        }
+    }
+    cr_log_info("arm: worst |net − muscles| after 0.5 s %.3g N·m", worst);
+    cr_expect(worst <= 1e-3, "worst |net − muscles| %g N·m", worst);
+    csv_table_free(&table);
+    remove_dir();
+}
+
+static void expect_refused(const char *args, const char *message)
+{
+    cr_expect_neq(run_sinew(args), 0, "%s succeeded", args);
+    cr_expect(strstr(errors, message) != NULL, "%s: stderr \"%s\", expected \"%s\"", args, errors, message);
+    cr_expect(!exists("arm-optimize.csv") && !exists("arm-optimize.png") && !exists("leg-optimize.csv") &&
+                  !exists("arm-optimize.csv-metadata.json"),
+              "%s wrote a file", args);
+}
+
+Test(optimize_command, refuses_bad_input_and_writes_nothing)
+{
+    cr_assert_not_null(mkdtemp(dir));
+    write_file("knee.csv", "time_s,Shoulder.angle_deg,Knee.angle_deg\n0,0,0\n0.1,0,0\n0.2,0,0\n0.3,0,0\n");
+    expect_refused("optimize arm --motion knee.csv",
+                   "knee.csv:1: column \"Knee.angle_deg\" names no hinge of model arm; its hinges' columns are "
+                   "\"Shoulder.angle_deg\", \"Elbow.angle_deg\"");
+    write_file("short.csv", "time_s,Shoulder.angle_deg,Elbow.angle_deg\n0,0,0\n0.1,0,0\n0.2,0,0\n");
+    expect_refused("optimize arm --motion short.csv", "short.csv: 3 rows of data; expected at least 4");
+    write_file("nan.csv", "time_s,Shoulder.angle_deg,Elbow.angle_deg\n0,0,0\n0.1,0,nan\n0.2,0,0\n0.3,0,0\n");
+    expect_refused("optimize arm --motion nan.csv", "nan.csv:3: column \"Elbow.angle_deg\" is not a number");
+    write_file("back.csv", "time_s,Shoulder.angle_deg,Elbow.angle_deg\n0,0,0\n0.1,0,0\n0.1,0,0\n0.2,0,0\n");
+    expect_refused("optimize arm --motion back.csv", "back.csv:4: time_s = 0.1 does not increase");
+    write_file("fine.csv", "time_s,Shoulder.angle_deg,Elbow.angle_deg\n0,0,0\n0.1,0,0\n0.2,0,0\n0.3,0,0\n");
+    expect_refused("optimize arm --motion fine.csv --level 2",
+                   "model arm (variant \"All Muscles\", level 2): the model has no muscle or torque muscle built");
+    expect_refused("optimize arm --motion fine.csv --exponent 0.5", "--exponent");
+    expect_refused("optimize arm --motion fine.csv --exponent nan", "--exponent");
+    expect_refused("optimize arm --motion fine.csv --exponent inf", "--exponent");
+    expect_refused("optimize arm --motion fine.csv --reserve 0", "--reserve");
+    write_file("bent.csv", "time_s,Shoulder.angle_deg,Elbow.angle_deg\n0,0,160\n0.1,0,160\n0.2,0,160\n0.3,0,160\n");
+    expect_refused("optimize arm --motion bent.csv --cutoff 0",
+                   "bent.csv line 2 (t = 0 s): hinge \"Elbow\" at 160 degrees is outside its limits -10 .. 150");
+    expect_refused("optimize leg --motion fine.csv", "closes a loop");
+    expect_refused("optimize arm", "missing --motion");
+    remove_dir();
+}

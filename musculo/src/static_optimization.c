@@ -32,7 +32,7 @@
 #define CONSTRAINT_TOLERANCE 1e-7
 /* The first-order conditions hold when each activation's projected
  * gradient step (see optimal) is within this. */
-#define KKT_TOLERANCE 1e-6
+#define KKT_TOLERANCE 1e-5
 
 struct mu_static_optimizer {
     mu_model *model;
@@ -562,12 +562,14 @@ rb_status mu_static_optimizer_solve(mu_static_optimizer *o, const double *angles
     if (status != RB_OK) {
         return status;
     }
-    /* The warm start: the previous frame's activations; failing that, a
-     * cold start from zero. */
+    /* The warm start: the previous frame's activations; failing that, once
+     * more from where that run stopped (SLSQP's quasi-Newton estimate of
+     * the cost's curvature starts afresh), and last a cold start from
+     * zero. */
     for (int i = 0; i < o->actuators; ++i) {
         o->x[i] = isfinite(o->x[i]) ? fmin(fmax(o->x[i], 0.0), 1.0) : 0.0;
     }
-    frame->solved = run_solver(o, frame);
+    frame->solved = run_solver(o, frame) || run_solver(o, frame);
     if (!frame->solved) {
         for (int i = 0; i < o->actuators; ++i) {
             o->x[i] = 0.0;
@@ -575,4 +577,16 @@ rb_status mu_static_optimizer_solve(mu_static_optimizer *o, const double *angles
         frame->solved = run_solver(o, frame);
     }
     return RB_OK;
+}
+
+const char *mu_static_optimizer_result_name(int solver_result)
+{
+    const char *name = solver_result >= NLOPT_FORCED_STOP && solver_result <= NLOPT_MAXTIME_REACHED
+                           ? nlopt_result_to_string((nlopt_result)solver_result)
+                           : NULL;
+    if (name == NULL) {
+        rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_static_optimizer_result_name: %d is not an NLopt result code",
+                        solver_result);
+    }
+    return name;
 }

@@ -36,7 +36,7 @@
  * quadratic programming", DFVLR-FB 88-28, 1988), given the exact
  * gradients of the cost and of the linear constraints, each frame
  * starting from the previous frame's activations (and, when that run does
- * not end at a solution, once more from zero).
+ * not end at a solution, again from where it stopped, then from zero).
  *
  * The model is posed at each frame (mu_model_pose_hinge for every built
  * hinge), so its bodies are moved; its muscles' states are not changed.
@@ -106,7 +106,7 @@ typedef struct mu_static_frame {
     int solver_result;
     /** The point found is a solution: the constraints hold within
      * 1e-7·(1 + |τ_j|) N·m and the first-order (Karush–Kuhn–Tucker)
-     * conditions within 1e-6 of their terms, checked here, not taken
+     * conditions within 1e-5 (of activation), checked here, not taken
      * from SLSQP's word. */
     bool solved;
 } mu_static_frame;
@@ -121,6 +121,10 @@ typedef struct mu_static_frame {
  * limit, not an actuator, would carry torque). */
 MU_API rb_status mu_static_optimizer_solve(mu_static_optimizer *optimizer, const double *angles_deg,
                                            const double *rates, const double *accelerations, mu_static_frame *frame);
+
+/** The name NLopt gives a result code ("SUCCESS", "ROUNDOFF_LIMITED",
+ * ...), for reports; NULL (and an error) for a code NLopt does not have. */
+MU_API const char *mu_static_optimizer_result_name(int solver_result);
 
 #ifdef __cplusplus
 }
