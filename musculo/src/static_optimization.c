@@ -585,7 +585,8 @@ const char *mu_static_optimizer_result_name(int solver_result)
                            ? nlopt_result_to_string((nlopt_result)solver_result)
                            : NULL;
     if (name == NULL) {
-        rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_static_optimizer_result_name: %d is not an NLopt result code",
+        rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                        "mu_static_optimizer_result_name: solver_result is %d, not an NLopt result code",
                         solver_result);
     }
     return name;
