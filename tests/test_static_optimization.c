@@ -370,7 +370,8 @@ Test(optimize_command, refuses_bad_input_and_writes_nothing)
     write_file("bent.csv", "time_s,Shoulder.angle_deg,Elbow.angle_deg\n0,0,160\n0.1,0,160\n0.2,0,160\n0.3,0,160\n");
     expect_refused("optimize arm --motion bent.csv --cutoff 0",
                    "bent.csv line 2 (t = 0 s): hinge \"Elbow\" at 160 degrees is outside its limits -10 .. 150");
-    expect_refused("optimize leg --motion fine.csv", "closes a loop");
+    expect_refused("optimize leg --motion fine.csv",
+                   "model leg (variant \"All Muscles\", level 4): joint \"Ankle\" closes a loop");
     expect_refused("optimize arm", "missing --motion");
     remove_dir();
 }

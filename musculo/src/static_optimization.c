@@ -16,6 +16,7 @@
  */
 #include <math.h>
 #include <nlopt.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -111,6 +112,16 @@ static void constraints(unsigned m, double *result, unsigned n, const double *x,
 }
 
 /* ------------------------------------------------------------ set-up */
+
+/* Reports the last error again as `function`'s, about `muscle` when not
+ * NULL (copied first: the message is formatted into the same buffer). */
+static rb_status report_again(rb_status status, const char *function, const char *muscle)
+{
+    char cause[1024];
+    snprintf(cause, sizeof cause, "%s", rb_last_error());
+    return muscle != NULL ? rb_report_error(status, "%s: muscle \"%s\": %s", function, muscle, cause)
+                          : rb_report_error(status, "%s: %s", function, cause);
+}
 
 static rb_status check_settings(const mu_static_optimization_settings *s, const char *f)
 {
@@ -267,7 +278,7 @@ rb_status mu_static_optimizer_create(mu_model *model, const mu_static_optimizati
         return status;
     }
     if (mu_model_check_tree(model) != RB_OK) {
-        return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: %s", f, rb_last_error());
+        return report_again(RB_ERR_INVALID_ARGUMENT, f, NULL);
     }
     const int muscles = mu_model_muscle_count(model), torque_muscles = mu_model_torque_muscle_count(model);
     if (muscles + torque_muscles == 0) {
@@ -280,8 +291,7 @@ rb_status mu_static_optimizer_create(mu_model *model, const mu_static_optimizati
     for (int i = 0; i < muscles; ++i) {
         double capacity, passive;
         if (mu_muscle_forces_at_speed(mu_model_built_muscle(model, i), world, 0.0, &capacity, &passive) != RB_OK) {
-            return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: muscle \"%s\": %s", f, mu_model_muscle_name(model, i),
-                                   rb_last_error());
+            return report_again(RB_ERR_INVALID_ARGUMENT, f, mu_model_muscle_name(model, i));
         }
     }
     mu_static_optimizer *o = calloc(1, sizeof *o);
@@ -370,7 +380,7 @@ static rb_status build_problem(mu_static_optimizer *o, const double *angles_deg,
         const int h = o->hinge_of[j];
         const rb_status status = mu_model_pose_hinge(o->model, h, angles_deg[h]);
         if (status != RB_OK) {
-            return rb_report_error(status, "%s: %s", f, rb_last_error());
+            return report_again(status, f, NULL);
         }
     }
     rb_status status =
@@ -389,7 +399,7 @@ static rb_status build_problem(mu_static_optimizer *o, const double *angles_deg,
                                            &o->passive[i]);
     }
     if (status != RB_OK) {
-        return rb_report_error(status, "%s: %s", f, rb_last_error());
+        return report_again(status, f, NULL);
     }
     for (int j = 0; j < o->problem; ++j) {
         double *row = &o->A[(size_t)j * (size_t)o->actuators];
