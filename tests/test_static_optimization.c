@@ -85,7 +85,7 @@ static lever_problem lever_data(const mu_model *model)
     return p;
 }
 
-static void solve_at_rest(mu_model *model, double exponent, double *activations, double *reserve)
+static void solve_at_rest(mu_model *model, double exponent, double *activations, double *reserve, mu_joint_load *load)
 {
     mu_static_optimization_settings settings = mu_default_static_optimization_settings();
     settings.exponent = exponent;
@@ -94,8 +94,11 @@ static void solve_at_rest(mu_model *model, double exponent, double *activations,
     cr_assert_eq(mu_static_optimizer_actuator_count(optimizer), 2);
     const double angle = 0.0, rate = 0.0, acceleration = 0.0;
     double torque, muscle_torque;
-    mu_static_frame frame = {
-        .activations = activations, .reserves = reserve, .net_torques = &torque, .actuator_torques = &muscle_torque};
+    mu_static_frame frame = {.activations = activations,
+                             .reserves = reserve,
+                             .net_torques = &torque,
+                             .actuator_torques = &muscle_torque,
+                             .loads = load};
     cr_assert_eq(mu_static_optimizer_solve(optimizer, &angle, &rate, &acceleration, &frame), RB_OK, "%s",
                  rb_last_error());
     cr_assert(frame.solved, "SLSQP: %d", frame.solver_result);
@@ -114,7 +117,8 @@ Test(static_optimization, two_agonists_share_as_the_lagrange_solution_for_p_2)
     const double r = MU_STATIC_OPTIMIZATION_DEFAULT_RESERVE_SCALE;
     const double denominator = p.c[0] * p.c[0] + p.c[1] * p.c[1] + r * r;
     double a[2], reserve;
-    solve_at_rest(model, 2.0, a, &reserve);
+    mu_joint_load load;
+    solve_at_rest(model, 2.0, a, &reserve, &load);
     for (int i = 0; i < 2; ++i) {
         const double expected = p.c[i] * p.left / denominator;
         cr_log_info("p = 2: a_%d = %.12g, closed form %.12g", i + 1, a[i], expected);
@@ -123,6 +127,27 @@ Test(static_optimization, two_agonists_share_as_the_lagrange_solution_for_p_2)
     }
     cr_assert(fabs(a[0] / a[1] - p.c[0] / p.c[1]) <= 1e-6 * p.c[0] / p.c[1]);
     cr_assert(fabs(reserve - r * r * p.left / denominator) <= 1e-6 * r * r * p.left / denominator + 1e-12);
+    /* The lever at rest: the hinge holds what gravity and the two pulls
+     * leave, F = m·g·ŷ − Σ T_i·(O_i − Q_i)/|O_i − Q_i|, with the tensions
+     * T_i = a_i·Fmax_i·f_L·f_V + Fmax_i·f_P of the activations found. A
+     * nail has the world's axes, so along and across are x and y. */
+    const rb_world *world = mu_model_world_to_read(model);
+    rb_vec2 expected = {0.0, rb_body_mass_data(world, mu_model_body(model, mu_model_part_body(model, 1))).mass * G};
+    for (int i = 0; i < 2; ++i) {
+        double active, passive;
+        cr_assert_eq(mu_muscle_isometric_forces(mu_model_built_muscle(model, i), world, a[i], &active, &passive),
+                     RB_OK);
+        const double dx = origin_x[i] - insertion[i], dy = origin_y[i], length = hypot(dx, dy);
+        expected.x -= (active + passive) * dx / length;
+        expected.y -= (active + passive) * dy / length;
+    }
+    cr_log_info("reaction (%.12g, %.12g) N, expected (%.12g, %.12g) N", load.force.x, load.force.y, expected.x,
+                expected.y);
+    cr_assert(fabs(load.force.x - expected.x) <= 1e-9 * rb_length(expected));
+    cr_assert(fabs(load.force.y - expected.y) <= 1e-9 * rb_length(expected));
+    cr_assert(fabs(load.along - load.force.x) <= 1e-12 * rb_length(expected) &&
+              fabs(load.across - load.force.y) <= 1e-12 * rb_length(expected));
+    cr_assert_eq(load.torque, 0.0);
     mu_model_destroy(model);
     mu_model_desc_destroy(desc);
 }
@@ -147,7 +172,8 @@ Test(static_optimization, two_agonists_share_as_the_lagrange_solution_for_p_3)
     }
     const double lambda = 0.5 * (low + high);
     double a[2], reserve;
-    solve_at_rest(model, 3.0, a, &reserve);
+    mu_joint_load load;
+    solve_at_rest(model, 3.0, a, &reserve, &load);
     for (int i = 0; i < 2; ++i) {
         const double expected = sqrt(lambda * p.c[i] / 3.0);
         cr_log_info("p = 3: a_%d = %.12g, closed form %.12g", i + 1, a[i], expected);

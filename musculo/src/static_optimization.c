@@ -54,8 +54,8 @@ struct mu_static_optimizer {
     double *arms;                 /* [row][muscle], m */
     double *capacity;             /* [muscle]: C, N per unit activation */
     double *passive;              /* [muscle]: P, N */
+    double *tensions;             /* [muscle]: a·C + P, N */
     double *torques;              /* [hinge]: τ */
-    double *zeros;                /* [hinge]: a second array for inverse dynamics' unused hinges */
     mu_hinge_force *hinge_forces; /* [hinge] */
 };
 
@@ -171,12 +171,11 @@ static double torque_muscle_side(const mu_model *model, int t, const bool *turns
     return 0.0;
 }
 
-/* The side S of hinge h that leaves the ground, its sign, and what lies
- * on it; false (nothing kept) when both sides hold to the ground. */
-static rb_status add_hinge(mu_static_optimizer *o, int h, bool *in_problem)
+/* Puts hinge h in the problem when it is built and one of its sides
+ * leaves the ground (S): its sign, and what lies on S. */
+static rb_status add_hinge(mu_static_optimizer *o, int h)
 {
     const rb_joint_id joint = mu_model_hinge_joint(o->model, h);
-    *in_problem = false;
     if (rb_joint_id_is_null(joint)) {
         return RB_OK;
     }
@@ -205,7 +204,6 @@ static rb_status add_hinge(mu_static_optimizer *o, int h, bool *in_problem)
                 o->sigma[row] * torque_muscle_side(o->model, t, sides.turns);
         }
         o->problem++;
-        *in_problem = true;
     }
     mu_joint_sides_free(&sides);
     return RB_OK;
@@ -224,12 +222,12 @@ static rb_status allocate(mu_static_optimizer *o)
     o->arms = calloc(h * m, sizeof *o->arms);
     o->capacity = calloc(m, sizeof *o->capacity);
     o->passive = calloc(m, sizeof *o->passive);
+    o->tensions = calloc(m, sizeof *o->tensions);
     o->torques = calloc(h, sizeof *o->torques);
-    o->zeros = calloc(h, sizeof *o->zeros);
     o->hinge_forces = calloc(h, sizeof *o->hinge_forces);
     return o->hinge_of == NULL || o->sigma == NULL || o->path_turns == NULL || o->torque_sides == NULL ||
                    o->x == NULL || o->A == NULL || o->b == NULL || o->arms == NULL || o->capacity == NULL ||
-                   o->passive == NULL || o->torques == NULL || o->zeros == NULL || o->hinge_forces == NULL
+                   o->passive == NULL || o->tensions == NULL || o->torques == NULL || o->hinge_forces == NULL
                ? RB_ERR_OUT_OF_MEMORY
                : RB_OK;
 }
@@ -306,8 +304,7 @@ rb_status mu_static_optimizer_create(mu_model *model, const mu_static_optimizati
                                .hinges = mu_model_hinge_count(model)};
     status = allocate(o);
     for (int h = 0; status == RB_OK && h < o->hinges; ++h) {
-        bool in_problem;
-        status = add_hinge(o, h, &in_problem);
+        status = add_hinge(o, h);
     }
     status = status == RB_OK ? set_up_solver(o) : status;
     if (status != RB_OK) {
@@ -334,8 +331,8 @@ void mu_static_optimizer_destroy(mu_static_optimizer *o)
     free(o->arms);
     free(o->capacity);
     free(o->passive);
+    free(o->tensions);
     free(o->torques);
-    free(o->zeros);
     free(o->hinge_forces);
     free(o);
 }
@@ -471,7 +468,7 @@ static void fill_nan(const mu_static_optimizer *o, mu_static_frame *frame)
 /* The frame's outputs from x; whether the constraints hold. */
 static bool fill_frame(const mu_static_optimizer *o, mu_static_frame *frame)
 {
-    double tensions[MU_MODEL_MAX_OBJECTS];
+    double *tensions = o->tensions;
     for (int i = 0; i < o->actuators; ++i) {
         const double a = fmin(fmax(o->x[i], 0.0), 1.0);
         const double force =
