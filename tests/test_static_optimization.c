@@ -389,6 +389,8 @@ Test(optimize_command, refuses_bad_input_and_writes_nothing)
     write_file("fine.csv", "time_s,Shoulder.angle_deg,Elbow.angle_deg\n0,0,0\n0.1,0,0\n0.2,0,0\n0.3,0,0\n");
     expect_refused("optimize arm --motion fine.csv --level 2",
                    "model arm (variant \"All Muscles\", level 2): the model has no muscle or torque muscle built");
+    expect_refused("optimize arm --motion fine.csv --level 1",
+                   "model arm has no hinge at level 1 in variant \"All Muscles\": nothing to compute");
     expect_refused("optimize arm --motion fine.csv --exponent 0.5", "--exponent");
     expect_refused("optimize arm --motion fine.csv --exponent nan", "--exponent");
     expect_refused("optimize arm --motion fine.csv --exponent inf", "--exponent");

@@ -583,6 +583,16 @@ static int analyse(const optimize_options *opts, mu_model_desc *desc)
         fprintf(stderr, "sinew: building the model failed: %s\n", user_error());
         return EXIT_FAILURE;
     }
+    int built = 0;
+    for (int h = 0; h < mu_model_hinge_count(model); ++h) {
+        built += !rb_joint_id_is_null(mu_model_hinge_joint(model, h));
+    }
+    if (built == 0) {
+        fprintf(stderr, "sinew: model %s has no hinge at level %d in variant \"%s\": nothing to compute\n", desc->name,
+                opts->level, desc->variants[variant].name);
+        mu_model_destroy(model);
+        return EXIT_USAGE;
+    }
     mu_static_optimization_settings settings = mu_default_static_optimization_settings();
     settings.exponent = opts->exponent;
     settings.reserve_scale = opts->reserve;

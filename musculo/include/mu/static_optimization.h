@@ -28,8 +28,8 @@
  * torque only where the muscles cannot, and it is always reported.
  * Where the muscles can, the Lagrange conditions of the problem give
  * ρ_j = λ_j·R²/2 with λ_j the marginal cost of torque at hinge j, so the
- * reserve left is of order R²/(r·C)² of the torque: 1e-5 for R = 0.1 N·m
- * and the arm.
+ * reserve left is of order R²/(r·C)² of the torque, more where the
+ * activations are high: 1e-5 to 6e-4 N·m on the arm for R = 0.1 N·m.
  *
  * The problem is solved with NLopt's SLSQP (sequential least-squares
  * quadratic programming, D. Kraft, "A software package for sequential
