@@ -364,6 +364,43 @@ Test(optimize_command, shares_a_forward_runs_torques_among_the_arms_muscles)
     remove_dir();
 }
 
+/* The worm's torque muscle turns its top segment against the one below
+ * it, in zero gravity: inverse dynamics gives its torque back about
+ * Joint 5 (test_inverse_dynamics.c), so static optimization, with a
+ * reserve scale far below its 0.01 N·m peak, must find the exertion the
+ * run recruited: within 1e-4 from 0.5 s to 0.5 s before the end (2.1e-5
+ * measured), the torque muscle counted as an actuator with the sign of
+ * its body and reaction body's sides. */
+Test(optimize_command, finds_the_worms_torque_muscle_exertion)
+{
+    cr_assert_not_null(mkdtemp(dir));
+    cr_assert_eq(run_sinew("run worm --recruit \"Torque Muscle=100\" --duration 3"), 0, "%s", errors);
+    cr_assert_eq(run_sinew("optimize worm --motion worm.csv --reserve 0.0001"), 0, "%s", errors);
+    csv_table run, found;
+    char path[512], error[1024];
+    snprintf(path, sizeof path, "%s/worm.csv", dir);
+    cr_assert(csv_table_read(path, &run, error, sizeof error), "%s", error);
+    snprintf(path, sizeof path, "%s/worm-optimize.csv", dir);
+    cr_assert(csv_table_read(path, &found, error, sizeof error), "%s", error);
+    const int time = csv_table_find(&run, "time_s"), recruited = csv_table_find(&run, "Torque Muscle.exertion"),
+              exertion = csv_table_find(&found, "Torque Muscle.exertion");
+    cr_assert(time >= 0 && recruited >= 0 && exertion >= 0);
+    cr_assert_eq(run.row_count, found.row_count);
+    double worst = 0.0;
+    for (long r = 0; r < run.row_count; ++r) {
+        const double t = run.columns[time].values[r];
+        if (t > 0.5 && t < 2.5) {
+            worst = fmax(worst, fabs(found.columns[exertion].values[r] - run.columns[recruited].values[r]));
+        }
+    }
+    cr_log_info("worm: worst |exertion found − recruited| %.3g", worst);
+    cr_expect(run.columns[recruited].values[run.row_count / 2] > 0.05);
+    cr_expect(worst <= 1e-4, "worst |exertion found − recruited| %g", worst);
+    csv_table_free(&run);
+    csv_table_free(&found);
+    remove_dir();
+}
+
 static void expect_refused(const char *args, const char *message)
 {
     cr_expect_neq(run_sinew(args), 0, "%s succeeded", args);
