@@ -31,7 +31,7 @@ install(EXPORT sinewTargets
         COMPONENT development)
 
 # sinewConfig.cmake: a static libmu.a needs its private dependencies (GSL,
-# jansson, libpng) at the consumer's link, found with pkg-config.
+# jansson, libpng, NLopt) at the consumer's link, found with pkg-config.
 set(SINEW_SHARED_LIBRARIES ${BUILD_SHARED_LIBS})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/sinewConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/sinewConfig.cmake

@@ -36,6 +36,7 @@
 #include "mu/muscle.h"
 #include "mu/muscle_statics.h"
 #include "mu/pennation.h"
+#include "mu/static_optimization.h"
 #include "mu/tendon.h"
 #include "mu/torque_actuator.h"
 #include "mu/version.h"
@@ -426,6 +427,94 @@ static void storm_model_inverse(void)
     mu_model_desc_destroy(desc);
 }
 
+static void storm_static_optimization(void)
+{
+    mu_model_desc *desc = load("arm");
+    mu_model *model = build(desc);
+    mu_static_optimizer *optimizer = NULL;
+    const mu_static_optimization_settings good = mu_default_static_optimization_settings();
+    mu_static_optimization_settings settings = good;
+    REFUSED_STATUS(mu_static_optimizer_create(model, &settings, NULL), "mu_static_optimizer_create", "out");
+    REFUSED_CREATE(mu_static_optimizer_create(NULL, &settings, &optimizer), optimizer, "mu_static_optimizer_create",
+                   "model");
+    REFUSED_CREATE(mu_static_optimizer_create(model, NULL, &optimizer), optimizer, "mu_static_optimizer_create",
+                   "settings");
+    double bad;
+    FOR_BAD_DOUBLES(bad)
+    {
+        settings = good;
+        settings.exponent = bad;
+        REFUSED_CREATE(mu_static_optimizer_create(model, &settings, &optimizer), optimizer,
+                       "mu_static_optimizer_create", "exponent");
+        settings = good;
+        settings.reserve_scale = bad;
+        REFUSED_CREATE(mu_static_optimizer_create(model, &settings, &optimizer), optimizer,
+                       "mu_static_optimizer_create", "reserve_scale");
+        settings = good;
+        settings.tolerance = bad;
+        REFUSED_CREATE(mu_static_optimizer_create(model, &settings, &optimizer), optimizer,
+                       "mu_static_optimizer_create", "tolerance");
+    }
+    settings = good;
+    settings.exponent = 0.99;
+    REFUSED_CREATE(mu_static_optimizer_create(model, &settings, &optimizer), optimizer, "mu_static_optimizer_create",
+                   "exponent");
+    settings = good;
+    settings.reserve_scale = -1.0;
+    REFUSED_CREATE(mu_static_optimizer_create(model, &settings, &optimizer), optimizer, "mu_static_optimizer_create",
+                   "reserve_scale");
+    settings = good;
+    settings.tolerance = 1.0;
+    REFUSED_CREATE(mu_static_optimizer_create(model, &settings, &optimizer), optimizer, "mu_static_optimizer_create",
+                   "tolerance");
+    settings = good;
+    settings.max_evaluations = 0;
+    REFUSED_CREATE(mu_static_optimizer_create(model, &settings, &optimizer), optimizer, "mu_static_optimizer_create",
+                   "max_evaluations");
+    REFUSED_VALUE(mu_static_optimizer_actuator_count(NULL), -1, "mu_static_optimizer_actuator_count", "optimizer");
+    REFUSED_VALUE(mu_static_optimizer_result_name(99), NULL, "mu_static_optimizer_result_name", "solver_result");
+    cr_expect_str_eq(mu_static_optimizer_result_name(4), "XTOL_REACHED");
+    mu_static_optimizer_destroy(NULL);
+
+    cr_assert_eq(mu_static_optimizer_create(model, &good, &optimizer), RB_OK, "%s", rb_last_error());
+    cr_expect_eq(mu_static_optimizer_actuator_count(optimizer), 5);
+    double zeros[16] = {0}, angles[16] = {0}, values[16];
+    cr_assert_leq(mu_model_hinge_count(model), 16);
+    angles[0] = -90.0;
+    angles[1] = 90.0;
+    mu_static_frame frame = {.net_torques = values};
+    const char *f = "mu_static_optimizer_solve";
+    REFUSED_STATUS(mu_static_optimizer_solve(NULL, angles, zeros, zeros, &frame), f, "optimizer");
+    REFUSED_STATUS(mu_static_optimizer_solve(optimizer, NULL, zeros, zeros, &frame), f, "angles_deg");
+    REFUSED_STATUS(mu_static_optimizer_solve(optimizer, angles, NULL, zeros, &frame), f, "rates");
+    REFUSED_STATUS(mu_static_optimizer_solve(optimizer, angles, zeros, NULL, &frame), f, "accelerations");
+    REFUSED_STATUS(mu_static_optimizer_solve(optimizer, angles, zeros, zeros, NULL), f, "frame");
+    FOR_BAD_DOUBLES(bad)
+    {
+        double broken[16] = {0};
+        broken[1] = bad;
+        REFUSED_STATUS(mu_static_optimizer_solve(optimizer, broken, zeros, zeros, &frame), f, "angles_deg");
+        REFUSED_STATUS(mu_static_optimizer_solve(optimizer, angles, broken, zeros, &frame), f, "rates");
+        REFUSED_STATUS(mu_static_optimizer_solve(optimizer, angles, zeros, broken, &frame), f, "accelerations");
+    }
+    angles[1] = 151.0;
+    REFUSED_STATUS(mu_static_optimizer_solve(optimizer, angles, zeros, zeros, &frame), f, "Elbow");
+    angles[1] = 90.0;
+    /* The optimizer still solves after all that. */
+    cr_expect_eq(mu_static_optimizer_solve(optimizer, angles, zeros, zeros, &frame), RB_OK, "%s", rb_last_error());
+    cr_expect(frame.solved && isfinite(values[1]));
+    mu_static_optimizer_destroy(optimizer);
+    mu_model_destroy(model);
+    /* No actuators: the arm at level 2. */
+    mu_model_options options = mu_default_model_options();
+    options.level = 2;
+    cr_assert_eq(mu_model_create(desc, &options, &model), RB_OK);
+    REFUSED_CREATE(mu_static_optimizer_create(model, &good, &optimizer), optimizer, "mu_static_optimizer_create",
+                   "no muscle");
+    mu_model_destroy(model);
+    mu_model_desc_destroy(desc);
+}
+
 static void storm_bone_stress(void)
 {
     mu_model_desc *desc = load("arm");
@@ -749,6 +838,14 @@ static void storm_muscle_use(void)
                    "passive");
     REFUSED_STATUS(mu_muscle_isometric_forces(rig.muscle, rig.world, 1.5, &active, &passive),
                    "mu_muscle_isometric_forces", "activation");
+    REFUSED_STATUS(mu_muscle_forces_at_speed(NULL, rig.world, 0.0, &active, &passive), "mu_muscle_forces_at_speed",
+                   "muscle");
+    REFUSED_STATUS(mu_muscle_forces_at_speed(rig.muscle, NULL, 0.0, &active, &passive), "mu_muscle_forces_at_speed",
+                   "world");
+    REFUSED_STATUS(mu_muscle_forces_at_speed(rig.muscle, rig.world, 0.0, NULL, &passive), "mu_muscle_forces_at_speed",
+                   "active_per_activation");
+    REFUSED_STATUS(mu_muscle_forces_at_speed(rig.muscle, rig.world, 0.0, &active, NULL), "mu_muscle_forces_at_speed",
+                   "passive");
     double bad;
     FOR_BAD_DOUBLES(bad)
     {
@@ -758,6 +855,8 @@ static void storm_muscle_use(void)
         REFUSED_STATUS(mu_muscle_advance(rig.muscle, rig.world, bad), "mu_muscle_advance", "h");
         REFUSED_STATUS(mu_muscle_isometric_forces(rig.muscle, rig.world, bad, &active, &passive),
                        "mu_muscle_isometric_forces", "activation");
+        REFUSED_STATUS(mu_muscle_forces_at_speed(rig.muscle, rig.world, bad, &active, &passive),
+                       "mu_muscle_forces_at_speed", "path_speed");
     }
     REFUSED_STATUS(mu_muscle_prepare(rig.muscle, rig.world, 0.0), "mu_muscle_prepare", "h");
     /* The muscle still works. */
@@ -971,6 +1070,9 @@ static const api_storm storms[] = {
      "mu_model_joint_count",
      storm_model_running},
     {"mu_model_check_tree mu_model_inverse_dynamics", storm_model_inverse},
+    {"mu_default_static_optimization_settings mu_static_optimizer_create mu_static_optimizer_destroy "
+     "mu_static_optimizer_actuator_count mu_static_optimizer_solve mu_static_optimizer_result_name",
+     storm_static_optimization},
     {"mu_model_weight_mass mu_model_bone_beam mu_model_bone_stress mu_model_bone_section mu_model_bone_sections "
      "mu_model_bone_balance mu_model_bone_acceleration",
      storm_bone_stress},
@@ -1004,7 +1106,7 @@ static const api_storm storms[] = {
     {"mu_muscle_create mu_muscle_destroy", storm_muscle_create},
     {"mu_muscle_set_activation mu_muscle_set_target_tension mu_muscle_solve_equilibrium mu_muscle_max_force "
      "mu_muscle_tendon_length mu_muscle_cable mu_muscle_prepare mu_muscle_measure mu_muscle_advance mu_muscle_read "
-     "mu_muscle_isometric_forces",
+     "mu_muscle_isometric_forces mu_muscle_forces_at_speed",
      storm_muscle_use},
     {"mu_max_force_from_pcsa mu_pcsa_from_volume mu_pcsa_from_anatomical mu_fibre_length_from_sarcomeres "
      "mu_fibre_length_normalized",

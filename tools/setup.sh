@@ -14,12 +14,13 @@ set -euo pipefail
 packages=(
     build-essential  # gcc, make, libc headers
     cmake            # >= 3.25 (CMakePresets.json version 6)
-    pkg-config       # finds criterion, gsl, jansson, libpng, cairo and gtk4
+    pkg-config       # finds criterion, gsl, jansson, libpng, nlopt, cairo and gtk4
     libgsl-dev       # GNU Scientific Library
     libcriterion-dev # unit tests (tests/)
     libjansson-dev   # model files (musculo/)
     libcairo2-dev    # charts: PNG and SVG figures (tools/chart/), the viewer's drawing
     libpng-dev       # motor-pool profile images (musculo/: libmu reads PNGs with it, not with Cairo)
+    libnlopt-dev     # static optimization (musculo/: NLopt's SLSQP solves each frame's activations)
     zlib1g-dev       # crc32 for the text chunks of PNG figures (tools/chart/)
     libgtk-4-dev     # the interactive viewer, `sinew view` (tools/viewer/): built only when present
     xvfb             # xvfb-run: the viewer's test runs it on a virtual X display

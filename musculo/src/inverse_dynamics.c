@@ -4,6 +4,7 @@
 #include <stdlib.h>
 
 #include "arguments.h"
+#include "inverse_dynamics_forces.h"
 #include "joint_sides.h"
 #include "mu/inverse_dynamics.h"
 
@@ -246,10 +247,11 @@ static void forward_pass(const mu_model *model, const joint_tree *tree, const do
     }
 }
 
-rb_status mu_model_inverse_dynamics(const mu_model *model, const double *angles_deg, const double *rates,
-                                    const double *accelerations, double *torques)
+/* The torques, and when `forces` is not NULL the forces
+ * (inverse_dynamics_forces.h), as `function`. */
+static rb_status solve(const mu_model *model, const char *f, const double *angles_deg, const double *rates,
+                       const double *accelerations, double *torques, mu_hinge_force *forces)
 {
-    const char *f = "mu_model_inverse_dynamics";
     if (mu_refuse_null(f, "model", model) || mu_refuse_null(f, "angles_deg", angles_deg) ||
         mu_refuse_null(f, "rates", rates) || mu_refuse_null(f, "accelerations", accelerations) ||
         mu_refuse_null(f, "torques", torques)) {
@@ -272,7 +274,8 @@ rb_status mu_model_inverse_dynamics(const mu_model *model, const double *angles_
     body_motion *motion = malloc(((size_t)tree.body_count + 1) * sizeof *motion);
     rb_vec2 *pivots = malloc(((size_t)tree.edge_count + 1) * sizeof *pivots);
     double *sums = calloc((size_t)tree.edge_count + 1, sizeof *sums);
-    if (motion == NULL || pivots == NULL || sums == NULL) {
+    rb_vec2 *force_sums = calloc((size_t)tree.edge_count + 1, sizeof *force_sums);
+    if (motion == NULL || pivots == NULL || sums == NULL || force_sums == NULL) {
         status = rb_report_error(RB_ERR_OUT_OF_MEMORY, "%s: out of memory", f);
     } else {
         forward_pass(model, &tree, angles_deg, rates, accelerations, motion, pivots);
@@ -297,6 +300,7 @@ rb_status mu_model_inverse_dynamics(const mu_model *model, const double *angles_
             const double spin = mass.rotational_inertia * (m->alpha + angular_drag * m->omega);
             for (int at = b, e = tree.parent_edge[b]; e >= 0; e = tree.parent_edge[at]) {
                 sums[e] += spin + rb_cross(rb_sub(m->centre, pivots[e]), force);
+                force_sums[e] = rb_add(force_sums[e], force);
                 at = tree.edges[e].a == at ? tree.edges[e].b : tree.edges[e].a;
             }
         }
@@ -307,12 +311,30 @@ rb_status mu_model_inverse_dynamics(const mu_model *model, const double *angles_
             const tree_edge *edge = &tree.edges[tree.parent_edge[v]];
             if (edge->hinge >= 0) {
                 torques[edge->hinge] = v == edge->b ? sums[tree.parent_edge[v]] : -sums[tree.parent_edge[v]];
+                if (forces != NULL) {
+                    forces[edge->hinge] =
+                        (mu_hinge_force){.moving = force_sums[tree.parent_edge[v]], .b_side_moves = v == edge->b};
+                }
             }
         }
     }
     free(motion);
     free(pivots);
     free(sums);
+    free(force_sums);
     tree_free(&tree);
     return status;
+}
+
+rb_status mu_model_inverse_dynamics(const mu_model *model, const double *angles_deg, const double *rates,
+                                    const double *accelerations, double *torques)
+{
+    return solve(model, "mu_model_inverse_dynamics", angles_deg, rates, accelerations, torques, NULL);
+}
+
+rb_status mu_inverse_dynamics_with_forces(const mu_model *model, const char *function, const double *angles_deg,
+                                          const double *rates, const double *accelerations, double *torques,
+                                          mu_hinge_force *forces)
+{
+    return solve(model, function, angles_deg, rates, accelerations, torques, forces);
 }

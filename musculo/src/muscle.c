@@ -596,3 +596,32 @@ rb_status mu_muscle_isometric_forces(const mu_muscle *muscle, const rb_world *wo
     *passive = muscle->max_force * mu_curve_passive_length(muscle->curves, l) * cosine;
     return RB_OK;
 }
+
+rb_status mu_muscle_forces_at_speed(const mu_muscle *muscle, const rb_world *world, double path_speed,
+                                    double *active_per_activation, double *passive)
+{
+    const char *f = "mu_muscle_forces_at_speed";
+    if (mu_refuse_null(f, "muscle", muscle) || mu_refuse_null(f, "world", world) ||
+        mu_refuse_non_finite(f, "path_speed", path_speed) ||
+        mu_refuse_null(f, "active_per_activation", active_per_activation) || mu_refuse_null(f, "passive", passive)) {
+        return RB_ERR_INVALID_ARGUMENT;
+    }
+    if (muscle->compliant) {
+        return rb_report_error(RB_ERR_INVALID_ARGUMENT,
+                               "%s: the muscle has a compliant tendon, whose fibre length is a state of its own and "
+                               "not fixed by the pose; expected a rigid tendon",
+                               f);
+    }
+    const double path = rb_cable_length(world, muscle->cable);
+    if (!isfinite(path)) {
+        return RB_ERR_INVALID_ARGUMENT; /* rb_cable_length reported why */
+    }
+    const double fibre_length = rigid_fibre_length(muscle, path);
+    const double cosine = pennation_cosine(fibre_length, muscle->width);
+    const double l = fibre_length / muscle->rest_length;
+    const double v = path_speed * cosine / muscle->max_velocity;
+    *active_per_activation =
+        muscle->max_force * mu_curve_active_length(muscle->curves, l) * mu_curve_velocity(muscle->curves, v) * cosine;
+    *passive = muscle->max_force * mu_curve_passive_length(muscle->curves, l) * cosine;
+    return RB_OK;
+}

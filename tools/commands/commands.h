@@ -21,6 +21,7 @@ int cmd_plot(int argc, char **argv);        /* sinew plot CSV [options] */
 int cmd_experiment(int argc, char **argv);  /* sinew experiment NAME [options] */
 int cmd_moment_arms(int argc, char **argv); /* sinew moment-arms MODEL --hinge NAME [options] */
 int cmd_inverse(int argc, char **argv);     /* sinew inverse MODEL --motion FILE [options] */
+int cmd_optimize(int argc, char **argv);    /* sinew optimize MODEL --motion FILE [options] */
 int cmd_view(int argc, char **argv);        /* sinew view [MODEL] [options]: runs sinew-view */
 
 #endif

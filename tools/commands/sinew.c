@@ -30,6 +30,8 @@ static const command commands[] = {
      cmd_moment_arms},
     {"inverse", "MODEL --motion FILE [options]", "inverse dynamics: net hinge torques of a motion (CSV, figure)",
      cmd_inverse},
+    {"optimize", "MODEL --motion FILE [options]", "static optimization: muscle activations of a motion (CSV, figure)",
+     cmd_optimize},
     {"experiment", "NAME [options]", "run an experiment: a CSV, its figure and a few figures", cmd_experiment},
     {"view", "[MODEL] [options]", "the interactive viewer (GTK 4): models and engine scenes", cmd_view},
     {"version", "", "print the version (also --version)", cmd_version},

@@ -66,6 +66,7 @@ int experiment_e4_summation(const experiment *self, const experiment_options *op
 int experiment_c1_hill_curves(const experiment *self, const experiment_options *options);
 int experiment_p1_twitch_tetanus(const experiment *self, const experiment_options *options);
 int experiment_r1_recruitment(const experiment *self, const experiment_options *options);
+int experiment_loop_round_trip(const experiment *self, const experiment_options *options);
 
 /* Writes the table as DIR/STEM.csv and the figure as DIR/STEM.png and
  * DIR/STEM.svg, and prints their paths; returns 0 or EXIT_FAILURE after

@@ -20,6 +20,10 @@ const experiment experiment_list[] = {
      EXPERIMENT_P1_MAX_PULSE_WIDTH, experiment_p1_twitch_tetanus, true},
     {"r1", "r1_recruitment", "recruitment: the worm's motor pool, exertion against recruited neurons", 0.0,
      experiment_r1_recruitment, false},
+    {"loop", "loop_round_trip",
+     "round trip on the arm: a known pattern, its motion, inverse dynamics, static optimization, a run with the "
+     "activations found",
+     0.0, experiment_loop_round_trip, false},
 };
 const int experiment_count = sizeof experiment_list / sizeof experiment_list[0];
 

@@ -150,6 +150,19 @@ MU_API rb_status mu_muscle_solve_equilibrium(mu_muscle *muscle, const rb_world *
 MU_API rb_status mu_muscle_isometric_forces(const mu_muscle *muscle, const rb_world *world, double activation,
                                             double *active, double *passive);
 
+/** The forces along the path (N, >= 0) of a muscle with a rigid tendon
+ * whose path has its present length and lengthens at `path_speed` (m/s,
+ * finite, negative while it shortens), its state left as it is: per unit
+ * activation the active part Fmax·f_L(l̃)·f_V(ṽ)·cos α (the active force
+ * at activation a is a times it), and the passive part Fmax·f_P(l̃)·cos α,
+ * with ṽ = L'·cos α/Vmax the fibre's normalized speed. For static
+ * optimization (static_optimization.h), where the pose and its rates fix
+ * the force a muscle can give. A compliant tendon's fibre length is a
+ * state of its own, not fixed by the pose: refused with
+ * RB_ERR_INVALID_ARGUMENT and a message. */
+MU_API rb_status mu_muscle_forces_at_speed(const mu_muscle *muscle, const rb_world *world, double path_speed,
+                                           double *active_per_activation, double *passive);
+
 MU_API double mu_muscle_max_force(const mu_muscle *muscle); /**< N */
 /** m: the rigid tendon's length, or the compliant tendon's slack length. */
 MU_API double mu_muscle_tendon_length(const mu_muscle *muscle);
