@@ -11,7 +11,6 @@
 #include <errno.h>
 #include <math.h>
 #include <stdbool.h>
-#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,6 +24,7 @@
 #include "control_file.h"
 #include "controls.h"
 #include "load_peaks.h"
+#include "muscle_parameter.h"
 #include "progress.h"
 #include "recorder.h"
 #include "run_summary.h"
@@ -422,23 +422,6 @@ static int engine_failure(const char *what)
     return EXIT_FAILURE;
 }
 
-/* A muscle parameter --muscle may set, with the range the model file's
- * format gives it (docs/model-format.md). */
-typedef struct muscle_parameter {
-    const char *name;
-    const char *unit;
-    double min, max;
-    size_t offset; /* of the double in mu_model_muscle */
-} muscle_parameter;
-
-static const muscle_parameter muscle_parameters[] = {
-    {"max_force", "N", 0.001, 1e6, offsetof(mu_model_muscle, max_force)},
-    {"max_velocity", "m/s", 0.001, 100.0, offsetof(mu_model_muscle, max_velocity)},
-    {"pennation_angle", "deg", 0.0, 80.0, offsetof(mu_model_muscle, pennation_angle)},
-    {"activation_time", "s", 1e-4, 10.0, offsetof(mu_model_muscle, activation_time)},
-    {"deactivation_time", "s", 1e-4, 10.0, offsetof(mu_model_muscle, deactivation_time)},
-};
-
 /* Sets the description's muscle parameters named by --muscle
  * NAME.PARAM=VALUE, before the model is built from it (so a max_force
  * replaces the one the file gives or derives); returns 0 or an exit
@@ -464,19 +447,11 @@ static int apply_muscle_settings(const run_options *opts, mu_model_desc *desc)
             fprintf(stderr, "sinew: --muscle \"%s\": the model has no muscle \"%s\"\n", text, name);
             return EXIT_USAGE;
         }
-        const muscle_parameter *parameter = NULL;
         size_t parameter_length = (size_t)(equals - dot - 1);
-        for (size_t p = 0; p < sizeof muscle_parameters / sizeof muscle_parameters[0]; ++p) {
-            if (strlen(muscle_parameters[p].name) == parameter_length &&
-                strncmp(muscle_parameters[p].name, dot + 1, parameter_length) == 0) {
-                parameter = &muscle_parameters[p];
-            }
-        }
+        const muscle_parameter *parameter = muscle_parameter_find(dot + 1, parameter_length);
         if (parameter == NULL) {
-            fprintf(stderr,
-                    "sinew: --muscle \"%s\": unknown parameter \"%.*s\" (max_force, max_velocity, pennation_angle, "
-                    "activation_time or deactivation_time)\n",
-                    text, (int)parameter_length, dot + 1);
+            fprintf(stderr, "sinew: --muscle \"%s\": unknown parameter \"%.*s\" (" MUSCLE_PARAMETER_NAMES ")\n", text,
+                    (int)parameter_length, dot + 1);
             return EXIT_USAGE;
         }
         double value;
@@ -488,7 +463,7 @@ static int apply_muscle_settings(const run_options *opts, mu_model_desc *desc)
             fprintf(stderr, "sinew: --muscle \"%s\": %s\n", text, error);
             return EXIT_USAGE;
         }
-        *(double *)((char *)&desc->muscles[ref.index] + parameter->offset) = value;
+        *muscle_parameter_field(parameter, &desc->muscles[ref.index]) = value;
     }
     return 0;
 }

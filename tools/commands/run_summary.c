@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: MIT */
+#define _POSIX_C_SOURCE 200809L /* strdup */
 /* The JSON summary of a run (run_summary.h), built with jansson. */
 #include <jansson.h>
 #include <math.h>
