@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* A double as the shortest decimal text that reads back as the same
- * double: 0.1, not 0.10000000000000001; 17 significant digits at most
+ * double: 0.1, not 0.10000000000000001; 10, not 1e+01; 17 significant
+ * digits at most
  * (IEEE 754 doubles need no more; Steele and White, "How to Print
  * Floating-Point Numbers Accurately", 1990). For names and tables that
  * must be both readable and exact.
