@@ -33,6 +33,11 @@ packages=(
     libclang-rt-14-dev # clang's libFuzzer and sanitizer runtimes: the fuzz targets (tools/fuzz.sh)
     binutils         # nm and readelf: what the shared libraries export
     locales          # de_DE.UTF-8, a decimal-comma locale the locale test runs under (generated below)
+    parallel         # GNU parallel: test_sweep runs `sinew sweep --emit parallel`'s job list with it
+    slurmctld        # Slurm's controller, slurmd its node daemon and slurm-client sbatch/sinfo:
+    slurmd           #   tests/slurm/sweep_on_slurm.sh starts a one-node cluster and runs a sweep's
+    slurm-client     #   `sbatch --array` script on it
+    munge            # munged: Slurm's authentication, started by that test with a key of its own
 )
 # ---- Only with --peers: the peer engines' benchmark harnesses. ------------
 peer_packages=(
