@@ -181,8 +181,12 @@ static int prepare_out(const sweep_plan *plan, bool create, char *absolute)
     /* A file made and removed, as the runs will make theirs. */
     char probe[ATOMIC_FILE_PATH_MAX];
     char error[ATOMIC_FILE_ERROR_SIZE];
-    snprintf(probe, sizeof probe, "%s/summary.csv", absolute);
+    int written = snprintf(probe, sizeof probe, "%s/summary.csv", absolute);
     atomic_file file = {0};
+    if (written < 0 || (size_t)written >= sizeof probe) {
+        fprintf(stderr, "sinew: %s: %s: the output folder's path %s is too long\n", plan->file, named, absolute);
+        return EXIT_FAILURE;
+    }
     if (!atomic_file_open(&file, probe, error, sizeof error)) {
         fprintf(stderr, "sinew: %s: %s: the output folder %s cannot be written: %s\n", plan->file, named, out, error);
         return EXIT_FAILURE;
@@ -271,8 +275,7 @@ static int sweep(const sweep_plan *plan, const sweep_options *opts)
     program[length] = '\0';
     bool *complete = calloc((size_t)plan->run_count, sizeof *complete);
     int *todo = calloc((size_t)plan->run_count, sizeof *todo);
-    int *status = calloc((size_t)plan->run_count, sizeof *status);
-    if (complete == NULL || todo == NULL || status == NULL) {
+    if (complete == NULL || todo == NULL) {
         fputs("sinew: out of memory\n", stderr);
         code = EXIT_FAILURE;
     }
@@ -291,7 +294,7 @@ static int sweep(const sweep_plan *plan, const sweep_options *opts)
                plan->run_count - count, count, jobs);
         fflush(stdout);
         char error[ATOMIC_FILE_ERROR_SIZE];
-        if (!sweep_pool_run(plan, todo, count, program, out, jobs, status, error, sizeof error)) {
+        if (!sweep_pool_run(plan, todo, count, program, out, jobs, error, sizeof error)) {
             fprintf(stderr, "sinew: %s\n", error);
             code = EXIT_FAILURE;
         } else {
@@ -300,7 +303,6 @@ static int sweep(const sweep_plan *plan, const sweep_options *opts)
     }
     free(complete);
     free(todo);
-    free(status);
     return code;
 }
 

@@ -7,13 +7,11 @@
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
-#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli/model_source.h"
-#include "cli/user_error.h"
 #include "controls.h"
 #include "mu/motor_pool.h"
 #include "muscle_parameter.h"
@@ -173,11 +171,22 @@ static bool find_kind(reader *r, parameter *p)
     return fail(r, p->path, "unknown parameter \"%s\" (" PARAMETER_NAMES ")", key);
 }
 
+/* "NAME=VALUE", allocated. */
+static char *name_equals(const char *name, const char *value)
+{
+    size_t length = strlen(name) + strlen(value) + 2;
+    char *text = malloc(length);
+    if (text != NULL) {
+        snprintf(text, length, "%s=%s", name, value);
+    }
+    return text;
+}
+
 /* Checks one value of `p` at `path` and keeps its texts in the next slot. */
 static bool add_value(reader *r, parameter *p, const json_t *value, const char *path)
 {
     const parameter_kind *kind = p->kind;
-    char text[PATH_MAX + 64];
+    char text[PATH_MAX];
     char name_text[PATH_MAX];
     double min = p->muscle != NULL ? p->muscle->min : kind->min;
     double max = p->muscle != NULL ? p->muscle->max : kind->max;
@@ -251,19 +260,11 @@ static bool add_value(reader *r, parameter *p, const json_t *value, const char *
         break;
     }
     }
-    if (kind->kind == VALUE_FILE) {
-        const char *slash = strrchr(text, '/');
-        snprintf(name_text, sizeof name_text, "%s", slash != NULL ? slash + 1 : text);
-    } else {
-        snprintf(name_text, sizeof name_text, "%s", text);
-    }
-    if (kind->prefix) {
-        /* NAME=VALUE, NAME.PARAMETER=VALUE: the option's value. */
-        char option_value[PATH_MAX + 2048];
-        snprintf(option_value, sizeof option_value, "%s=%s", p->key + strlen(kind->key), text);
-        snprintf(text, sizeof text, "%s", option_value);
-    }
-    p->texts[p->value_count] = strdup(text);
+    /* A control file is named by its file name alone. */
+    const char *slash = kind->kind == VALUE_FILE ? strrchr(text, '/') : NULL;
+    snprintf(name_text, sizeof name_text, "%s", slash != NULL ? slash + 1 : text);
+    /* NAME=VALUE, NAME.PARAMETER=VALUE: the option's value. */
+    p->texts[p->value_count] = kind->prefix ? name_equals(p->key + strlen(kind->key), text) : strdup(text);
     p->name_texts[p->value_count] = name_safe(name_text);
     if (p->texts[p->value_count] == NULL || p->name_texts[p->value_count] == NULL) {
         return fail(r, path, "out of memory");

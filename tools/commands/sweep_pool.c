@@ -51,7 +51,7 @@ static pid_t start_run(const sweep_run *run, const char *program, const char *ou
 }
 
 bool sweep_pool_run(const sweep_plan *plan, const int *todo, int count, const char *program, const char *out_dir,
-                    int jobs, int *status, char *error, size_t error_size)
+                    int jobs, char *error, size_t error_size)
 {
     pid_t *pids = calloc((size_t)count + 1, sizeof *pids);
     if (pids == NULL) {
@@ -63,7 +63,6 @@ bool sweep_pool_run(const sweep_plan *plan, const int *todo, int count, const ch
         while (running < jobs && next < count) {
             pids[next] = start_run(&plan->runs[todo[next]], program, out_dir);
             if (pids[next] < 0) {
-                status[next] = -1;
                 ++done;
             } else {
                 ++running;
@@ -86,8 +85,7 @@ bool sweep_pool_run(const sweep_plan *plan, const int *todo, int count, const ch
         for (int k = 0; k < next; ++k) {
             if (pids[k] == pid) {
                 pids[k] = 0;
-                status[k] = WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : -1;
-                if (status[k] != 0) {
+                if (!WIFEXITED(wait_status) || WEXITSTATUS(wait_status) != 0) {
                     fprintf(stderr, "sinew: run %s failed (%s %d; its messages are in %s.log)\n",
                             plan->runs[todo[k]].name, WIFEXITED(wait_status) ? "exit status" : "signal",
                             WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : WTERMSIG(wait_status),

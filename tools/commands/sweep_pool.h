@@ -15,12 +15,11 @@
 #include "sweep_plan.h"
 
 /* Runs `plan->runs[todo[k]]` for k in 0 .. count - 1 with `program` (the
- * sinew program) in `out_dir`, `jobs` (>= 1) at a time, and stores each
- * one's exit status in `status[k]` (-1 when it could not be started or was
- * killed by a signal). Prints a line on stderr for each run that fails.
+ * sinew program) in `out_dir`, `jobs` (>= 1) at a time. Prints a line on
+ * stderr for each run that fails (the table records it: sweep_gather.h).
  * Returns false, `error` saying why, only when the pool itself fails
  * (waiting for a child). */
 bool sweep_pool_run(const sweep_plan *plan, const int *todo, int count, const char *program, const char *out_dir,
-                    int jobs, int *status, char *error, size_t error_size);
+                    int jobs, char *error, size_t error_size);
 
 #endif
