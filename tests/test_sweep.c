@@ -423,6 +423,10 @@ Test(sweep, bad_sweep_files_are_refused_before_any_run)
     check_refused("{\"model\": \"arm\", \"grid\": {\"weight\": [0, 1]}, \"figure\": {\"x\": \"level\", \"y\": "
                   "\"Elbow.final_angle_deg\"}}",
                   "", "$.figure.x: \"level\" is not a parameter the sweep varies");
+    check_refused("{\"model\": \"arm\", \"grid\": {\"weight\": [0, 1], \"activation.Biceps Long\": {\"start\": "
+                  "0, \"stop\": 1, \"count\": 65}}, \"figure\": {\"x\": \"weight\", \"y\": \"Elbow.final_angle_deg\", "
+                  "\"group\": \"activation.Biceps Long\"}}",
+                  "", "$.figure.group: \"activation.Biceps Long\" has more than 64 values");
     check_refused("{\"model\": \"arm\", \"grid\": {\"weight\": [0, 1]}, \"extra\": 1}", "", "$.extra: unknown key");
     check_refused("{\"model\": \"arms\", \"grid\": {\"weight\": [0, 1]}}", "", "$.model: ");
     check_refused("{\"model\": \"arm\", \"grid\": {\"weight\": [0, 1]}}", "--out /proc",

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "chart/chart.h"
 #include "cli/model_source.h"
 #include "controls.h"
 #include "mu/motor_pool.h"
@@ -633,6 +634,25 @@ static bool check_names_unique(reader *r, const sweep_plan *plan)
     return true;
 }
 
+/* How many different values varied parameter `index` takes, counted up
+ * to CHART_MAX_SERIES + 1. */
+static int distinct_values(const sweep_plan *plan, int index)
+{
+    const char *seen[CHART_MAX_SERIES + 1];
+    int count = 0;
+    for (int k = 0; k < plan->run_count && count <= CHART_MAX_SERIES; ++k) {
+        const char *value = plan->runs[k].values[index];
+        bool known = false;
+        for (int s = 0; s < count && !known; ++s) {
+            known = strcmp(seen[s], value) == 0;
+        }
+        if (!known) {
+            seen[count++] = value;
+        }
+    }
+    return count;
+}
+
 static bool read_figure(reader *r, const json_t *root, sweep_plan *plan)
 {
     const json_t *figure = json_object_get(root, "figure");
@@ -664,6 +684,10 @@ static bool read_figure(reader *r, const json_t *root, sweep_plan *plan)
         if (strcmp(key, "x") == 0 && !plan->varied_numeric[found]) {
             return fail(r, path, "\"%s\" is not a number: the x axis needs numbers (group by it instead)",
                         json_string_value(value));
+        }
+        if (strcmp(key, "group") == 0 && distinct_values(plan, found) > CHART_MAX_SERIES) {
+            return fail(r, path, "\"%s\" has more than %d values: a figure draws at most %d series",
+                        json_string_value(value), CHART_MAX_SERIES, CHART_MAX_SERIES);
         }
     }
     const char *y = json_string_value(json_object_get(figure, "y"));
