@@ -427,6 +427,10 @@ Test(sweep, bad_sweep_files_are_refused_before_any_run)
                   "0, \"stop\": 1, \"count\": 65}}, \"figure\": {\"x\": \"weight\", \"y\": \"Elbow.final_angle_deg\", "
                   "\"group\": \"activation.Biceps Long\"}}",
                   "", "$.figure.group: \"activation.Biceps Long\" has more than 64 values");
+    check_refused("{\"model\": \"arm\", \"grid\": {\"variant\": [\"All\\nBiceps\"]}}", "",
+                  "$.grid.variant[0]: expected a variant of the model arm");
+    check_refused("{\"model\": \"arm\", \"grid\": {\"activation.Biceps\\nLong\": [0]}}", "",
+                  "a parameter's name holds a control character");
     check_refused("{\"model\": \"arm\", \"grid\": {\"weight\": [0, 1]}, \"extra\": 1}", "", "$.extra: unknown key");
     check_refused("{\"model\": \"arms\", \"grid\": {\"weight\": [0, 1]}}", "", "$.model: ");
     check_refused("{\"model\": \"arm\", \"grid\": {\"weight\": [0, 1]}}", "--out /proc",

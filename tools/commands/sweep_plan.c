@@ -124,11 +124,26 @@ static char *name_safe(const char *text)
     return copy;
 }
 
+/* Whether `text` holds a control character (a line break would split a
+ * run's line of the job list). */
+static bool has_control_character(const char *text)
+{
+    for (const unsigned char *c = (const unsigned char *)text; *c != '\0'; ++c) {
+        if (*c < 0x20 || *c == 0x7f) {
+            return true;
+        }
+    }
+    return false;
+}
+
 /* The kind of the parameter `key`, and checks the name after a prefix
  * against the model. */
 static bool find_kind(reader *r, parameter *p)
 {
     const char *key = p->key;
+    if (has_control_character(key)) {
+        return fail(r, p->path, "a parameter's name holds a control character");
+    }
     for (int k = 0; k < PARAMETER_KIND_COUNT; ++k) {
         const parameter_kind *kind = &parameter_kinds[k];
         size_t length = strlen(kind->key);
@@ -260,6 +275,9 @@ static bool add_value(reader *r, parameter *p, const json_t *value, const char *
         }
         break;
     }
+    }
+    if (has_control_character(text)) {
+        return fail(r, path, "the value holds a control character");
     }
     /* A control file is named by its file name alone. */
     const char *slash = kind->kind == VALUE_FILE ? strrchr(text, '/') : NULL;
