@@ -463,3 +463,24 @@ Test(sweep, more_than_the_limit_runs_with_yes)
     json_decref(root);
     remove_tree(dir);
 }
+
+Test(sweep, bad_command_lines_are_refused)
+{
+    static const struct {
+        const char *args;
+        const char *message;
+    } cases[] = {
+        {"sweep", "sinew sweep: missing the sweep file"},
+        {"sweep s.json --emit make", "--emit \"make\": expected parallel, slurm or list"},
+        {"sweep s.json --chunk 4", "--chunk is for --emit slurm"},
+        {"sweep s.json --emit slurm --gather", "give --emit or --gather, not both"},
+        {"sweep s.json --jobs 0", "--jobs"},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        char output[4096];
+        int status = run_sinew_capture(NULL, cases[k].args, SINEW_STDOUT_AND_STDERR, output, sizeof output);
+        cr_expect_eq(status, 2, "%s: status %d: %s", cases[k].args, status, output);
+        cr_expect(strstr(output, cases[k].message) != NULL, "%s: expected \"%s\" in: %s", cases[k].args,
+                  cases[k].message, output);
+    }
+}
