@@ -39,10 +39,7 @@ static void check_run(const sweep_run *run)
           "a run's --summary is not NAME.summary.json");
 }
 
-static int compare_names(const void *a, const void *b)
-{
-    return strcmp(*(char *const *)a, *(char *const *)b);
-}
+static int compare_names(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

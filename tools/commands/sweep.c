@@ -31,7 +31,7 @@ static const cli_option options_table[] = {
      .id = OPT_OUT,
      .kind = CLI_PATH,
      .value_name = "DIR",
-     .help = "the output folder (made when missing)",
+     .help = "the output folder, made when missing",
      .fallback = "the file's \"out\", else its stem"},
     {.name = "jobs",
      .id = OPT_JOBS,
@@ -46,16 +46,16 @@ static const cli_option options_table[] = {
      .id = OPT_EMIT,
      .kind = CLI_TEXT,
      .value_name = "WHAT",
-     .help = "run nothing; write the runs not complete for another engine:\n"
-             "parallel (OUT/jobs.txt), slurm (OUT/jobs.txt and OUT/sweep.sbatch)\n"
-             "or list (every run as JSON on stdout)"},
+     .help = "run nothing; write the runs for another engine: parallel (OUT/jobs.txt,\n"
+             "the runs not complete), slurm (also OUT/sweep.sbatch) or list (every run\n"
+             "and whether it is complete, as JSON on stdout)"},
     {.name = "chunk",
      .id = OPT_CHUNK,
      .kind = CLI_INT,
      .value_name = "K",
      .help = "runs per Slurm array task (with --emit slurm)",
      .min = 1,
-     .max = SWEEP_MAX_RUNS,
+     .max = SWEEP_RUN_LIMIT,
      .fallback = "1"},
     {.name = "gather",
      .id = OPT_GATHER,
