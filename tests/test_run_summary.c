@@ -194,6 +194,8 @@ Test(run_summary, bad_values_are_refused_with_no_file)
         {"--muscle 'Biceps Long.strength=3'", 2, "unknown parameter \"strength\""},
         {"--muscle 'Biceps Long.pennation_angle=90'", 2, "pennation_angle in deg"},
         {"--velocity-iterations 0", 2, "--velocity-iterations"},
+        {"--summary no/such/folder/s.json", 1,
+         "--summary no/such/folder/s.json: the folder no/such/folder does not exist"},
     };
     char dir[] = "/tmp/sinew-run-summary-XXXXXX";
     cr_assert_not_null(mkdtemp(dir));

@@ -537,6 +537,28 @@ static int csv_path_for(const run_options *opts, char *path, size_t path_size)
     return 0;
 }
 
+/* The folder of --summary FILE exists, so that a run is not lost for a
+ * summary that cannot be written; returns 0 or an exit status. */
+static int check_summary_folder(const run_options *opts)
+{
+    if (opts->summary_path == NULL) {
+        return 0;
+    }
+    const char *slash = strrchr(opts->summary_path, '/');
+    char folder[ATOMIC_FILE_PATH_MAX];
+    snprintf(folder, sizeof folder, "%.*s",
+             slash == NULL                 ? 1
+             : slash == opts->summary_path ? 1
+                                           : (int)(slash - opts->summary_path),
+             slash == NULL ? "." : opts->summary_path);
+    struct stat info;
+    if (stat(folder, &info) != 0 || !S_ISDIR(info.st_mode)) {
+        fprintf(stderr, "sinew: --summary %s: the folder %s does not exist\n", opts->summary_path, folder);
+        return EXIT_FAILURE;
+    }
+    return 0;
+}
+
 /* ------------------------------------------------------------------ run */
 
 typedef struct run_state {
@@ -807,6 +829,9 @@ static int prepare(run_state *run)
         return EXIT_FAILURE;
     }
     code = csv_path_for(opts, run->csv_path, sizeof run->csv_path);
+    if (code == 0) {
+        code = check_summary_folder(opts);
+    }
     if (code != 0) {
         return code;
     }
