@@ -91,7 +91,7 @@ same_results local by_hand '^(jobs.txt|sweep.sbatch)$'
 echo "the array tasks run by hand wrote the local sweep's files"
 
 # ---- The cluster: one node, this machine. ----------------------------------
-for program in munged slurmctld slurmd sbatch sinfo; do
+for program in munged slurmctld slurmd sbatch sinfo timeout; do
     if ! command -v "$program" > /dev/null; then
         echo "SKIP: $program is not installed (tools/setup.sh installs munge and slurm-wlm)"
         exit 77
@@ -103,7 +103,10 @@ mkdir -p munge state spool log
 chmod 755 "$work" munge
 head -c 1024 /dev/urandom > munge/munge.key
 chmod 400 munge/munge.key
-munged --foreground --key-file="$work/munge/munge.key" --socket="$work/munge/socket" \
+# Each daemon under `timeout`, so that none outlives the test even when
+# ctest kills it (no trap runs then); `timeout` passes on the trap's TERM.
+life=240
+timeout "$life" munged --foreground --key-file="$work/munge/munge.key" --socket="$work/munge/socket" \
     --pid-file="$work/munge/munged.pid" --log-file="$work/munge/munged.log" --seed-file="$work/munge/seed" \
     > munge/stdout.log 2>&1 &
 pids+=($!)
@@ -122,7 +125,7 @@ cat > slurm.conf <<CONF
 ClusterName=sinewtest
 SlurmctldHost=localhost
 SlurmUser=$(id -un)
-SlurmdUser=root
+SlurmdUser=$(id -un)
 AuthType=auth/munge
 CredType=cred/munge
 AuthInfo=socket=$work/munge/socket
@@ -147,9 +150,9 @@ PartitionName=debug Nodes=localhost Default=YES MaxTime=INFINITE State=UP
 CONF
 export SLURM_CONF=$work/slurm.conf
 sleep 0.5
-slurmctld -D -f "$SLURM_CONF" > log/slurmctld.stdout 2>&1 &
+timeout "$life" slurmctld -D -f "$SLURM_CONF" > log/slurmctld.stdout 2>&1 &
 pids+=($!)
-slurmd -D -f "$SLURM_CONF" > log/slurmd.stdout 2>&1 &
+timeout "$life" slurmd -D -f "$SLURM_CONF" > log/slurmd.stdout 2>&1 &
 pids+=($!)
 ready=no
 for _ in $(seq 1 40); do
@@ -166,7 +169,15 @@ if [ "$ready" != yes ]; then
 fi
 echo "slurm: $(sinfo --noheader --format='%P %t %N %c CPUs')"
 
-timeout 300 sbatch --wait --quiet by_slurm/sweep.sbatch || fail "the array job failed: $(cat by_slurm/slurm-*.out)"
+# Polled every 0.2 s: `sbatch --wait` polls ever more slowly (10 s for
+# this job that takes well under one).
+job=$(sbatch --parsable by_slurm/sweep.sbatch) || fail "sbatch refused the script"
+for _ in $(seq 1 1000); do
+    states=$(scontrol show job "$job" 2> /dev/null | grep -o 'JobState=[A-Z_]*' | sort -u | tr '\n' ' ')
+    [ -n "$states" ] && ! grep -Eq 'PENDING|RUNNING|CONFIGURING|COMPLETING' <<< "$states" && break
+    sleep 0.2
+done
+[ "$states" = "JobState=COMPLETED " ] || fail "the array job ended $states: $(cat by_slurm/slurm-*.out 2> /dev/null)"
 "$sinew" sweep arm_sweep.json --out by_slurm --gather > gather.log || fail "gathering failed: $(cat gather.log)"
 same_results local by_slurm '^(jobs.txt|sweep.sbatch|slurm-.*\.out)$'
 echo "the sweep run by Slurm (2 array tasks) wrote the local sweep's files"
