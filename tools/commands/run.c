@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* `sinew run MODEL [options]`: build a muscle model, drive its muscles
  * from the command line and a control file, step it frame by frame,
- * write a CSV of every frame (recorder.h) and print a summary.
+ * write a CSV of every frame (recorder.h) and print a summary (and, with
+ * --summary, write it as JSON: run_summary.h).
  *
  * Everything that can be checked is checked before the first frame: the
  * options, the model file, the variant and weight, every control (names
@@ -261,7 +262,8 @@ static bool name_is_safe(const char *name)
 }
 
 /* Parses the arguments after `sinew run`: one MODEL and options, in any
- * order. opts->controls and opts->recruits must hold argc entries. */
+ * order. opts->controls, opts->recruits and opts->muscle_settings must
+ * hold argc entries. */
 static parse_result parse_arguments(int argc, char **argv, run_options *opts)
 {
     cli_parser parser;
