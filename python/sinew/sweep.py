@@ -12,8 +12,9 @@ the table are the same, byte for byte but for the timing columns, whether
 a sweep was run from Python, by ``sinew sweep``, GNU parallel or Slurm.
 
 It needs only the ``sinew`` program and numpy (pandas when installed):
-found through the ``program`` argument, else the ``SINEW_PROGRAM``
-environment variable, else ``sinew`` on the PATH.
+found through the ``program`` argument, else the environment variable
+``SINEW_PROGRAM``, else ``SINEW_EXECUTABLE`` (the one the package's tests
+set), else ``sinew`` on the PATH.
 """
 
 import concurrent.futures
@@ -39,8 +40,14 @@ class SweepError(RuntimeError):
 
 def find_program(program=None):
     """The path of the ``sinew`` program: ``program`` when given, else
-    ``$SINEW_PROGRAM``, else ``sinew`` on the PATH."""
-    found = program or os.environ.get("SINEW_PROGRAM") or shutil.which("sinew")
+    ``$SINEW_PROGRAM``, else ``$SINEW_EXECUTABLE``, else ``sinew`` on the
+    PATH."""
+    found = (
+        program
+        or os.environ.get("SINEW_PROGRAM")
+        or os.environ.get("SINEW_EXECUTABLE")
+        or shutil.which("sinew")
+    )
     if not found:
         raise SweepError("the sinew program was not found: give program=..., set SINEW_PROGRAM or put it on the PATH")
     return found
@@ -104,7 +111,7 @@ def sweep(sweep_file, out=None, jobs=None, program=None, yes=False, dataframe=Tr
     out: the output folder (default: the file's "out", else its stem in
         the current folder), as ``sinew sweep --out``.
     jobs: runs at a time (default: the cores).
-    program: the ``sinew`` program (default: ``$SINEW_PROGRAM``, else PATH).
+    program: the ``sinew`` program (default: find_program's).
     yes: allow more than 1000 runs, as ``--yes``.
     dataframe: return a pandas DataFrame when pandas is importable.
 

@@ -3,7 +3,8 @@
 the same sweep file (but for the timing columns), its runs' files are the
 same bytes, and a bad sweep file raises with the program's message.
 
-The program is $SINEW_PROGRAM (ctest sets it to the one just built)."""
+The program is $SINEW_PROGRAM or $SINEW_EXECUTABLE (ctest sets one to the
+program just built)."""
 
 import csv
 import os
