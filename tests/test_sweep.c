@@ -484,3 +484,24 @@ Test(sweep, bad_command_lines_are_refused)
                   cases[k].message, output);
     }
 }
+
+Test(sweep, the_table_holds_each_value_as_given_and_the_variant_built)
+{
+    char dir[] = "/tmp/sinew-sweep-XXXXXX";
+    cr_assert_not_null(mkdtemp(dir));
+    write_file(dir, "variants.json",
+               "{\"model\": \"arm\", \"set\": {\"duration\": 0.1},\n"
+               " \"grid\": {\"variant\": [\"All Biceps\", 0], \"weight\": [5]}}\n");
+    char output[8192];
+    cr_assert_eq(run_sinew_capture(dir, "sweep variants.json", SINEW_STDOUT_AND_STDERR, output, sizeof output), 0, "%s",
+                 output);
+    char summary[1024];
+    snprintf(summary, sizeof summary, "%s/variants/summary.csv", dir);
+    check_column_text(summary, "run", 0, "arm_variant=All_Biceps_weight=5");
+    check_column_text(summary, "variant", 0, "All Biceps");
+    check_column_text(summary, "variant_name", 0, "All Biceps");
+    check_column_text(summary, "variant", 1, "0");
+    check_column_text(summary, "variant_name", 1, "All Muscles");
+    cr_assert_eq(summary_number(summary, "weight_kg", 1), 5.0);
+    remove_tree(dir);
+}

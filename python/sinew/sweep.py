@@ -30,7 +30,7 @@ __all__ = ["SweepError", "sweep", "find_program"]
 
 # The summary's columns that hold text; every other column is a number
 # (NaN where a run has none).
-_TEXT_COLUMNS = {"run", "status", "message", "variant", "failure", "warnings"}
+_TEXT_COLUMNS = {"run", "status", "message", "variant_name", "failure", "warnings"}
 
 
 class SweepError(RuntimeError):

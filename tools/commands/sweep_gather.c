@@ -106,6 +106,19 @@ static int column_index(table *t, const char *name, bool add)
     return t->columns[t->column_count] != NULL ? t->column_count++ : -1;
 }
 
+/* Puts `text` (taken over) in the row's cell of column `name`; a column
+ * that could not be added (out of memory) leaves the cell empty. */
+static void set_cell(table *t, char **row, const char *name, char *text)
+{
+    int c = column_index(t, name, false);
+    if (c >= 0) {
+        free(row[c]);
+        row[c] = text;
+    } else {
+        free(text);
+    }
+}
+
 static char *number_cell(const json_t *value)
 {
     if (!json_is_number(value)) {
@@ -130,9 +143,10 @@ static void add_list_columns(table *t, const json_t *root, const char *list, con
     const json_t *item;
     json_array_foreach(json_object_get(root, list), k, item)
     {
-        for (int f = 0; f < count; ++f) {
+        const char *item_name = json_string_value(json_object_get(item, "name"));
+        for (int f = 0; item_name != NULL && f < count; ++f) {
             char name[512];
-            snprintf(name, sizeof name, "%s.%s", json_string_value(json_object_get(item, "name")), fields[f]);
+            snprintf(name, sizeof name, "%s.%s", item_name, fields[f]);
             column_index(t, name, true);
         }
     }
@@ -145,13 +159,11 @@ static void set_list_cells(table *t, char **row, const json_t *root, const char 
     const json_t *item;
     json_array_foreach(json_object_get(root, list), k, item)
     {
-        for (int f = 0; f < count; ++f) {
+        const char *item_name = json_string_value(json_object_get(item, "name"));
+        for (int f = 0; item_name != NULL && f < count; ++f) {
             char name[512];
-            snprintf(name, sizeof name, "%s.%s", json_string_value(json_object_get(item, "name")), fields[f]);
-            int c = column_index(t, name, false);
-            if (c >= 0) {
-                row[c] = value_cell(json_object_get(item, fields[f]));
-            }
+            snprintf(name, sizeof name, "%s.%s", item_name, fields[f]);
+            set_cell(t, row, name, value_cell(json_object_get(item, fields[f])));
         }
     }
 }
@@ -170,7 +182,7 @@ static char *warnings_cell(const json_t *root)
     char *text = calloc(length, 1);
     json_array_foreach(json_object_get(root, "warnings"), k, line)
     {
-        if (text != NULL) {
+        if (text != NULL && json_is_string(line)) {
             strcat(strcat(text, k > 0 ? " | " : ""), json_string_value(line));
         }
     }
@@ -181,7 +193,7 @@ static char *warnings_cell(const json_t *root)
 static bool fill_table(table *t, const sweep_plan *plan, const char *out_dir, json_t *const *roots)
 {
     static const char *const first[] = {"run"};
-    static const char *const middle[] = {"status", "message", "variant", "weight_kg"};
+    static const char *const middle[] = {"status", "message", "variant_name", "weight_kg"};
     static const char *const last[] = {"controls_pending", "failure", "warnings", "wall_time_s", "real_time_factor"};
     column_index(t, first[0], true);
     for (int v = 0; v < plan->varied_count; ++v) {
@@ -189,6 +201,10 @@ static bool fill_table(table *t, const sweep_plan *plan, const char *out_dir, js
     }
     for (size_t k = 0; k < sizeof middle / sizeof middle[0]; ++k) {
         column_index(t, middle[k], true);
+    }
+    /* The run's name and parameters go to columns 0 .. varied_count. */
+    if (t->column_count != 1 + plan->varied_count + (int)(sizeof middle / sizeof middle[0])) {
+        return false;
     }
     for (int r = 0; r < plan->run_count; ++r) {
         add_list_columns(t, roots[r], "muscles", muscle_fields, 2);
@@ -214,24 +230,24 @@ static bool fill_table(table *t, const sweep_plan *plan, const char *out_dir, js
         for (int v = 0; v < plan->varied_count; ++v) {
             row[1 + v] = strdup(run->values[v]);
         }
-        row[column_index(t, "status", false)] = strdup(root != NULL ? "ok" : "failed");
+        set_cell(t, row, "status", strdup(root != NULL ? "ok" : "failed"));
         if (root == NULL) {
             char message[1024];
             failure_message(out_dir, run, message, sizeof message);
-            row[column_index(t, "message", false)] = strdup(message);
+            set_cell(t, row, "message", strdup(message));
             continue;
         }
-        row[column_index(t, "variant", false)] = value_cell(json_object_get(root, "variant"));
-        row[column_index(t, "weight_kg", false)] = value_cell(json_object_get(root, "weight_kg"));
+        set_cell(t, row, "variant_name", value_cell(json_object_get(root, "variant")));
+        set_cell(t, row, "weight_kg", value_cell(json_object_get(root, "weight_kg")));
         set_list_cells(t, row, root, "muscles", muscle_fields, 2);
         set_list_cells(t, row, root, "torque_muscles", torque_fields, 2);
         set_list_cells(t, row, root, "hinges", hinge_fields, 3);
-        row[column_index(t, "controls_pending", false)] = value_cell(json_object_get(root, "controls_pending"));
-        row[column_index(t, "failure", false)] = value_cell(json_object_get(root, "failure"));
-        row[column_index(t, "warnings", false)] = warnings_cell(root);
+        set_cell(t, row, "controls_pending", value_cell(json_object_get(root, "controls_pending")));
+        set_cell(t, row, "failure", value_cell(json_object_get(root, "failure")));
+        set_cell(t, row, "warnings", warnings_cell(root));
         const json_t *timing = json_object_get(root, "timing");
-        row[column_index(t, "wall_time_s", false)] = value_cell(json_object_get(timing, "wall_s"));
-        row[column_index(t, "real_time_factor", false)] = value_cell(json_object_get(timing, "real_time_factor"));
+        set_cell(t, row, "wall_time_s", value_cell(json_object_get(timing, "wall_s")));
+        set_cell(t, row, "real_time_factor", value_cell(json_object_get(timing, "real_time_factor")));
     }
     return true;
 }
@@ -299,7 +315,7 @@ static bool write_figure(const sweep_plan *plan, const table *t, const char *pat
     int y_column = column_index((table *)t, plan->figure_y, false);
     int x_column = column_index((table *)t, plan->figure_x, false);
     int group_column = plan->figure_group != NULL ? column_index((table *)t, plan->figure_group, false) : -1;
-    if (y_column < 0) {
+    if (y_column < 0 || x_column < 0) {
         snprintf(error, error_size, "%s: $.figure.y: the summary has no column \"%s\" (see the header of %s)",
                  plan->file, plan->figure_y, path);
         return false;

@@ -11,7 +11,7 @@
  * said on stderr) as its message, or "not run" when there is no log.
  *
  * The columns: run (its name), each parameter that varies, status (ok or
- * failed), message, variant, weight_kg, NAME.peak_force_N and
+ * failed), message, variant_name, weight_kg, NAME.peak_force_N and
  * NAME.peak_time_s of each muscle, NAME.exertion and NAME.torque_N_m of
  * each torque muscle, NAME.final_angle_deg, NAME.min_angle_deg and
  * NAME.max_angle_deg of each hinge, controls_pending, failure, warnings

@@ -75,6 +75,7 @@ typedef struct parameter {
     int value_count;
     char **texts;      /* as `sinew run` gets them */
     char **name_texts; /* as the run's name shows them */
+    char **values;     /* as the table shows them: the value alone */
 } parameter;
 
 /* What reading a file needs at hand. */
@@ -285,7 +286,9 @@ static bool add_value(reader *r, parameter *p, const json_t *value, const char *
     /* NAME=VALUE, NAME.PARAMETER=VALUE: the option's value. */
     p->texts[p->value_count] = kind->prefix ? name_equals(p->key + strlen(kind->key), text) : strdup(text);
     p->name_texts[p->value_count] = name_safe(name_text);
-    if (p->texts[p->value_count] == NULL || p->name_texts[p->value_count] == NULL) {
+    p->values[p->value_count] = strdup(text);
+    if (p->texts[p->value_count] == NULL || p->name_texts[p->value_count] == NULL ||
+        p->values[p->value_count] == NULL) {
         return fail(r, path, "out of memory");
     }
     p->value_count++;
@@ -408,7 +411,8 @@ static bool read_parameter(reader *r, const char *section, const char *key, cons
     }
     p->texts = calloc((size_t)count, sizeof *p->texts);
     p->name_texts = calloc((size_t)count, sizeof *p->name_texts);
-    if (p->texts == NULL || p->name_texts == NULL) {
+    p->values = calloc((size_t)count, sizeof *p->values);
+    if (p->texts == NULL || p->name_texts == NULL || p->values == NULL) {
         return fail(r, p->path, "out of memory");
     }
     for (long k = 0; k < count; ++k) {
@@ -438,9 +442,11 @@ static void free_parameters(reader *r)
         for (int v = 0; v < r->parameters[k].value_count; ++v) {
             free(r->parameters[k].texts[v]);
             free(r->parameters[k].name_texts[v]);
+            free(r->parameters[k].values[v]);
         }
         free(r->parameters[k].texts);
         free(r->parameters[k].name_texts);
+        free(r->parameters[k].values);
     }
     free(r->parameters);
 }
@@ -599,7 +605,7 @@ static bool expand_run(reader *r, sweep_plan *plan, const char *model, const lon
         run->arguments[run->argument_count++] = strdup(p->kind->option);
         run->arguments[run->argument_count++] = strdup(p->texts[v]);
         if (p->axis >= 0) {
-            run->values[varied++] = strdup(p->kind->kind == VALUE_FILE ? p->texts[v] : p->name_texts[v]);
+            run->values[varied++] = strdup(p->values[v]);
             char *key = name_safe(p->key);
             size_t used = strlen(name);
             snprintf(name + used, sizeof name - used, "_%s=%s", key != NULL ? key : "", p->name_texts[v]);

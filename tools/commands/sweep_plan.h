@@ -49,8 +49,10 @@
 #define SWEEP_ERROR_SIZE 2048
 
 typedef struct sweep_run {
-    char *name;         /* the files' stem: NAME.csv, NAME.summary.json, NAME.log */
-    char **values;      /* the text of each varied parameter's value, by plan index */
+    char *name; /* the files' stem: NAME.csv, NAME.summary.json, NAME.log */
+    /* Each varied parameter's value, by plan index, as the file gives it
+     * (a control file's absolute path). */
+    char **values;
     int argument_count; /* after `sinew run` */
     char **arguments;
 } sweep_run;
