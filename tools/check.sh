@@ -4,12 +4,13 @@
 #
 #   1. tools/setup.sh (installs missing packages; does nothing when all present)
 #   2. formatting: clang-format --dry-run --Werror over every *.c, *.h and *.cpp of
-#      engine/ models/ tests/ bench/ tools/ musculo/ fuzz/ docs/examples/
+#      engine/ models/ tests/ bench/ tools/ musculo/ fuzz/ docs/examples/ python/
 #   3. licence: an SPDX line in every source, script and build file
 #   4. for the presets release and asan: configure with -DSINEW_WERROR=ON,
 #      build, run ctest (output shown for failing tests)
 #   5. the release build installed, built shared, moved, and used by the
-#      examples of docs/examples with gcc and clang (tools/check_install.sh)
+#      examples of docs/examples with gcc and clang and by the Python
+#      package's tests (tools/check_install.sh)
 #   6. fuzzing: the fuzz targets of fuzz/ built with clang's libFuzzer and the
 #      sanitizers, every input that ever failed replayed, then each target
 #      fuzzed for 60 s (tools/fuzz.sh, build/fuzz)
@@ -36,7 +37,7 @@ tools/setup.sh
 # ---- Formatting -------------------------------------------------------------
 banner "format ($("$clang_format" --version | sed 's/.*version \([0-9.]*\).*/clang-format \1/'))"
 dirs=()
-for d in engine models tests bench tools musculo fuzz docs/examples; do
+for d in engine models tests bench tools musculo fuzz docs/examples python; do
     if [[ -d "$d" ]]; then
         dirs+=("$d")
     fi
@@ -71,7 +72,7 @@ while IFS= read -r -d '' f; do
     if ! grep -q 'SPDX-License-Identifier: MIT' "$f"; then
         unlicensed+=("$f")
     fi
-done < <(git ls-files -z --cached --others --exclude-standard -- '*.c' '*.h' '*.cpp' '*.sh' '*.cmake' '*.in' \
+done < <(git ls-files -z --cached --others --exclude-standard -- '*.c' '*.h' '*.cpp' '*.sh' '*.cmake' '*.in' '*.py' \
     '*CMakeLists.txt' '*Makefile' .ci/run)
 if ((${#unlicensed[@]})); then
     echo "no 'SPDX-License-Identifier: MIT' line in:"

@@ -16,13 +16,18 @@
 #      the deleted folders; then runs, from the moved prefix, `sinew
 #      --version`, `sinew run arm`, `sinew experiment c1` and the installed
 #      worm with its profile image (share/sinew, through SINEW_DATA_DIR);
-#   4. checks that the shared libraries export only the public API: every
+#   4. runs the Python package's pytest suite (python/tests) against the
+#      moved install: the package from P/lib/python3/dist-packages through
+#      PYTHONPATH, SINEW_LIBRARY_DIR unset, so that it must find the libraries
+#      it was installed with, and the moved sinew program to compare runs
+#      with (needs a python3 with numpy and pytest: tools/setup.sh);
+#   5. checks that the shared libraries export only the public API: every
 #      dynamic symbol of librb.so starts with rb_, of libmu.so with mu_, and
 #      each is declared RB_API/MU_API in an installed header (and the other
 #      way round); and that libmu needs libpng, not Cairo;
-#   5. compiles every installed public header alone as C17 and as C++17, with
+#   6. compiles every installed public header alone as C17 and as C++17, with
 #      gcc, g++, clang and clang++, warnings as errors;
-#   6. builds the examples of docs/examples with sinew as a subproject
+#   7. builds the examples of docs/examples with sinew as a subproject
 #      (add_subdirectory: the libraries only, no Criterion or GTK looked
 #      for), and against both prefixes with gcc and with clang, through
 #      find_package (CMake, the C++ example too) and through pkg-config
@@ -113,7 +118,37 @@ run_moved()
 )
 check "the moved install runs sinew --version, run arm, experiment c1 and its share/sinew worm" run_moved
 
-# ---- 4. Only the public API leaves the shared libraries --------------------
+# ---- 4. The Python package, from the moved install -------------------------
+# The first python3 that imports numpy and pytest: the one on PATH, else
+# Debian's own (a PATH may hold another Python without Debian's packages).
+python_with_pytest()
+{
+    local candidate
+    for candidate in "$(command -v python3)" /usr/bin/python3; do
+        if [[ -x "$candidate" ]] && "$candidate" -c "import numpy, pytest" 2>/dev/null; then
+            echo "$candidate"
+            return 0
+        fi
+    done
+    echo "no python3 imports numpy and pytest (tools/setup.sh installs python3-numpy and python3-pytest)" >&2
+    return 1
+}
+python_moved()
+(
+    python=$(python_with_pytest) || exit 1
+    packages=$shared_prefix/lib/python3/dist-packages
+    cd "$work" &&
+        # The package names the libraries of its own prefix.
+        env -u SINEW_LIBRARY_DIR PYTHONPATH="$packages" PYTHONDONTWRITEBYTECODE=1 "$python" -c \
+            'import sinew, sys; print(*sinew.library_paths); sys.exit(any(not p.startswith(sys.argv[1]) for p in sinew.library_paths))' \
+            "$shared_prefix/lib/" &&
+        env -u SINEW_LIBRARY_DIR -u SINEW_DATA_DIR PYTHONPATH="$packages" SINEW_PYTHON_INSTALLED=1 \
+            SINEW_EXECUTABLE="$shared_prefix/bin/sinew" PYTHONDONTWRITEBYTECODE=1 \
+            "$python" -m pytest -q -p no:cacheprovider "$source_dir/python/tests"
+)
+check "the moved install's Python package passes its pytest suite (python/tests)" python_moved
+
+# ---- 5. Only the public API leaves the shared libraries --------------------
 exports_match()
 {
     local library=$1 prefix=$2 macro=$3 headers=$4
@@ -143,7 +178,7 @@ check "libmu.so needs libpng and not Cairo" \
              ! readelf -d '$shared_prefix/lib/libmu.so' | grep -q 'NEEDED.*cairo' &&
              ! grep -q cairo '$shared_prefix/lib/pkgconfig/sinew-mu.pc'"
 
-# ---- 5. Each public header compiles alone as C17 and C++17 -----------------
+# ---- 6. Each public header compiles alone as C17 and C++17 -----------------
 headers_compile()
 {
     local header source status=0
@@ -164,7 +199,7 @@ headers_compile()
 }
 check "every public header compiles alone as C17 and C++17 (gcc, g++, clang, clang++)" headers_compile
 
-# ---- 6. The examples, built on each install with each compiler -------------
+# ---- 7. The examples, built on each install with each compiler -------------
 examples_cmake()
 {
     local prefix=$1 cc=$2 cxx=$3 build=$work/examples-cmake-$4-$2

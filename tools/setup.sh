@@ -33,6 +33,10 @@ packages=(
     libclang-rt-14-dev # clang's libFuzzer and sanitizer runtimes: the fuzz targets (tools/fuzz.sh)
     binutils         # nm and readelf: what the shared libraries export
     locales          # de_DE.UTF-8, a decimal-comma locale the locale test runs under (generated below)
+    python3          # the Python package python/sinew (ctypes over the shared librb and libmu)
+    python3-numpy    # its readouts and run tables are numpy arrays
+    python3-pytest   # its tests (python/tests: ctest's python test, tools/check_install.sh)
+    python3-pandas   # optional for users (RunResult.dataframe()); the tests use it when present
     parallel         # GNU parallel: test_sweep runs `sinew sweep --emit parallel`'s job list with it
     slurmctld        # Slurm's controller, slurmd its node daemon and slurm-client sbatch/sinfo:
     slurmd           #   tests/slurm/sweep_on_slurm.sh starts a one-node cluster and runs a sweep's
