@@ -13,7 +13,8 @@
 #   --build DIR  the build folder (default build/fuzz); the working corpora
 #                grow in DIR/corpus/<target>, failing inputs land in
 #                DIR/artifacts/<target>
-#   TARGET       fuzz_model, fuzz_control_file, fuzz_csv_chart, fuzz_pool_profile
+#   TARGET       fuzz_model, fuzz_control_file, fuzz_csv_chart, fuzz_pool_profile,
+#                fuzz_sweep_plan
 #                (default: all)
 #
 # The last line reads "fuzz: N passed, N failed", counting each replayed
@@ -26,7 +27,7 @@ usage()
     sed -n '3,20s/^# \{0,1\}//p' "$0"
 }
 
-all_targets=(fuzz_model fuzz_control_file fuzz_csv_chart fuzz_pool_profile)
+all_targets=(fuzz_model fuzz_control_file fuzz_csv_chart fuzz_pool_profile fuzz_sweep_plan)
 seconds=60
 seed=1
 build=build/fuzz
@@ -49,7 +50,7 @@ while (($#)); do
         usage
         exit 0
         ;;
-    fuzz_model | fuzz_control_file | fuzz_csv_chart | fuzz_pool_profile)
+    fuzz_model | fuzz_control_file | fuzz_csv_chart | fuzz_pool_profile | fuzz_sweep_plan)
         targets+=("$1")
         shift
         ;;
@@ -81,9 +82,10 @@ seeds()
     fuzz_control_file) printf '%s\n' models/controls/* fuzz/seeds/control_file/* ;;
     fuzz_csv_chart) printf '%s\n' models/data/hill-curves.csv fuzz/seeds/csv_chart/* ;;
     fuzz_pool_profile) printf '%s\n' models/worm-pool.png fuzz/seeds/pool_profile/* ;;
+    fuzz_sweep_plan) printf '%s\n' fuzz/seeds/sweep_plan/* ;;
     esac
 }
-declare -A max_len=([fuzz_model]=32768 [fuzz_control_file]=4096 [fuzz_csv_chart]=16384 [fuzz_pool_profile]=8192)
+declare -A max_len=([fuzz_model]=32768 [fuzz_control_file]=4096 [fuzz_csv_chart]=16384 [fuzz_pool_profile]=8192 [fuzz_sweep_plan]=4096)
 
 # ---- Build --------------------------------------------------------------------
 # Debug keeps the assertions; -O1 as the asan preset, for speed.

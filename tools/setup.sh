@@ -38,6 +38,11 @@ packages=(
     python3-numpy    # its readouts and run tables are numpy arrays
     python3-pytest   # its tests (python/tests: ctest's python test, tools/check_install.sh)
     python3-pandas   # optional for users (RunResult.dataframe()); the tests use it when present
+    parallel         # GNU parallel: test_sweep runs `sinew sweep --emit parallel`'s job list with it
+    slurmctld        # Slurm's controller, slurmd its node daemon and slurm-client sbatch/sinfo:
+    slurmd           #   tests/slurm/sweep_on_slurm.sh starts a one-node cluster and runs a sweep's
+    slurm-client     #   `sbatch --array` script on it
+    munge            # munged: Slurm's authentication, started by that test with a key of its own
 )
 # ---- Only with --peers: the peer engines' benchmark harnesses. ------------
 peer_packages=(

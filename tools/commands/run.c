@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* `sinew run MODEL [options]`: build a muscle model, drive its muscles
  * from the command line and a control file, step it frame by frame,
- * write a CSV of every frame (recorder.h) and print a summary.
+ * write a CSV of every frame (recorder.h) and print a summary (and, with
+ * --summary, write it as JSON: run_summary.h).
  *
  * Everything that can be checked is checked before the first frame: the
  * options, the model file, the variant and weight, every control (names
@@ -24,8 +25,10 @@
 #include "control_file.h"
 #include "controls.h"
 #include "load_peaks.h"
+#include "muscle_parameter.h"
 #include "progress.h"
 #include "recorder.h"
+#include "run_summary.h"
 
 enum {
     OPT_VARIANT,
@@ -40,6 +43,13 @@ enum {
     OPT_OUT,
     OPT_WELD_GLUES,
     OPT_STRICT,
+    OPT_NAME,
+    OPT_SUMMARY,
+    OPT_SUBSTEPS,
+    OPT_SOLVER,
+    OPT_VELOCITY_ITERATIONS,
+    OPT_POSITION_ITERATIONS,
+    OPT_MUSCLE,
 };
 
 static const cli_option options_table[] = {
@@ -112,8 +122,56 @@ static const cli_option options_table[] = {
      .id = OPT_OUT,
      .kind = CLI_PATH,
      .value_name = "DIR",
-     .help = "directory of the CSV, DIR/MODEL.csv",
+     .help = "directory of the CSV, DIR/STEM.csv",
      .fallback = "."},
+    {.name = "name",
+     .id = OPT_NAME,
+     .kind = CLI_TEXT,
+     .value_name = "STEM",
+     .help = "the CSV's name without .csv (letters, digits, . _ + - and =),\n"
+             "so that runs can share a folder",
+     .fallback = "the model's"},
+    {.name = "summary",
+     .id = OPT_SUMMARY,
+     .kind = CLI_PATH,
+     .value_name = "FILE",
+     .help = "also write the summary as JSON to FILE (docs/sweeps.md)"},
+    {.name = "substeps",
+     .id = OPT_SUBSTEPS,
+     .kind = CLI_INT,
+     .value_name = "N",
+     .help = "substeps per frame (frame rate x substeps in 60 .. 100000)",
+     .min = 1,
+     .max = 1000,
+     .fallback = "the model's"},
+    {.name = "solver",
+     .id = OPT_SOLVER,
+     .kind = CLI_TEXT,
+     .value_name = "TYPE",
+     .help = "the engine's solver: baumgarte, ngs or soft_step",
+     .fallback = "ngs"},
+    {.name = "velocity-iterations",
+     .id = OPT_VELOCITY_ITERATIONS,
+     .kind = CLI_INT,
+     .value_name = "N",
+     .help = "the solver's velocity iterations per substep",
+     .min = 1,
+     .max = 1000,
+     .fallback = "4"},
+    {.name = "position-iterations",
+     .id = OPT_POSITION_ITERATIONS,
+     .kind = CLI_INT,
+     .value_name = "N",
+     .help = "the solver's position iterations per substep",
+     .min = 0,
+     .max = 1000,
+     .fallback = "1"},
+    {.name = "muscle",
+     .id = OPT_MUSCLE,
+     .kind = CLI_TEXT,
+     .value_name = "NAME.PARAM=V",
+     .help = "set a muscle's parameter over the model file's (repeatable): max_force (N),\n"
+             "max_velocity (m/s), pennation_angle (deg), activation_time, deactivation_time (s)"},
     {.name = "weld-glues",
      .id = OPT_WELD_GLUES,
      .kind = CLI_FLAG,
@@ -178,13 +236,34 @@ typedef struct run_options {
     const char *control_path; /* NULL: none */
     const char *out_dir;
     bool weld_glues;
-    bool strict; /* a failed run (mu_model_failure) is an error, not a warning */
+    bool strict;                  /* a failed run (mu_model_failure) is an error, not a warning */
+    const char *name;             /* NULL: the model's stem */
+    const char *summary_path;     /* NULL: no JSON summary */
+    int substeps;                 /* 0: the model's */
+    const char *solver;           /* NULL: the model's */
+    int velocity_iterations;      /* 0: the model's */
+    int position_iterations;      /* -1: the model's */
+    const char **muscle_settings; /* NAME.PARAM=VALUE, in the order given */
+    int muscle_setting_count;
+    int argc; /* the arguments after `run`, for the JSON summary */
+    char **argv;
 } run_options;
 
 typedef enum parse_result { PARSE_OK, PARSE_HELP, PARSE_ERROR } parse_result;
 
+/* Whether a --name is one file name on every file system and in every
+ * shell without quotes: no '/', no space, no leading '.' (hidden, "..").
+ */
+static bool name_is_safe(const char *name)
+{
+    size_t length = strlen(name);
+    return length > 0 && length < MODEL_STEM_SIZE && name[0] != '.' &&
+           strspn(name, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._+-=") == length;
+}
+
 /* Parses the arguments after `sinew run`: one MODEL and options, in any
- * order. opts->controls and opts->recruits must hold argc entries. */
+ * order. opts->controls, opts->recruits and opts->muscle_settings must
+ * hold argc entries. */
 static parse_result parse_arguments(int argc, char **argv, run_options *opts)
 {
     cli_parser parser;
@@ -231,6 +310,27 @@ static parse_result parse_arguments(int argc, char **argv, run_options *opts)
         case OPT_STRICT:
             opts->strict = true;
             break;
+        case OPT_NAME:
+            opts->name = value.text;
+            break;
+        case OPT_SUMMARY:
+            opts->summary_path = value.text;
+            break;
+        case OPT_SUBSTEPS:
+            opts->substeps = (int)value.integer;
+            break;
+        case OPT_SOLVER:
+            opts->solver = value.text;
+            break;
+        case OPT_VELOCITY_ITERATIONS:
+            opts->velocity_iterations = (int)value.integer;
+            break;
+        case OPT_POSITION_ITERATIONS:
+            opts->position_iterations = (int)value.integer;
+            break;
+        case OPT_MUSCLE:
+            opts->muscle_settings[opts->muscle_setting_count++] = value.text;
+            break;
         default:
             break;
         }
@@ -248,6 +348,13 @@ static parse_result parse_arguments(int argc, char **argv, run_options *opts)
     }
     if (opts->has_weight_kg && opts->weight_index >= 0) {
         cli_usage_error(&command, "give --weight or --weight-index, not both");
+        return PARSE_ERROR;
+    }
+    if (opts->name != NULL && !name_is_safe(opts->name)) {
+        cli_usage_error(&command,
+                        "--name \"%s\": expected at most %d letters, digits, '.', '_', '+', '-' or '=', not "
+                        "starting with '.'",
+                        opts->name, MODEL_STEM_SIZE - 1);
         return PARSE_ERROR;
     }
     return PARSE_OK;
@@ -311,6 +418,98 @@ static int apply_recruits(const run_options *opts, mu_model *model)
     return 0;
 }
 
+static int engine_failure(const char *what)
+{
+    fprintf(stderr, "sinew: %s failed: %s (%s)\n", what, user_error(), rb_status_name(rb_last_status()));
+    return EXIT_FAILURE;
+}
+
+/* Sets the description's muscle parameters named by --muscle
+ * NAME.PARAM=VALUE, before the model is built from it (so a max_force
+ * replaces the one the file gives or derives); returns 0 or an exit
+ * status. */
+static int apply_muscle_settings(const run_options *opts, mu_model_desc *desc)
+{
+    for (int k = 0; k < opts->muscle_setting_count; ++k) {
+        const char *text = opts->muscle_settings[k];
+        /* The last '=' and the last '.' before it: a muscle's name may hold either. */
+        const char *equals = strrchr(text, '=');
+        const char *dot = NULL;
+        for (const char *c = text; equals != NULL && c < equals; ++c) {
+            dot = *c == '.' ? c : dot;
+        }
+        if (equals == NULL || dot == NULL || dot == text) {
+            fprintf(stderr, "sinew: --muscle expects MUSCLE.PARAMETER=VALUE, got \"%s\"\n", text);
+            return EXIT_USAGE;
+        }
+        char name[1024];
+        snprintf(name, sizeof name, "%.*s", (int)(dot - text), text);
+        mu_model_ref ref;
+        if (!mu_model_desc_find(desc, name, &ref) || ref.kind != MU_MODEL_MUSCLE) {
+            fprintf(stderr, "sinew: --muscle \"%s\": the model has no muscle \"%s\"\n", text, name);
+            return EXIT_USAGE;
+        }
+        size_t parameter_length = (size_t)(equals - dot - 1);
+        const muscle_parameter *parameter = muscle_parameter_find(dot + 1, parameter_length);
+        if (parameter == NULL) {
+            fprintf(stderr, "sinew: --muscle \"%s\": unknown parameter \"%.*s\" (" MUSCLE_PARAMETER_NAMES ")\n", text,
+                    (int)parameter_length, dot + 1);
+            return EXIT_USAGE;
+        }
+        double value;
+        char error[OPTION_ERROR_SIZE];
+        char quantity[64];
+        snprintf(quantity, sizeof quantity, "%s in %s", parameter->name, parameter->unit);
+        if (!option_parse_double(quantity, equals + 1, parameter->min, false, parameter->max, &value, error,
+                                 sizeof error)) {
+            fprintf(stderr, "sinew: --muscle \"%s\": %s\n", text, error);
+            return EXIT_USAGE;
+        }
+        *muscle_parameter_field(parameter, &desc->muscles[ref.index]) = value;
+    }
+    return 0;
+}
+
+/* --substeps over the description's, within the format's bound on the
+ * substep rate; returns 0 or an exit status. */
+static int apply_substeps(const run_options *opts, mu_model_desc *desc)
+{
+    if (opts->substeps == 0) {
+        return 0;
+    }
+    double rate = desc->frame_rate * opts->substeps;
+    if (rate < 60.0 || rate > 1e5) {
+        fprintf(stderr,
+                "sinew: --substeps %d at %g frames per second is %g substeps per second, expected 60 .. 100000\n",
+                opts->substeps, desc->frame_rate, rate);
+        return EXIT_USAGE;
+    }
+    desc->substeps = opts->substeps;
+    return 0;
+}
+
+/* --solver and the iterations over the engine settings the model chose
+ * (the model's substeps are kept); returns 0 or an exit status. */
+static int apply_solver(const run_options *opts, mu_model *model)
+{
+    rb_world *world = mu_model_world(model);
+    rb_solver_settings settings = rb_world_solver_settings(world);
+    if (opts->solver != NULL && rb_solver_type_from_name(opts->solver, &settings.type) != RB_OK) {
+        fprintf(stderr, "sinew: --solver \"%s\": %s\n", opts->solver, user_error());
+        return EXIT_USAGE;
+    }
+    if (opts->velocity_iterations > 0) {
+        settings.velocity_iterations = opts->velocity_iterations;
+    }
+    if (opts->position_iterations >= 0) {
+        settings.position_iterations = opts->position_iterations;
+    }
+    if (rb_world_set_solver_settings(world, &settings) != RB_OK) {
+        return engine_failure("setting the solver");
+    }
+    return 0;
+}
+
 /* DIR/STEM.csv; returns 0 or an exit status. The directory is checked
  * here so that the message names --out rather than a temporary file. */
 static int csv_path_for(const run_options *opts, char *path, size_t path_size)
@@ -325,12 +524,38 @@ static int csv_path_for(const run_options *opts, char *path, size_t path_size)
         return EXIT_FAILURE;
     }
     char stem[MODEL_STEM_SIZE];
-    model_source_stem(opts->model, stem, sizeof stem);
+    if (opts->name != NULL) {
+        snprintf(stem, sizeof stem, "%s", opts->name);
+    } else {
+        model_source_stem(opts->model, stem, sizeof stem);
+    }
     size_t length = strlen(opts->out_dir);
     const char *separator = opts->out_dir[length - 1] == '/' ? "" : "/";
     int written = snprintf(path, path_size, "%s%s%s.csv", opts->out_dir, separator, stem);
     if (written < 0 || (size_t)written >= path_size) {
         fprintf(stderr, "sinew: --out %s: the path of the CSV is too long\n", opts->out_dir);
+        return EXIT_FAILURE;
+    }
+    return 0;
+}
+
+/* The folder of --summary FILE exists, so that a run is not lost for a
+ * summary that cannot be written; returns 0 or an exit status. */
+static int check_summary_folder(const run_options *opts)
+{
+    if (opts->summary_path == NULL) {
+        return 0;
+    }
+    const char *slash = strrchr(opts->summary_path, '/');
+    char folder[ATOMIC_FILE_PATH_MAX];
+    snprintf(folder, sizeof folder, "%.*s",
+             slash == NULL                 ? 1
+             : slash == opts->summary_path ? 1
+                                           : (int)(slash - opts->summary_path),
+             slash == NULL ? "." : opts->summary_path);
+    struct stat info;
+    if (stat(folder, &info) != 0 || !S_ISDIR(info.st_mode)) {
+        fprintf(stderr, "sinew: --summary %s: the folder %s does not exist\n", opts->summary_path, folder);
         return EXIT_FAILURE;
     }
     return 0;
@@ -356,12 +581,6 @@ typedef struct run_state {
     double wall_seconds, step_seconds;
     bool failure_reported; /* mu_model_failure said on stderr */
 } run_state;
-
-static int engine_failure(const char *what)
-{
-    fprintf(stderr, "sinew: %s failed: %s (%s)\n", what, user_error(), rb_status_name(rb_last_status()));
-    return EXIT_FAILURE;
-}
 
 /* The extremes the summary reports, sampled at the end of each frame. */
 static void track_extremes(run_state *run, double time)
@@ -520,6 +739,47 @@ static void print_summary(const run_state *run)
            recorder_column_count(&run->csv, run->model));
 }
 
+/* The JSON summary of --summary FILE; returns 0 or an exit status. */
+static int write_summary(const run_state *run)
+{
+    const run_options *opts = run->opts;
+    if (opts->summary_path == NULL) {
+        return 0;
+    }
+    char stem[MODEL_STEM_SIZE];
+    model_source_stem(opts->model, stem, sizeof stem);
+    const mu_model_desc *desc = run->desc;
+    int pending = controls_pending(&run->schedule);
+    run_summary summary = {
+        .argument_count = opts->argc,
+        .arguments = opts->argv,
+        .model = run->model,
+        .model_name = stem,
+        .variant = run->variant,
+        .level = opts->level,
+        .weight_kg = desc->has_weight ? desc->weight.masses[run->weight_index] : NAN,
+        .frames = run->frames,
+        .simulated_seconds = (double)run->frames / desc->frame_rate,
+        .csv_path = run->csv_path,
+        .rows = run->csv.rows,
+        .columns = recorder_column_count(&run->csv, run->model),
+        .controls_applied = run->schedule.event_count - pending,
+        .controls_pending = pending,
+        .peak_force = run->peak_force,
+        .peak_time = run->peak_time,
+        .angle_min = run->angle_min,
+        .angle_max = run->angle_max,
+        .wall_seconds = run->wall_seconds,
+        .step_seconds = run->step_seconds,
+    };
+    char error[ATOMIC_FILE_ERROR_SIZE];
+    if (!run_summary_write(opts->summary_path, &summary, error, sizeof error)) {
+        fprintf(stderr, "sinew: %s\n", error);
+        return EXIT_FAILURE;
+    }
+    return 0;
+}
+
 /* -------------------------------------------------------------- command */
 
 /* Everything before the first frame; returns 0 or an exit status. */
@@ -533,6 +793,12 @@ static int prepare(run_state *run)
     if (code == 0) {
         code = model_source_choose_weight(run->desc, opts->has_weight_kg, opts->weight_kg, opts->weight_index,
                                           &run->weight_index);
+    }
+    if (code == 0) {
+        code = apply_substeps(opts, run->desc);
+    }
+    if (code == 0) {
+        code = apply_muscle_settings(opts, run->desc);
     }
     if (code != 0) {
         return code;
@@ -565,6 +831,9 @@ static int prepare(run_state *run)
         return EXIT_FAILURE;
     }
     code = csv_path_for(opts, run->csv_path, sizeof run->csv_path);
+    if (code == 0) {
+        code = check_summary_folder(opts);
+    }
     if (code != 0) {
         return code;
     }
@@ -576,7 +845,10 @@ static int prepare(run_state *run)
     if (mu_model_create(run->desc, &options, &run->model) != RB_OK) {
         return engine_failure("building the model");
     }
-    code = apply_recruits(opts, run->model);
+    code = apply_solver(opts, run->model);
+    if (code == 0) {
+        code = apply_recruits(opts, run->model);
+    }
     if (code != 0) {
         return code;
     }
@@ -604,12 +876,20 @@ static int prepare(run_state *run)
 
 int cmd_run(int argc, char **argv)
 {
-    run_options opts = {.weight_index = -1, .level = 4, .duration = 10.0, .out_dir = "."};
+    run_options opts = {.weight_index = -1,
+                        .level = 4,
+                        .duration = 10.0,
+                        .out_dir = ".",
+                        .position_iterations = -1,
+                        .argc = argc,
+                        .argv = argv};
     opts.controls = malloc(((size_t)argc + 1) * sizeof *opts.controls);
     opts.recruits = malloc(((size_t)argc + 1) * sizeof *opts.recruits);
-    if (opts.controls == NULL || opts.recruits == NULL) {
+    opts.muscle_settings = malloc(((size_t)argc + 1) * sizeof *opts.muscle_settings);
+    if (opts.controls == NULL || opts.recruits == NULL || opts.muscle_settings == NULL) {
         free(opts.controls);
         free(opts.recruits);
+        free(opts.muscle_settings);
         fputs("sinew: out of memory\n", stderr);
         return EXIT_FAILURE;
     }
@@ -618,10 +898,12 @@ int cmd_run(int argc, char **argv)
         cli_print_help(&command, stdout);
         free(opts.controls);
         free(opts.recruits);
+        free(opts.muscle_settings);
         return EXIT_SUCCESS;
     case PARSE_ERROR:
         free(opts.controls);
         free(opts.recruits);
+        free(opts.muscle_settings);
         return EXIT_USAGE;
     case PARSE_OK:
         break;
@@ -633,6 +915,7 @@ int cmd_run(int argc, char **argv)
     }
     if (code == 0) {
         print_summary(&run);
+        code = write_summary(&run);
     }
     mu_model_destroy(run.model);
     controls_free(&run.schedule);
@@ -644,5 +927,6 @@ int cmd_run(int argc, char **argv)
     load_peaks_free(&run.loads);
     free(opts.controls);
     free(opts.recruits);
+    free(opts.muscle_settings);
     return code;
 }

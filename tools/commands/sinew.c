@@ -24,6 +24,7 @@ static const command commands[] = {
     {"models", "", "list the built-in muscle models", cmd_models},
     {"check", "FILE", "validate a model file", cmd_check},
     {"run", "MODEL [options]", "run a muscle model, write a CSV, print a summary", cmd_run},
+    {"sweep", "SWEEP_FILE [options]", "run a model over a grid of parameters: runs, a table, a figure", cmd_sweep},
     {"scene", "NAME [options]", "run an engine scene, print a summary, write a CSV trace", cmd_scene},
     {"plot", "CSV [options]", "draw columns of a CSV file as a PNG or SVG chart", cmd_plot},
     {"moment-arms", "MODEL --hinge NAME [options]", "sweep a hinge: moment arms, lengths, forces (CSV, figure)",
