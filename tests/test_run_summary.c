@@ -5,7 +5,8 @@
  * from the rows); --name names the run's files; --solver, the iterations
  * and --substeps reach the engine (the CSV's sidecar records its
  * settings); --muscle sets a muscle's parameter (a force of 1 mN bounds
- * the muscle's force); bad values are refused with one line naming the
+ * the muscle's force); --digits 17 writes the very doubles the summary
+ * holds (jansson writes a JSON number with 17 digits); bad values are refused with one line naming the
  * option, and no file.
  */
 #define _POSIX_C_SOURCE 200809L /* mkdtemp, popen */
@@ -177,6 +178,52 @@ Test(run_summary, a_muscle_parameter_set_on_the_command_line_bounds_its_force)
     cr_assert_eq(rmdir(dir), 0, "%s is not empty", dir);
 }
 
+Test(run_summary, seventeen_digits_write_the_runs_own_doubles)
+{
+    char dir[] = "/tmp/sinew-run-summary-XXXXXX";
+    cr_assert_not_null(mkdtemp(dir));
+    char output[8192];
+    cr_assert_eq(run_sinew_capture(dir,
+                                   "run arm --duration 1 --activation 'Biceps Long=0.7' --digits 17 --summary "
+                                   "exact.json",
+                                   SINEW_STDERR_ONLY, output, sizeof output),
+                 0, "%s", output);
+    json_t *root = load_json(dir, "exact.json");
+    char path[1024];
+    snprintf(path, sizeof path, "%s/arm.csv", dir);
+    csv_table table;
+    char error[1024];
+    cr_assert(csv_table_read(path, &table, error, sizeof error), "%s", error);
+    size_t k;
+    json_t *item;
+    json_array_foreach(json_object_get(root, "muscles"), k, item)
+    {
+        char name[256];
+        snprintf(name, sizeof name, "%s.total_force_N", json_string_value(json_object_get(item, "name")));
+        const double *force = column_of(&table, name);
+        double largest = force[0];
+        for (long row = 1; row < table.row_count; ++row) {
+            largest = fmax(largest, force[row]);
+        }
+        cr_assert_eq(largest, json_real_value(json_object_get(item, "peak_force_N")), "%s: %.17g in the CSV", name,
+                     largest);
+    }
+    json_array_foreach(json_object_get(root, "hinges"), k, item)
+    {
+        char name[256];
+        snprintf(name, sizeof name, "%s.angle_deg", json_string_value(json_object_get(item, "name")));
+        const double last = column_of(&table, name)[table.row_count - 1];
+        cr_assert_eq(last, json_real_value(json_object_get(item, "final_angle_deg")), "%s: %.17g in the CSV", name,
+                     last);
+    }
+    csv_table_free(&table);
+    json_decref(root);
+    remove_in(dir, "arm.csv");
+    remove_in(dir, "arm.csv-metadata.json");
+    remove_in(dir, "exact.json");
+    cr_assert_eq(rmdir(dir), 0, "%s is not empty", dir);
+}
+
 Test(run_summary, bad_values_are_refused_with_no_file)
 {
     static const struct {
@@ -194,6 +241,8 @@ Test(run_summary, bad_values_are_refused_with_no_file)
         {"--muscle 'Biceps Long.strength=3'", 2, "unknown parameter \"strength\""},
         {"--muscle 'Biceps Long.pennation_angle=90'", 2, "pennation_angle in deg"},
         {"--velocity-iterations 0", 2, "--velocity-iterations"},
+        {"--digits 0", 2, "--digits"},
+        {"--digits 18", 2, "--digits"},
         {"--summary no/such/folder/s.json", 1,
          "--summary no/such/folder/s.json: the folder no/such/folder does not exist"},
     };

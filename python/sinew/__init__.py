@@ -44,14 +44,15 @@ from .model import Model, Muscle, builtin_models
 from .records import AABB, Contact, Filter, MassData, RayHit, Vec2
 from .run import RunResult, run
 from .shape import Shape
+from .sweep import SweepError, sweep
 from .world import SolverSettings, World, bytes_in_use
 
 __all__ = [
     "AABB", "BODY_TYPES", "Body", "Cable", "Closed", "Contact", "DegenerateShape", "DistanceJoint", "Error",
     "Filter", "ForeignId", "InvalidArgument", "Joint", "Locked", "MassData", "Model", "MouseJoint", "Muscle",
     "NoMass", "NotConvex", "NotFinite", "OutOfMemory", "PrismaticJoint", "PulleyJoint", "RayHit", "RevoluteJoint",
-    "RunResult", "Schedule", "Shape", "SolverSettings", "StaleId", "Vec2", "WeldJoint", "World", "builtin_models",
-    "bytes_in_use", "run",
+    "RunResult", "Schedule", "Shape", "SolverSettings", "StaleId", "SweepError", "Vec2", "WeldJoint", "World",
+    "builtin_models", "bytes_in_use", "run", "sweep",
 ]
 
 #: The version of the libraries loaded ("0.2.0").

@@ -13,8 +13,8 @@ a sweep was run from Python, by ``sinew sweep``, GNU parallel or Slurm.
 
 It needs only the ``sinew`` program and numpy (pandas when installed):
 found through the ``program`` argument, else the environment variable
-``SINEW_PROGRAM``, else ``SINEW_EXECUTABLE`` (the one the package's tests
-set), else ``sinew`` on the PATH.
+``SINEW_EXECUTABLE``, else the program installed with the package, else
+``sinew`` on the PATH.
 """
 
 import concurrent.futures
@@ -38,18 +38,27 @@ class SweepError(RuntimeError):
     message is the program's."""
 
 
+def _installed_program():
+    """The ``sinew`` program installed with the package, or None (a package
+    used from the source tree has no _paths.py)."""
+    try:
+        from . import _paths  # written by cmake --install
+    except ImportError:
+        return None
+    folder = os.path.join(os.path.dirname(os.path.abspath(__file__)), _paths.PROGRAM_DIR)
+    path = os.path.normpath(os.path.join(folder, "sinew"))
+    return path if os.access(path, os.X_OK) else None
+
+
 def find_program(program=None):
     """The path of the ``sinew`` program: ``program`` when given, else
-    ``$SINEW_PROGRAM``, else ``$SINEW_EXECUTABLE``, else ``sinew`` on the
-    PATH."""
-    found = (
-        program
-        or os.environ.get("SINEW_PROGRAM")
-        or os.environ.get("SINEW_EXECUTABLE")
-        or shutil.which("sinew")
-    )
+    ``$SINEW_EXECUTABLE``, else the one installed with the package, else
+    ``sinew`` on the PATH."""
+    found = program or os.environ.get("SINEW_EXECUTABLE") or _installed_program() or shutil.which("sinew")
     if not found:
-        raise SweepError("the sinew program was not found: give program=..., set SINEW_PROGRAM or put it on the PATH")
+        raise SweepError(
+            "the sinew program was not found: give program=..., set SINEW_EXECUTABLE or put it on the PATH"
+        )
     return found
 
 

@@ -5,47 +5,24 @@ options, bit for bit.
 Both drive the same libmu: the Python package reproduces the program's
 schedule (controls before every substep they change, a frame stepped
 whole when nothing changes within it) and its CSV's columns. The program
-writes each value with 10 significant digits (recorder.c, "%.10g"), too
-few to tell two doubles apart; so the program runs with widen_digits.c
-preloaded, which makes its fprintf print those values with 17 digits, and
-every cell of its CSV, read back as a double, must equal the Python value
-exactly (NaN where Python has NaN). Without a C compiler to build the
-shim, the cells are compared as the program prints them, 10 digits.
+runs with ``--digits 17``, which gives every double back exactly, so every
+cell of its CSV, read back as a double, must equal the Python value
+exactly (NaN where Python has NaN).
 """
 import csv
 import math
 import os
-import shutil
 import subprocess
 
 import pytest
 
 import sinew
 
-HERE = os.path.dirname(os.path.abspath(__file__))
 
-
-@pytest.fixture(scope="session")
-def widen_digits(tmp_path_factory):
-    """The preloadable shim, built once; None without a C compiler."""
-    compiler = os.environ.get("CC") or shutil.which("cc") or shutil.which("gcc")
-    if not compiler:
-        return None
-    shim = tmp_path_factory.mktemp("shim") / "widen_digits.so"
-    subprocess.run(
-        [compiler, "-shared", "-fPIC", "-O2", "-Wall", "-Wextra", "-Werror", "-o", str(shim),
-         os.path.join(HERE, "widen_digits.c")],
-        check=True,
-    )
-    return str(shim)
-
-
-def cli_table(program, folder, model, arguments, preload=None):
+def cli_table(program, folder, model, arguments):
     environment = {k: v for k, v in os.environ.items() if k != "SINEW_DATA_DIR"}
-    if preload:
-        environment["LD_PRELOAD"] = preload
     subprocess.run(
-        [program, "run", model, "--out", str(folder)] + arguments,
+        [program, "run", model, "--out", str(folder), "--digits", "17"] + arguments,
         check=True,
         stdout=subprocess.DEVNULL,
         env=environment,
@@ -56,36 +33,34 @@ def cli_table(program, folder, model, arguments, preload=None):
     return rows[0], rows[1:]
 
 
-def assert_same(result, header, rows, exact):
+def assert_same(result, header, rows):
     assert result.columns == header
     assert len(result.table) == len(rows)
-    differences, widened = [], False
+    differences, seventeen = [], False
     for index, row in enumerate(rows):
         for name, cell in zip(header, row):
             value = result.table[name][index]
             if name.endswith(".recruited_neurons"):
                 same = cell == "%d" % value
-            elif exact:
+            else:
                 number = float(cell)
                 same = number == value or (math.isnan(number) and math.isnan(value))
-                widened = widened or len(cell.lstrip("-").replace(".", "").split("e")[0].lstrip("0")) > 10
-            else:
-                same = cell == "%.10g" % value
+                seventeen = seventeen or len(cell.lstrip("-").replace(".", "").split("e")[0].lstrip("0")) > 10
             if not same:
                 differences.append(f"row {index} {name}: sinew run {cell}, Python {value!r}")
     assert not differences, "\n".join(differences[:20])
-    # The shim took effect: some value needed more than 10 digits.
-    assert widened or not exact
+    # --digits took effect: some value was written with more than 10 digits.
+    assert seventeen
 
 
 @pytest.fixture
-def compare(sinew_program, widen_digits, tmp_path):
+def compare(sinew_program, tmp_path):
     """compare(model, cli_arguments, **run_arguments): the program's CSV against sinew.run's table."""
 
     def check(model, arguments, **options):
-        header, rows = cli_table(sinew_program, tmp_path, model, arguments, widen_digits)
+        header, rows = cli_table(sinew_program, tmp_path, model, arguments)
         result = sinew.run(model, **options)
-        assert_same(result, header, rows, exact=widen_digits is not None)
+        assert_same(result, header, rows)
         return header
 
     return check

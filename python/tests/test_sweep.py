@@ -3,7 +3,7 @@
 the same sweep file (but for the timing columns), its runs' files are the
 same bytes, and a bad sweep file raises with the program's message.
 
-The program is $SINEW_PROGRAM or $SINEW_EXECUTABLE (ctest sets one to the
+The program is $SINEW_EXECUTABLE (ctest sets it to the
 program just built)."""
 
 import csv

@@ -11,17 +11,16 @@
  * Everything is computed before anything is written, so a bad option or
  * a hinge that cannot turn alone leaves no file.
  */
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "chart/chart.h"
 #include "cli/model_source.h"
 #include "cli/option_value.h"
 #include "cli/options.h"
+#include "cli/output_path.h"
 #include "cli/user_error.h"
 #include "commands.h"
 #include "io/atomic_file.h"
@@ -384,32 +383,15 @@ static bool write_figure(const char *path, const sweep *s, const mu_model *model
  * character but letters and digits as '-'; returns 0 or an exit status. */
 static int output_path(const sweep_options *opts, const char *extension, char *path, size_t path_size)
 {
-    struct stat info;
-    if (stat(opts->out_dir, &info) != 0) {
-        fprintf(stderr, "sinew: --out %s: %s\n", opts->out_dir, strerror(errno));
-        return EXIT_FAILURE;
-    }
-    if (!S_ISDIR(info.st_mode)) {
-        fprintf(stderr, "sinew: --out %s: not a directory\n", opts->out_dir);
-        return EXIT_FAILURE;
-    }
     char stem[MODEL_STEM_SIZE];
     model_source_stem(opts->model, stem, sizeof stem);
-    char hinge[256];
-    snprintf(hinge, sizeof hinge, "%s", opts->hinge);
-    for (char *c = hinge; *c != '\0'; ++c) {
+    char suffix[300];
+    snprintf(suffix, sizeof suffix, "-moment-arms-%s", opts->hinge);
+    for (char *c = suffix + strlen("-moment-arms-"); *c != '\0'; ++c) {
         const bool plain = (*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') || (*c >= '0' && *c <= '9');
         *c = plain ? *c : '-';
     }
-    const size_t length = strlen(opts->out_dir);
-    const char *separator = opts->out_dir[length - 1] == '/' ? "" : "/";
-    const int written =
-        snprintf(path, path_size, "%s%s%s-moment-arms-%s.%s", opts->out_dir, separator, stem, hinge, extension);
-    if (written < 0 || (size_t)written >= path_size) {
-        fprintf(stderr, "sinew: --out %s: the output path is too long\n", opts->out_dir);
-        return EXIT_FAILURE;
-    }
-    return 0;
+    return output_path_in_folder(opts->out_dir, stem, suffix, extension, path, path_size);
 }
 
 static json_t *sweep_settings(mu_model *model, const mu_model_options *options, const sweep_options *opts)

@@ -12,53 +12,25 @@
  * error: it is written, counted in the summary with its NLopt code, and
  * flagged in the CSV's `solved` column.
  */
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "chart/chart.h"
 #include "cli/model_source.h"
-#include "cli/options.h"
 #include "cli/user_error.h"
 #include "commands.h"
 #include "io/atomic_file.h"
-#include "io/csv_table.h"
-#include "io/provenance.h"
-#include "motion_file.h"
-#include "motion_filter.h"
+#include "motion_analysis.h"
 #include "mu/static_optimization.h"
 
 #define DEGREES (180.0 / RB_PI)
 
-enum {
-    OPT_MOTION,
-    OPT_CUTOFF,
-    OPT_EXPONENT,
-    OPT_RESERVE,
-    OPT_VARIANT,
-    OPT_WEIGHT,
-    OPT_WEIGHT_INDEX,
-    OPT_LEVEL,
-    OPT_OUT
-};
+enum { OPT_EXPONENT, OPT_RESERVE };
 
 static const cli_option options_table[] = {
-    {.name = "motion",
-     .id = OPT_MOTION,
-     .kind = CLI_PATH,
-     .value_name = "FILE",
-     .help = "the motion: a `sinew run` CSV, or a CSV of time_s and HINGE.angle_deg columns (required)"},
-    {.name = "cutoff",
-     .id = OPT_CUTOFF,
-     .kind = CLI_NUMBER,
-     .value_name = "HZ",
-     .help = "cut-off of the zero-phase 4th-order Butterworth low-pass; 0 turns it off",
-     .min = 0.0,
-     .max = 1e6,
-     .fallback = "6"},
+    MOTION_ANALYSIS_INPUT_OPTIONS,
     {.name = "exponent",
      .id = OPT_EXPONENT,
      .kind = CLI_NUMBER,
@@ -76,36 +48,7 @@ static const cli_option options_table[] = {
      .min_open = true,
      .max = 1e6,
      .fallback = "0.1"},
-    {.name = "variant",
-     .id = OPT_VARIANT,
-     .kind = CLI_TEXT,
-     .value_name = "NAME|N",
-     .help = "the variant, by name or index",
-     .fallback = "0"},
-    {.name = "weight",
-     .id = OPT_WEIGHT,
-     .kind = CLI_NUMBER,
-     .value_name = "KG",
-     .help = "the weight choice of that mass",
-     .min = 0.0,
-     .max = 1e9,
-     .fallback = "the first"},
-    {.name = "weight-index",
-     .id = OPT_WEIGHT_INDEX,
-     .kind = CLI_INT,
-     .value_name = "N",
-     .help = "the weight choice by index",
-     .min = 0,
-     .max = MU_MODEL_MAX_OBJECTS - 1},
-    {.name = "level",
-     .id = OPT_LEVEL,
-     .kind = CLI_INT,
-     .value_name = "N",
-     .help = "2 joints, 3 + muscles, 4 + weight",
-     .min = 0,
-     .max = 4,
-     .fallback = "4"},
-    {.name = "out", .id = OPT_OUT, .kind = CLI_PATH, .value_name = "DIR", .help = "output directory", .fallback = "."},
+    MOTION_ANALYSIS_MODEL_OPTIONS,
 };
 
 static const cli_command command = {
@@ -127,77 +70,21 @@ static const cli_command command = {
              "the method and the checks.\n",
 };
 
-typedef struct optimize_options {
-    const char *model;
-    const char *motion;
-    double cutoff;
+/* The cost's options; the rest are the shared ones. */
+typedef struct cost_options {
     double exponent;
-    double reserve;
-    const char *variant;
-    double weight_kg;
-    bool has_weight_kg;
-    int weight_index; /* -1: not given */
-    int level;
-    const char *out_dir;
-} optimize_options;
+    double reserve; /* N·m */
+} cost_options;
 
-enum { PARSE_HELP = 100 };
-
-static int parse_arguments(int argc, char **argv, optimize_options *opts)
+static bool take_cost_option(int id, const cli_value *value, void *own)
 {
-    cli_parser parser;
-    cli_parser_start(&parser, &command, argc, argv);
-    cli_value value;
-    int id;
-    while ((id = cli_next(&parser, &value)) >= 0) {
-        switch (id) {
-        case OPT_MOTION:
-            opts->motion = value.text;
-            break;
-        case OPT_CUTOFF:
-            opts->cutoff = value.number;
-            break;
-        case OPT_EXPONENT:
-            opts->exponent = value.number;
-            break;
-        case OPT_RESERVE:
-            opts->reserve = value.number;
-            break;
-        case OPT_VARIANT:
-            opts->variant = value.text;
-            break;
-        case OPT_WEIGHT:
-            opts->weight_kg = value.number;
-            opts->has_weight_kg = true;
-            break;
-        case OPT_WEIGHT_INDEX:
-            opts->weight_index = (int)value.integer;
-            break;
-        case OPT_LEVEL:
-            opts->level = (int)value.integer;
-            break;
-        default:
-            opts->out_dir = value.text;
-            break;
-        }
+    cost_options *cost = own;
+    if (id == OPT_EXPONENT) {
+        cost->exponent = value->number;
+    } else if (id == OPT_RESERVE) {
+        cost->reserve = value->number;
     }
-    if (id == CLI_END && parser.operand_count == 1) {
-        opts->model = parser.operands[0];
-    }
-    cli_parser_finish(&parser);
-    if (id != CLI_END) {
-        return id == CLI_HELP ? PARSE_HELP : EXIT_USAGE;
-    }
-    if (opts->model == NULL) {
-        return cli_usage_error(&command, "missing the model (sample, arm, leg, worm or a model file)");
-    }
-    if (opts->motion == NULL) {
-        return cli_usage_error(&command, "missing --motion FILE");
-    }
-    if (opts->has_weight_kg && opts->weight_index >= 0) {
-        return cli_usage_error(&command, "give --weight or --weight-index, not both");
-    }
-    return 0;
+    return id == OPT_EXPONENT || id == OPT_RESERVE;
 }
 
 /* -------------------------------------------------------------- the table */
@@ -274,50 +161,9 @@ static void table_free(table *t)
 
 /* ------------------------------------------------------------ the analysis */
 
-/* The smoothed angles (deg), rates and accelerations (rad/s, rad/s²) of
- * every hinge, [hinge][frame]; a hinge not built keeps zeros. */
-typedef struct kinematics {
-    double *angles, *rates, *accelerations;
-} kinematics;
-
-static bool smooth(const motion *m, double cutoff, kinematics *k)
-{
-    const size_t n = (size_t)m->frames, size = (size_t)m->hinge_count * n + 1;
-    k->angles = calloc(size, sizeof *k->angles);
-    k->rates = calloc(size, sizeof *k->rates);
-    k->accelerations = calloc(size, sizeof *k->accelerations);
-    if (k->angles == NULL || k->rates == NULL || k->accelerations == NULL) {
-        return false;
-    }
-    for (int h = 0; h < m->hinge_count; ++h) {
-        if (m->angles[h] == NULL) {
-            continue;
-        }
-        double *angle = &k->angles[(size_t)h * n], *rate = &k->rates[(size_t)h * n],
-               *acceleration = &k->accelerations[(size_t)h * n];
-        memcpy(angle, m->angles[h], n * sizeof *angle);
-        if (cutoff > 0.0 && !motion_filter_low_pass(angle, n, cutoff, 1.0 / m->step)) {
-            return false;
-        }
-        motion_filter_differentiate(angle, n, m->step, rate, acceleration);
-        for (size_t i = 0; i < n; ++i) {
-            rate[i] /= DEGREES;
-            acceleration[i] /= DEGREES;
-        }
-    }
-    return true;
-}
-
-static void kinematics_free(kinematics *k)
-{
-    free(k->angles);
-    free(k->rates);
-    free(k->accelerations);
-}
-
 /* Solves every frame into the table; returns 0 or an exit status after a
  * message naming the motion's line. */
-static int solve(mu_static_optimizer *optimizer, const motion *m, const kinematics *k, const char *motion_path,
+static int solve(mu_static_optimizer *optimizer, const motion *m, const motion_kinematics *k, const char *motion_path,
                  table *t)
 {
     const int hinges = m->hinge_count;
@@ -337,8 +183,8 @@ static int solve(mu_static_optimizer *optimizer, const motion *m, const kinemati
     for (size_t i = 0; code == 0 && i < n; ++i) {
         for (int h = 0; h < hinges; ++h) {
             angles[h] = k->angles[(size_t)h * n + i];
-            rates[h] = k->rates[(size_t)h * n + i];
-            accelerations[h] = k->accelerations[(size_t)h * n + i];
+            rates[h] = k->rates[(size_t)h * n + i] / DEGREES;
+            accelerations[h] = k->accelerations[(size_t)h * n + i] / DEGREES;
         }
         mu_static_frame frame = {.activations = activations,
                                  .forces = forces,
@@ -377,32 +223,21 @@ static int solve(mu_static_optimizer *optimizer, const motion *m, const kinemati
 static bool write_csv(const char *path, const table *t, json_t *settings)
 {
     const char **names = malloc((size_t)t->columns * sizeof *names);
-    double *row = malloc((size_t)t->columns * sizeof *row);
-    csv_table csv = {0};
-    char error[ATOMIC_FILE_ERROR_SIZE] = "out of memory";
-    bool ok = names != NULL && row != NULL;
-    for (int c = 0; ok && c < t->columns; ++c) {
-        names[c] = t->names[c];
-    }
-    ok = ok && csv_table_init(&csv, t->columns, names, error, sizeof error);
-    for (long i = 0; ok && i < t->frames; ++i) {
-        for (int c = 0; c < t->columns; ++c) {
-            row[c] = column(t, c)[i];
-        }
-        ok = csv_table_add_row(&csv, row, error, sizeof error);
-    }
-    ok = ok && csv_table_write(&csv, path, error, sizeof error);
-    if (ok) {
-        ok = provenance_write_sidecar(path, settings, error, sizeof error);
-    } else {
+    const double **values = malloc((size_t)t->columns * sizeof *values);
+    if (names == NULL || values == NULL) {
+        free(names);
+        free(values);
         json_decref(settings);
+        fputs("sinew: out of memory\n", stderr);
+        return false;
     }
-    if (!ok) {
-        fprintf(stderr, "sinew: %s\n", error);
+    for (int c = 0; c < t->columns; ++c) {
+        names[c] = t->names[c];
+        values[c] = column(t, c);
     }
-    csv_table_free(&csv);
+    const bool ok = motion_analysis_write_csv(path, t->columns, names, values, t->frames, settings);
     free(names);
-    free(row);
+    free(values);
     return ok;
 }
 
@@ -463,45 +298,13 @@ static bool write_figure(const char *path, const table *t)
     return written;
 }
 
-/* DIR/STEM-optimize.EXTENSION; returns 0 or an exit status. */
-static int output_path(const optimize_options *opts, const char *extension, char *path, size_t path_size)
+static json_t *optimize_settings(mu_model *model, const mu_model_options *options, const motion_analysis_options *opts,
+                                 const cost_options *cost, double step)
 {
-    struct stat info;
-    if (stat(opts->out_dir, &info) != 0) {
-        fprintf(stderr, "sinew: --out %s: %s\n", opts->out_dir, strerror(errno));
-        return EXIT_FAILURE;
-    }
-    if (!S_ISDIR(info.st_mode)) {
-        fprintf(stderr, "sinew: --out %s: not a directory\n", opts->out_dir);
-        return EXIT_FAILURE;
-    }
-    char stem[MODEL_STEM_SIZE];
-    model_source_stem(opts->model, stem, sizeof stem);
-    const size_t length = strlen(opts->out_dir);
-    const char *separator = opts->out_dir[length - 1] == '/' ? "" : "/";
-    const int written = snprintf(path, path_size, "%s%s%s-optimize.%s", opts->out_dir, separator, stem, extension);
-    if (written < 0 || (size_t)written >= path_size) {
-        fprintf(stderr, "sinew: --out %s: the output path is too long\n", opts->out_dir);
-        return EXIT_FAILURE;
-    }
-    return 0;
-}
-
-static json_t *optimize_settings(mu_model *model, const mu_model_options *options, const optimize_options *opts,
-                                 double step)
-{
-    json_t *settings = provenance_model_settings(model, options);
+    json_t *settings = motion_analysis_settings(model, options, opts, step);
     if (settings != NULL) {
-        json_object_set_new(settings, "motion", json_string(opts->motion));
-        json_object_set_new(settings, "sample_rate_Hz", json_real(1.0 / step));
-        json_object_set_new(settings, "cutoff_Hz", json_real(opts->cutoff));
-        json_object_set_new(settings, "filter",
-                            json_string(opts->cutoff > 0.0 ? "zero-phase 4th-order Butterworth low-pass (a 2nd-order "
-                                                             "section forwards and backwards, Winter's 0.802 "
-                                                             "correction), ends extended by point reflection"
-                                                           : "none"));
-        json_object_set_new(settings, "exponent", json_real(opts->exponent));
-        json_object_set_new(settings, "reserve_scale_N_m", json_real(opts->reserve));
+        json_object_set_new(settings, "exponent", json_real(cost->exponent));
+        json_object_set_new(settings, "reserve_scale_N_m", json_real(cost->reserve));
         json_object_set_new(settings, "method",
                             json_string("inverse dynamics, then per frame minimize sum a^p + sum (reserve/R)^2 "
                                         "subject to the hinge torques, NLopt SLSQP, warm-started"));
@@ -509,16 +312,11 @@ static json_t *optimize_settings(mu_model *model, const mu_model_options *option
     return settings;
 }
 
-static void print_summary(const table *t, const optimize_options *opts, double step, const char *csv_path,
-                          const char *png_path)
+static void print_summary(const table *t, const motion_analysis_options *opts, const cost_options *cost, double step,
+                          const char *csv_path, const char *png_path)
 {
-    printf("motion       %s: %ld frames at %g Hz\n", opts->motion, t->frames, 1.0 / step);
-    if (opts->cutoff > 0.0) {
-        printf("filter       zero-phase 4th-order Butterworth low-pass at %g Hz\n", opts->cutoff);
-    } else {
-        printf("filter       none\n");
-    }
-    printf("cost         sum of activation^%g, reserve scale %g N·m\n", opts->exponent, opts->reserve);
+    motion_analysis_print_header(opts, t->frames, step);
+    printf("cost         sum of activation^%g, reserve scale %g N·m\n", cost->exponent, cost->reserve);
     long failures = 0, first_failure = -1;
     for (long i = 0; i < t->frames; ++i) {
         if (column(t, COL_SOLVED)[i] == 0.0) {
@@ -549,85 +347,49 @@ static void print_summary(const table *t, const optimize_options *opts, double s
     printf("\ncsv          %s\nfigure       %s\n", csv_path, png_path);
 }
 
-/* The cut-off against the motion's sampling; returns 0 or an exit status. */
-static int check_cutoff(const optimize_options *opts, double step)
-{
-    if (opts->cutoff > 0.0 && !motion_filter_cutoff_valid(opts->cutoff, 1.0 / step)) {
-        fprintf(stderr,
-                "sinew: --cutoff %g Hz: %s is sampled at %g Hz, so the cut-off must be below %g Hz (or 0 to turn the "
-                "filter off)\n",
-                opts->cutoff, opts->motion, 1.0 / step, 0.5 / step * MOTION_FILTER_TWO_PASS_CORRECTION);
-        return EXIT_USAGE;
-    }
-    return 0;
-}
-
 /* Builds the model and the optimizer, reads, smooths and solves the
  * motion, and writes; returns 0 or an exit status. */
-static int analyse(const optimize_options *opts, mu_model_desc *desc)
+static int analyse(const motion_analysis_options *opts, const cost_options *cost, const mu_model_desc *desc)
 {
-    int variant = 0, weight = 0;
-    int code = model_source_choose_variant(desc, opts->variant, &variant);
-    code = code == 0
-               ? model_source_choose_weight(desc, opts->has_weight_kg, opts->weight_kg, opts->weight_index, &weight)
-               : code;
+    mu_model_options options;
+    mu_model *model = NULL;
+    int code = motion_analysis_build_model(opts, desc, &options, &model);
     if (code != 0) {
         return code;
     }
-    mu_model_options options = mu_default_model_options();
-    options.variant = variant;
-    options.weight_index = weight;
-    options.level = opts->level;
-    mu_model *model = NULL;
-    if (mu_model_create(desc, &options, &model) != RB_OK) {
-        fprintf(stderr, "sinew: building the model failed: %s\n", user_error());
-        return EXIT_FAILURE;
-    }
-    int built = 0;
-    for (int h = 0; h < mu_model_hinge_count(model); ++h) {
-        built += !rb_joint_id_is_null(mu_model_hinge_joint(model, h));
-    }
-    if (built == 0) {
-        fprintf(stderr, "sinew: model %s has no hinge at level %d in variant \"%s\": nothing to compute\n", desc->name,
-                opts->level, desc->variants[variant].name);
-        mu_model_destroy(model);
-        return EXIT_USAGE;
-    }
     mu_static_optimization_settings settings = mu_default_static_optimization_settings();
-    settings.exponent = opts->exponent;
-    settings.reserve_scale = opts->reserve;
+    settings.exponent = cost->exponent;
+    settings.reserve_scale = cost->reserve;
     mu_static_optimizer *optimizer = NULL;
     motion m = {0};
-    kinematics k = {0};
+    motion_kinematics k = {0};
     table t = {0};
     if (mu_static_optimizer_create(model, &settings, &optimizer) != RB_OK) {
-        fprintf(stderr, "sinew: model %s (variant \"%s\", level %d): %s\n", desc->name, desc->variants[variant].name,
-                opts->level, user_error());
+        fprintf(stderr, "sinew: model %s (variant \"%s\", level %d): %s\n", desc->name,
+                desc->variants[options.variant].name, opts->level, user_error());
         code = EXIT_USAGE;
-    } else if (!motion_file_read(opts->motion, model, &m)) {
-        code = EXIT_FAILURE;
     }
-    code = code == 0 ? check_cutoff(opts, m.step) : code;
-    if (code == 0 && (!smooth(&m, opts->cutoff, &k) ||
+    code = code == 0 ? motion_analysis_read(opts, model, &m) : code;
+    if (code == 0 && (!motion_kinematics_compute(&m, opts->cutoff, &k) ||
                       !table_init(&t, model, mu_static_optimizer_actuator_count(optimizer), m.frames))) {
         fputs("sinew: out of memory\n", stderr);
         code = EXIT_FAILURE;
     }
     code = code == 0 ? solve(optimizer, &m, &k, opts->motion, &t) : code;
     char csv_path[ATOMIC_FILE_PATH_MAX], png_path[ATOMIC_FILE_PATH_MAX];
-    code = code == 0 ? output_path(opts, "csv", csv_path, sizeof csv_path) : code;
-    code = code == 0 ? output_path(opts, "png", png_path, sizeof png_path) : code;
-    if (code == 0 && !write_csv(csv_path, &t, optimize_settings(model, &options, opts, m.step))) {
+    code = code == 0 ? motion_analysis_output_path(opts, "-optimize", "csv", csv_path, sizeof csv_path) : code;
+    code = code == 0 ? motion_analysis_output_path(opts, "-optimize", "png", png_path, sizeof png_path) : code;
+    if (code == 0 && !write_csv(csv_path, &t, optimize_settings(model, &options, opts, cost, m.step))) {
         code = EXIT_FAILURE;
     }
     if (code == 0 && !write_figure(png_path, &t)) {
         code = EXIT_FAILURE;
     }
     if (code == 0) {
-        print_summary(&t, opts, m.step, csv_path, png_path);
+        print_summary(&t, opts, cost, m.step, csv_path, png_path);
     }
     table_free(&t);
-    kinematics_free(&k);
+    motion_kinematics_free(&k);
     motion_free(&m);
     mu_static_optimizer_destroy(optimizer);
     mu_model_destroy(model);
@@ -636,14 +398,11 @@ static int analyse(const optimize_options *opts, mu_model_desc *desc)
 
 int cmd_optimize(int argc, char **argv)
 {
-    optimize_options opts = {.cutoff = MOTION_FILTER_DEFAULT_CUTOFF,
-                             .exponent = MU_STATIC_OPTIMIZATION_DEFAULT_EXPONENT,
-                             .reserve = MU_STATIC_OPTIMIZATION_DEFAULT_RESERVE_SCALE,
-                             .weight_index = -1,
-                             .level = 4,
-                             .out_dir = "."};
-    int code = parse_arguments(argc, argv, &opts);
-    if (code == PARSE_HELP) {
+    motion_analysis_options opts = motion_analysis_default_options();
+    cost_options cost = {.exponent = MU_STATIC_OPTIMIZATION_DEFAULT_EXPONENT,
+                         .reserve = MU_STATIC_OPTIMIZATION_DEFAULT_RESERVE_SCALE};
+    int code = motion_analysis_parse(&command, argc, argv, &opts, take_cost_option, &cost);
+    if (code == MOTION_ANALYSIS_HELP) {
         cli_print_help(&command, stdout);
         return EXIT_SUCCESS;
     }
@@ -652,7 +411,7 @@ int cmd_optimize(int argc, char **argv)
         code = model_source_load(opts.model, &desc);
     }
     if (code == 0) {
-        code = analyse(&opts, desc);
+        code = analyse(&opts, &cost, desc);
     }
     mu_model_desc_destroy(desc);
     return code;

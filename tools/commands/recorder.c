@@ -95,10 +95,10 @@ static void free_lists(recorder *csv)
     csv->settings = NULL;
 }
 
-bool recorder_open(recorder *csv, const char *path, mu_model *model, const mu_model_options *options, char *error,
-                   size_t error_size)
+bool recorder_open(recorder *csv, const char *path, mu_model *model, const mu_model_options *options, int digits,
+                   char *error, size_t error_size)
 {
-    *csv = (recorder){.hinges = NULL};
+    *csv = (recorder){.digits = digits};
     csv->settings = provenance_model_settings(model, options);
     if (csv->settings == NULL || !collect_built(csv, model) || !recorder_loads_open(&csv->loads, model)) {
         snprintf(error, error_size, "out of memory");
@@ -118,33 +118,47 @@ bool recorder_open(recorder *csv, const char *path, mu_model *model, const mu_mo
     return true;
 }
 
-/* Ten significant digits resolve 1e-9 of a metre-sized value, below any
- * effect the file is read for, and keep a row of the arm under 1.5 kB. */
 bool recorder_write_row(recorder *csv, const mu_model *model, double time, char *error, size_t error_size)
 {
     FILE *stream = csv->file.stream;
-    fprintf(stream, "%.10g", time);
+    const int digits = csv->digits;
+    fprintf(stream, "%.*g", digits, time);
     for (int m = 0; m < mu_model_muscle_count(model); ++m) {
         mu_muscle_readout r = mu_model_muscle_readout(model, m);
-        fprintf(stream, ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g", r.activation,
-                r.target_tension, r.length, r.normalized_length, r.velocity, r.normalized_velocity, r.contraction,
-                r.normalized_contraction, r.active_force, r.passive_force, r.total_force);
-        fprintf(stream, ",%.10g,%.10g,%.10g,%.10g", r.excitation, r.fibre_length, r.tendon_length,
-                r.pennation_angle * 180.0 / RB_PI);
+        const double values[RECORDER_MUSCLE_COLUMNS] = {r.activation,
+                                                        r.target_tension,
+                                                        r.length,
+                                                        r.normalized_length,
+                                                        r.velocity,
+                                                        r.normalized_velocity,
+                                                        r.contraction,
+                                                        r.normalized_contraction,
+                                                        r.active_force,
+                                                        r.passive_force,
+                                                        r.total_force,
+                                                        r.excitation,
+                                                        r.fibre_length,
+                                                        r.tendon_length,
+                                                        r.pennation_angle * 180.0 / RB_PI};
+        recorder_write_values(stream, digits, values, RECORDER_MUSCLE_COLUMNS);
     }
     for (int t = 0; t < mu_model_torque_muscle_count(model); ++t) {
         const mu_motor_pool *pool = mu_model_motor_pool(model, t);
-        fprintf(stream, ",%d,%.10g,%.10g", mu_motor_pool_recruited(pool), mu_motor_pool_exertion(pool),
-                mu_torque_actuator_torque(mu_model_torque_actuator(model, t)));
+        const double values[RECORDER_TORQUE_COLUMNS - 1] = {
+            mu_motor_pool_exertion(pool), mu_torque_actuator_torque(mu_model_torque_actuator(model, t))};
+        fprintf(stream, ",%d", mu_motor_pool_recruited(pool));
+        recorder_write_values(stream, digits, values, RECORDER_TORQUE_COLUMNS - 1);
     }
     for (int h = 0; h < csv->hinge_count; ++h) {
-        fprintf(stream, ",%.10g", mu_model_hinge_angle(model, csv->hinges[h]));
+        const double angle = mu_model_hinge_angle(model, csv->hinges[h]);
+        recorder_write_values(stream, digits, &angle, RECORDER_HINGE_COLUMNS);
     }
     for (int p = 0; p < csv->part_count; ++p) {
-        rb_vec2 centre = mu_model_part_centre(model, csv->parts[p]);
-        fprintf(stream, ",%.10g,%.10g,%.10g", centre.x, centre.y, mu_model_part_angle(model, csv->parts[p]));
+        const rb_vec2 centre = mu_model_part_centre(model, csv->parts[p]);
+        const double values[RECORDER_PART_COLUMNS] = {centre.x, centre.y, mu_model_part_angle(model, csv->parts[p])};
+        recorder_write_values(stream, digits, values, RECORDER_PART_COLUMNS);
     }
-    if (!recorder_loads_write_row(&csv->loads, stream, model)) {
+    if (!recorder_loads_write_row(&csv->loads, stream, digits, model)) {
         snprintf(error, error_size, "cannot compute the moment arms: %s", rb_last_error());
         return false;
     }

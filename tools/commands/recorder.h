@@ -16,6 +16,10 @@
  * arms (recorder_loads.h). A header field holding a comma, a
  * quote or a line break is quoted as RFC 4180 says.
  *
+ * Numbers are written with RECORDER_DEFAULT_DIGITS significant digits, or
+ * as many as the caller asks up to RECORDER_EXACT_DIGITS, which read back
+ * as the very doubles the run computed.
+ *
  * Beside it, PATH-metadata.json names the version, the command line and
  * the model's settings as built (io/provenance.h), with the frames
  * recorded.
@@ -39,6 +43,12 @@ enum {
     RECORDER_PART_COLUMNS = 3
 };
 
+/* Ten significant digits resolve 1e-9 of a metre-sized value, below any
+ * effect the file is read for, and keep a row of the arm under 1.5 kB;
+ * seventeen give every IEEE 754 double back exactly (a file compared bit
+ * for bit with another computation, as the Python package's tests do). */
+enum { RECORDER_MIN_DIGITS = 1, RECORDER_DEFAULT_DIGITS = 10, RECORDER_EXACT_DIGITS = 17 };
+
 typedef struct recorder {
     atomic_file file;
     int *hinges; /* model indices of the built hinges */
@@ -47,13 +57,16 @@ typedef struct recorder {
     int part_count;
     recorder_loads loads;
     long rows;
+    int digits;       /* significant digits of every number */
     json_t *settings; /* of the sidecar: the model's, taken at the start */
 } recorder;
 
 /* Opens `path` and writes the header for the model as built with
- * `options`. On failure nothing is left on disk and `error` says why. */
-bool recorder_open(recorder *csv, const char *path, mu_model *model, const mu_model_options *options, char *error,
-                   size_t error_size);
+ * `options`; its numbers will have `digits` significant digits
+ * (RECORDER_MIN_DIGITS .. RECORDER_EXACT_DIGITS). On failure nothing is
+ * left on disk and `error` says why. */
+bool recorder_open(recorder *csv, const char *path, mu_model *model, const mu_model_options *options, int digits,
+                   char *error, size_t error_size);
 
 /* Writes the row of the model's present state at `time` s. */
 bool recorder_write_row(recorder *csv, const mu_model *model, double time, char *error, size_t error_size);

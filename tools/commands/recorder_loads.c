@@ -105,19 +105,27 @@ void recorder_loads_write_header(const recorder_loads *loads, FILE *stream, cons
     }
 }
 
-static void write_load(FILE *stream, mu_joint_load load)
+void recorder_write_values(FILE *stream, int digits, const double *values, int count)
 {
-    fprintf(stream, ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g", load.force.x, load.force.y, load.along, load.across,
-            load.torque, load.muscle_torque);
+    for (int i = 0; i < count; ++i) {
+        fprintf(stream, ",%.*g", digits, values[i]);
+    }
 }
 
-bool recorder_loads_write_row(const recorder_loads *loads, FILE *stream, const mu_model *model)
+static void write_load(FILE *stream, int digits, mu_joint_load load)
+{
+    const double values[RECORDER_JOINT_LOAD_COLUMNS] = {load.force.x, load.force.y, load.along,
+                                                        load.across,  load.torque,  load.muscle_torque};
+    recorder_write_values(stream, digits, values, RECORDER_JOINT_LOAD_COLUMNS);
+}
+
+bool recorder_loads_write_row(const recorder_loads *loads, FILE *stream, int digits, const mu_model *model)
 {
     for (int h = 0; h < loads->hinge_count; ++h) {
-        write_load(stream, mu_model_hinge_load(model, loads->hinges[h]));
+        write_load(stream, digits, mu_model_hinge_load(model, loads->hinges[h]));
     }
     for (int g = 0; g < loads->glue_count; ++g) {
-        write_load(stream, mu_model_glue_load(model, loads->glues[g]));
+        write_load(stream, digits, mu_model_glue_load(model, loads->glues[g]));
     }
     const int muscles = mu_model_muscle_count(model);
     for (int h = 0; h < loads->hinge_count; ++h) {
@@ -127,14 +135,17 @@ bool recorder_loads_write_row(const recorder_loads *loads, FILE *stream, const m
         for (int m = 0; m < muscles; ++m) {
             if (loads->crossing[h * muscles + m]) {
                 const double force = mu_model_muscle_readout(model, m).total_force;
-                fprintf(stream, ",%.10g,%.10g", loads->arms[m], force * loads->arms[m]);
+                const double values[RECORDER_MOMENT_ARM_COLUMNS] = {loads->arms[m], force * loads->arms[m]};
+                recorder_write_values(stream, digits, values, RECORDER_MOMENT_ARM_COLUMNS);
             }
         }
     }
     for (int b = 0; b < loads->bone_count; ++b) {
         const mu_bone_stress stress = mu_model_bone_stress(model, loads->bones[b]);
-        fprintf(stream, ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g", stress.worst.stress, stress.strain,
-                stress.worst.safety_factor, stress.worst.s, stress.worst.axial_force, stress.worst.bending_moment);
+        const double values[RECORDER_BONE_STRESS_COLUMNS] = {stress.worst.stress,        stress.strain,
+                                                             stress.worst.safety_factor, stress.worst.s,
+                                                             stress.worst.axial_force,   stress.worst.bending_moment};
+        recorder_write_values(stream, digits, values, RECORDER_BONE_STRESS_COLUMNS);
     }
     return true;
 }

@@ -47,8 +47,13 @@ void recorder_loads_close(recorder_loads *loads);
  * recorder quotes it. */
 void recorder_loads_write_header(const recorder_loads *loads, FILE *stream, const mu_model *model,
                                  void (*write_field)(FILE *, const char *, const char *));
-/* false when the moment arms cannot be computed (rb_last_error says why). */
-bool recorder_loads_write_row(const recorder_loads *loads, FILE *stream, const mu_model *model);
+/* Writes the row's loads with `digits` significant digits; false when the
+ * moment arms cannot be computed (rb_last_error says why). */
+bool recorder_loads_write_row(const recorder_loads *loads, FILE *stream, int digits, const mu_model *model);
+
+/* Writes ",V" for each of `count` values with `digits` significant digits:
+ * every number of a run's CSV goes through here. */
+void recorder_write_values(FILE *stream, int digits, const double *values, int count);
 
 int recorder_loads_column_count(const recorder_loads *loads);
 

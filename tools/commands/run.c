@@ -50,6 +50,7 @@ enum {
     OPT_VELOCITY_ITERATIONS,
     OPT_POSITION_ITERATIONS,
     OPT_MUSCLE,
+    OPT_DIGITS,
 };
 
 static const cli_option options_table[] = {
@@ -131,6 +132,14 @@ static const cli_option options_table[] = {
      .help = "the CSV's name without .csv (letters, digits, . _ + - and =),\n"
              "so that runs can share a folder",
      .fallback = "the model's"},
+    {.name = "digits",
+     .id = OPT_DIGITS,
+     .kind = CLI_INT,
+     .value_name = "N",
+     .help = "significant digits of the CSV's numbers; 17 writes every double exactly",
+     .min = RECORDER_MIN_DIGITS,
+     .max = RECORDER_EXACT_DIGITS,
+     .fallback = "10"},
     {.name = "summary",
      .id = OPT_SUMMARY,
      .kind = CLI_PATH,
@@ -239,6 +248,7 @@ typedef struct run_options {
     bool strict;                  /* a failed run (mu_model_failure) is an error, not a warning */
     const char *name;             /* NULL: the model's stem */
     const char *summary_path;     /* NULL: no JSON summary */
+    int digits;                   /* significant digits of the CSV's numbers */
     int substeps;                 /* 0: the model's */
     const char *solver;           /* NULL: the model's */
     int velocity_iterations;      /* 0: the model's */
@@ -315,6 +325,9 @@ static parse_result parse_arguments(int argc, char **argv, run_options *opts)
             break;
         case OPT_SUMMARY:
             opts->summary_path = value.text;
+            break;
+        case OPT_DIGITS:
+            opts->digits = (int)value.integer;
             break;
         case OPT_SUBSTEPS:
             opts->substeps = (int)value.integer;
@@ -867,7 +880,7 @@ static int prepare(run_state *run)
         run->angle_min[h] = NAN;
         run->angle_max[h] = NAN;
     }
-    if (!recorder_open(&run->csv, run->csv_path, run->model, &options, error, sizeof error)) {
+    if (!recorder_open(&run->csv, run->csv_path, run->model, &options, run->opts->digits, error, sizeof error)) {
         fprintf(stderr, "sinew: --out: %s\n", error);
         return EXIT_FAILURE;
     }
@@ -881,6 +894,7 @@ int cmd_run(int argc, char **argv)
                         .duration = 10.0,
                         .out_dir = ".",
                         .position_iterations = -1,
+                        .digits = RECORDER_DEFAULT_DIGITS,
                         .argc = argc,
                         .argv = argv};
     opts.controls = malloc(((size_t)argc + 1) * sizeof *opts.controls);
