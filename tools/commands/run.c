@@ -9,7 +9,6 @@
  * against the model), and that the CSV can be created; a run then fails
  * only if the engine or the disk does.
  */
-#include <errno.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -20,6 +19,7 @@
 #include "cli/model_source.h"
 #include "cli/option_value.h"
 #include "cli/options.h"
+#include "cli/output_path.h"
 #include "cli/user_error.h"
 #include "commands.h"
 #include "control_file.h"
@@ -527,29 +527,13 @@ static int apply_solver(const run_options *opts, mu_model *model)
  * here so that the message names --out rather than a temporary file. */
 static int csv_path_for(const run_options *opts, char *path, size_t path_size)
 {
-    struct stat info;
-    if (stat(opts->out_dir, &info) != 0) {
-        fprintf(stderr, "sinew: --out %s: %s\n", opts->out_dir, strerror(errno));
-        return EXIT_FAILURE;
-    }
-    if (!S_ISDIR(info.st_mode)) {
-        fprintf(stderr, "sinew: --out %s: not a directory\n", opts->out_dir);
-        return EXIT_FAILURE;
-    }
     char stem[MODEL_STEM_SIZE];
     if (opts->name != NULL) {
         snprintf(stem, sizeof stem, "%s", opts->name);
     } else {
         model_source_stem(opts->model, stem, sizeof stem);
     }
-    size_t length = strlen(opts->out_dir);
-    const char *separator = opts->out_dir[length - 1] == '/' ? "" : "/";
-    int written = snprintf(path, path_size, "%s%s%s.csv", opts->out_dir, separator, stem);
-    if (written < 0 || (size_t)written >= path_size) {
-        fprintf(stderr, "sinew: --out %s: the path of the CSV is too long\n", opts->out_dir);
-        return EXIT_FAILURE;
-    }
-    return 0;
+    return output_path_in_folder(opts->out_dir, stem, "", "csv", path, path_size);
 }
 
 /* The folder of --summary FILE exists, so that a run is not lost for a
