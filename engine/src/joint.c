@@ -363,6 +363,61 @@ static bool is_active(const rb_world *world, const rb_joint *joint)
     return b_moves || (a->type == RB_BODY_DYNAMIC && a->awake);
 }
 
+/* The k-th joint of this step's active list, counted from the end when
+ * sweeping backwards. */
+static rb_joint *active_joint(rb_world *world, int k, bool backwards)
+{
+    int n = world->active_joint_count;
+    return &world->joints[world->active_joints[backwards ? n - 1 - k : k]];
+}
+
+/* What the step cannot change: while the world is locked no body changes
+ * its mass, centre or type, falls asleep or wakes, and no joint its
+ * settings. */
+static void prepare_frame_for_step(rb_world *world, rb_joint *joint)
+{
+    rb_joint_frame *f = &joint->frame;
+    const rb_body *b = &world->bodies[joint->body_b];
+    f->inv_mass_b = b->awake ? b->inv_mass : 0.0;
+    f->inv_inertia_b = b->awake ? b->inv_inertia : 0.0;
+    f->local_b = rb_sub(joint->local_anchor_b, b->local_center);
+    if (joint->body_a >= 0) {
+        const rb_body *a = &world->bodies[joint->body_a];
+        f->inv_mass_a = a->awake ? a->inv_mass : 0.0;
+        f->inv_inertia_a = a->awake ? a->inv_inertia : 0.0;
+        f->local_a = rb_sub(joint->local_anchor_a, a->local_center);
+    } else {
+        f->inv_mass_a = 0.0;
+        f->inv_inertia_a = 0.0;
+        f->local_a = rb_v2(0.0, 0.0);
+    }
+}
+
+static void prepare_for_step(rb_world *world)
+{
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        rb_joint *joint = active_joint(world, k, false);
+        prepare_frame_for_step(world, joint);
+        switch (joint->type) {
+        case RB_JOINT_REVOLUTE:
+            rb_revolute_prepare_step(joint);
+            break;
+        case RB_JOINT_WELD:
+            rb_weld_prepare_step(joint);
+            break;
+        case RB_JOINT_DISTANCE:
+            rb_distance_prepare_step(joint);
+            break;
+        case RB_JOINT_PRISMATIC:
+            rb_prismatic_prepare_step(joint);
+            break;
+        case RB_JOINT_MOUSE:
+        case RB_JOINT_PULLEY:
+            break; /* nothing fixed beyond the frame */
+        }
+    }
+}
+
 rb_status rb_joints_collect_active(rb_world *world)
 {
     if (rb_grow_array((void **)&world->active_joints, &world->active_joint_capacity, world->joint_count,
@@ -377,40 +432,25 @@ rb_status rb_joints_collect_active(rb_world *world)
         }
     }
     world->active_joint_count = count;
+    prepare_for_step(world);
     return RB_OK;
 }
 
-/* The k-th joint of this step's active list, counted from the end when
- * sweeping backwards. */
-static rb_joint *active_joint(rb_world *world, int k, bool backwards)
-{
-    int n = world->active_joint_count;
-    return &world->joints[world->active_joints[backwards ? n - 1 - k : k]];
-}
-
+/* The anchors turned into the world at the poses now, and the angular
+ * velocities at the start of the substep. */
 static void prepare_frame(rb_world *world, rb_joint *joint)
 {
     rb_joint_frame *f = &joint->frame;
-    const rb_body *b = &world->bodies[joint->body_b];
     const rb_body_state *sb = &world->states[joint->body_b];
-    f->inv_mass_b = b->awake ? b->inv_mass : 0.0;
-    f->inv_inertia_b = b->awake ? b->inv_inertia : 0.0;
-    f->local_b = rb_sub(joint->local_anchor_b, b->local_center);
     f->rb = rb_rotate(sb->rotation, f->local_b);
     f->omega_b = sb->angular_velocity;
-    f->omega_a = joint->body_a >= 0 ? world->states[joint->body_a].angular_velocity : 0.0;
     if (joint->body_a >= 0) {
-        const rb_body *a = &world->bodies[joint->body_a];
         const rb_body_state *sa = &world->states[joint->body_a];
-        f->inv_mass_a = a->awake ? a->inv_mass : 0.0;
-        f->inv_inertia_a = a->awake ? a->inv_inertia : 0.0;
-        f->local_a = rb_sub(joint->local_anchor_a, a->local_center);
         f->ra = rb_rotate(sa->rotation, f->local_a);
+        f->omega_a = sa->angular_velocity;
     } else {
-        f->inv_mass_a = 0.0;
-        f->inv_inertia_a = 0.0;
-        f->local_a = rb_v2(0.0, 0.0);
         f->ra = rb_v2(0.0, 0.0);
+        f->omega_a = 0.0;
     }
 }
 
@@ -421,22 +461,16 @@ void rb_joints_prepare(rb_world *world, double h)
         prepare_frame(world, joint);
         switch (joint->type) {
         case RB_JOINT_REVOLUTE:
-            rb_revolute_prepare(world, joint, h);
-            break;
         case RB_JOINT_WELD:
-            rb_weld_prepare(world, joint, h);
+            rb_point_constraint_prepare(world, joint, h);
             break;
         case RB_JOINT_DISTANCE:
-            rb_distance_prepare(world, joint, h);
+            rb_distance_prepare(world, joint);
             break;
         case RB_JOINT_MOUSE:
-            rb_mouse_prepare(world, joint, h);
-            break;
         case RB_JOINT_PRISMATIC:
-            rb_prismatic_prepare(world, joint, h);
-            break;
         case RB_JOINT_PULLEY:
-            break; /* its rows are computed when solved */
+            break; /* their rows are computed when solved */
         }
     }
 }

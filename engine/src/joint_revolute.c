@@ -158,9 +158,8 @@ rb_status rb_revolute_joint_set_spring(rb_world *world, rb_joint_id id, bool ena
 
 /* ---- solver ---------------------------------------------------------------------- */
 
-void rb_revolute_prepare(rb_world *world, rb_joint *joint, double h)
+void rb_revolute_prepare_step(rb_joint *joint)
 {
-    rb_point_constraint_prepare(world, joint, h);
     double inverse_axial = joint->frame.inv_inertia_a + joint->frame.inv_inertia_b;
     rb_revolute_data *r = &joint->as.revolute;
     r->axial_mass = inverse_axial > 0.0 ? 1.0 / inverse_axial : 0.0;

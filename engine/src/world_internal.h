@@ -312,14 +312,16 @@ typedef struct rb_joint {
 
 /* A node of the pins' trees (joint_tree.h): a body or a pin. */
 typedef struct rb_tree_node {
-    int body;        /* body slot, or -1 for a pin */
-    int joint;       /* joint slot, or -1 for a body */
-    int parent;      /* node index, -1 for a root */
-    int dim;         /* 3 for a body (vx, vy, ω), 2 for a pin (its impulse) */
-    double pivot[9]; /* D(node), dim × dim, summed from its children */
-    double dinv[9];  /* D(node)⁻¹ */
-    double x[6];     /* D(node)⁻¹·H(node, parent) */
-    double value[3]; /* the right-hand side, then the solution */
+    int body;             /* body slot, or -1 for a pin */
+    int joint;            /* joint slot, or -1 for a body */
+    int parent;           /* node index, -1 for a root */
+    int dim;              /* 3 for a body (vx, vy, ω), 2 for a pin (its impulse) */
+    double pivot[9];      /* D(node), dim × dim, summed from its children */
+    double dinv[9];       /* D(node)⁻¹ */
+    double x[6];          /* D(node)⁻¹·H(node, parent) */
+    double value[3];      /* the right-hand side, then the solution */
+    double mass, inertia; /* a body's, kg and kg·m²: its pivot before its children's */
+    rb_vec2 ra, rb;       /* a pin's anchor offsets (m) at the poses the nodes were factored at */
 } rb_tree_node;
 
 /* The pins solved together this step, with the arrays the search for
