@@ -49,8 +49,14 @@ static int find_root(int *parent, int i)
     return i;
 }
 
+/* The mass ratio from which a tree is solved together, by solver. */
+static double uneven_ratio(const rb_world *world)
+{
+    return world->settings.type == RB_SOLVER_SOFT_STEP ? RB_SOFT_STEP_TREE_MASS_RATIO : RB_TREE_MASS_RATIO;
+}
+
 /* Clears every active joint's in_tree, and says whether the candidate
- * pins' moving bodies differ in mass by RB_TREE_MASS_RATIO or more: when
+ * pins' moving bodies differ in mass by uneven_ratio or more: when
  * not, no tree of them can be uneven. One pass, comparing inverse masses
  * (the heaviest has the smallest), so the common case of like masses
  * costs a load and a comparison or two a joint. */
@@ -73,11 +79,11 @@ static bool clear_and_find_uneven(rb_world *world)
             largest = rb_max(largest, f->inv_mass_b);
         }
     }
-    return largest >= RB_TREE_MASS_RATIO * smallest;
+    return largest >= uneven_ratio(world) * smallest;
 }
 
 /* Leaves in the trees only the pins of trees whose heaviest body is at
- * least RB_TREE_MASS_RATIO times their lightest (joint_tree.h says why),
+ * least uneven_ratio times their lightest (joint_tree.h says why),
  * and returns how many are left. */
 static int keep_uneven_trees(rb_world *world, int pins)
 {
@@ -108,7 +114,7 @@ static int keep_uneven_trees(rb_world *world, int pins)
         const rb_joint_frame *f = &joint->frame;
         int root = find_root(tree->union_parent,
                              moves_freely(f->inv_mass_a, f->inv_inertia_a) ? joint->body_a : joint->body_b);
-        if (range[2 * root + 1] < RB_TREE_MASS_RATIO * range[2 * root]) {
+        if (range[2 * root + 1] < uneven_ratio(world) * range[2 * root]) {
             joint->in_tree = false;
             --pins;
         }
