@@ -421,7 +421,9 @@ static void prepare_for_step(rb_world *world)
 rb_status rb_joints_collect_active(rb_world *world)
 {
     if (rb_grow_array((void **)&world->active_joints, &world->active_joint_capacity, world->joint_count,
-                      sizeof *world->active_joints) != 0) {
+                      sizeof *world->active_joints) != 0 ||
+        rb_grow_array((void **)&world->substep_omega, &world->substep_omega_capacity, world->body_slots,
+                      sizeof *world->substep_omega) != 0) {
         world->active_joint_count = 0;
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for the joint list");
     }
@@ -436,57 +438,41 @@ rb_status rb_joints_collect_active(rb_world *world)
     return RB_OK;
 }
 
-/* The anchors turned into the world at the poses now, and the angular
- * velocities at the start of the substep. */
-static void prepare_frame(rb_world *world, rb_joint *joint)
+void rb_joints_prepare(rb_world *world)
 {
-    rb_joint_frame *f = &joint->frame;
-    const rb_body_state *sb = &world->states[joint->body_b];
-    f->rb = rb_rotate(sb->rotation, f->local_b);
-    f->omega_b = sb->angular_velocity;
-    if (joint->body_a >= 0) {
-        const rb_body_state *sa = &world->states[joint->body_a];
-        f->ra = rb_rotate(sa->rotation, f->local_a);
-        f->omega_a = sa->angular_velocity;
-    } else {
-        f->ra = rb_v2(0.0, 0.0);
-        f->omega_a = 0.0;
+    if (world->active_joint_count == 0) {
+        return;
+    }
+    for (int i = 0; i < world->body_slots; ++i) {
+        world->substep_omega[i] = world->states[i].angular_velocity;
     }
 }
 
-void rb_joints_prepare(rb_world *world, double h)
+/* The anchors turned into the world at the poses now. */
+static void prepare_frame(rb_world *world, rb_joint *joint)
+{
+    rb_joint_frame *f = &joint->frame;
+    f->rb = rb_rotate(world->states[joint->body_b].rotation, f->local_b);
+    f->ra = joint->body_a >= 0 ? rb_rotate(world->states[joint->body_a].rotation, f->local_a) : rb_v2(0.0, 0.0);
+}
+
+/* Each joint in one visit: its substep's frame, then its warm start. */
+void rb_joints_warm_start(rb_world *world, double h)
 {
     for (int k = 0; k < world->active_joint_count; ++k) {
         rb_joint *joint = active_joint(world, k, false);
         prepare_frame(world, joint);
         switch (joint->type) {
         case RB_JOINT_REVOLUTE:
-        case RB_JOINT_WELD:
             rb_point_constraint_prepare(world, joint, h);
-            break;
-        case RB_JOINT_DISTANCE:
-            rb_distance_prepare(world, joint);
-            break;
-        case RB_JOINT_MOUSE:
-        case RB_JOINT_PRISMATIC:
-        case RB_JOINT_PULLEY:
-            break; /* their rows are computed when solved */
-        }
-    }
-}
-
-void rb_joints_warm_start(rb_world *world)
-{
-    for (int k = 0; k < world->active_joint_count; ++k) {
-        rb_joint *joint = active_joint(world, k, false);
-        switch (joint->type) {
-        case RB_JOINT_REVOLUTE:
             rb_revolute_warm_start(world, joint);
             break;
         case RB_JOINT_WELD:
+            rb_point_constraint_prepare(world, joint, h);
             rb_weld_warm_start(world, joint);
             break;
         case RB_JOINT_DISTANCE:
+            rb_distance_prepare(world, joint);
             rb_distance_warm_start(world, joint);
             break;
         case RB_JOINT_MOUSE:

@@ -31,12 +31,15 @@
  * zeroed). */
 rb_status rb_joints_collect_active(rb_world *world);
 
-/* Per substep of length h, only what moves with the bodies: each frame's
- * anchors turned into the world at the poses now and the angular
- * velocities, the pins' mass matrices and drift, the distance joints'
- * axes. */
-void rb_joints_prepare(rb_world *world, double h);
-void rb_joints_warm_start(rb_world *world);
+/* At the start of each substep, before any warm start: records every
+ * body's angular velocity, from which the pins' drift is computed. */
+void rb_joints_prepare(rb_world *world);
+/* Visits each joint once a substep of length h: prepares what moves with
+ * the bodies (the anchors turned into the world at the poses now, the
+ * pins' mass matrices and drift, the distance joints' axes), then warm
+ * starts it with its accumulated impulses. One pass where two passes over
+ * every joint would each read it from memory. */
+void rb_joints_warm_start(rb_world *world, double h);
 /* One pass over the joints, in creation order or (backwards) the reverse.
  * NGS and Baumgarte alternate: in a chain an impulse travels one joint per
  * pass in the pass's direction, so alternating sweeps (symmetric

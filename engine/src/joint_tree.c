@@ -458,10 +458,8 @@ void rb_joint_tree_factor_velocities(rb_world *world)
 {
     rb_joint_tree *tree = &world->joint_tree;
     for (int n = 0; n < tree->node_count; ++n) {
-        rb_tree_node *node = &tree->nodes[n];
-        if (node->joint >= 0) {
-            node->ra = world->joints[node->joint].frame.ra;
-            node->rb = world->joints[node->joint].frame.rb;
+        if (tree->nodes[n].joint >= 0) {
+            measure_offsets(world, &tree->nodes[n]); /* the substep's, as the pins' frames will hold them */
         }
     }
     tree->pose_factors = false;

@@ -75,11 +75,12 @@
 
 /* Finds the pins solved together this step (sets joint->in_tree) and
  * their trees. On running out of memory no joint is in a tree, and every
- * pin is solved by Gauss-Seidel as before. Call after the frames of the
- * step's first substep are prepared. */
+ * pin is solved by Gauss-Seidel as before. Call after the step's joint
+ * list and frames' masses are prepared (rb_joints_collect_active). */
 void rb_joint_tree_build(rb_world *world);
 
-/* Factors the trees at the joints' substep anchors (frame.ra, rb). */
+/* Factors the trees at the substep's anchors: the pins' offsets at the
+ * poses at the substep's start, the ones the pins' frames hold. */
 void rb_joint_tree_factor_velocities(rb_world *world);
 
 /* One velocity pass over the trees' pins: the impulses that make every

@@ -101,12 +101,12 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
 
         t = rb_world_clock(world);
         rb_cables_prepare(world);
-        rb_joints_prepare(world, h);
+        rb_joints_prepare(world);
         if (substep == 0) {
             rb_joint_tree_build(world);
         }
         rb_cables_warm_start(world);
-        rb_joints_warm_start(world);
+        rb_joints_warm_start(world, h);
         rb_contact_solver_warm_start(world);
         profile->warm_start += rb_world_clock(world) - t;
 

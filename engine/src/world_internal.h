@@ -205,7 +205,6 @@ typedef struct rb_joint_frame {
     rb_vec2 point_drift;        /* m/s, the anchors' centripetal drift over the substep (joint_point.c) */
     rb_block_matrix point_mass; /* the point constraint's K at ra, rb (joint_point.c) */
     rb_vec2 local_a, local_b;   /* m, the anchors relative to each centre of mass, in the body frames */
-    double omega_a, omega_b;    /* rad/s, the bodies' angular velocities at the start of the substep */
 } rb_joint_frame;
 
 typedef struct rb_revolute_data {
@@ -425,6 +424,8 @@ struct rb_world {
     int joint_capacity;
     int *active_joints; /* this step's solved joints (rb_joints_collect_active) */
     int active_joint_count, active_joint_capacity;
+    double *substep_omega; /* per body slot: rad/s at the substep's start, before any warm start (rb_joints_prepare) */
+    int substep_omega_capacity;
     int joint_slots;
     int joint_free;
     int joint_count;
