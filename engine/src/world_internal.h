@@ -288,18 +288,14 @@ typedef struct rb_cable {
     double inverse_mass; /* 1/kg: how fast a unit impulse shortens the path */
 } rb_cable;
 
+/* Ordered by use: what every velocity pass reads (the type, the bodies,
+ * the frame's first fields, the type's first fields) in the first lines,
+ * the bookkeeping of the pool and the bodies' lists last. */
 typedef struct rb_joint {
-    int next_free;
-    uint32_t generation; /* of the last object made in the slot; RB_RETIRED_GENERATION retires it */
-    bool in_use;
-    bool in_tree; /* this step, a pin solved with its tree (joint_tree.h) */
     rb_joint_type type;
-    int body_a; /* -1 for a mouse joint */
+    bool in_tree; /* this step, a pin solved with its tree (joint_tree.h) */
+    int body_a;   /* -1 for a mouse joint */
     int body_b;
-    int next_on_a, next_on_b;               /* the next joint in body A's and body B's lists */
-    rb_vec2 local_anchor_a, local_anchor_b; /* m, from each body's origin, in its frame */
-    bool collide_connected;
-    void *user_data;
     rb_joint_frame frame;
     union {
         rb_revolute_data revolute;
@@ -309,6 +305,13 @@ typedef struct rb_joint {
         rb_prismatic_data prismatic;
         rb_pulley_data pulley;
     } as;
+    rb_vec2 local_anchor_a, local_anchor_b; /* m, from each body's origin, in its frame */
+    int next_on_a, next_on_b;               /* the next joint in body A's and body B's lists */
+    int next_free;
+    uint32_t generation; /* of the last object made in the slot; RB_RETIRED_GENERATION retires it */
+    bool in_use;
+    bool collide_connected;
+    void *user_data;
 } rb_joint;
 
 /* A node of the pins' trees (joint_tree.h): a body or a pin. */
