@@ -8,13 +8,17 @@
  *
  *   prepare the step       contact anchors, normal and masses, fixed for
  *                          the step; each point's separation is measured
- *                          anew from the poses whenever it is solved
+ *                          anew from the poses whenever it is solved;
+ *                          the joints' masses and anchors in the body
+ *                          frames (rb_joints_collect_active)
  *   for each substep of length h = dt / substeps:
  *       substep callback       the user's
  *       integrate velocities
- *       prepare joints         and cables, at the poses now (and at the
- *                              first substep, find the joint trees)
- *       warm start             the accumulated impulses again
+ *       prepare                cables at the poses now, the bodies' spin
+ *                              for the joints (and at the first substep,
+ *                              find the joint trees)
+ *       warm start             the accumulated impulses again, each joint
+ *                              prepared at the poses now in the same visit
  *       solve                  velocity_iterations passes with the springs'
  *                              bias: cables, joints, trees' pins, contacts
  *       damp, integrate positions
