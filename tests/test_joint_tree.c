@@ -93,9 +93,10 @@ static void prepare(rb_world *world, double h)
     cr_assert_eq(rb_joints_collect_active(world), RB_OK);
     world->joint_tree.enabled = true;
     world->joint_response = (rb_rigid_response){.mass_scale = 1.0};
-    rb_joints_prepare(world, h);
+    rb_joints_prepare(world);
     rb_joint_tree_build(world);
     rb_joint_tree_factor_velocities(world);
+    rb_joints_warm_start(world, h); /* the frames; the impulses are still 0 */
 }
 
 static rb_joint *joint_of(rb_world *world, rb_joint_id id) { return &world->joints[id.index]; }

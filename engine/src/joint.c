@@ -363,10 +363,67 @@ static bool is_active(const rb_world *world, const rb_joint *joint)
     return b_moves || (a->type == RB_BODY_DYNAMIC && a->awake);
 }
 
+/* The k-th joint of this step's active list, counted from the end when
+ * sweeping backwards. */
+static rb_joint *active_joint(rb_world *world, int k, bool backwards)
+{
+    int n = world->active_joint_count;
+    return &world->joints[world->active_joints[backwards ? n - 1 - k : k]];
+}
+
+/* What the step cannot change: while the world is locked no body changes
+ * its mass, centre or type, falls asleep or wakes, and no joint its
+ * settings. */
+static void prepare_frame_for_step(rb_world *world, rb_joint *joint)
+{
+    rb_joint_frame *f = &joint->frame;
+    const rb_body *b = &world->bodies[joint->body_b];
+    f->inv_mass_b = b->awake ? b->inv_mass : 0.0;
+    f->inv_inertia_b = b->awake ? b->inv_inertia : 0.0;
+    f->local_b = rb_sub(joint->local_anchor_b, b->local_center);
+    if (joint->body_a >= 0) {
+        const rb_body *a = &world->bodies[joint->body_a];
+        f->inv_mass_a = a->awake ? a->inv_mass : 0.0;
+        f->inv_inertia_a = a->awake ? a->inv_inertia : 0.0;
+        f->local_a = rb_sub(joint->local_anchor_a, a->local_center);
+    } else {
+        f->inv_mass_a = 0.0;
+        f->inv_inertia_a = 0.0;
+        f->local_a = rb_v2(0.0, 0.0);
+    }
+}
+
+static void prepare_for_step(rb_world *world)
+{
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        rb_joint *joint = active_joint(world, k, false);
+        prepare_frame_for_step(world, joint);
+        switch (joint->type) {
+        case RB_JOINT_REVOLUTE:
+            rb_revolute_prepare_step(joint);
+            break;
+        case RB_JOINT_WELD:
+            rb_weld_prepare_step(joint);
+            break;
+        case RB_JOINT_DISTANCE:
+            rb_distance_prepare_step(joint);
+            break;
+        case RB_JOINT_PRISMATIC:
+            rb_prismatic_prepare_step(joint);
+            break;
+        case RB_JOINT_MOUSE:
+        case RB_JOINT_PULLEY:
+            break; /* nothing fixed beyond the frame */
+        }
+    }
+}
+
 rb_status rb_joints_collect_active(rb_world *world)
 {
     if (rb_grow_array((void **)&world->active_joints, &world->active_joint_capacity, world->joint_count,
-                      sizeof *world->active_joints) != 0) {
+                      sizeof *world->active_joints) != 0 ||
+        rb_grow_array((void **)&world->substep_omega, &world->substep_omega_capacity, world->body_slots,
+                      sizeof *world->substep_omega) != 0) {
         world->active_joint_count = 0;
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for the joint list");
     }
@@ -377,82 +434,45 @@ rb_status rb_joints_collect_active(rb_world *world)
         }
     }
     world->active_joint_count = count;
+    prepare_for_step(world);
     return RB_OK;
 }
 
-/* The k-th joint of this step's active list, counted from the end when
- * sweeping backwards. */
-static rb_joint *active_joint(rb_world *world, int k, bool backwards)
+void rb_joints_prepare(rb_world *world)
 {
-    int n = world->active_joint_count;
-    return &world->joints[world->active_joints[backwards ? n - 1 - k : k]];
-}
-
-static void prepare_frame(rb_world *world, rb_joint *joint)
-{
-    rb_joint_frame *f = &joint->frame;
-    const rb_body *b = &world->bodies[joint->body_b];
-    const rb_body_state *sb = &world->states[joint->body_b];
-    f->inv_mass_b = b->awake ? b->inv_mass : 0.0;
-    f->inv_inertia_b = b->awake ? b->inv_inertia : 0.0;
-    f->local_b = rb_sub(joint->local_anchor_b, b->local_center);
-    f->rb = rb_rotate(sb->rotation, f->local_b);
-    f->omega_b = sb->angular_velocity;
-    f->omega_a = joint->body_a >= 0 ? world->states[joint->body_a].angular_velocity : 0.0;
-    if (joint->body_a >= 0) {
-        const rb_body *a = &world->bodies[joint->body_a];
-        const rb_body_state *sa = &world->states[joint->body_a];
-        f->inv_mass_a = a->awake ? a->inv_mass : 0.0;
-        f->inv_inertia_a = a->awake ? a->inv_inertia : 0.0;
-        f->local_a = rb_sub(joint->local_anchor_a, a->local_center);
-        f->ra = rb_rotate(sa->rotation, f->local_a);
-    } else {
-        f->inv_mass_a = 0.0;
-        f->inv_inertia_a = 0.0;
-        f->local_a = rb_v2(0.0, 0.0);
-        f->ra = rb_v2(0.0, 0.0);
+    if (world->active_joint_count == 0) {
+        return;
+    }
+    for (int i = 0; i < world->body_slots; ++i) {
+        world->substep_omega[i] = world->states[i].angular_velocity;
     }
 }
 
-void rb_joints_prepare(rb_world *world, double h)
+/* The anchors turned into the world at the poses now. */
+static void prepare_frame(rb_world *world, rb_joint *joint)
+{
+    rb_joint_frame *f = &joint->frame;
+    f->rb = rb_rotate(world->states[joint->body_b].rotation, f->local_b);
+    f->ra = joint->body_a >= 0 ? rb_rotate(world->states[joint->body_a].rotation, f->local_a) : rb_v2(0.0, 0.0);
+}
+
+/* Each joint in one visit: its substep's frame, then its warm start. */
+void rb_joints_warm_start(rb_world *world, double h)
 {
     for (int k = 0; k < world->active_joint_count; ++k) {
         rb_joint *joint = active_joint(world, k, false);
         prepare_frame(world, joint);
         switch (joint->type) {
         case RB_JOINT_REVOLUTE:
-            rb_revolute_prepare(world, joint, h);
-            break;
-        case RB_JOINT_WELD:
-            rb_weld_prepare(world, joint, h);
-            break;
-        case RB_JOINT_DISTANCE:
-            rb_distance_prepare(world, joint, h);
-            break;
-        case RB_JOINT_MOUSE:
-            rb_mouse_prepare(world, joint, h);
-            break;
-        case RB_JOINT_PRISMATIC:
-            rb_prismatic_prepare(world, joint, h);
-            break;
-        case RB_JOINT_PULLEY:
-            break; /* its rows are computed when solved */
-        }
-    }
-}
-
-void rb_joints_warm_start(rb_world *world)
-{
-    for (int k = 0; k < world->active_joint_count; ++k) {
-        rb_joint *joint = active_joint(world, k, false);
-        switch (joint->type) {
-        case RB_JOINT_REVOLUTE:
+            rb_point_constraint_prepare(world, joint, h);
             rb_revolute_warm_start(world, joint);
             break;
         case RB_JOINT_WELD:
+            rb_point_constraint_prepare(world, joint, h);
             rb_weld_warm_start(world, joint);
             break;
         case RB_JOINT_DISTANCE:
+            rb_distance_prepare(world, joint);
             rb_distance_warm_start(world, joint);
             break;
         case RB_JOINT_MOUSE:

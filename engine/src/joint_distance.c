@@ -115,9 +115,17 @@ static double axial_mass(const rb_joint_frame *f, rb_vec2 ra, rb_vec2 rb, rb_vec
     return k > 0.0 ? 1.0 / k : 0.0;
 }
 
-void rb_distance_prepare(rb_world *world, rb_joint *joint, double h)
+void rb_distance_prepare_step(rb_joint *joint)
 {
-    (void)h;
+    rb_distance_data *d = &joint->as.distance;
+    if (!d->enable_limit) {
+        d->lower_impulse = 0.0;
+        d->upper_impulse = 0.0;
+    }
+}
+
+void rb_distance_prepare(const rb_world *world, rb_joint *joint)
+{
     rb_distance_data *d = &joint->as.distance;
     rb_vec2 delta = separation(world, joint, joint->frame.ra, joint->frame.rb);
     d->current_length = rb_length(delta);
@@ -125,10 +133,6 @@ void rb_distance_prepare(rb_world *world, rb_joint *joint, double h)
         d->axis = rb_scale(1.0 / d->current_length, delta);
     }
     d->axial_mass = axial_mass(&joint->frame, joint->frame.ra, joint->frame.rb, d->axis);
-    if (!d->enable_limit) {
-        d->lower_impulse = 0.0;
-        d->upper_impulse = 0.0;
-    }
 }
 
 void rb_distance_warm_start(rb_world *world, rb_joint *joint)

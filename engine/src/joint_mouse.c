@@ -64,13 +64,6 @@ rb_status rb_mouse_joint_set_target(rb_world *world, rb_joint_id id, rb_vec2 tar
     return RB_OK;
 }
 
-void rb_mouse_prepare(rb_world *world, rb_joint *joint, double h)
-{
-    (void)world;
-    (void)h;
-    (void)joint;
-}
-
 void rb_mouse_warm_start(rb_world *world, rb_joint *joint)
 {
     rb_joint_apply_linear(joint, NULL, rb_joint_state_b(world, joint), joint->as.mouse.impulse);

@@ -64,9 +64,11 @@ void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double 
      * faster than the iterations converge (a light link beside a heavy
      * one), and asking for it then feeds the spin until it explodes; it is
      * capped at one linear slop per substep. The angular velocities are
-     * the substep's starting ones, so the drift is fixed for the substep. */
-    rb_vec2 drift =
-        rb_scale(0.5 * h, rb_sub(rb_scale(f->omega_b * f->omega_b, f->rb), rb_scale(f->omega_a * f->omega_a, f->ra)));
+     * the substep's starting ones (rb_joints_prepare recorded them before
+     * any warm start), so the drift is fixed for the substep. */
+    const double omega_a = world->substep_omega[joint->body_a];
+    const double omega_b = world->substep_omega[joint->body_b];
+    rb_vec2 drift = rb_scale(0.5 * h, rb_sub(rb_scale(omega_b * omega_b, f->rb), rb_scale(omega_a * omega_a, f->ra)));
     double drift_cap = world->settings.linear_slop / h;
     if (rb_length_squared(drift) > drift_cap * drift_cap) { /* a square root only when capping */
         drift = rb_scale(drift_cap / rb_length(drift), drift);

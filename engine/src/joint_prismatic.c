@@ -319,10 +319,8 @@ static slide_rows rows_now(const rb_world *world, const rb_joint *joint)
     return r;
 }
 
-void rb_prismatic_prepare(rb_world *world, rb_joint *joint, double h)
+void rb_prismatic_prepare_step(rb_joint *joint)
 {
-    (void)world;
-    (void)h;
     rb_prismatic_data *p = &joint->as.prismatic;
     if (!p->enable_motor) {
         p->motor_impulse = 0.0;

@@ -158,9 +158,8 @@ rb_status rb_revolute_joint_set_spring(rb_world *world, rb_joint_id id, bool ena
 
 /* ---- solver ---------------------------------------------------------------------- */
 
-void rb_revolute_prepare(rb_world *world, rb_joint *joint, double h)
+void rb_revolute_prepare_step(rb_joint *joint)
 {
-    rb_point_constraint_prepare(world, joint, h);
     double inverse_axial = joint->frame.inv_inertia_a + joint->frame.inv_inertia_b;
     rb_revolute_data *r = &joint->as.revolute;
     r->axial_mass = inverse_axial > 0.0 ? 1.0 / inverse_axial : 0.0;
@@ -229,9 +228,17 @@ static void solve_limits(rb_world *world, rb_joint *joint, rb_body_state *a, rb_
 
 void rb_revolute_solve(rb_world *world, rb_joint *joint, double h)
 {
+    rb_revolute_data *r = &joint->as.revolute;
+    if (!r->enable_spring && !r->enable_motor && !r->enable_lower && !r->enable_upper) {
+        /* A plain pin, the joint grid's and a chain's: the point alone,
+         * unless its tree solves it. */
+        if (!joint->in_tree) {
+            rb_point_constraint_solve(world, joint, &r->point_impulse, NULL);
+        }
+        return;
+    }
     rb_body_state *a = rb_joint_state_a(world, joint);
     rb_body_state *b = rb_joint_state_b(world, joint);
-    rb_revolute_data *r = &joint->as.revolute;
     if (r->axial_mass > 0.0) {
         double angle = rb_joint_relative_angle(world, joint, r->reference_angle);
         if (r->enable_spring && r->spring_hertz > 0.0) {

@@ -24,18 +24,28 @@
 
 /* Lists the joints the step solves (in use, with a dynamic awake body), in
  * creation order; the phases below visit only these. Bodies neither fall
- * asleep nor wake within a step, so the list holds for the whole step. */
+ * asleep nor wake within a step, so the list holds for the whole step.
+ * Prepares, once for the step, what the step cannot change: each frame's
+ * masses and anchors in the body frames, and its type's constants (the
+ * axial masses, the impulses of disabled motors, springs and limits
+ * zeroed). */
 rb_status rb_joints_collect_active(rb_world *world);
 
-/* Refreshes each joint's frame (masses, anchors at the current poses) and
- * its type's per-substep data for a substep of length h. */
-void rb_joints_prepare(rb_world *world, double h);
-void rb_joints_warm_start(rb_world *world);
+/* At the start of each substep, before any warm start: records every
+ * body's angular velocity, from which the pins' drift is computed. */
+void rb_joints_prepare(rb_world *world);
+/* Visits each joint once a substep of length h: prepares what moves with
+ * the bodies (the anchors turned into the world at the poses now, the
+ * pins' mass matrices and drift, the distance joints' axes), then warm
+ * starts it with its accumulated impulses. One pass where two passes over
+ * every joint would each read it from memory. */
+void rb_joints_warm_start(rb_world *world, double h);
 /* One pass over the joints, in creation order or (backwards) the reverse.
- * The solver alternates: in a chain an impulse travels one joint per pass
- * in the pass's direction, so alternating sweeps (symmetric Gauss-Seidel)
- * carry both ends' information in half the passes; a 10-link chain's
- * worst gap at 60 Hz drops from 8.3 to 5.6 mm at the same cost. */
+ * NGS and Baumgarte alternate: in a chain an impulse travels one joint per
+ * pass in the pass's direction, so alternating sweeps (symmetric
+ * Gauss-Seidel) carry both ends' information in half the passes; a 10-link
+ * chain's worst gap at 60 Hz drops from 8.3 to 5.6 mm at the same cost.
+ * The soft step sweeps one way only (solver_soft_step.c). */
 void rb_joints_solve_velocities(rb_world *world, double h, bool backwards);
 /* One NGS pass, in either order; returns whether every joint was within
  * its tolerance. */
@@ -200,29 +210,29 @@ double rb_point_constraint_correct(rb_world *world, rb_joint *joint, const doubl
 
 /* ---- the types ------------------------------------------------------------ */
 
-void rb_revolute_prepare(rb_world *world, rb_joint *joint, double h);
+void rb_revolute_prepare_step(rb_joint *joint);
 void rb_revolute_warm_start(rb_world *world, rb_joint *joint);
 void rb_revolute_solve(rb_world *world, rb_joint *joint, double h);
 bool rb_revolute_correct(rb_world *world, rb_joint *joint);
 double rb_revolute_angle_error(const rb_world *world, const rb_joint *joint);
 
-void rb_weld_prepare(rb_world *world, rb_joint *joint, double h);
+void rb_weld_prepare_step(rb_joint *joint);
 void rb_weld_warm_start(rb_world *world, rb_joint *joint);
 void rb_weld_solve(rb_world *world, rb_joint *joint, double h);
 bool rb_weld_correct(rb_world *world, rb_joint *joint);
 double rb_weld_angle_error(const rb_world *world, const rb_joint *joint);
 
-void rb_distance_prepare(rb_world *world, rb_joint *joint, double h);
+void rb_distance_prepare_step(rb_joint *joint);
+void rb_distance_prepare(const rb_world *world, rb_joint *joint);
 void rb_distance_warm_start(rb_world *world, rb_joint *joint);
 void rb_distance_solve(rb_world *world, rb_joint *joint, double h);
 bool rb_distance_correct(rb_world *world, rb_joint *joint);
 double rb_distance_error(const rb_world *world, const rb_joint *joint);
 
-void rb_mouse_prepare(rb_world *world, rb_joint *joint, double h);
 void rb_mouse_warm_start(rb_world *world, rb_joint *joint);
 void rb_mouse_solve(rb_world *world, rb_joint *joint, double h);
 
-void rb_prismatic_prepare(rb_world *world, rb_joint *joint, double h);
+void rb_prismatic_prepare_step(rb_joint *joint);
 void rb_prismatic_warm_start(rb_world *world, rb_joint *joint);
 void rb_prismatic_solve(rb_world *world, rb_joint *joint, double h);
 bool rb_prismatic_correct(rb_world *world, rb_joint *joint);

@@ -49,8 +49,14 @@ static int find_root(int *parent, int i)
     return i;
 }
 
+/* The mass ratio from which a tree is solved together, by solver. */
+static double uneven_ratio(const rb_world *world)
+{
+    return world->settings.type == RB_SOLVER_SOFT_STEP ? RB_SOFT_STEP_TREE_MASS_RATIO : RB_TREE_MASS_RATIO;
+}
+
 /* Clears every active joint's in_tree, and says whether the candidate
- * pins' moving bodies differ in mass by RB_TREE_MASS_RATIO or more: when
+ * pins' moving bodies differ in mass by uneven_ratio or more: when
  * not, no tree of them can be uneven. One pass, comparing inverse masses
  * (the heaviest has the smallest), so the common case of like masses
  * costs a load and a comparison or two a joint. */
@@ -73,11 +79,11 @@ static bool clear_and_find_uneven(rb_world *world)
             largest = rb_max(largest, f->inv_mass_b);
         }
     }
-    return largest >= RB_TREE_MASS_RATIO * smallest;
+    return largest >= uneven_ratio(world) * smallest;
 }
 
 /* Leaves in the trees only the pins of trees whose heaviest body is at
- * least RB_TREE_MASS_RATIO times their lightest (joint_tree.h says why),
+ * least uneven_ratio times their lightest (joint_tree.h says why),
  * and returns how many are left. */
 static int keep_uneven_trees(rb_world *world, int pins)
 {
@@ -108,7 +114,7 @@ static int keep_uneven_trees(rb_world *world, int pins)
         const rb_joint_frame *f = &joint->frame;
         int root = find_root(tree->union_parent,
                              moves_freely(f->inv_mass_a, f->inv_inertia_a) ? joint->body_a : joint->body_b);
-        if (range[2 * root + 1] < RB_TREE_MASS_RATIO * range[2 * root]) {
+        if (range[2 * root + 1] < uneven_ratio(world) * range[2 * root]) {
             joint->in_tree = false;
             --pins;
         }
@@ -161,8 +167,9 @@ static int choose_pins(rb_world *world)
 
 /* ---- the nodes ---------------------------------------------------------- */
 
-static int add_node(rb_joint_tree *tree, int body, int joint, int parent)
+static int add_node(rb_world *world, int body, int joint, int parent)
 {
+    rb_joint_tree *tree = &world->joint_tree;
     int index = tree->node_count++;
     rb_tree_node *node = &tree->nodes[index];
     node->body = body;
@@ -171,6 +178,8 @@ static int add_node(rb_joint_tree *tree, int body, int joint, int parent)
     node->dim = body >= 0 ? 3 : 2;
     if (body >= 0) {
         tree->body_node[body] = index;
+        node->mass = 1.0 / world->bodies[body].inv_mass; /* finite: the body moves freely */
+        node->inertia = 1.0 / world->bodies[body].inv_inertia;
     }
     return index;
 }
@@ -188,10 +197,10 @@ static void grow_tree(rb_world *world, int root)
             const rb_joint_frame *f = &joint->frame;
             int parent_body = node.parent >= 0 ? tree->nodes[node.parent].body : -1;
             if (moves_freely(f->inv_mass_a, f->inv_inertia_a) && joint->body_a != parent_body) {
-                add_node(tree, joint->body_a, -1, n);
+                add_node(world, joint->body_a, -1, n);
             }
             if (moves_freely(f->inv_mass_b, f->inv_inertia_b) && joint->body_b != parent_body) {
-                add_node(tree, joint->body_b, -1, n);
+                add_node(world, joint->body_b, -1, n);
             }
             continue;
         }
@@ -200,7 +209,7 @@ static void grow_tree(rb_world *world, int root)
         for (int j = world->bodies[node.body].first_joint; j >= 0;) {
             const rb_joint *joint = &world->joints[j];
             if (joint->in_tree && j != parent_joint) {
-                add_node(tree, -1, j, n);
+                add_node(world, -1, j, n);
             }
             j = joint->body_a == node.body ? joint->next_on_a : joint->next_on_b;
         }
@@ -239,7 +248,7 @@ void rb_joint_tree_build(rb_world *world)
         bool grounded_pin =
             !moves_freely(f->inv_mass_a, f->inv_inertia_a) || !moves_freely(f->inv_mass_b, f->inv_inertia_b);
         if (joint->in_tree && grounded_pin) {
-            grow_tree(world, add_node(tree, -1, j, -1));
+            grow_tree(world, add_node(world, -1, j, -1));
         }
     }
     for (int k = 0; k < world->active_joint_count; ++k) {
@@ -247,7 +256,7 @@ void rb_joint_tree_build(rb_world *world)
         const rb_joint_frame *f = &joint->frame;
         bool both_move = moves_freely(f->inv_mass_a, f->inv_inertia_a) && moves_freely(f->inv_mass_b, f->inv_inertia_b);
         if (joint->in_tree && both_move && tree->body_node[joint->body_a] < 0) {
-            grow_tree(world, add_node(tree, joint->body_a, -1, -1));
+            grow_tree(world, add_node(world, joint->body_a, -1, -1));
         }
     }
 }
@@ -266,20 +275,23 @@ void rb_joint_tree_build(rb_world *world)
  * a pin's 2×2 block F. Symmetric blocks are kept whole (row-major) for
  * plain indexing. */
 
-/* s and r of the edge between node `n` and its parent. */
-static void edge(const rb_world *world, const rb_tree_node *node, const rb_tree_node *parent, bool current_poses,
-                 double *s, rb_vec2 *r)
+/* s and r of the edge between node `n` and its parent, r the pin's
+ * offset (measured before factoring) on the edge's body. */
+static void edge(const rb_world *world, const rb_tree_node *node, const rb_tree_node *parent, double *s, rb_vec2 *r)
 {
-    const int j = node->joint >= 0 ? node->joint : parent->joint;
+    const rb_tree_node *pin = node->joint >= 0 ? node : parent;
     const int b = node->body >= 0 ? node->body : parent->body;
-    const rb_joint *joint = &world->joints[j];
-    const bool on_b = b == joint->body_b;
+    const bool on_b = b == world->joints[pin->joint].body_b;
     *s = on_b ? 1.0 : -1.0;
-    if (current_poses) {
-        *r = rb_rotate(world->states[b].rotation, on_b ? joint->frame.local_b : joint->frame.local_a);
-    } else {
-        *r = on_b ? joint->frame.rb : joint->frame.ra;
-    }
+    *r = on_b ? pin->rb : pin->ra;
+}
+
+/* A pin's anchor offsets at the bodies' poses now. */
+static void measure_offsets(const rb_world *world, rb_tree_node *pin)
+{
+    const rb_joint *joint = &world->joints[pin->joint];
+    pin->ra = rb_rotate(world->states[joint->body_a].rotation, joint->frame.local_a);
+    pin->rb = rb_rotate(world->states[joint->body_b].rotation, joint->frame.local_b);
 }
 
 /* The inverse of a symmetric 2×2 or 3×3 block; false when singular. */
@@ -353,19 +365,18 @@ static void eliminate_pin(rb_tree_node *node, rb_tree_node *body, double s, rb_v
     p[8] -= g33;
 }
 
-/* Factors every tree with each pin's anchor offsets: the substep's
- * (frame.ra, rb), or at the bodies' current poses. Returns false when a
- * pivot is singular, which leaves the trees unusable for this pass. */
-static bool factor(rb_world *world, bool current_poses)
+/* Factors every tree with the offsets its pins hold (node ra, rb).
+ * Returns false when a pivot is singular, which leaves the trees unusable
+ * for this pass. */
+static bool factor(rb_world *world)
 {
     rb_joint_tree *tree = &world->joint_tree;
     for (int n = 0; n < tree->node_count; ++n) {
         rb_tree_node *node = &tree->nodes[n];
         memset(node->pivot, 0, sizeof node->pivot);
         if (node->body >= 0) {
-            const rb_body *body = &world->bodies[node->body];
-            node->pivot[0] = node->pivot[4] = 1.0 / body->inv_mass;
-            node->pivot[8] = 1.0 / body->inv_inertia;
+            node->pivot[0] = node->pivot[4] = node->mass;
+            node->pivot[8] = node->inertia;
         }
     }
     for (int n = tree->node_count - 1; n >= 0; --n) {
@@ -379,7 +390,7 @@ static bool factor(rb_world *world, bool current_poses)
         rb_tree_node *parent = &tree->nodes[node->parent];
         double s;
         rb_vec2 r;
-        edge(world, node, parent, current_poses, &s, &r);
+        edge(world, node, parent, &s, &r);
         if (node->body >= 0) {
             eliminate_body(node, parent, s, r);
         } else {
@@ -445,8 +456,14 @@ static void solve(rb_joint_tree *tree)
 
 void rb_joint_tree_factor_velocities(rb_world *world)
 {
-    world->joint_tree.pose_factors = false;
-    world->joint_tree.velocity_factors = world->joint_tree.node_count > 0 && factor(world, false);
+    rb_joint_tree *tree = &world->joint_tree;
+    for (int n = 0; n < tree->node_count; ++n) {
+        if (tree->nodes[n].joint >= 0) {
+            measure_offsets(world, &tree->nodes[n]); /* the substep's, as the pins' frames will hold them */
+        }
+    }
+    tree->pose_factors = false;
+    tree->velocity_factors = tree->node_count > 0 && factor(world);
 }
 
 void rb_joint_tree_solve_velocities(rb_world *world)
@@ -488,18 +505,17 @@ void rb_joint_tree_solve_velocities(rb_world *world)
     }
 }
 
-/* A pin's two anchor offsets at the bodies' current poses. */
+/* A pin's bodies and the offsets it holds. */
 typedef struct pin_offsets {
     rb_body_state *a, *b;
     rb_vec2 ra, rb; /* m, from each body's centre to its anchor */
 } pin_offsets;
 
-static pin_offsets offsets_now(rb_world *world, const rb_joint *joint)
+static pin_offsets offsets_of(rb_world *world, const rb_tree_node *pin)
 {
-    pin_offsets p = {.a = &world->states[joint->body_a], .b = &world->states[joint->body_b]};
-    p.ra = rb_rotate(p.a->rotation, joint->frame.local_a);
-    p.rb = rb_rotate(p.b->rotation, joint->frame.local_b);
-    return p;
+    const rb_joint *joint = &world->joints[pin->joint];
+    return (pin_offsets){
+        .a = &world->states[joint->body_a], .b = &world->states[joint->body_b], .ra = pin->ra, .rb = pin->rb};
 }
 
 /* m: anchor B less anchor A. */
@@ -528,7 +544,12 @@ void rb_joint_tree_solve_soft(rb_world *world)
         return;
     }
     if (!tree->pose_factors) {
-        tree->pose_factors = factor(world, true);
+        for (int n = 0; n < tree->node_count; ++n) {
+            if (tree->nodes[n].joint >= 0) {
+                measure_offsets(world, &tree->nodes[n]);
+            }
+        }
+        tree->pose_factors = factor(world);
         if (!tree->pose_factors) {
             return;
         }
@@ -540,7 +561,7 @@ void rb_joint_tree_solve_soft(rb_world *world)
             memset(node->value, 0, sizeof node->value);
             continue;
         }
-        const pin_offsets p = offsets_now(world, &world->joints[node->joint]);
+        const pin_offsets p = offsets_of(world, node);
         rb_vec2 va = rb_add(p.a->linear_velocity, rb_cross_sv(p.a->angular_velocity, p.ra));
         rb_vec2 vb = rb_add(p.b->linear_velocity, rb_cross_sv(p.b->angular_velocity, p.rb));
         rb_vec2 cdot = rb_sub(vb, va);
@@ -561,7 +582,7 @@ void rb_joint_tree_solve_soft(rb_world *world)
         rb_revolute_data *r = &joint->as.revolute;
         rb_vec2 impulse = rb_soften(response, rb_v2(node->value[0], node->value[1]), r->point_impulse);
         r->point_impulse = rb_add(r->point_impulse, impulse);
-        const pin_offsets p = offsets_now(world, joint);
+        const pin_offsets p = offsets_of(world, node);
         p.a->linear_velocity = rb_mul_sub(p.a->linear_velocity, f->inv_mass_a, impulse);
         p.a->angular_velocity -= f->inv_inertia_a * rb_cross(p.ra, impulse);
         p.b->linear_velocity = rb_mul_add(p.b->linear_velocity, f->inv_mass_b, impulse);
@@ -583,7 +604,8 @@ bool rb_joint_tree_correct_positions(rb_world *world)
             memset(node->value, 0, sizeof node->value);
             continue;
         }
-        const pin_offsets p = offsets_now(world, &world->joints[node->joint]);
+        measure_offsets(world, node);
+        const pin_offsets p = offsets_of(world, node);
         rb_vec2 gap = pin_gap(&p);
         double error = rb_length(gap);
         largest = rb_max(largest, error);
@@ -597,7 +619,7 @@ bool rb_joint_tree_correct_positions(rb_world *world)
      * out of date once the bodies move. */
     tree->velocity_factors = false;
     tree->pose_factors = false;
-    if (largest <= world->settings.linear_slop || !factor(world, true)) {
+    if (largest <= world->settings.linear_slop || !factor(world)) {
         return largest <= world->settings.linear_slop;
     }
     solve(tree);

@@ -35,7 +35,8 @@
  * solves it with the tree's pins held; the tree's pins carry the rest. A
  * revolute joint's motor and spring stay Gauss-Seidel rows too. And only
  * in trees of uneven masses, whose heaviest body is at least
- * RB_TREE_MASS_RATIO times their lightest: below that Gauss-Seidel holds
+ * RB_TREE_MASS_RATIO times their lightest (the soft step:
+ * RB_SOFT_STEP_TREE_MASS_RATIO): below that Gauss-Seidel holds
  * at the defaults (a 40-link chain with a 100:1 end box swings within
  * 0.018 m, the joint grid's equal boxes within 0.5 m), at less cost (the
  * joint grid solved as a spanning tree took twice the time), and the
@@ -62,14 +63,24 @@
  * starts to let a chain stretch by centimetres (at 600:1 a rope held
  * within 0.065 m, at 700:1 it tore apart). */
 #define RB_TREE_MASS_RATIO 100.0
+/* The soft step's threshold. At Box2D v3's budget (4 substeps of 1 + 1
+ * passes) its pins one at a time hold the peers' 40-link chain with an
+ * end box 100, 150 and 200 times a link's mass as Box2D v3 does, at Box2D
+ * v3's cost: worst gap over 5 s swinging 0.0626, 0.0804, 0.0990 m (Box2D
+ * v3 0.0631, 0.0807, 0.0992 m), hanging 0.0359, 0.0497, 0.0635 m (0.0360,
+ * 0.0498, 0.0636 m). From 250:1 they let it stretch further (0.152 m
+ * against 0.121 m, at 300:1 0.65 m against 0.14 m), and the trees take
+ * over (0.028 m at 250:1, 0.072 m at 400:1). */
+#define RB_SOFT_STEP_TREE_MASS_RATIO 200.0
 
 /* Finds the pins solved together this step (sets joint->in_tree) and
  * their trees. On running out of memory no joint is in a tree, and every
- * pin is solved by Gauss-Seidel as before. Call after the frames of the
- * step's first substep are prepared. */
+ * pin is solved by Gauss-Seidel as before. Call after the step's joint
+ * list and frames' masses are prepared (rb_joints_collect_active). */
 void rb_joint_tree_build(rb_world *world);
 
-/* Factors the trees at the joints' substep anchors (frame.ra, rb). */
+/* Factors the trees at the substep's anchors: the pins' offsets at the
+ * poses at the substep's start, the ones the pins' frames hold. */
 void rb_joint_tree_factor_velocities(rb_world *world);
 
 /* One velocity pass over the trees' pins: the impulses that make every

@@ -59,9 +59,8 @@ rb_status rb_weld_joint_create(rb_world *world, const rb_weld_joint_def *def, rb
     return rb_joint_create(world, &joint, out, f);
 }
 
-void rb_weld_prepare(rb_world *world, rb_joint *joint, double h)
+void rb_weld_prepare_step(rb_joint *joint)
 {
-    rb_point_constraint_prepare(world, joint, h);
     double inverse_axial = joint->frame.inv_inertia_a + joint->frame.inv_inertia_b;
     joint->as.weld.axial_mass = inverse_axial > 0.0 ? 1.0 / inverse_axial : 0.0;
 }

@@ -84,7 +84,7 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
 
     t = rb_world_clock(world);
     rb_cables_prepare(world);
-    rb_joints_prepare(world, h);
+    rb_joints_prepare(world);
     if (substep == 0) {
         rb_joint_tree_build(world);
     }
@@ -94,7 +94,7 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
                                                         .baumgarte_bias = contact_bias,
                                                         .block_normals = world->settings.block_solver});
     rb_cables_warm_start(world);
-    rb_joints_warm_start(world);
+    rb_joints_warm_start(world, h);
     rb_contact_solver_warm_start(world);
     profile->warm_start += rb_world_clock(world) - t;
 

@@ -149,6 +149,7 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->candidates, &world->candidate_capacity, sizeof *world->candidates);
     rb_free_array((void **)&world->pair_bucket, &world->pair_bucket_capacity, sizeof *world->pair_bucket);
     rb_free_array((void **)&world->active_joints, &world->active_joint_capacity, sizeof *world->active_joints);
+    rb_free_array((void **)&world->substep_omega, &world->substep_omega_capacity, sizeof *world->substep_omega);
     rb_free_array((void **)&world->sweep, &world->sweep_capacity, sizeof *world->sweep);
     rb_free_array((void **)&world->refits, &world->refit_capacity, sizeof *world->refits);
     rb_free_array((void **)&world->wide_shapes, &world->wide_shape_capacity, sizeof *world->wide_shapes);

@@ -188,34 +188,35 @@ typedef struct rb_rigid_response {
     double impulse_scale; /* 0 .. 1 */
 } rb_rigid_response;
 
-/* The parts of a joint's solver state shared by every type, refreshed at
- * the start of each substep. */
+/* The parts of a joint's solver state shared by every type: the masses
+ * and the anchors in the body frames prepared once per step, the rest at
+ * the start of each substep. The fields every velocity pass of a pin
+ * reads come first, in two cache lines; the ones only the preparation and
+ * the limits' and welds' 3x3 blocks read after them. */
 
 typedef struct rb_joint_frame {
     double inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b; /* 0 for a body that cannot move */
-    rb_vec2 local_a, local_b; /* m, anchors relative to each centre of mass, in the body frames */
-    rb_vec2 ra, rb;           /* m, the same turned into the world, now */
-    double omega_a, omega_b;  /* rad/s, the bodies' angular velocities at the start of the substep */
-    /* Pins and welds only, fixed for the substep: */
-    rb_block_matrix point_mass; /* the point constraint's K at ra, rb (joint_point.c) */
-    /* The inverse of its upper-left 2x2 (the pin alone), or all 0 when
-     * that is singular: every pass of a pin multiplies by it, where
-     * solving the 2x2 anew took two divisions each time. */
+    rb_vec2 ra, rb; /* m, anchors relative to each centre of mass, turned into the world now */
+    /* Pins and welds only, fixed for the substep: the inverse of the
+     * upper-left 2x2 of point_mass (the pin alone), or all 0 when that is
+     * singular: every pass of a pin multiplies by it, where solving the
+     * 2x2 anew took two divisions each time. */
     double point_inverse11, point_inverse12, point_inverse22;
-    rb_vec2 point_drift; /* m/s, the anchors' centripetal drift over the substep (joint_point.c) */
+    rb_vec2 point_drift;        /* m/s, the anchors' centripetal drift over the substep (joint_point.c) */
+    rb_block_matrix point_mass; /* the point constraint's K at ra, rb (joint_point.c) */
+    rb_vec2 local_a, local_b;   /* m, the anchors relative to each centre of mass, in the body frames */
 } rb_joint_frame;
 
 typedef struct rb_revolute_data {
-    double reference_angle;
-    bool enable_lower, enable_upper;
-    double lower, upper;
-    bool enable_motor;
-    double motor_speed, max_motor_torque;
-    bool enable_spring;
-    double spring_hertz, spring_damping_ratio;
+    /* What every pass of a plain pin reads, first: */
+    bool enable_lower, enable_upper, enable_motor, enable_spring;
+    double axial_mass;     /* kg·m², 1/(1/IA + 1/IB) */
     rb_vec2 point_impulse; /* N·s, accumulated */
+    double reference_angle;
+    double lower, upper;
+    double motor_speed, max_motor_torque;
+    double spring_hertz, spring_damping_ratio;
     double motor_impulse, lower_impulse, upper_impulse, spring_impulse;
-    double axial_mass; /* kg·m², 1/(1/IA + 1/IB) */
 } rb_revolute_data;
 
 typedef struct rb_weld_data {
@@ -287,18 +288,14 @@ typedef struct rb_cable {
     double inverse_mass; /* 1/kg: how fast a unit impulse shortens the path */
 } rb_cable;
 
+/* Ordered by use: what every velocity pass reads (the type, the bodies,
+ * the frame's first fields, the type's first fields) in the first lines,
+ * the bookkeeping of the pool and the bodies' lists last. */
 typedef struct rb_joint {
-    int next_free;
-    uint32_t generation; /* of the last object made in the slot; RB_RETIRED_GENERATION retires it */
-    bool in_use;
-    bool in_tree; /* this step, a pin solved with its tree (joint_tree.h) */
     rb_joint_type type;
-    int body_a; /* -1 for a mouse joint */
+    bool in_tree; /* this step, a pin solved with its tree (joint_tree.h) */
+    int body_a;   /* -1 for a mouse joint */
     int body_b;
-    int next_on_a, next_on_b;               /* the next joint in body A's and body B's lists */
-    rb_vec2 local_anchor_a, local_anchor_b; /* m, from each body's origin, in its frame */
-    bool collide_connected;
-    void *user_data;
     rb_joint_frame frame;
     union {
         rb_revolute_data revolute;
@@ -308,18 +305,27 @@ typedef struct rb_joint {
         rb_prismatic_data prismatic;
         rb_pulley_data pulley;
     } as;
+    rb_vec2 local_anchor_a, local_anchor_b; /* m, from each body's origin, in its frame */
+    int next_on_a, next_on_b;               /* the next joint in body A's and body B's lists */
+    int next_free;
+    uint32_t generation; /* of the last object made in the slot; RB_RETIRED_GENERATION retires it */
+    bool in_use;
+    bool collide_connected;
+    void *user_data;
 } rb_joint;
 
 /* A node of the pins' trees (joint_tree.h): a body or a pin. */
 typedef struct rb_tree_node {
-    int body;        /* body slot, or -1 for a pin */
-    int joint;       /* joint slot, or -1 for a body */
-    int parent;      /* node index, -1 for a root */
-    int dim;         /* 3 for a body (vx, vy, ω), 2 for a pin (its impulse) */
-    double pivot[9]; /* D(node), dim × dim, summed from its children */
-    double dinv[9];  /* D(node)⁻¹ */
-    double x[6];     /* D(node)⁻¹·H(node, parent) */
-    double value[3]; /* the right-hand side, then the solution */
+    int body;             /* body slot, or -1 for a pin */
+    int joint;            /* joint slot, or -1 for a body */
+    int parent;           /* node index, -1 for a root */
+    int dim;              /* 3 for a body (vx, vy, ω), 2 for a pin (its impulse) */
+    double pivot[9];      /* D(node), dim × dim, summed from its children */
+    double dinv[9];       /* D(node)⁻¹ */
+    double x[6];          /* D(node)⁻¹·H(node, parent) */
+    double value[3];      /* the right-hand side, then the solution */
+    double mass, inertia; /* a body's, kg and kg·m²: its pivot before its children's */
+    rb_vec2 ra, rb;       /* a pin's anchor offsets (m) at the poses the nodes were factored at */
 } rb_tree_node;
 
 /* The pins solved together this step, with the arrays the search for
@@ -421,6 +427,8 @@ struct rb_world {
     int joint_capacity;
     int *active_joints; /* this step's solved joints (rb_joints_collect_active) */
     int active_joint_count, active_joint_capacity;
+    double *substep_omega; /* per body slot: rad/s at the substep's start, before any warm start (rb_joints_prepare) */
+    int substep_omega_capacity;
     int joint_slots;
     int joint_free;
     int joint_count;
