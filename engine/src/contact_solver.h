@@ -34,7 +34,8 @@ struct rb_contact_constraint {
     int contact;        /* index in world->contacts */
     int body_a, body_b; /* indices in world->states */
     double inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
-    rb_vec2 normal; /* unit, world, from A to B, this substep */
+    bool against_fixed; /* one body cannot move: both its inverse mass and inertia are 0 */
+    rb_vec2 normal;     /* unit, world, from A to B, this substep */
     /* What the normal follows as the bodies move: the line between two
      * circles' centres, or the reference face of a polygon, on A or B. */
     enum { RB_NORMAL_FROM_CENTERS, RB_NORMAL_TURNS_WITH_A, RB_NORMAL_TURNS_WITH_B } normal_follows;
