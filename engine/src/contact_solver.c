@@ -613,17 +613,17 @@ static inline void solve_soft_point(const constraint_rows *m, const rb_contact_s
     apply_row_impulse(m, m->normal, arm_a, arm_b, accumulated - normal_impulse, v);
 }
 
-/* One pass over the contacts, each one's normal rows first, so friction's
- * bound sees this pass's push. The poses do not change within a pass, so
- * a contact's separations are measured before its velocities are loaded.
- * The softness is copied, for the reason constraint_rows gives. */
-void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *softness)
+/* The soft pass over constraints begin .. end - 1, one after another,
+ * each one's normal rows first, so friction's bound sees this pass's push.
+ * The poses do not change within a pass, so a contact's separations are
+ * measured before its velocities are loaded. The softness is copied, for
+ * the reason constraint_rows gives. */
+void rb_contact_solver_solve_soft_range(rb_world *world, const rb_contact_softness *softness, int begin, int end)
 {
     rb_contact_softness k = *softness;
     rb_contact_constraint *constraints = world->constraints;
     rb_body_state *states = world->states;
-    int count = world->constraint_count;
-    for (int i = 0; i < count; ++i) {
+    for (int i = begin; i < end; ++i) {
         rb_contact_constraint *c = &constraints[i];
         rb_body_state *a = &states[c->body_a];
         rb_body_state *b = &states[c->body_b];

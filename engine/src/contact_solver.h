@@ -95,8 +95,13 @@ typedef struct rb_contact_softness {
 /* One pass of soft contacts. The anchors, normal and masses stay as
  * rb_contact_solver_prepare_substep set them at the start of the step;
  * each point's separation is measured anew from the poses now, so a pass
- * after the positions moved sees the gap they left. */
+ * after the positions moved sees the gap they left. Two contacts of a
+ * colour at a time where the processor allows (contact_solver_wide.c),
+ * the others one at a time by rb_contact_solver_solve_soft_range. */
 void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *softness);
+/* The same pass, one contact at a time, over constraints begin .. end - 1
+ * (contact_solver.c): the reference the two-at-a-time pass agrees with. */
+void rb_contact_solver_solve_soft_range(rb_world *world, const rb_contact_softness *softness, int begin, int end);
 /* One non-linear Gauss-Seidel pass over the contacts; returns whether no
  * point was deeper than the tolerance before it. */
 bool rb_contact_solver_correct_positions(rb_world *world);
