@@ -1,8 +1,10 @@
 /* SPDX-License-Identifier: MIT */
-/* The soft contact pass two contacts at a time (contact_solver_wide.c)
- * against the reference that solves one at a time
- * (rb_contact_solver_solve_soft_range): from the same constraints and
- * velocities, both passes must leave the same velocities and impulses.
+/* The soft contact pass and the points' preparation two contacts at a
+ * time (contact_solver_wide.c) against the references that take one at a
+ * time (rb_contact_solver_solve_soft_range,
+ * rb_contact_solver_prepare_points_range): from the same constraints and
+ * velocities, both passes must leave the same velocities and impulses,
+ * and both preparations the same constraints, byte for byte.
  * The stated tolerance is none: the values compare equal as numbers
  * (only the sign of a zero may differ, which == does not see), because
  * each lane does the reference's arithmetic in the reference's order.
@@ -137,6 +139,50 @@ static int expect_passes_agree(rb_world *world, double speed, bool use_bias, boo
     return two_point;
 }
 
+/* Prepares the world's contacts, moves and turns every dynamic body a
+ * little (so that the poses are not those the points were taken at),
+ * prepares the points each way from the same start with `rows` and
+ * compares the constraints byte for byte. */
+static void expect_preparations_agree(rb_world *world, rb_substep_rows rows, uint64_t seed)
+{
+    cr_assert_geq(rb_contact_solver_prepare(world), 0, "out of memory");
+    int count = world->constraint_count;
+    cr_assert_gt(count, 0, "the scene has contacts to solve");
+    for (int i = 0; i < world->body_slots; ++i) {
+        if (world->bodies[i].in_use && world->bodies[i].type == RB_BODY_DYNAMIC) {
+            rb_body_state *s = &world->states[i];
+            s->center = rb_add(s->center, rb_v2(0.01 * next_unit(&seed), 0.01 * next_unit(&seed)));
+            s->angle += 0.02 * next_unit(&seed);
+            s->rotation = rb_rot_from_angle(s->angle);
+        }
+    }
+    size_t bytes = (size_t)count * sizeof *world->constraints;
+    rb_contact_constraint *start = malloc(bytes);
+    rb_contact_constraint *reference = malloc(bytes);
+    cr_assert(start && reference);
+    memcpy(start, world->constraints, bytes);
+    rb_contact_solver_prepare_points_range(world, TEST_DT / SUBSTEPS, rows, 0, count);
+    memcpy(reference, world->constraints, bytes);
+    memcpy(world->constraints, start, bytes);
+    rb_contact_solver_prepare_points(world, TEST_DT / SUBSTEPS, rows);
+    int blocks = 0;
+    for (int i = 0; i < count; ++i) {
+        const rb_contact_constraint *r = &reference[i];
+        const rb_contact_constraint *w = &world->constraints[i];
+        blocks += r->use_block;
+        cr_expect(memcmp(r, w, sizeof *r) == 0,
+                  "constraint %d prepared differently: normal (%.17g, %.17g) and (%.17g, %.17g), first point's "
+                  "normal mass %.17g and %.17g, bound %.17g and %.17g",
+                  i, r->normal.x, r->normal.y, w->normal.x, w->normal.y, r->points[0].normal_mass,
+                  w->points[0].normal_mass, r->points[0].min_normal_velocity, w->points[0].min_normal_velocity);
+    }
+    if (rows.block_normals) {
+        cr_expect_gt(blocks, count / 2, "the block solve was taken by %d constraints of %d", blocks, count);
+    }
+    free(start);
+    free(reference);
+}
+
 /* The base-20 pyramid (590 contacts of two points) with a row of balls
  * on the ground beside it (contacts of one point, in the colours of the
  * boxes' contacts with the ground). */
@@ -155,6 +201,10 @@ Test(contact_lanes, a_pyramid_and_balls_give_the_same_velocities_and_impulses_bo
             expect_passes_agree(world, 0.5 * (round % 3), round % 2 == 0, round >= 3, 2024u + (uint64_t)round);
         cr_expect_gt(two_point, 500, "the pyramid's contacts have two points (%d did)", two_point);
     }
+    /* The rows each solver asks for: the soft step's, NGS's, Baumgarte's. */
+    expect_preparations_agree(world, (rb_substep_rows){.first_substep = true}, 11u);
+    expect_preparations_agree(world, (rb_substep_rows){.block_normals = true}, 12u);
+    expect_preparations_agree(world, (rb_substep_rows){.baumgarte_bias = true, .block_normals = true}, 13u);
     destroy_world_and_expect_no_leak(world);
 }
 

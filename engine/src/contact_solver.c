@@ -19,11 +19,6 @@
 #include "contact_solver.h"
 #include "error.h"
 
-/* The block solver is used while cond(K) stays below this (Box2D uses the
- * same bound): beyond it the two points are nearly redundant and the 2x2
- * solve would amplify round-off. */
-#define MAX_BLOCK_CONDITION 1000.0
-
 /* NGS stops early once no point is deeper than this many slops. */
 #define NGS_TOLERANCE_SLOPS 3.0
 
@@ -304,11 +299,11 @@ static void record_approaches(rb_world *world, double h, bool first_substep)
  * - with Baumgarte, overlap beyond the slop is pushed out at a fraction
  *   beta of it per substep: vn >= beta·(-s - slop)/h, capped;
  * - with NGS, the velocity solve only stops approach: vn >= 0. */
-void rb_contact_solver_prepare_substep(rb_world *world, double h, rb_substep_rows rows)
+void rb_contact_solver_prepare_points_range(rb_world *world, double h, rb_substep_rows rows, int begin, int end)
 {
     const rb_solver_settings *settings = &world->settings;
     double inv_h = 1.0 / h;
-    for (int i = 0; i < world->constraint_count; ++i) {
+    for (int i = begin; i < end; ++i) {
         rb_contact_constraint *c = &world->constraints[i];
         const rb_body_state *sa = &world->states[c->body_a];
         const rb_body_state *sb = &world->states[c->body_b];
@@ -355,6 +350,11 @@ void rb_contact_solver_prepare_substep(rb_world *world, double h, rb_substep_row
             }
         }
     }
+}
+
+void rb_contact_solver_prepare_substep(rb_world *world, double h, rb_substep_rows rows)
+{
+    rb_contact_solver_prepare_points(world, h, rows);
     if (world->bouncing_constraint_count > 0) {
         record_approaches(world, h, rows.first_substep);
     }

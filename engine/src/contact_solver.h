@@ -7,6 +7,11 @@
 
 #include "world_internal.h"
 
+/* The block solver is used while cond(K) stays below this (Box2D uses the
+ * same bound): beyond it the two points are nearly redundant and the 2x2
+ * solve would amplify round-off. */
+#define MAX_BLOCK_CONDITION 1000.0
+
 typedef struct rb_constraint_point {
     /* m, the point's lever arms about each centre of mass for this
      * substep's normal and tangent: rA×n, rB×n, rA×t, rB×t, with rA, rB
@@ -72,6 +77,12 @@ typedef struct rb_substep_rows {
  * effective masses at the poses now, the separations, and from them each
  * point's lower bound on its normal velocity for the sequential solvers. */
 void rb_contact_solver_prepare_substep(rb_world *world, double h, rb_substep_rows rows);
+/* Its part for each point (anchors, lever arms, masses, bounds), two
+ * contacts at a time where the processor allows (contact_solver_wide.c),
+ * the others by rb_contact_solver_prepare_points_range, the reference, one
+ * at a time over constraints begin .. end - 1 (contact_solver.c). */
+void rb_contact_solver_prepare_points(rb_world *world, double h, rb_substep_rows rows);
+void rb_contact_solver_prepare_points_range(rb_world *world, double h, rb_substep_rows rows, int begin, int end);
 void rb_contact_solver_warm_start(rb_world *world);
 /* One pass of sequential impulses at the substep's bounds (Baumgarte,
  * NGS), over the colours in order or, `backwards`, in reverse. NGS
