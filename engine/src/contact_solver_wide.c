@@ -200,13 +200,15 @@ static inline void solve_friction(rb_constraint_point *p0, rb_constraint_point *
 }
 
 /* Where the program can choose between versions of a function as it
- * loads (GNU ifunc: ELF on x86-64, GCC or Clang), solve_two and
- * prepare_two are built twice, for SSE2 and with AVX's encoding of the same 2 × double
+ * loads (GNU ifunc: ELF on x86-64, with GCC), solve_two and prepare_two
+ * are built twice, for SSE2 and with AVX's encoding of the same 2 × double
  * operations, taken where the processor has AVX: its three-operand forms
  * need no copy of a register that an operation overwrites but whose value
  * is still needed (the SSE2 build spends a sixth of its instructions on
- * such copies). The arithmetic is the same, so are the bits. */
-#if defined(__x86_64__) && defined(__ELF__) && defined(__GNUC__)
+ * such copies). The arithmetic is the same, so are the bits. Clang 14
+ * would export the functions' resolvers from the shared library, hidden
+ * as they are declared: with it, SSE2 alone. */
+#if defined(__x86_64__) && defined(__ELF__) && defined(__GNUC__) && !defined(__clang__)
 #define TWO_AT_A_TIME_TARGETS __attribute__((target_clones("avx", "default")))
 #else
 #define TWO_AT_A_TIME_TARGETS
