@@ -29,12 +29,16 @@
  * the constraints come out byte for byte as the reference leaves them.
  *
  * What it saves is the arithmetic: on the base-20 pyramid at Box2D v3's
- * budget the step took 3.72 M instructions one at a time, 3.37 M two at
- * a time with SSE2 and 3.16 M with AVX's encoding (solve_two, below;
- * callgrind). The loads stay one per value, and each lane's results are
- * taken apart to be stored. The warm start, four impulses applied per
- * contact and little else, was measured two at a time as well and saved
- * nothing. */
+ * budget the soft pass two at a time took the step from 3.72 M to 3.37 M
+ * instructions (callgrind), and with constraint_rows (contact_solver.c)
+ * before it from 0.256 to 0.228 ms (medians of 7 runs, interleaved).
+ * The loads stay one per value, and each lane's results are taken apart
+ * to be stored. Two things were measured and left out: the warm start
+ * two at a time (four impulses applied per contact and little else)
+ * saved nothing; building these functions a second time with AVX's
+ * three-operand encoding, chosen as the program loads, cut the step to
+ * 3.16 M instructions but not its time (0.229 ms): the register copies
+ * it saves cost the processor next to nothing. */
 #include "contact_solver.h"
 
 #if defined(__SSE2__)
@@ -199,24 +203,9 @@ static inline void solve_friction(rb_constraint_point *p0, rb_constraint_point *
     apply_row_impulse(m, tx, ty, arm_a, arm_b, sub(accumulated, old), v);
 }
 
-/* Where the program can choose between versions of a function as it
- * loads (GNU ifunc: ELF on x86-64, with GCC), solve_two and prepare_two
- * are built twice, for SSE2 and with AVX's encoding of the same 2 × double
- * operations, taken where the processor has AVX: its three-operand forms
- * need no copy of a register that an operation overwrites but whose value
- * is still needed (the SSE2 build spends a sixth of its instructions on
- * such copies). The arithmetic is the same, so are the bits. Clang 14
- * would export the functions' resolvers from the shared library, hidden
- * as they are declared: with it, SSE2 alone. */
-#if defined(__x86_64__) && defined(__ELF__) && defined(__GNUC__) && !defined(__clang__)
-#define TWO_AT_A_TIME_TARGETS __attribute__((target_clones("avx", "default")))
-#else
-#define TWO_AT_A_TIME_TARGETS
-#endif
-
 /* Two two-point contacts of one colour, each as the reference solves it. */
-TWO_AT_A_TIME_TARGETS static void solve_two(rb_contact_constraint *c0, rb_contact_constraint *c1, rb_body_state *states,
-                                            const rb_contact_softness *k)
+static void solve_two(rb_contact_constraint *c0, rb_contact_constraint *c1, rb_body_state *states,
+                      const rb_contact_softness *k)
 {
     rb_body_state *a0 = &states[c0->body_a];
     rb_body_state *b0 = &states[c0->body_b];
@@ -362,9 +351,8 @@ static inline void prepare_point(rb_contact_constraint *c0, rb_contact_constrain
  * block (prepare_block) and the points' own normal masses where the block
  * does not replace them, each kept as it was where the reference leaves
  * it. */
-TWO_AT_A_TIME_TARGETS static void prepare_two(rb_contact_constraint *c0, rb_contact_constraint *c1,
-                                              const rb_body_state *states, const rb_solver_settings *settings,
-                                              double inv_h, rb_substep_rows rows)
+static void prepare_two(rb_contact_constraint *c0, rb_contact_constraint *c1, const rb_body_state *states,
+                        const rb_solver_settings *settings, double inv_h, rb_substep_rows rows)
 {
     const rb_body_state *a0 = &states[c0->body_a];
     const rb_body_state *b0 = &states[c0->body_b];
