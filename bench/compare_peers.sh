@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Compares sinew's engine with the peer engines Debian packages, Box2D 2.4.1
-# and Chipmunk2D 7.0.3, on the peer harnesses' scenes (docs/benchmarks.md), as ratios
-# measured in one session on this machine.
+# and Chipmunk2D 7.0.3, and with Box2D v3 when its harness is at hand, on the
+# peer harnesses' scenes (docs/benchmarks.md), as ratios measured in one
+# session on this machine.
 #
 # Scenes and protocols (dt = 1/60 s, gravity (0, -10)):
 #   pyramid20, pyramid100  60 warm-up and 300 timed steps; sinew through
@@ -14,17 +15,22 @@
 #       timed (the peers with --warmup 0 --steps 300); sinew through
 #       bench_solver --single. Figures: the worst joint gap over 0-5 s and
 #       the gap at 5 s (m), which the peers compute the same way.
-# Box2D runs 8 velocity / 3 position iterations, Chipmunk 10 iterations.
+# Box2D runs 8 velocity / 3 position iterations, Chipmunk 10 iterations,
+# Box2D v3 its defaults (4 substeps); its harness, built outside the project
+# from Box2D v3's source (the peers folder's build_box2d3.sh), comes in an
+# SSE2 and an AVX2 variant, box2d3_bench_sse2 and box2d3_bench_avx2, and
+# each one found runs as an engine of its own. Box2D v3 reports the grid's
+# worst gap over every step, the others none.
 #
-# Each repetition runs, for each scene, sinew, Box2D and Chipmunk one after
-# the other, so that a change in the machine's load touches all three
-# engines alike. The tables give, per engine and scene, the median over
-# repetitions of each run's median ms per step, and the ratios
-# sinew/Box2D and sinew/Chipmunk (below 1: sinew is faster); the other
-# figures come from the last repetition (every engine is deterministic).
+# Each repetition runs, for each scene, sinew, Box2D, Chipmunk and Box2D v3
+# one after the other, so that a change in the machine's load touches all
+# the engines alike. The tables give, per engine and scene, the median over
+# repetitions of each run's median ms per step, and the ratios of sinew's
+# to each peer's (below 1: sinew is faster); the other figures come from
+# the last repetition (every engine is deterministic).
 #
 # usage: bench/compare_peers.sh [--runs R] [--scenes LIST] [--out FILE] [--build-dir DIR] [--peers DIR]
-#                                [--solver NAME] [--substeps N] [--vel N] [--pos N]
+#                                [--box2d3 PATH] [--solver NAME] [--substeps N] [--vel N] [--pos N]
 #   --runs R       repetitions, 1 .. 100 (default 3)
 #   --scenes LIST  comma-separated, of pyramid20, pyramid100, joint_grid,
 #                  chain_hang, chain_swing (default all five)
@@ -33,6 +39,9 @@
 #                  to a temporary name and renamed
 #   --build-dir D  sinew's build directory (default build/release)
 #   --peers DIR    the peer harnesses' folder (default $SINEW_PEERS; one of the two is needed)
+#   --box2d3 PATH  Box2D v3's harness: box2d3_bench_sse2 or box2d3_bench_avx2, or
+#                  a folder holding either or both (default: those in the peers
+#                  folder, if any; without them Box2D v3 is left out)
 #   --solver NAME  sinew's solver: baumgarte, ngs or soft_step (default the engine's)
 #   --substeps N, --vel N, --pos N
 #                  sinew's substeps (1 .. 1000), velocity passes (1 .. 1000) and
@@ -48,6 +57,10 @@ scenes=("${all_scenes[@]}")
 out=compare_peers.csv
 build_dir="$root/build/release"
 peers_dir=${SINEW_PEERS:-}
+box2d3_path=""
+# Box2D v3's harnesses found, and the engine name of each ("box2d3_sse2").
+box2d3_harnesses=()
+box2d3_engines=()
 # Sinew's settings when given, for bench_engine (pyramids) and bench_solver (joints).
 engine_settings=()
 solver_settings=()
@@ -118,7 +131,7 @@ while [[ $# -gt 0 ]]; do
             solver_settings+=("$1" "$((10#$2))")
             shift 2
             ;;
-        --runs | --scenes | --out | --build-dir | --peers)
+        --runs | --scenes | --out | --build-dir | --peers | --box2d3)
             [[ $# -ge 2 && -n "$2" ]] || bad_usage "$1 needs a value"
             case "$1" in
                 --runs)
@@ -131,6 +144,7 @@ while [[ $# -gt 0 ]]; do
                 --out) out=$2 ;;
                 --build-dir) build_dir=$2 ;;
                 --peers) peers_dir=$2 ;;
+                --box2d3) box2d3_path=$2 ;;
             esac
             shift 2
             ;;
@@ -156,6 +170,33 @@ if [[ ! -f "$peers_dir/Makefile" ]]; then
     exit 1
 fi
 make -s -C "$peers_dir" >&2
+
+# Adds Box2D v3's harness `program` if it is one (named box2d3_bench_sse2 or
+# box2d3_bench_avx2 and executable); returns 1 otherwise.
+add_box2d3() {
+    local program=$1 name
+    name=$(basename "$program")
+    [[ -f "$program" && -x "$program" && "$name" =~ ^box2d3_bench_(sse2|avx2)$ ]] || return 1
+    box2d3_harnesses+=("$program")
+    box2d3_engines+=("box2d3_${BASH_REMATCH[1]}")
+}
+if [[ -n "$box2d3_path" ]]; then
+    if [[ -d "$box2d3_path" ]]; then
+        add_box2d3 "$box2d3_path/box2d3_bench_sse2" || true
+        add_box2d3 "$box2d3_path/box2d3_bench_avx2" || true
+        if ((${#box2d3_harnesses[@]} == 0)); then
+            echo "compare_peers.sh: --box2d3: no executable box2d3_bench_sse2 or box2d3_bench_avx2 in $box2d3_path" >&2
+            exit 1
+        fi
+    elif ! add_box2d3 "$box2d3_path"; then
+        echo "compare_peers.sh: --box2d3: $box2d3_path is not an executable box2d3_bench_sse2 or" \
+            "box2d3_bench_avx2 (or a folder holding one)" >&2
+        exit 1
+    fi
+else
+    add_box2d3 "$peers_dir/box2d3_bench_sse2" || true
+    add_box2d3 "$peers_dir/box2d3_bench_avx2" || true
+fi
 
 for program in bench_engine bench_solver; do
     if [[ ! -x "$build_dir/bench/$program" ]]; then
@@ -193,11 +234,27 @@ record() {
     echo "$engine $scene $median $moved $worst $final" >>"$work/samples"
 }
 
-# Records one peer line: the pyramid's moved boxes, the chain's gaps.
+# Records one peer line: the pyramid's moved boxes, the chain's gaps (and
+# Box2D v3's worst gap over the grid's steps, with its gap at the end).
 record_peer() {
-    local engine=$1 scene=$2 line=$3
-    record "$engine" "$scene" "$(field "$line" median_ms)" "$(field "$line" lateral_gt_0.25)" \
-        "$(field "$line" peak_sep_0_5s)" "$(field "$line" max_sep_5s)"
+    local engine=$1 scene=$2 line=$3 worst final
+    worst=$(field "$line" peak_sep_0_5s)
+    final=$(field "$line" max_sep_5s)
+    if [[ "$scene" == joint_grid ]]; then
+        worst=$(field "$line" peak_sep_all_steps)
+        final=$(field "$line" max_sep_end)
+    fi
+    record "$engine" "$scene" "$(field "$line" median_ms)" "$(field "$line" lateral_gt_0.25)" "$worst" "$final"
+}
+
+# One run of each Box2D v3 harness found, with the arguments given (the
+# scene and its protocol).
+run_box2d3() {
+    local scene=$1 v
+    shift
+    for v in "${!box2d3_harnesses[@]}"; do
+        record_peer "${box2d3_engines[v]}" "$scene" "$("${box2d3_harnesses[v]}" "$@" | grep '^engine=')"
+    done
 }
 
 # One run of sinew on a joint scene through bench_solver at the engine's
@@ -234,6 +291,7 @@ for ((r = 1; r <= runs; ++r)); do
                 record_peer box2d "$scene" "$("$peers_dir/box2d24_bench" pyramid --base "$base" --vel 8 --pos 3)"
                 record_peer chipmunk "$scene" \
                     "$("$peers_dir/chipmunk_bench" pyramid --base "$base" --iters 10 | grep '^engine=')"
+                run_box2d3 "$scene" pyramid --base "$base"
                 ;;
             joint_grid)
                 run_sinew_joints joint_grid "$grid_warmup" "$grid_steps"
@@ -241,6 +299,7 @@ for ((r = 1; r <= runs; ++r)); do
                     --warmup "$grid_warmup" --steps "$grid_steps")"
                 record_peer chipmunk "$scene" "$("$peers_dir/chipmunk_bench" joint_grid --iters 10 \
                     --warmup "$grid_warmup" --steps "$grid_steps" | grep '^engine=')"
+                run_box2d3 "$scene" joint_grid --warmup "$grid_warmup" --steps "$grid_steps"
                 ;;
             chain_hang | chain_swing)
                 layout=${scene#chain_}
@@ -249,6 +308,7 @@ for ((r = 1; r <= runs; ++r)); do
                     --warmup 0 --steps "$chain_steps")"
                 record_peer chipmunk "$scene" "$("$peers_dir/chipmunk_bench" chain --layout "$layout" --iters 10 \
                     --warmup 0 --steps "$chain_steps" | grep '^engine=')"
+                run_box2d3 "$scene" chain --layout "$layout" --warmup 0 --steps "$chain_steps"
                 ;;
         esac
     done
@@ -269,16 +329,37 @@ last_of() {
 }
 
 host=$(hostname)
+# Every engine's columns are in the CSV, empty for a Box2D v3 variant not run.
+all_engines=(sinew box2d chipmunk box2d3_sse2 box2d3_avx2)
+engines=(sinew box2d chipmunk ${box2d3_engines[@]+"${box2d3_engines[@]}"})
+ran() {
+    local e
+    for e in "${engines[@]}"; do
+        [[ "$e" == "$1" ]] && return 0
+    done
+    return 1
+}
 {
-    echo "host,scene,runs,sinew_ms,box2d_ms,chipmunk_ms,sinew_over_box2d,sinew_over_chipmunk,sinew_moved,box2d_moved,chipmunk_moved,sinew_worst_gap_m,box2d_worst_gap_m,chipmunk_worst_gap_m,sinew_final_gap_m,box2d_final_gap_m,chipmunk_final_gap_m"
+    printf 'host,scene,runs'
+    for engine in "${all_engines[@]}"; do printf ',%s_ms' "$engine"; done
+    for engine in "${all_engines[@]:1}"; do printf ',sinew_over_%s' "$engine"; done
+    for figure in moved worst_gap_m final_gap_m; do
+        for engine in "${all_engines[@]}"; do printf ',%s_%s' "$engine" "$figure"; done
+    done
+    printf '\n'
     for scene in "${scenes[@]}"; do
         s=$(median_of sinew "$scene")
-        b=$(median_of box2d "$scene")
-        c=$(median_of chipmunk "$scene")
-        printf '%s,%s,%d,' "$host" "$scene" "$runs"
-        awk -v s="$s" -v b="$b" -v c="$c" 'BEGIN { printf "%.4f,%.4f,%.4f,%.3f,%.3f", s, b, c, s / b, s / c }'
+        printf '%s,%s,%d,%s' "$host" "$scene" "$runs" "$(awk -v v="$s" 'BEGIN { printf "%.4f", v }')"
+        for engine in "${all_engines[@]:1}"; do
+            ran "$engine" && printf ',%s' "$(awk -v v="$(median_of "$engine" "$scene")" 'BEGIN { printf "%.4f", v }')" ||
+                printf ','
+        done
+        for engine in "${all_engines[@]:1}"; do
+            ran "$engine" && printf ',%s' "$(awk -v s="$s" -v v="$(median_of "$engine" "$scene")" \
+                'BEGIN { printf "%.3f", s / v }')" || printf ','
+        done
         for column in 4 5 6; do
-            for engine in sinew box2d chipmunk; do
+            for engine in "${all_engines[@]}"; do
                 printf ',%s' "$(last_of "$engine" "$scene" "$column")"
             done
         done
@@ -289,16 +370,28 @@ mv "$csv_tmp" "$out"
 
 echo
 echo "median of $runs runs, ms per step on $host (Box2D: 8 vel / 3 pos; Chipmunk: 10 iterations;" \
-    "sinew pyramid: ${sinew_pyramid_settings:-not run}; sinew joints: ${sinew_joint_settings:-not run})"
-awk -F, 'function show(v) { return v == "" ? "-" : v }
+    "Box2D v3: 4 substeps; sinew pyramid: ${sinew_pyramid_settings:-not run};" \
+    "sinew joints: ${sinew_joint_settings:-not run})"
+# The table shows the engines that ran, each column found by its name.
+awk -F, -v shown="${engines[*]}" 'function show(v) { return v == "" ? "-" : v }
+    function figures(name,   i, out) {
+        out = ""
+        for (i = 1; i <= n; ++i) out = out (i > 1 ? "/" : "") show($(col[e[i] "_" name]))
+        return out
+    }
+    BEGIN { n = split(shown, e, " ") }
     NR == 1 {
-        printf "%-11s %9s %9s %9s %8s %8s   %-24s %-30s %s\n", "scene", "sinew", "box2d", "chipmunk", "s/box2d",
-            "s/chipm", "moved (s/b/c)", "worst gap m (s/b/c)", "gap at end m (s/b/c)"
+        for (i = 1; i <= NF; ++i) col[$i] = i
+        printf "%-11s", "scene"
+        for (i = 1; i <= n; ++i) printf " %11s", e[i]
+        for (i = 2; i <= n; ++i) printf " %11s", "s/" e[i]
+        printf "   moved, worst gap m, gap at end m (in that order of engines)\n"
         next
     }
     {
-        printf "%-11s %9.4f %9.4f %9.4f %8.3f %8.3f   %-24s %-30s %s\n", $2, $4, $5, $6, $7, $8,
-            show($9) "/" show($10) "/" show($11), show($12) "/" show($13) "/" show($14),
-            show($15) "/" show($16) "/" show($17)
+        printf "%-11s", $2
+        for (i = 1; i <= n; ++i) printf " %11.4f", $(col[e[i] "_ms"])
+        for (i = 2; i <= n; ++i) printf " %11.3f", $(col["sinew_over_" e[i]])
+        printf "   %s  %s  %s\n", figures("moved"), figures("worst_gap_m"), figures("final_gap_m")
     }' "$out"
 echo "csv: $out"

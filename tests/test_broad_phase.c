@@ -261,3 +261,69 @@ Test(broad_phase, a_pyramid_at_rest_stops_sweeping)
     expect_pairs_match_brute_force(world, 1002);
     destroy_world_and_expect_no_leak(world);
 }
+
+/* The contacts, one for each pair and in its order, after step `step`. */
+static void expect_contacts_follow_pairs(const rb_world *world, int step)
+{
+    cr_assert_eq(world->contact_count, world->pair_count, "step %d: %d contacts for %d pairs", step,
+                 world->contact_count, world->pair_count);
+    for (int i = 0; i < world->pair_count; ++i) {
+        cr_assert_eq(compare_keys(&world->contacts[i].pair, &world->pairs[i]), 0,
+                     "step %d: contact %d is not the pair's (shapes %d, %d against %d, %d)", step, i,
+                     world->contacts[i].pair.shape_a, world->contacts[i].pair.shape_b, world->pairs[i].shape_a,
+                     world->pairs[i].shape_b);
+    }
+}
+
+/* A pyramid at rest keeps its contacts where they are: the step finds
+ * the same pairs and does not merge them with the contacts again (the
+ * merge writes the contacts to the other of its two arrays, so an array
+ * that stays put is one that was not merged). A ball dropped on it, a
+ * box destroyed and made again in its slots, and a box taken out of it,
+ * and the contacts follow the pairs. */
+Test(broad_phase, a_pyramid_at_rest_keeps_its_contacts_in_place)
+{
+    scene_pyramid pyramid;
+    rb_world *world = make_resting_pyramid(&pyramid);
+    step_world(world, TEST_DT, 1);
+    const rb_contact *contacts = world->contacts;
+    for (int step = 0; step < 30; ++step) {
+        step_world(world, TEST_DT, 1);
+        cr_expect(!world->pairs_changed, "step %d: the pairs of the pyramid at rest changed", step);
+        cr_expect_eq(world->contacts, contacts, "step %d: the contacts were merged again", step);
+        expect_contacts_follow_pairs(world, step);
+    }
+
+    rb_vec2 top = rb_body_position(world, pyramid.top);
+    rb_body_id ball = make_body(world, RB_BODY_DYNAMIC, rb_add(top, rb_v2(0.1, 1.5)), 0.0);
+    add_circle(world, ball, rb_v2(0.0, 0.0), 0.25, 1.0);
+    int changes = 0;
+    for (int step = 100; step < 160; ++step) {
+        step_world(world, TEST_DT, 1);
+        changes += world->pairs_changed;
+        expect_pairs_match_brute_force(world, step);
+        expect_contacts_follow_pairs(world, step);
+    }
+    cr_expect_geq(changes, 1, "the ball's landing changed no pair");
+    expect_near(rb_body_position(world, ball).y, top.y + 0.75, 0.02, "the ball resting on the top box");
+
+    /* The top box destroyed and made again in its place before the next
+     * step: the new body and shape take the old ones' slots, so the
+     * pairs are the last step's, but the old box's contacts went with it
+     * and the new one's must be made. */
+    rb_vec2 where = rb_body_position(world, pyramid.top);
+    cr_assert_eq(rb_body_destroy(world, pyramid.top), RB_OK, "%s", rb_last_error());
+    rb_body_id again = make_body(world, RB_BODY_DYNAMIC, where, 0.0);
+    add_box(world, again, 0.5, 0.5, 1.0);
+    step_world(world, TEST_DT, 1);
+    cr_expect(!world->pairs_changed, "the new box took the old one's slots and pairs");
+    expect_pairs_match_brute_force(world, 200);
+    expect_contacts_follow_pairs(world, 200);
+
+    /* A box of the bottom row destroyed: its contacts go with it. */
+    cr_assert_eq(rb_body_destroy(world, scene_body_at(pyramid.first_box, 0)), RB_OK, "%s", rb_last_error());
+    step_world(world, TEST_DT, 1);
+    expect_pairs_match_brute_force(world, 201);
+    expect_contacts_follow_pairs(world, 201);
+    destroy_world_and_expect_no_leak(world);
+}

@@ -591,13 +591,22 @@ rb_status rb_broad_phase_update_pairs(rb_world *world, double dt)
         0) {
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for shape pairs");
     }
+    /* Written over the last step's, which they are compared with as they
+     * go: in a pile at rest they are the same, and the contacts then stay
+     * as they are (rb_contacts_update). */
+    int last_count = world->pair_count;
+    bool changed = false;
     world->pair_count = 0;
     for (int i = 0; i < world->candidate_count; ++i) {
         const rb_pair *candidate = &world->candidates[i];
         if (rb_aabb_overlaps(world->shapes[candidate->shape_a].aabb, world->shapes[candidate->shape_b].aabb)) {
-            world->pairs[world->pair_count++] = *candidate;
+            rb_pair *pair = &world->pairs[world->pair_count++];
+            changed = changed || world->pair_count > last_count || pair->body_key != candidate->body_key ||
+                      pair->shape_key != candidate->shape_key;
+            *pair = *candidate;
         }
     }
+    world->pairs_changed = changed || world->pair_count != last_count;
     return RB_OK;
 }
 

@@ -30,10 +30,17 @@ static rb_contact new_contact(const rb_world *world, const rb_pair *pair)
 }
 
 /* Both lists are sorted by key, so one merge pass matches them; an old
- * contact the merge passes over has lost its pair and ends. */
+ * contact the merge passes over has lost its pair and ends. When the
+ * pairs are the last step's and no contact has been removed since (a
+ * shape destroyed, rb_contacts_remove_shape), the merge would keep every
+ * contact where it is: the contacts are left as they are, and a pile at
+ * rest costs no copy of its contacts. */
 rb_status rb_contacts_update(rb_world *world)
 {
     RB_TRY(rb_contact_events_start_step(world));
+    if (!world->pairs_changed && world->contact_count == world->pair_count) {
+        return rb_contact_events_reserve_begins(world);
+    }
     if (rb_grow_array((void **)&world->spare_contacts, &world->spare_capacity, world->pair_count,
                       sizeof *world->spare_contacts) != 0) {
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for contacts");

@@ -19,11 +19,6 @@
 #include "contact_solver.h"
 #include "error.h"
 
-/* The block solver is used while cond(K) stays below this (Box2D uses the
- * same bound): beyond it the two points are nearly redundant and the 2x2
- * solve would amplify round-off. */
-#define MAX_BLOCK_CONDITION 1000.0
-
 /* NGS stops early once no point is deeper than this many slops. */
 #define NGS_TOLERANCE_SLOPS 3.0
 
@@ -136,6 +131,8 @@ int rb_contact_solver_prepare(rb_world *world)
         c->inv_inertia_a = body_a->awake ? body_a->inv_inertia : 0.0;
         c->inv_mass_b = body_b->awake ? body_b->inv_mass : 0.0;
         c->inv_inertia_b = body_b->awake ? body_b->inv_inertia : 0.0;
+        c->against_fixed =
+            (c->inv_mass_a == 0.0 && c->inv_inertia_a == 0.0) || (c->inv_mass_b == 0.0 && c->inv_inertia_b == 0.0);
         c->normal = contact->manifold.normal;
         const rb_shape *shape_a = &world->shapes[contact->pair.shape_a];
         const rb_shape *shape_b = &world->shapes[contact->pair.shape_b];
@@ -302,11 +299,11 @@ static void record_approaches(rb_world *world, double h, bool first_substep)
  * - with Baumgarte, overlap beyond the slop is pushed out at a fraction
  *   beta of it per substep: vn >= beta·(-s - slop)/h, capped;
  * - with NGS, the velocity solve only stops approach: vn >= 0. */
-void rb_contact_solver_prepare_substep(rb_world *world, double h, rb_substep_rows rows)
+void rb_contact_solver_prepare_points_range(rb_world *world, double h, rb_substep_rows rows, int begin, int end)
 {
     const rb_solver_settings *settings = &world->settings;
     double inv_h = 1.0 / h;
-    for (int i = 0; i < world->constraint_count; ++i) {
+    for (int i = begin; i < end; ++i) {
         rb_contact_constraint *c = &world->constraints[i];
         const rb_body_state *sa = &world->states[c->body_a];
         const rb_body_state *sb = &world->states[c->body_b];
@@ -353,6 +350,11 @@ void rb_contact_solver_prepare_substep(rb_world *world, double h, rb_substep_row
             }
         }
     }
+}
+
+void rb_contact_solver_prepare_substep(rb_world *world, double h, rb_substep_rows rows)
+{
+    rb_contact_solver_prepare_points(world, h, rows);
     if (world->bouncing_constraint_count > 0) {
         record_approaches(world, h, rows.first_substep);
     }
@@ -382,38 +384,41 @@ static inline void store_velocities(const body_velocities *v, rb_body_state *a, 
     b->angular_velocity = v->angular_b;
 }
 
-/* The point's velocity on B relative to A along the normal, and along
- * the tangent, from the lever arms. */
-static inline double normal_velocity(const rb_contact_constraint *c, const rb_constraint_point *p,
-                                     const body_velocities *v)
+/* What a pass reads from a constraint but never writes, copied out of it
+ * once: the impulses a pass stores are doubles, as these are, so the
+ * compiler could not tell that a store leaves them unchanged and would
+ * load them again after every one (a sixth of the soft pass's
+ * instructions, counted by callgrind on the base-20 pyramid). */
+typedef struct constraint_rows {
+    rb_vec2 normal;
+    rb_vec2 tangent;
+    double inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
+} constraint_rows;
+
+static inline constraint_rows load_rows(const rb_contact_constraint *c)
 {
-    return rb_dot(c->normal, rb_sub(v->linear_b, v->linear_a)) + v->angular_b * p->normal_arm_b -
-           v->angular_a * p->normal_arm_a;
+    return (constraint_rows){c->normal,        tangent_of(c->normal), c->inv_mass_a,
+                             c->inv_inertia_a, c->inv_mass_b,         c->inv_inertia_b};
 }
 
-static inline double tangent_velocity(rb_vec2 tangent, const rb_constraint_point *p, const body_velocities *v)
+/* The point's velocity on B relative to A along a row: the normal or the
+ * tangent, with that row's lever arms. */
+static inline double row_velocity(rb_vec2 direction, double arm_a, double arm_b, const body_velocities *v)
 {
-    return rb_dot(tangent, rb_sub(v->linear_b, v->linear_a)) + v->angular_b * p->tangent_arm_b -
-           v->angular_a * p->tangent_arm_a;
+    return rb_dot(direction, rb_sub(v->linear_b, v->linear_a)) + v->angular_b * arm_b - v->angular_a * arm_a;
 }
 
 /* Applies an impulse `lambda` along `direction` (the normal or the
  * tangent) at a point of lever arms arm_a, arm_b: -λ·direction to A,
  * +λ·direction to B. */
-static inline void apply_row_impulse(const rb_contact_constraint *c, rb_vec2 direction, double arm_a, double arm_b,
+static inline void apply_row_impulse(const constraint_rows *m, rb_vec2 direction, double arm_a, double arm_b,
                                      double lambda, body_velocities *v)
 {
     rb_vec2 impulse = rb_scale(lambda, direction);
-    v->linear_a = rb_mul_sub(v->linear_a, c->inv_mass_a, impulse);
-    v->angular_a -= c->inv_inertia_a * lambda * arm_a;
-    v->linear_b = rb_mul_add(v->linear_b, c->inv_mass_b, impulse);
-    v->angular_b += c->inv_inertia_b * lambda * arm_b;
-}
-
-static inline void apply_normal_impulse(const rb_contact_constraint *c, const rb_constraint_point *p, double lambda,
-                                        body_velocities *v)
-{
-    apply_row_impulse(c, c->normal, p->normal_arm_a, p->normal_arm_b, lambda, v);
+    v->linear_a = rb_mul_sub(v->linear_a, m->inv_mass_a, impulse);
+    v->angular_a -= m->inv_inertia_a * lambda * arm_a;
+    v->linear_b = rb_mul_add(v->linear_b, m->inv_mass_b, impulse);
+    v->angular_b += m->inv_inertia_b * lambda * arm_b;
 }
 
 /* Applies impulse P at anchors rA, rB: -P to A, +P to B (restitution,
@@ -434,49 +439,64 @@ void rb_contact_solver_warm_start(rb_world *world)
         rb_body_state *a = &world->states[c->body_a];
         rb_body_state *b = &world->states[c->body_b];
         body_velocities v = load_velocities(a, b);
-        rb_vec2 tangent = tangent_of(c->normal);
+        constraint_rows m = load_rows(c);
         for (int j = 0; j < c->point_count; ++j) {
             const rb_constraint_point *p = &c->points[j];
-            apply_row_impulse(c, c->normal, p->normal_arm_a, p->normal_arm_b, p->normal_impulse, &v);
-            apply_row_impulse(c, tangent, p->tangent_arm_a, p->tangent_arm_b, p->tangent_impulse, &v);
+            apply_row_impulse(&m, m.normal, p->normal_arm_a, p->normal_arm_b, p->normal_impulse, &v);
+            apply_row_impulse(&m, m.tangent, p->tangent_arm_a, p->tangent_arm_b, p->tangent_impulse, &v);
         }
         store_velocities(&v, a, b);
     }
 }
 
-static inline void solve_point_friction(const rb_contact_constraint *c, rb_constraint_point *p, rb_vec2 tangent,
+static inline void solve_point_friction(const constraint_rows *m, double friction, rb_constraint_point *p,
                                         body_velocities *v)
 {
-    if (p->normal_impulse == 0.0 && p->tangent_impulse == 0.0) {
+    double normal_impulse = p->normal_impulse;
+    double tangent_impulse = p->tangent_impulse;
+    if (normal_impulse == 0.0 && tangent_impulse == 0.0) {
         return; /* no push, so no friction to hold or to release */
     }
-    double vt = tangent_velocity(tangent, p, v);
-    double limit = c->friction * p->normal_impulse;
-    double accumulated = rb_clamp(p->tangent_impulse - p->tangent_mass * vt, -limit, limit);
-    double delta = accumulated - p->tangent_impulse;
+    double arm_a = p->tangent_arm_a;
+    double arm_b = p->tangent_arm_b;
+    double vt = row_velocity(m->tangent, arm_a, arm_b, v);
+    double limit = friction * normal_impulse;
+    double accumulated = rb_clamp(tangent_impulse - p->tangent_mass * vt, -limit, limit);
     p->tangent_impulse = accumulated;
-    apply_row_impulse(c, tangent, p->tangent_arm_a, p->tangent_arm_b, delta, v);
+    apply_row_impulse(m, m->tangent, arm_a, arm_b, accumulated - tangent_impulse, v);
 }
 
 /* Each point's friction in turn; the two-point case, by far the most
  * common, written out so the compiler unrolls it. */
-static inline void solve_friction(rb_contact_constraint *c, body_velocities *v)
+static inline void solve_friction(rb_contact_constraint *c, const constraint_rows *m, body_velocities *v)
 {
-    rb_vec2 tangent = tangent_of(c->normal);
-    solve_point_friction(c, &c->points[0], tangent, v);
+    double friction = c->friction;
+    solve_point_friction(m, friction, &c->points[0], v);
     if (c->point_count == 2) {
-        solve_point_friction(c, &c->points[1], tangent, v);
+        solve_point_friction(m, friction, &c->points[1], v);
     }
 }
 
-static inline void solve_normal_point(rb_contact_constraint *c, rb_constraint_point *p, body_velocities *v)
+/* A normal impulse's change `delta` at point p. */
+static inline void apply_normal_impulse(const constraint_rows *m, const rb_constraint_point *p, double delta,
+                                        body_velocities *v)
 {
-    double vn = normal_velocity(c, p, v);
+    apply_row_impulse(m, m->normal, p->normal_arm_a, p->normal_arm_b, delta, v);
+}
+
+static inline double normal_velocity(const constraint_rows *m, const rb_constraint_point *p, const body_velocities *v)
+{
+    return row_velocity(m->normal, p->normal_arm_a, p->normal_arm_b, v);
+}
+
+static inline void solve_normal_point(const constraint_rows *m, rb_constraint_point *p, body_velocities *v)
+{
+    double vn = normal_velocity(m, p, v);
     double accumulated = rb_max(p->normal_impulse - p->normal_mass * (vn - p->min_normal_velocity), 0.0);
     double delta = accumulated - p->normal_impulse;
     p->normal_impulse = accumulated;
     p->max_normal_impulse = rb_max(p->max_normal_impulse, accumulated);
-    apply_normal_impulse(c, p, delta, v);
+    apply_normal_impulse(m, p, delta, v);
 }
 
 /* Both normal impulses at once: find x >= 0 with w = K·x + b >= 0 and
@@ -486,14 +506,14 @@ static inline void solve_normal_point(rb_contact_constraint *c, rb_constraint_po
  * Complementarity", 1988, ch. 1): both points pushing, only the first,
  * only the second, neither. If round-off defeats all four, the impulses
  * stay as they were. */
-static inline void solve_normal_block(rb_contact_constraint *c, body_velocities *v)
+static inline void solve_normal_block(rb_contact_constraint *c, const constraint_rows *m, body_velocities *v)
 {
     rb_constraint_point *p1 = &c->points[0];
     rb_constraint_point *p2 = &c->points[1];
     double x1_old = p1->normal_impulse;
     double x2_old = p2->normal_impulse;
-    double w1 = normal_velocity(c, p1, v) - p1->min_normal_velocity;
-    double w2 = normal_velocity(c, p2, v) - p2->min_normal_velocity;
+    double w1 = normal_velocity(m, p1, v) - p1->min_normal_velocity;
+    double w2 = normal_velocity(m, p2, v) - p2->min_normal_velocity;
     double b1 = w1 - (c->k11 * x1_old + c->k12 * x2_old);
     double b2 = w2 - (c->k12 * x1_old + c->k22 * x2_old);
 
@@ -524,8 +544,8 @@ static inline void solve_normal_block(rb_contact_constraint *c, body_velocities 
     p2->normal_impulse = x2;
     p1->max_normal_impulse = rb_max(p1->max_normal_impulse, x1);
     p2->max_normal_impulse = rb_max(p2->max_normal_impulse, x2);
-    apply_normal_impulse(c, p1, x1 - x1_old, v);
-    apply_normal_impulse(c, p2, x2 - x2_old, v);
+    apply_normal_impulse(m, p1, x1 - x1_old, v);
+    apply_normal_impulse(m, p2, x2 - x2_old, v);
 }
 
 void rb_contact_solver_solve_velocities(rb_world *world, bool backwards)
@@ -536,14 +556,15 @@ void rb_contact_solver_solve_velocities(rb_world *world, bool backwards)
         rb_body_state *a = &world->states[c->body_a];
         rb_body_state *b = &world->states[c->body_b];
         body_velocities v = load_velocities(a, b);
+        constraint_rows m = load_rows(c);
         /* Friction first: its bound uses the normal impulse, and the
          * normal constraint, solved last, matters more for stacking. */
-        solve_friction(c, &v);
+        solve_friction(c, &m, &v);
         if (c->use_block) {
-            solve_normal_block(c, &v);
+            solve_normal_block(c, &m, &v);
         } else {
             for (int j = 0; j < c->point_count; ++j) {
-                solve_normal_point(c, &c->points[j], &v);
+                solve_normal_point(&m, &c->points[j], &v);
             }
         }
         store_velocities(&v, a, b);
@@ -566,51 +587,57 @@ static inline double separation_now(const rb_contact_constraint *c, const rb_con
  * no faster than max_push_speed, its impulse
  *   λ = -mass_scale·m·(vn + bias) - impulse_scale·λ_accumulated,
  * against a fixed body at twice the frequency (it carries the whole
- * load). Without bias (relax), the overlap only stops approaching. The
- * poses do not change within a pass, so the separations are measured
- * before the velocities are loaded. */
-static inline void solve_soft_normal(rb_contact_constraint *c, const rb_contact_softness *softness,
-                                     const double separation[RB_MAX_MANIFOLD_POINTS], body_velocities *v)
+ * load). Without bias (relax), the overlap only stops approaching. */
+static inline void solve_soft_point(const constraint_rows *m, const rb_contact_softness *softness,
+                                    const rb_rigid_response *spring, rb_constraint_point *p, double s,
+                                    body_velocities *v)
 {
-    bool fixed = (c->inv_mass_a == 0.0 && c->inv_inertia_a == 0.0) || (c->inv_mass_b == 0.0 && c->inv_inertia_b == 0.0);
-    const rb_rigid_response *spring = fixed ? &softness->against_fixed : &softness->between_moving;
-    for (int j = 0; j < c->point_count; ++j) {
-        rb_constraint_point *p = &c->points[j];
-        double s = separation[j];
-        double bias = 0.0;
-        double mass_scale = 1.0;
-        double impulse_scale = 0.0;
-        if (s > 0.0) {
-            bias = s * softness->inv_h;
-        } else if (softness->use_bias) {
-            bias = rb_max(spring->bias_rate * s, -softness->max_push_speed);
-            mass_scale = spring->mass_scale;
-            impulse_scale = spring->impulse_scale;
-        }
-        double vn = normal_velocity(c, p, v);
-        double impulse = -p->normal_mass * mass_scale * (vn + bias) - impulse_scale * p->normal_impulse;
-        double accumulated = rb_max(p->normal_impulse + impulse, 0.0);
-        double delta = accumulated - p->normal_impulse;
-        p->normal_impulse = accumulated;
-        p->max_normal_impulse = rb_max(p->max_normal_impulse, accumulated);
-        apply_normal_impulse(c, p, delta, v);
+    double bias = 0.0;
+    double mass_scale = 1.0;
+    double impulse_scale = 0.0;
+    if (s > 0.0) {
+        bias = s * softness->inv_h;
+    } else if (softness->use_bias) {
+        bias = rb_max(spring->bias_rate * s, -softness->max_push_speed);
+        mass_scale = spring->mass_scale;
+        impulse_scale = spring->impulse_scale;
     }
+    double arm_a = p->normal_arm_a;
+    double arm_b = p->normal_arm_b;
+    double normal_impulse = p->normal_impulse;
+    double vn = row_velocity(m->normal, arm_a, arm_b, v);
+    double impulse = -p->normal_mass * mass_scale * (vn + bias) - impulse_scale * normal_impulse;
+    double accumulated = rb_max(normal_impulse + impulse, 0.0);
+    p->normal_impulse = accumulated;
+    p->max_normal_impulse = rb_max(p->max_normal_impulse, accumulated);
+    apply_row_impulse(m, m->normal, arm_a, arm_b, accumulated - normal_impulse, v);
 }
 
-void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *softness)
+/* The soft pass over constraints begin .. end - 1, one after another,
+ * each one's normal rows first, so friction's bound sees this pass's push.
+ * The poses do not change within a pass, so a contact's separations are
+ * measured before its velocities are loaded. The softness is copied, for
+ * the reason constraint_rows gives. */
+void rb_contact_solver_solve_soft_range(rb_world *world, const rb_contact_softness *softness, int begin, int end)
 {
-    for (int i = 0; i < world->constraint_count; ++i) {
-        rb_contact_constraint *c = &world->constraints[i];
-        rb_body_state *a = &world->states[c->body_a];
-        rb_body_state *b = &world->states[c->body_b];
-        double separation[RB_MAX_MANIFOLD_POINTS];
-        for (int j = 0; j < c->point_count; ++j) {
-            separation[j] = separation_now(c, &c->points[j], a, b);
-        }
+    rb_contact_softness k = *softness;
+    rb_contact_constraint *constraints = world->constraints;
+    rb_body_state *states = world->states;
+    for (int i = begin; i < end; ++i) {
+        rb_contact_constraint *c = &constraints[i];
+        rb_body_state *a = &states[c->body_a];
+        rb_body_state *b = &states[c->body_b];
+        const rb_rigid_response *spring = c->against_fixed ? &k.against_fixed : &k.between_moving;
+        bool two_points = c->point_count == 2;
+        double s0 = separation_now(c, &c->points[0], a, b);
+        double s1 = two_points ? separation_now(c, &c->points[1], a, b) : 0.0;
         body_velocities v = load_velocities(a, b);
-        /* The normal first, so friction's bound sees this pass's push. */
-        solve_soft_normal(c, softness, separation, &v);
-        solve_friction(c, &v);
+        constraint_rows m = load_rows(c);
+        solve_soft_point(&m, &k, spring, &c->points[0], s0, &v);
+        if (two_points) {
+            solve_soft_point(&m, &k, spring, &c->points[1], s1, &v);
+        }
+        solve_friction(c, &m, &v);
         store_velocities(&v, a, b);
     }
 }

@@ -7,6 +7,11 @@
 
 #include "world_internal.h"
 
+/* The block solver is used while cond(K) stays below this (Box2D uses the
+ * same bound): beyond it the two points are nearly redundant and the 2x2
+ * solve would amplify round-off. */
+#define MAX_BLOCK_CONDITION 1000.0
+
 typedef struct rb_constraint_point {
     /* m, the point's lever arms about each centre of mass for this
      * substep's normal and tangent: rA×n, rB×n, rA×t, rB×t, with rA, rB
@@ -34,7 +39,8 @@ struct rb_contact_constraint {
     int contact;        /* index in world->contacts */
     int body_a, body_b; /* indices in world->states */
     double inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
-    rb_vec2 normal; /* unit, world, from A to B, this substep */
+    bool against_fixed; /* one body cannot move: both its inverse mass and inertia are 0 */
+    rb_vec2 normal;     /* unit, world, from A to B, this substep */
     /* What the normal follows as the bodies move: the line between two
      * circles' centres, or the reference face of a polygon, on A or B. */
     enum { RB_NORMAL_FROM_CENTERS, RB_NORMAL_TURNS_WITH_A, RB_NORMAL_TURNS_WITH_B } normal_follows;
@@ -71,6 +77,12 @@ typedef struct rb_substep_rows {
  * effective masses at the poses now, the separations, and from them each
  * point's lower bound on its normal velocity for the sequential solvers. */
 void rb_contact_solver_prepare_substep(rb_world *world, double h, rb_substep_rows rows);
+/* Its part for each point (anchors, lever arms, masses, bounds), two
+ * contacts at a time where the processor allows (contact_solver_wide.c),
+ * the others by rb_contact_solver_prepare_points_range, the reference, one
+ * at a time over constraints begin .. end - 1 (contact_solver.c). */
+void rb_contact_solver_prepare_points(rb_world *world, double h, rb_substep_rows rows);
+void rb_contact_solver_prepare_points_range(rb_world *world, double h, rb_substep_rows rows, int begin, int end);
 void rb_contact_solver_warm_start(rb_world *world);
 /* One pass of sequential impulses at the substep's bounds (Baumgarte,
  * NGS), over the colours in order or, `backwards`, in reverse. NGS
@@ -94,8 +106,13 @@ typedef struct rb_contact_softness {
 /* One pass of soft contacts. The anchors, normal and masses stay as
  * rb_contact_solver_prepare_substep set them at the start of the step;
  * each point's separation is measured anew from the poses now, so a pass
- * after the positions moved sees the gap they left. */
+ * after the positions moved sees the gap they left. Two contacts of a
+ * colour at a time where the processor allows (contact_solver_wide.c),
+ * the others one at a time by rb_contact_solver_solve_soft_range. */
 void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *softness);
+/* The same pass, one contact at a time, over constraints begin .. end - 1
+ * (contact_solver.c): the reference the two-at-a-time pass agrees with. */
+void rb_contact_solver_solve_soft_range(rb_world *world, const rb_contact_softness *softness, int begin, int end);
 /* One non-linear Gauss-Seidel pass over the contacts; returns whether no
  * point was deeper than the tolerance before it. */
 bool rb_contact_solver_correct_positions(rb_world *world);

@@ -382,6 +382,7 @@ struct rb_world {
     int spare_capacity;
     rb_pair *pairs;
     int pair_count, pair_capacity;
+    bool pairs_changed;  /* the broad phase's pairs differ from the last step's */
     rb_pair *candidates; /* broad phase: the pairs whose fat boxes overlap, sorted as pairs are */
     int candidate_count, candidate_capacity;
     rb_pair *sorted_pairs; /* the broad phase's counting sort writes here, then swaps */

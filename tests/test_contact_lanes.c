@@ -1,0 +1,224 @@
+/* SPDX-License-Identifier: MIT */
+/* The soft contact pass and the points' preparation two contacts at a
+ * time (contact_solver_wide.c) against the references that take one at a
+ * time (rb_contact_solver_solve_soft_range,
+ * rb_contact_solver_prepare_points_range): from the same constraints and
+ * velocities, both passes must leave the same velocities and impulses,
+ * and both preparations the same constraints, byte for byte.
+ * The stated tolerance is none: the values compare equal as numbers
+ * (only the sign of a zero may differ, which == does not see), because
+ * each lane does the reference's arithmetic in the reference's order.
+ *
+ * The passes start from real constraints (a pyramid of boxes, whose
+ * contacts have two points, against the ground and against each other,
+ * and balls on a table, whose contacts have one) with every body's
+ * velocity disturbed, so that some points push, some let go, some hit
+ * the friction cone and some have their gap still open; and they are run
+ * with the spring's push-out (solve) and without it (relax). In some
+ * rounds every other constraint is told its spring is the other one (the
+ * one against a fixed body, or between moving bodies): a colour's
+ * constraints are otherwise all of one kind, and the lanes' choice of
+ * spring would go untested. */
+#include <string.h>
+
+#include "contact_solver.h"
+#include "joint_solver.h"
+#include "scenes/scenes.h"
+#include "test_support.h"
+
+#define SUBSTEPS 4
+
+/* A step at Box2D v3's budget: the soft step, 4 substeps of one solve
+ * and one relax pass. */
+static rb_world *soft_world(void)
+{
+    rb_world_def def = rb_default_world_def();
+    def.gravity = rb_v2(0.0, -10.0);
+    def.enable_sleep = false;
+    def.solver.type = RB_SOLVER_SOFT_STEP;
+    def.solver.substeps = SUBSTEPS;
+    def.solver.velocity_iterations = 1;
+    def.solver.relax_iterations = 1;
+    rb_world *world = NULL;
+    cr_assert_eq(rb_world_create(&def, &world), RB_OK, "%s", rb_last_error());
+    return world;
+}
+
+/* A deterministic value in [-1, 1) (a linear congruential generator,
+ * Knuth's MMIX constants). */
+static double next_unit(uint64_t *state)
+{
+    *state = *state * 6364136223846793005u + 1442695040888963407u;
+    return (double)(*state >> 11) / (double)(UINT64_C(1) << 52) - 1.0;
+}
+
+/* The softness the soft step gives its contacts (solver_soft_step.c). */
+static rb_contact_softness softness_of(const rb_world *world, bool use_bias)
+{
+    const rb_solver_settings *s = &world->settings;
+    double h = TEST_DT / s->substeps;
+    return (rb_contact_softness){
+        .between_moving = rb_make_rigid_softness(s->contact_hertz, s->contact_damping_ratio, h),
+        .against_fixed = rb_make_rigid_softness(2.0 * s->contact_hertz, s->contact_damping_ratio, h),
+        .max_push_speed = s->max_push_speed,
+        .linear_slop = s->linear_slop,
+        .inv_h = 1.0 / h,
+        .use_bias = use_bias,
+    };
+}
+
+/* Prepares the world's contacts as a step does, disturbs every dynamic
+ * body's velocity by up to `speed` m/s and `speed` rad/s, runs one pass
+ * each way from the same start and compares. Returns how many
+ * constraints had two points. */
+static int expect_passes_agree(rb_world *world, double speed, bool use_bias, bool mix_springs, uint64_t seed)
+{
+    cr_assert_geq(rb_contact_solver_prepare(world), 0, "out of memory");
+    int count = world->constraint_count;
+    cr_assert_gt(count, 0, "the scene has contacts to solve");
+    rb_contact_solver_prepare_substep(world, TEST_DT / SUBSTEPS, (rb_substep_rows){.first_substep = true});
+    for (int i = 1; mix_springs && i < count; i += 2) {
+        world->constraints[i].against_fixed = !world->constraints[i].against_fixed;
+    }
+    for (int i = 0; i < world->body_slots; ++i) {
+        if (world->bodies[i].in_use && world->bodies[i].type == RB_BODY_DYNAMIC) {
+            rb_body_state *s = &world->states[i];
+            s->linear_velocity = rb_add(s->linear_velocity, rb_v2(speed * next_unit(&seed), speed * next_unit(&seed)));
+            s->angular_velocity += speed * next_unit(&seed);
+        }
+    }
+    rb_contact_softness softness = softness_of(world, use_bias);
+
+    size_t state_bytes = (size_t)world->body_slots * sizeof *world->states;
+    size_t constraint_bytes = (size_t)count * sizeof *world->constraints;
+    rb_body_state *start_states = malloc(state_bytes);
+    rb_contact_constraint *start_constraints = malloc(constraint_bytes);
+    rb_body_state *reference_states = malloc(state_bytes);
+    rb_contact_constraint *reference_constraints = malloc(constraint_bytes);
+    cr_assert(start_states && start_constraints && reference_states && reference_constraints);
+    memcpy(start_states, world->states, state_bytes);
+    memcpy(start_constraints, world->constraints, constraint_bytes);
+
+    rb_contact_solver_solve_soft_range(world, &softness, 0, count);
+    memcpy(reference_states, world->states, state_bytes);
+    memcpy(reference_constraints, world->constraints, constraint_bytes);
+    memcpy(world->states, start_states, state_bytes);
+    memcpy(world->constraints, start_constraints, constraint_bytes);
+    rb_contact_solver_solve_soft(world, &softness);
+
+    int moved = 0;
+    for (int i = 0; i < world->body_slots; ++i) {
+        const rb_body_state *r = &reference_states[i];
+        const rb_body_state *w = &world->states[i];
+        cr_expect(r->linear_velocity.x == w->linear_velocity.x && r->linear_velocity.y == w->linear_velocity.y &&
+                      r->angular_velocity == w->angular_velocity,
+                  "body %d: velocity (%.17g, %.17g, %.17g) one at a time, (%.17g, %.17g, %.17g) two at a time", i,
+                  r->linear_velocity.x, r->linear_velocity.y, r->angular_velocity, w->linear_velocity.x,
+                  w->linear_velocity.y, w->angular_velocity);
+        moved += r->linear_velocity.x != start_states[i].linear_velocity.x;
+    }
+    int two_point = 0;
+    for (int i = 0; i < count; ++i) {
+        const rb_contact_constraint *r = &reference_constraints[i];
+        const rb_contact_constraint *w = &world->constraints[i];
+        two_point += r->point_count == 2;
+        for (int j = 0; j < r->point_count; ++j) {
+            cr_expect(r->points[j].normal_impulse == w->points[j].normal_impulse &&
+                          r->points[j].tangent_impulse == w->points[j].tangent_impulse &&
+                          r->points[j].max_normal_impulse == w->points[j].max_normal_impulse,
+                      "constraint %d point %d: impulses (%.17g, %.17g) one at a time, (%.17g, %.17g) two at a time", i,
+                      j, r->points[j].normal_impulse, r->points[j].tangent_impulse, w->points[j].normal_impulse,
+                      w->points[j].tangent_impulse);
+        }
+    }
+    cr_expect_gt(moved, count / 4, "the pass changed velocities (%d bodies of %d constraints)", moved, count);
+    free(start_states);
+    free(start_constraints);
+    free(reference_states);
+    free(reference_constraints);
+    return two_point;
+}
+
+/* Prepares the world's contacts, moves and turns every dynamic body a
+ * little (so that the poses are not those the points were taken at),
+ * prepares the points each way from the same start with `rows` and
+ * compares the constraints byte for byte. */
+static void expect_preparations_agree(rb_world *world, rb_substep_rows rows, uint64_t seed)
+{
+    cr_assert_geq(rb_contact_solver_prepare(world), 0, "out of memory");
+    int count = world->constraint_count;
+    cr_assert_gt(count, 0, "the scene has contacts to solve");
+    for (int i = 0; i < world->body_slots; ++i) {
+        if (world->bodies[i].in_use && world->bodies[i].type == RB_BODY_DYNAMIC) {
+            rb_body_state *s = &world->states[i];
+            s->center = rb_add(s->center, rb_v2(0.01 * next_unit(&seed), 0.01 * next_unit(&seed)));
+            s->angle += 0.02 * next_unit(&seed);
+            s->rotation = rb_rot_from_angle(s->angle);
+        }
+    }
+    size_t bytes = (size_t)count * sizeof *world->constraints;
+    rb_contact_constraint *start = malloc(bytes);
+    rb_contact_constraint *reference = malloc(bytes);
+    cr_assert(start && reference);
+    memcpy(start, world->constraints, bytes);
+    rb_contact_solver_prepare_points_range(world, TEST_DT / SUBSTEPS, rows, 0, count);
+    memcpy(reference, world->constraints, bytes);
+    memcpy(world->constraints, start, bytes);
+    rb_contact_solver_prepare_points(world, TEST_DT / SUBSTEPS, rows);
+    int blocks = 0;
+    for (int i = 0; i < count; ++i) {
+        const rb_contact_constraint *r = &reference[i];
+        const rb_contact_constraint *w = &world->constraints[i];
+        blocks += r->use_block;
+        cr_expect(memcmp(r, w, sizeof *r) == 0,
+                  "constraint %d prepared differently: normal (%.17g, %.17g) and (%.17g, %.17g), first point's "
+                  "normal mass %.17g and %.17g, bound %.17g and %.17g",
+                  i, r->normal.x, r->normal.y, w->normal.x, w->normal.y, r->points[0].normal_mass,
+                  w->points[0].normal_mass, r->points[0].min_normal_velocity, w->points[0].min_normal_velocity);
+    }
+    if (rows.block_normals) {
+        cr_expect_gt(blocks, count / 2, "the block solve was taken by %d constraints of %d", blocks, count);
+    }
+    free(start);
+    free(reference);
+}
+
+/* The base-20 pyramid (590 contacts of two points) with a row of balls
+ * on the ground beside it (contacts of one point, in the colours of the
+ * boxes' contacts with the ground). */
+Test(contact_lanes, a_pyramid_and_balls_give_the_same_velocities_and_impulses_both_ways)
+{
+    rb_world *world = soft_world();
+    scene_pyramid pyramid;
+    cr_assert_eq(scene_pyramid_create(world, 20, &pyramid), RB_OK, "%s", rb_last_error());
+    for (int k = 0; k < 9; ++k) {
+        rb_body_id ball = make_body(world, RB_BODY_DYNAMIC, rb_v2(12.0 + 1.5 * k, 0.5), 0.0);
+        add_circle(world, ball, rb_v2(0.0, 0.0), 0.5, 1.0);
+    }
+    step_world(world, TEST_DT, 30);
+    for (int round = 0; round < 6; ++round) {
+        int two_point =
+            expect_passes_agree(world, 0.5 * (round % 3), round % 2 == 0, round >= 3, 2024u + (uint64_t)round);
+        cr_expect_gt(two_point, 500, "the pyramid's contacts have two points (%d did)", two_point);
+    }
+    /* The rows each solver asks for: the soft step's, NGS's, Baumgarte's. */
+    expect_preparations_agree(world, (rb_substep_rows){.first_substep = true}, 11u);
+    expect_preparations_agree(world, (rb_substep_rows){.block_normals = true}, 12u);
+    expect_preparations_agree(world, (rb_substep_rows){.baumgarte_bias = true, .block_normals = true}, 13u);
+    destroy_world_and_expect_no_leak(world);
+}
+
+Test(contact_lanes, balls_on_a_table_give_the_same_velocities_and_impulses_both_ways)
+{
+    rb_world *world = soft_world();
+    scene_balls balls;
+    cr_assert_eq(scene_balls_create(world, 50, 2024, &balls), RB_OK, "%s", rb_last_error());
+    for (int n = 0; n < 60; ++n) {
+        cr_assert_eq(scene_balls_apply_drag(world, &balls), RB_OK, "%s", rb_last_error());
+        step_world(world, TEST_DT, 1);
+    }
+    for (int round = 0; round < 2; ++round) {
+        expect_passes_agree(world, 2.0, round == 0, false, 7u + (uint64_t)round);
+    }
+    destroy_world_and_expect_no_leak(world);
+}
