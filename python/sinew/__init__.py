@@ -15,9 +15,11 @@ docs/python.md maps the C API to this package. Every C error raises a
 :class:`sinew.Error` subclass carrying the C message.
 """
 from . import _lib
+from ._program import ProgramError
 from .body import BODY_TYPES, Body
 from .cable import Cable
 from .controls import Schedule
+from .experiment import ExperimentResult, experiment, experiments
 from .errors import (
     Closed,
     DegenerateShape,
@@ -49,10 +51,11 @@ from .world import SolverSettings, World, bytes_in_use
 
 __all__ = [
     "AABB", "BODY_TYPES", "Body", "Cable", "Closed", "Contact", "DegenerateShape", "DistanceJoint", "Error",
-    "Filter", "ForeignId", "InvalidArgument", "Joint", "Locked", "MassData", "Model", "MouseJoint", "Muscle",
-    "NoMass", "NotConvex", "NotFinite", "OutOfMemory", "PrismaticJoint", "PulleyJoint", "RayHit", "RevoluteJoint",
-    "RunResult", "Schedule", "Shape", "SolverSettings", "StaleId", "SweepError", "Vec2", "WeldJoint", "World",
-    "builtin_models", "bytes_in_use", "run", "sweep",
+    "ExperimentResult", "Filter", "ForeignId", "InvalidArgument", "Joint", "Locked", "MassData", "Model",
+    "MouseJoint", "Muscle", "NoMass", "NotConvex", "NotFinite", "OutOfMemory", "PrismaticJoint",
+    "ProgramError", "PulleyJoint", "RayHit", "RevoluteJoint", "RunResult", "Schedule", "Shape",
+    "SolverSettings", "StaleId", "SweepError", "Vec2", "WeldJoint", "World", "builtin_models", "bytes_in_use",
+    "experiment", "experiments", "run", "sweep",
 ]
 
 #: The version of the libraries loaded ("0.2.0").

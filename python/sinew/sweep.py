@@ -18,13 +18,12 @@ found through the ``program`` argument, else the environment variable
 """
 
 import concurrent.futures
-import csv
 import json
 import os
-import shutil
 import subprocess
 
-import numpy
+from . import _program
+from ._program import ProgramError
 
 __all__ = ["SweepError", "sweep", "find_program"]
 
@@ -33,44 +32,28 @@ __all__ = ["SweepError", "sweep", "find_program"]
 _TEXT_COLUMNS = {"run", "status", "message", "variant_name", "failure", "warnings"}
 
 
-class SweepError(RuntimeError):
+class SweepError(ProgramError):
     """``sinew sweep`` refused the sweep file or could not run it; the
     message is the program's."""
-
-
-def _installed_program():
-    """The ``sinew`` program installed with the package, or None (a package
-    used from the source tree has no _paths.py)."""
-    try:
-        from . import _paths  # written by cmake --install
-    except ImportError:
-        return None
-    folder = os.path.join(os.path.dirname(os.path.abspath(__file__)), _paths.PROGRAM_DIR)
-    path = os.path.normpath(os.path.join(folder, "sinew"))
-    return path if os.access(path, os.X_OK) else None
 
 
 def find_program(program=None):
     """The path of the ``sinew`` program: ``program`` when given, else
     ``$SINEW_EXECUTABLE``, else the one installed with the package, else
     ``sinew`` on the PATH."""
-    found = program or os.environ.get("SINEW_EXECUTABLE") or _installed_program() or shutil.which("sinew")
-    if not found:
-        raise SweepError(
-            "the sinew program was not found: give program=..., set SINEW_EXECUTABLE or put it on the PATH"
-        )
-    return found
+    return _program.find_program(program, SweepError)
 
 
 def _sinew(program, arguments, runs_may_fail=False):
     """Runs ``sinew ARGUMENTS`` and returns its stdout; SweepError with its
     message when it fails. With runs_may_fail, exit status 1 after the
     table was written (some runs failed) is not a failure."""
-    done = subprocess.run([program, *arguments], capture_output=True, text=True, check=False)
-    gathered = runs_may_fail and done.returncode == 1 and done.stdout.startswith("summary")
-    if done.returncode != 0 and not gathered:
-        raise SweepError(done.stderr.strip() or f"{program} {' '.join(arguments)}: exit status {done.returncode}")
-    return done.stdout
+
+    def succeeded(done):
+        gathered = runs_may_fail and done.returncode == 1 and done.stdout.startswith("summary")
+        return done.returncode == 0 or gathered
+
+    return _program.run_program(program, arguments, SweepError, succeeded=succeeded)
 
 
 def _run_one(program, out, name, arguments):
@@ -81,36 +64,6 @@ def _run_one(program, out, name, arguments):
             [program, "run", *arguments], cwd=out, stdout=subprocess.DEVNULL, stderr=log, check=False
         ).returncode
     return name, status
-
-
-def _read_table(path):
-    """summary.csv as a numpy structured array: text columns as str,
-    the others as float64."""
-    with open(path, newline="", encoding="utf-8") as stream:
-        rows = list(csv.reader(stream))
-    header, body = rows[0], rows[1:]
-    columns = []
-    for index, name in enumerate(header):
-        cells = [row[index] for row in body]
-        if name in _TEXT_COLUMNS or not all(_is_number(cell) for cell in cells):
-            width = max([len(cell) for cell in cells] + [1])
-            columns.append((name, f"U{width}", cells))
-        else:
-            columns.append((name, "f8", [float(cell) if cell else numpy.nan for cell in cells]))
-    table = numpy.empty(len(body), dtype=[(name, kind) for name, kind, _ in columns])
-    for name, _, values in columns:
-        table[name] = values
-    return table
-
-
-def _is_number(cell):
-    if cell == "":
-        return True
-    try:
-        float(cell)
-    except ValueError:
-        return False
-    return True
 
 
 def sweep(sweep_file, out=None, jobs=None, program=None, yes=False, dataframe=True):
@@ -142,7 +95,7 @@ def sweep(sweep_file, out=None, jobs=None, program=None, yes=False, dataframe=Tr
         for future in concurrent.futures.as_completed(futures):
             future.result()
     _sinew(program, ["sweep", os.fspath(sweep_file), "--out", folder, "--gather"], runs_may_fail=True)
-    table = _read_table(os.path.join(folder, "summary.csv"))
+    table = _program.read_table(os.path.join(folder, "summary.csv"), _TEXT_COLUMNS)
     if dataframe:
         try:
             import pandas  # optional: the DataFrame when it is there
