@@ -558,6 +558,28 @@ class JointLoad(Structure):
     ]
 
 
+class StaticOptimizationSettings(Structure):
+    _fields_ = [
+        ("exponent", c_double),
+        ("reserve_scale", c_double),
+        ("tolerance", c_double),
+        ("max_evaluations", c_int),
+    ]
+
+
+class StaticFrame(Structure):
+    _fields_ = [
+        ("activations", POINTER(c_double)),
+        ("forces", POINTER(c_double)),
+        ("net_torques", POINTER(c_double)),
+        ("actuator_torques", POINTER(c_double)),
+        ("reserves", POINTER(c_double)),
+        ("loads", POINTER(JointLoad)),
+        ("solver_result", c_int),
+        ("solved", c_bool),
+    ]
+
+
 class BoneBeam(Structure):
     _fields_ = [
         ("length", c_double),
@@ -865,6 +887,16 @@ MU_FUNCTIONS = {
         S,
         [M, POINTER(c_double), POINTER(c_double), POINTER(c_double), POINTER(c_double)],
     ),
+    # static_optimization.h
+    "mu_default_static_optimization_settings": (StaticOptimizationSettings, []),
+    "mu_static_optimizer_create": (S, [M, POINTER(StaticOptimizationSettings), POINTER(c_void_p)]),
+    "mu_static_optimizer_destroy": (None, [c_void_p]),
+    "mu_static_optimizer_actuator_count": (c_int, [c_void_p]),
+    "mu_static_optimizer_solve": (
+        S,
+        [c_void_p, POINTER(c_double), POINTER(c_double), POINTER(c_double), POINTER(StaticFrame)],
+    ),
+    "mu_static_optimizer_result_name": (c_char_p, [c_int]),
 }
 
 

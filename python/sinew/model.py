@@ -4,8 +4,9 @@ built at a level, variant and weight, its muscles driven by activations,
 tension targets and recruitment, stepped frame by frame or substep by
 substep, and read out as numpy arrays: the muscles' states, the hinges'
 angles, the parts' poses, the joints' loads (mu/joint_loads.h), the moment
-arms (mu/moment_arms.h), the bones' stress (mu/bone_stress.h), and inverse
-dynamics (mu/inverse_dynamics.h).
+arms (mu/moment_arms.h), the bones' stress (mu/bone_stress.h), inverse
+dynamics (mu/inverse_dynamics.h) and static optimization
+(mu/static_optimization.h).
 
 A :class:`Model` owns its description, its C model and the world inside
 it: ``close()`` (or leaving a ``with`` block) frees all three, after
@@ -13,6 +14,7 @@ which every call raises :class:`sinew.Closed`.
 """
 import ctypes
 import os
+import weakref
 from collections import namedtuple
 
 import numpy as np
@@ -80,6 +82,7 @@ class Model:
     def __init__(self, source, variant=0, weight=None, weight_index=None, level=4, weld_glues=False):
         self._model = None
         self._desc = None
+        self._optimizers = weakref.WeakSet()  # closed before the model
         self.source = source
         pointer = ctypes.c_void_p()
         if not isinstance(source, (str, os.PathLike)):
@@ -179,7 +182,10 @@ class Model:
         return self._model is None
 
     def close(self):
-        """Frees the model, its world and its description. Twice does nothing."""
+        """Frees the model, its world and its description, and closes its
+        static optimizers. Twice does nothing."""
+        for optimizer in list(getattr(self, "_optimizers", ())):
+            optimizer.close()
         if self._model is not None:
             mu.mu_model_destroy(self._model)
             self._model = None
@@ -550,6 +556,17 @@ class Model:
         inputs = (a.ctypes.data_as(pointer) for a in arrays)
         check(mu.mu_model_inverse_dynamics(m, *inputs, torques.ctypes.data_as(pointer)))
         return torques[:count]
+
+    def static_optimizer(self, exponent=2.0, reserve_scale=0.1, tolerance=None, max_evaluations=None):
+        """A StaticOptimizer (sinew.static_optimization) of this model: the
+        cost is the sum of activation^exponent (2; 3 as Crowninshield and
+        Brand 1981) plus (reserve / reserve_scale)² (N·m) per hinge;
+        tolerance and max_evaluations bound SLSQP (the C defaults when None).
+        Raises, with the C message, for a model without muscles or hinges or
+        whose joints close a loop."""
+        from .static_optimization import StaticOptimizer  # it imports this module
+
+        return StaticOptimizer(self, exponent, reserve_scale, tolerance, max_evaluations)
 
 
 class Muscle:
