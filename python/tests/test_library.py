@@ -4,7 +4,10 @@ import os
 import subprocess
 import sys
 
+import pytest
+
 import sinew
+from sinew._program import find_program
 
 PACKAGE_PARENT = os.path.dirname(os.path.dirname(os.path.abspath(sinew.__file__)))
 
@@ -39,3 +42,16 @@ def test_missing_libraries_say_where_they_were_looked_for(tmp_path):
     else:
         assert f"looked in SINEW_LIBRARY_DIR={tmp_path}" in result.stderr
         assert "LibraryNotFound" in result.stderr
+
+
+@pytest.mark.skipif(
+    os.environ.get("SINEW_PYTHON_INSTALLED") != "1", reason="only an installed package has a program beside it"
+)
+def test_the_installed_package_finds_the_program_installed_with_it(monkeypatch):
+    """Without SINEW_EXECUTABLE or a sinew on the PATH, sweeps and
+    experiments run the program of the package's own prefix (check_install.sh
+    names that one in SINEW_EXECUTABLE)."""
+    expected = os.environ["SINEW_EXECUTABLE"]
+    monkeypatch.delenv("SINEW_EXECUTABLE")
+    monkeypatch.setenv("PATH", "/nonexistent")
+    assert os.path.samefile(find_program(), expected)
