@@ -16,7 +16,7 @@ bool frame_loads_start(frame_loads *frame, const mu_model *model)
     return true;
 }
 
-void frame_loads_read(frame_loads *frame, const mu_model *model)
+bool frame_loads_read(frame_loads *frame, const mu_model *model)
 {
     for (int h = 0; h < mu_model_hinge_count(model); ++h) {
         frame->hinges[h] = mu_model_hinge_load(model, h);
@@ -24,9 +24,7 @@ void frame_loads_read(frame_loads *frame, const mu_model *model)
     for (int g = 0; g < mu_model_glue_count(model); ++g) {
         frame->glues[g] = mu_model_glue_load(model, g);
     }
-    for (int b = 0; b < mu_model_description(model)->bone_count; ++b) {
-        frame->bones[b] = mu_model_bone_stress(model, b);
-    }
+    return mu_model_bone_stresses(model, frame->bones) == RB_OK;
 }
 
 void frame_loads_free(frame_loads *frame)

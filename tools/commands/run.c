@@ -637,7 +637,12 @@ static int run_frames(run_state *run)
         }
         /* (frame + 1)/rate rather than a running sum, which would drift. */
         const double time = (double)(frame + 1) / frame_rate;
-        frame_loads_read(&run->frame, run->model);
+        if (!frame_loads_read(&run->frame, run->model)) {
+            progress_finish(&bar);
+            recorder_abandon(&run->csv);
+            fprintf(stderr, "sinew: cannot read the bone stress: %s\n", rb_last_error());
+            return EXIT_FAILURE;
+        }
         track_extremes(run, time);
         if (!recorder_write_row(&run->csv, run->model, &run->frame, time, error, sizeof error)) {
             progress_finish(&bar);
