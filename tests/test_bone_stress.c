@@ -4,7 +4,8 @@
  * whose root carries M = W·L + w·L²/2 and σ = M·c/I with the tube's
  * I = π(D⁴ - d⁴)/64 and c = D/2; a hanging bone with a weight at its foot
  * is in pure tension, σ = F/A; every bone of a moving arm is in balance
- * under its loads and inertia; and bad beam values in a model file are
+ * under its loads and inertia; all bones read at once are each bone read
+ * alone, bit for bit; and bad beam values in a model file are
  * refused with their JSON path. */
 #define _DEFAULT_SOURCE /* mkstemps */
 #include <criterion/criterion.h>
@@ -174,6 +175,56 @@ Test(bone_stress, every_bone_of_the_moving_arm_is_in_balance)
     cr_expect(isnan(mu_model_bone_stress(model, 99).worst.stress));
     mu_model_destroy(model);
     mu_model_desc_destroy(desc);
+}
+
+/* Two readouts agree bit for bit, NaN matching NaN. */
+static bool same(double a, double b) { return memcmp(&a, &b, sizeof a) == 0 || (isnan(a) && isnan(b)); }
+
+/* mu_model_bone_stresses against mu_model_bone_stress bone by bone, over
+ * `frames` frames of the built-in model `name`, its first muscle pulling:
+ * sharing a body's loads among its glued bones must change no bit. */
+static void expect_all_at_once_is_each_alone(const char *name, bool weld_glues, int frames)
+{
+    mu_model_desc *desc = NULL;
+    cr_assert_eq(mu_model_desc_load_builtin(name, &desc), RB_OK);
+    mu_model_options options = mu_default_model_options();
+    options.weld_glues = weld_glues;
+    mu_model *model = NULL;
+    cr_assert_eq(mu_model_create(desc, &options, &model), RB_OK, "%s", rb_last_error());
+    if (mu_model_muscle_count(model) > 0) {
+        cr_assert_eq(mu_model_set_activation(model, mu_model_muscle_name(model, 0), 1.0), RB_OK);
+    }
+    mu_bone_stress *all = malloc(((size_t)desc->bone_count + 1) * sizeof *all);
+    cr_assert_not_null(all);
+    int finite = 0;
+    for (int frame = 0; frame < frames; ++frame) {
+        cr_assert_eq(mu_model_step(model), RB_OK);
+        cr_assert_eq(mu_model_bone_stresses(model, all), RB_OK, "%s", rb_last_error());
+        for (int b = 0; b < desc->bone_count; ++b) {
+            const mu_bone_stress alone = mu_model_bone_stress(model, b);
+            const mu_bone_section *w = &all[b].worst, *v = &alone.worst;
+            cr_expect(same(w->s, v->s) && same(w->axial_force, v->axial_force) &&
+                          same(w->shear_force, v->shear_force) && same(w->bending_moment, v->bending_moment) &&
+                          same(w->stress, v->stress) && same(w->safety_factor, v->safety_factor) &&
+                          same(all[b].strain, alone.strain),
+                      "%s%s frame %d bone %s: %.17g Pa at %.17g m at once, %.17g Pa at %.17g m alone", name,
+                      weld_glues ? " (welded)" : "", frame, desc->bones[b].name, w->stress, w->s, v->stress, v->s);
+            finite += isfinite(alone.worst.stress);
+        }
+    }
+    cr_expect_gt(finite, 0, "%s: some bone moves", name);
+    free(all);
+    mu_model_destroy(model);
+    mu_model_desc_destroy(desc);
+}
+
+Test(bone_stress, all_bones_at_once_are_each_bone_alone)
+{
+    expect_all_at_once_is_each_alone("arm", false, 30);
+    expect_all_at_once_is_each_alone("arm", true, 30);
+    expect_all_at_once_is_each_alone("leg", false, 30);
+    expect_all_at_once_is_each_alone("worm", false, 30);
+    expect_all_at_once_is_each_alone("sample", false, 30);
 }
 
 /* Newton's acceleration, from the loads the readout sees, against the

@@ -526,6 +526,9 @@ static void storm_bone_stress(void)
     REFUSED_NAN(mu_model_weight_mass(NULL), "mu_model_weight_mass", "model");
     REFUSED_NAN(mu_model_bone_beam(NULL, 0).length, "mu_model_bone_beam", "model");
     REFUSED_NAN(mu_model_bone_stress(NULL, 0).strain, "mu_model_bone_stress", "model");
+    mu_bone_stress stresses[16];
+    REFUSED_STATUS(mu_model_bone_stresses(NULL, stresses), "mu_model_bone_stresses", "model");
+    REFUSED_STATUS(mu_model_bone_stresses(model, NULL), "mu_model_bone_stresses", "stresses");
     REFUSED_NAN(mu_model_bone_section(NULL, 0, 0.0, false).axial_force, "mu_model_bone_section", "model");
     REFUSED_NAN(mu_model_bone_section(model, 1, NAN, false).axial_force, "mu_model_bone_section", "s");
     REFUSED_STATUS(mu_model_bone_sections(NULL, 0, 4, sections), "mu_model_bone_sections", "model");
@@ -551,6 +554,8 @@ static void storm_bone_stress(void)
     /* The model still answers after all that. */
     cr_expect_eq(mu_model_step(model), RB_OK, "%s", rb_last_error());
     cr_expect(isfinite(mu_model_bone_beam(model, 0).length), "%s", rb_last_error());
+    cr_assert_leq(bones, 16);
+    cr_expect_eq(mu_model_bone_stresses(model, stresses), RB_OK, "%s", rb_last_error());
     mu_model_destroy(model);
     mu_model_desc_destroy(desc);
 }
@@ -1073,7 +1078,8 @@ static const api_storm storms[] = {
     {"mu_default_static_optimization_settings mu_static_optimizer_create mu_static_optimizer_destroy "
      "mu_static_optimizer_actuator_count mu_static_optimizer_solve mu_static_optimizer_result_name",
      storm_static_optimization},
-    {"mu_model_weight_mass mu_model_bone_beam mu_model_bone_stress mu_model_bone_section mu_model_bone_sections "
+    {"mu_model_weight_mass mu_model_bone_beam mu_model_bone_stress mu_model_bone_stresses mu_model_bone_section "
+     "mu_model_bone_sections "
      "mu_model_bone_balance mu_model_bone_acceleration",
      storm_bone_stress},
     {"mu_model_set_activation mu_model_set_tension mu_model_set_activation_at mu_model_set_tension_at "

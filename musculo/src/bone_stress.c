@@ -293,10 +293,10 @@ static bone_frame frame_of(const mu_model *model, int bone)
 /* The point loads on one bone, each with its coordinate along the axis. */
 typedef struct bone_loads {
     bone_frame frame;
-    body_loads body;
-    point_load *loads; /* every load on the body (module comment), by s */
-    double *s;         /* each load's coordinate along the axis, ascending */
-    wrench *tail;      /* tail[i]: loads i .. count - 1 about the bone's centre */
+    const body_loads *body; /* its rigid body's (collect) */
+    point_load *loads;      /* every load on the body (module comment), by s */
+    double *s;              /* each load's coordinate along the axis, ascending */
+    wrench *tail;           /* tail[i]: loads i .. count - 1 about the bone's centre */
     int count;
 } bone_loads;
 
@@ -308,7 +308,6 @@ static double along(const bone_frame *f, rb_vec2 point)
 
 static void free_bone(bone_loads *l)
 {
-    free(l->body.loads);
     free(l->loads);
     free(l->s);
     free(l->tail);
@@ -321,10 +320,15 @@ static int by_coordinate(const void *a, const void *b)
     return (sa > sb) - (sa < sb);
 }
 
+/* No body's loads collected yet: where gather collects them. */
+#define NO_BODY ((body_loads){.body = -1, .disc_part = -1})
+
 /* RB_OK and the loads; ABSENT (no error recorded) for a bone not built or
- * fixed to the ground; else the error. */
+ * fixed to the ground; else the error. `body` holds the loads of the
+ * bone's rigid body: collected into it unless it holds them already (the
+ * bones glued into one body share them); the caller frees body->loads. */
 #define ABSENT ((rb_status)-1)
-static rb_status gather(const mu_model *model, int bone, const char *f, bone_loads *l)
+static rb_status gather(const mu_model *model, int bone, const char *f, body_loads *body, bone_loads *l)
 {
     *l = (bone_loads){.loads = NULL};
     if (mu_refuse_null(f, "model", model) ||
@@ -332,14 +336,20 @@ static rb_status gather(const mu_model *model, int bone, const char *f, bone_loa
         return RB_ERR_INVALID_ARGUMENT;
     }
     const mu_model_desc *desc = mu_model_description(model);
-    const int body = mu_model_part_body(model, desc->nail_count + bone);
-    if (body < 0 || rb_body_mass(mu_model_world_to_read(model), mu_model_body(model, body)) <= 0.0) {
+    const int index = mu_model_part_body(model, desc->nail_count + bone);
+    if (index < 0 || rb_body_mass(mu_model_world_to_read(model), mu_model_body(model, index)) <= 0.0) {
         return ABSENT;
     }
     l->frame = frame_of(model, bone);
     const int parts = mu_model_part_count(model);
-    bool ok = collect(model, body, &l->body);
-    const int most = l->body.count + parts + 1;
+    bool ok = true;
+    if (body->body != index) {
+        free(body->loads);
+        ok = collect(model, index, body);
+        body->body = ok ? index : -1;
+    }
+    l->body = body;
+    const int most = body->count + parts + 1;
     l->loads = ok ? malloc((size_t)most * sizeof *l->loads) : NULL;
     l->s = ok ? malloc((size_t)most * sizeof *l->s) : NULL;
     l->tail = ok ? malloc(((size_t)most + 1) * sizeof *l->tail) : NULL;
@@ -350,22 +360,22 @@ static rb_status gather(const mu_model *model, int bone, const char *f, bone_loa
     /* The bone's own loads, and those of every part glued to it (the rest
      * of its rigid body), each at its point; the other parts' spread loads
      * and the disc's as one force and couple at their centres. */
-    for (int i = 0; i < l->body.count; ++i) {
-        l->loads[l->count++] = l->body.loads[i];
+    for (int i = 0; i < body->count; ++i) {
+        l->loads[l->count++] = body->loads[i];
     }
     for (int p = desc->nail_count; p < parts; ++p) {
-        if (p != l->frame.part && on_body(model, &l->body, p)) {
+        if (p != l->frame.part && on_body(model, body, p)) {
             const bone_frame glued = frame_of(model, p - desc->nail_count);
             wrench w = {{0.0, 0.0}, 0.0};
-            add_spread(&w, &l->body, glued.centre, glued.centre, glued.mass,
+            add_spread(&w, body, glued.centre, glued.centre, glued.mass,
                        glued.mass * (glued.length * glued.length + glued.width * glued.width) / 12.0);
             l->loads[l->count++] = (point_load){p, glued.centre, w.force, w.moment, 0.0};
         }
     }
-    if (l->body.disc_part >= 0) {
+    if (body->disc_part >= 0) {
         wrench w = {{0.0, 0.0}, 0.0};
-        add_spread(&w, &l->body, l->body.disc_centre, l->body.disc_centre, l->body.disc_mass, l->body.disc_inertia);
-        l->loads[l->count++] = (point_load){l->body.disc_part, l->body.disc_centre, w.force, w.moment, 0.0};
+        add_spread(&w, body, body->disc_centre, body->disc_centre, body->disc_mass, body->disc_inertia);
+        l->loads[l->count++] = (point_load){body->disc_part, body->disc_centre, w.force, w.moment, 0.0};
     }
     /* Sorted along the axis, with the sums of the loads from each on: a
      * section's loads beyond it are then one tail. */
@@ -407,7 +417,7 @@ static wrench beyond(const bone_loads *l, double s, bool include_at_s)
     if (piece > 0.0) {
         const double m = f->mass * piece / f->length;
         const rb_vec2 centroid = rb_add(q, rb_scale(0.5 * piece, f->axis));
-        add_spread(&w, &l->body, q, centroid, m, m * (piece * piece + f->width * f->width) / 12.0);
+        add_spread(&w, l->body, q, centroid, m, m * (piece * piece + f->width * f->width) / 12.0);
     }
     return w;
 }
@@ -434,6 +444,28 @@ static mu_bone_section section_of(const bone_loads *l, const mu_bone_beam *beam,
         .stress = fabs(tension) >= fabs(compression) ? tension : compression,
         .safety_factor = safety,
     };
+}
+
+/* One bone's loads and its body's, for a readout of that bone alone. */
+typedef struct one_bone {
+    body_loads body;
+    bone_loads bone;
+} one_bone;
+
+static rb_status gather_one(const mu_model *model, int bone, const char *f, one_bone *one)
+{
+    one->body = NO_BODY;
+    const rb_status status = gather(model, bone, f, &one->body, &one->bone);
+    if (status != RB_OK) {
+        free(one->body.loads);
+    }
+    return status;
+}
+
+static void free_one(one_bone *one)
+{
+    free_bone(&one->bone);
+    free(one->body.loads);
 }
 
 /* ---- the API -------------------------------------------------------------------------- */
@@ -471,14 +503,14 @@ mu_bone_beam mu_model_bone_beam(const mu_model *model, int bone)
 
 mu_bone_section mu_model_bone_section(const mu_model *model, int bone, double s, bool include_at_s)
 {
-    bone_loads l;
+    one_bone one;
     if (mu_refuse_non_finite("mu_model_bone_section", "s", s) ||
-        gather(model, bone, "mu_model_bone_section", &l) != RB_OK) {
+        gather_one(model, bone, "mu_model_bone_section", &one) != RB_OK) {
         return nan_section(s);
     }
     const mu_bone_beam beam = beam_of(&mu_model_description(model)->bones[bone]);
-    const mu_bone_section section = section_of(&l, &beam, s, include_at_s);
-    free_bone(&l);
+    const mu_bone_section section = section_of(&one.bone, &beam, s, include_at_s);
+    free_one(&one);
     return section;
 }
 
@@ -488,8 +520,8 @@ rb_status mu_model_bone_sections(const mu_model *model, int bone, int count, mu_
     if (mu_refuse_null(f, "sections", sections) || mu_refuse_index(f, "count", count - 1, MU_MODEL_MAX_OBJECTS)) {
         return RB_ERR_INVALID_ARGUMENT;
     }
-    bone_loads l;
-    const rb_status status = gather(model, bone, f, &l);
+    one_bone one;
+    const rb_status status = gather_one(model, bone, f, &one);
     if (status == ABSENT) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: bone %d is not built or is fixed to the ground", f, bone);
     }
@@ -498,9 +530,9 @@ rb_status mu_model_bone_sections(const mu_model *model, int bone, int count, mu_
     }
     const mu_bone_beam beam = beam_of(&mu_model_description(model)->bones[bone]);
     for (int k = 0; k < count; ++k) {
-        sections[k] = section_of(&l, &beam, beam.length * ((k + 0.5) / count - 0.5), false);
+        sections[k] = section_of(&one.bone, &beam, beam.length * ((k + 0.5) / count - 0.5), false);
     }
-    free_bone(&l);
+    free_one(&one);
     return RB_OK;
 }
 
@@ -512,25 +544,77 @@ static void keep_worse(mu_bone_section *worst, mu_bone_section candidate)
     }
 }
 
-mu_bone_stress mu_model_bone_stress(const mu_model *model, int bone)
+/* The worst of the sections mu/bone_stress.h lists. */
+static mu_bone_stress worst_of(const mu_model *model, int bone, const bone_loads *l)
 {
-    bone_loads l;
-    if (gather(model, bone, "mu_model_bone_stress", &l) != RB_OK) {
-        return (mu_bone_stress){nan_section(NAN), NAN};
-    }
     const mu_bone_beam beam = beam_of(&mu_model_description(model)->bones[bone]);
     const double half = 0.5 * beam.length;
-    mu_bone_section worst = section_of(&l, &beam, half, false);
+    mu_bone_section worst = section_of(l, &beam, half, false);
     for (int j = 0; j <= MU_BONE_STRESS_SECTIONS; ++j) {
         const double s = -half + beam.length * j / MU_BONE_STRESS_SECTIONS;
-        keep_worse(&worst, section_of(&l, &beam, s, false)); /* a load at s: both sides below */
+        keep_worse(&worst, section_of(l, &beam, s, false)); /* a load at s: both sides below */
     }
-    for (int i = 0; i < l.count; ++i) {
-        keep_worse(&worst, section_of(&l, &beam, l.s[i], false));
-        keep_worse(&worst, section_of(&l, &beam, l.s[i], true));
+    for (int i = 0; i < l->count; ++i) {
+        keep_worse(&worst, section_of(l, &beam, l->s[i], false));
+        keep_worse(&worst, section_of(l, &beam, l->s[i], true));
     }
-    free_bone(&l);
     return (mu_bone_stress){worst, worst.stress / beam.youngs_modulus};
+}
+
+static mu_bone_stress nan_stress(void) { return (mu_bone_stress){nan_section(NAN), NAN}; }
+
+mu_bone_stress mu_model_bone_stress(const mu_model *model, int bone)
+{
+    one_bone one;
+    if (gather_one(model, bone, "mu_model_bone_stress", &one) != RB_OK) {
+        return nan_stress();
+    }
+    const mu_bone_stress stress = worst_of(model, bone, &one.bone);
+    free_one(&one);
+    return stress;
+}
+
+rb_status mu_model_bone_stresses(const mu_model *model, mu_bone_stress *stresses)
+{
+    const char *f = "mu_model_bone_stresses";
+    if (mu_refuse_null(f, "model", model)) {
+        return RB_ERR_INVALID_ARGUMENT;
+    }
+    const mu_model_desc *desc = mu_model_description(model);
+    if (desc->bone_count > 0 && mu_refuse_null(f, "stresses", stresses)) {
+        return RB_ERR_INVALID_ARGUMENT;
+    }
+    /* Each rigid body's loads, collected for its first bone and shared by
+     * the bones glued to it. */
+    const int body_count = mu_model_body_count(model);
+    body_loads *bodies = malloc(((size_t)body_count + 1) * sizeof *bodies);
+    if (bodies == NULL) {
+        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "%s: out of memory", f);
+    }
+    for (int i = 0; i < body_count; ++i) {
+        bodies[i] = NO_BODY;
+    }
+    rb_status status = RB_OK;
+    for (int b = 0; status == RB_OK && b < desc->bone_count; ++b) {
+        stresses[b] = nan_stress();
+        const int body = mu_model_part_body(model, desc->nail_count + b);
+        if (body < 0) {
+            continue; /* not built */
+        }
+        bone_loads l;
+        status = gather(model, b, f, &bodies[body], &l);
+        if (status == RB_OK) {
+            stresses[b] = worst_of(model, b, &l);
+            free_bone(&l);
+        } else if (status == ABSENT) {
+            status = RB_OK; /* fixed to the ground */
+        }
+    }
+    for (int i = 0; i < body_count; ++i) {
+        free(bodies[i].loads);
+    }
+    free(bodies);
+    return status;
 }
 
 rb_status mu_model_bone_balance(const mu_model *model, int bone, rb_vec2 *force, double *moment, double *load_scale)
@@ -540,8 +624,8 @@ rb_status mu_model_bone_balance(const mu_model *model, int bone, rb_vec2 *force,
         mu_refuse_null(f, "load_scale", load_scale)) {
         return RB_ERR_INVALID_ARGUMENT;
     }
-    bone_loads l;
-    const rb_status status = gather(model, bone, f, &l);
+    one_bone one;
+    const rb_status status = gather_one(model, bone, f, &one);
     if (status == ABSENT) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: bone %d is not built or is fixed to the ground", f, bone);
     }
@@ -549,15 +633,15 @@ rb_status mu_model_bone_balance(const mu_model *model, int bone, rb_vec2 *force,
         return status;
     }
     /* Every load: the section at the near end, all of them beyond it. */
-    const wrench w = beyond(&l, -0.5 * l.frame.length, true);
-    const rb_vec2 end = rb_sub(l.frame.centre, rb_scale(0.5 * l.frame.length, l.frame.axis));
+    const wrench w = beyond(&one.bone, -0.5 * one.bone.frame.length, true);
+    const rb_vec2 end = rb_sub(one.bone.frame.centre, rb_scale(0.5 * one.bone.frame.length, one.bone.frame.axis));
     *force = w.force;
-    *moment = w.moment + rb_cross(rb_sub(end, l.frame.centre), w.force);
-    *load_scale = l.frame.mass * rb_length(rb_world_gravity(mu_model_world_to_read(model)));
-    for (int i = 0; i < l.count; ++i) {
-        *load_scale += rb_length(l.loads[i].force);
+    *moment = w.moment + rb_cross(rb_sub(end, one.bone.frame.centre), w.force);
+    *load_scale = one.bone.frame.mass * rb_length(rb_world_gravity(mu_model_world_to_read(model)));
+    for (int i = 0; i < one.bone.count; ++i) {
+        *load_scale += rb_length(one.bone.loads[i].force);
     }
-    free_bone(&l);
+    free_one(&one);
     return RB_OK;
 }
 
@@ -567,15 +651,15 @@ rb_status mu_model_bone_acceleration(const mu_model *model, int bone, rb_vec2 *a
     if (mu_refuse_null(f, "acceleration", acceleration) || mu_refuse_null(f, "alpha", alpha)) {
         return RB_ERR_INVALID_ARGUMENT;
     }
-    bone_loads l;
-    const rb_status status = gather(model, bone, f, &l);
+    one_bone one;
+    const rb_status status = gather_one(model, bone, f, &one);
     if (status == ABSENT) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: bone %d is not built or is fixed to the ground", f, bone);
     }
     if (status == RB_OK) {
-        *acceleration = l.body.acceleration;
-        *alpha = l.body.alpha;
-        free_bone(&l);
+        *acceleration = one.bone.body->acceleration;
+        *alpha = one.bone.body->alpha;
+        free_one(&one);
     }
     return status;
 }

@@ -5,8 +5,6 @@
 #include <stdlib.h>
 
 #include "load_peaks.h"
-#include "mu/bone_stress.h"
-#include "mu/joint_loads.h"
 
 static void reset(load_peak *peaks, int count)
 {
@@ -58,16 +56,16 @@ static void track(load_peak *peak, mu_joint_load load, double time)
     keep_largest(&peak->muscle_torque, &peak->muscle_torque_time, load.muscle_torque, time);
 }
 
-void load_peaks_track(load_peaks *peaks, const mu_model *model, double time)
+void load_peaks_track(load_peaks *peaks, const mu_model *model, const frame_loads *frame, double time)
 {
     for (int h = 0; h < mu_model_hinge_count(model); ++h) {
-        track(&peaks->hinges[h], mu_model_hinge_load(model, h), time);
+        track(&peaks->hinges[h], frame->hinges[h], time);
     }
     for (int g = 0; g < mu_model_glue_count(model); ++g) {
-        track(&peaks->glues[g], mu_model_glue_load(model, g), time);
+        track(&peaks->glues[g], frame->glues[g], time);
     }
     for (int b = 0; b < mu_model_description(model)->bone_count; ++b) {
-        const mu_bone_stress stress = mu_model_bone_stress(model, b);
+        const mu_bone_stress stress = frame->bones[b];
         stress_peak *peak = &peaks->bones[b];
         /* The first frame's, then any lower (NaN: the bone does not move). */
         if (!isnan(stress.worst.stress) && !(stress.worst.safety_factor >= peak->safety_factor)) {

@@ -11,6 +11,7 @@
 
 #include <stdbool.h>
 
+#include "frame_loads.h"
 #include "mu/model.h"
 
 typedef struct load_peak {
@@ -32,7 +33,8 @@ typedef struct load_peaks {
 
 /* false on memory. */
 bool load_peaks_start(load_peaks *peaks, const mu_model *model);
-void load_peaks_track(load_peaks *peaks, const mu_model *model, double time);
+/* Takes the frame's loads, read at `time` (s). */
+void load_peaks_track(load_peaks *peaks, const mu_model *model, const frame_loads *frame, double time);
 /* Prints the summary's "peak load" lines, one per joint built, and its
  * "bone stress" lines, one per bone that moves; a bone whose factor fell
  * below 1 is also warned of on stderr (it would break). */

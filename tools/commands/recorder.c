@@ -118,7 +118,8 @@ bool recorder_open(recorder *csv, const char *path, mu_model *model, const mu_mo
     return true;
 }
 
-bool recorder_write_row(recorder *csv, const mu_model *model, double time, char *error, size_t error_size)
+bool recorder_write_row(recorder *csv, const mu_model *model, const frame_loads *frame, double time, char *error,
+                        size_t error_size)
 {
     FILE *stream = csv->file.stream;
     const int digits = csv->digits;
@@ -158,7 +159,7 @@ bool recorder_write_row(recorder *csv, const mu_model *model, double time, char 
         const double values[RECORDER_PART_COLUMNS] = {centre.x, centre.y, mu_model_part_angle(model, csv->parts[p])};
         recorder_write_values(stream, digits, values, RECORDER_PART_COLUMNS);
     }
-    if (!recorder_loads_write_row(&csv->loads, stream, digits, model)) {
+    if (!recorder_loads_write_row(&csv->loads, stream, digits, model, frame)) {
         snprintf(error, error_size, "cannot compute the moment arms: %s", rb_last_error());
         return false;
     }

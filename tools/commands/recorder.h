@@ -68,8 +68,10 @@ typedef struct recorder {
 bool recorder_open(recorder *csv, const char *path, mu_model *model, const mu_model_options *options, int digits,
                    char *error, size_t error_size);
 
-/* Writes the row of the model's present state at `time` s. */
-bool recorder_write_row(recorder *csv, const mu_model *model, double time, char *error, size_t error_size);
+/* Writes the row of the model's present state at `time` s, its loads as
+ * `frame` read them (frame_loads.h). */
+bool recorder_write_row(recorder *csv, const mu_model *model, const frame_loads *frame, double time, char *error,
+                        size_t error_size);
 
 /* Renames the file into place, then writes its sidecar; either way the
  * recorder is closed after. */

@@ -119,13 +119,14 @@ static void write_load(FILE *stream, int digits, mu_joint_load load)
     recorder_write_values(stream, digits, values, RECORDER_JOINT_LOAD_COLUMNS);
 }
 
-bool recorder_loads_write_row(const recorder_loads *loads, FILE *stream, int digits, const mu_model *model)
+bool recorder_loads_write_row(const recorder_loads *loads, FILE *stream, int digits, const mu_model *model,
+                              const frame_loads *frame)
 {
     for (int h = 0; h < loads->hinge_count; ++h) {
-        write_load(stream, digits, mu_model_hinge_load(model, loads->hinges[h]));
+        write_load(stream, digits, frame->hinges[loads->hinges[h]]);
     }
     for (int g = 0; g < loads->glue_count; ++g) {
-        write_load(stream, digits, mu_model_glue_load(model, loads->glues[g]));
+        write_load(stream, digits, frame->glues[loads->glues[g]]);
     }
     const int muscles = mu_model_muscle_count(model);
     for (int h = 0; h < loads->hinge_count; ++h) {
@@ -141,7 +142,7 @@ bool recorder_loads_write_row(const recorder_loads *loads, FILE *stream, int dig
         }
     }
     for (int b = 0; b < loads->bone_count; ++b) {
-        const mu_bone_stress stress = mu_model_bone_stress(model, loads->bones[b]);
+        const mu_bone_stress stress = frame->bones[loads->bones[b]];
         const double values[RECORDER_BONE_STRESS_COLUMNS] = {stress.worst.stress,        stress.strain,
                                                              stress.worst.safety_factor, stress.worst.s,
                                                              stress.worst.axial_force,   stress.worst.bending_moment};

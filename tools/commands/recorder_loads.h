@@ -22,6 +22,7 @@
 #include <stdbool.h>
 #include <stdio.h>
 
+#include "frame_loads.h"
 #include "mu/model.h"
 
 enum { RECORDER_JOINT_LOAD_COLUMNS = 6, RECORDER_MOMENT_ARM_COLUMNS = 2, RECORDER_BONE_STRESS_COLUMNS = 6 };
@@ -47,9 +48,11 @@ void recorder_loads_close(recorder_loads *loads);
  * recorder quotes it. */
 void recorder_loads_write_header(const recorder_loads *loads, FILE *stream, const mu_model *model,
                                  void (*write_field)(FILE *, const char *, const char *));
-/* Writes the row's loads with `digits` significant digits; false when the
- * moment arms cannot be computed (rb_last_error says why). */
-bool recorder_loads_write_row(const recorder_loads *loads, FILE *stream, int digits, const mu_model *model);
+/* Writes the row's loads, the frame's as read (frame_loads.h) and the
+ * moment arms, with `digits` significant digits; false when the moment
+ * arms cannot be computed (rb_last_error says why). */
+bool recorder_loads_write_row(const recorder_loads *loads, FILE *stream, int digits, const mu_model *model,
+                              const frame_loads *frame);
 
 /* Writes ",V" for each of `count` values with `digits` significant digits:
  * every number of a run's CSV goes through here. */

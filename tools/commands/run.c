@@ -24,6 +24,7 @@
 #include "commands.h"
 #include "control_file.h"
 #include "controls.h"
+#include "frame_loads.h"
 #include "load_peaks.h"
 #include "muscle_parameter.h"
 #include "progress.h"
@@ -574,7 +575,8 @@ typedef struct run_state {
     double *peak_time;  /* s */
     double *angle_min;  /* deg, by hinge; NaN for a hinge not built */
     double *angle_max;
-    load_peaks loads; /* the joints' peak loads */
+    frame_loads frame; /* the present frame's loads, read once for the CSV and the peaks */
+    load_peaks loads;  /* the joints' peak loads */
     double wall_seconds, step_seconds;
     bool failure_reported; /* mu_model_failure said on stderr */
 } run_state;
@@ -595,7 +597,7 @@ static void track_extremes(run_state *run, double time)
         run->angle_min[h] = fmin(run->angle_min[h], angle);
         run->angle_max[h] = fmax(run->angle_max[h], angle);
     }
-    load_peaks_track(&run->loads, run->model, time);
+    load_peaks_track(&run->loads, run->model, &run->frame, time);
 }
 
 /* Steps every frame, applying the controls before it and recording it
@@ -635,8 +637,14 @@ static int run_frames(run_state *run)
         }
         /* (frame + 1)/rate rather than a running sum, which would drift. */
         const double time = (double)(frame + 1) / frame_rate;
+        if (!frame_loads_read(&run->frame, run->model)) {
+            progress_finish(&bar);
+            recorder_abandon(&run->csv);
+            fprintf(stderr, "sinew: cannot read the bone stress: %s\n", rb_last_error());
+            return EXIT_FAILURE;
+        }
         track_extremes(run, time);
-        if (!recorder_write_row(&run->csv, run->model, time, error, sizeof error)) {
+        if (!recorder_write_row(&run->csv, run->model, &run->frame, time, error, sizeof error)) {
             progress_finish(&bar);
             recorder_abandon(&run->csv);
             fprintf(stderr, "sinew: %s\n", error);
@@ -856,7 +864,7 @@ static int prepare(run_state *run)
     run->angle_min = malloc(hinges * sizeof *run->angle_min);
     run->angle_max = malloc(hinges * sizeof *run->angle_max);
     if (run->peak_force == NULL || run->peak_time == NULL || run->angle_min == NULL || run->angle_max == NULL ||
-        !load_peaks_start(&run->loads, run->model)) {
+        !load_peaks_start(&run->loads, run->model) || !frame_loads_start(&run->frame, run->model)) {
         fputs("sinew: out of memory\n", stderr);
         return EXIT_FAILURE;
     }
@@ -923,6 +931,7 @@ int cmd_run(int argc, char **argv)
     free(run.angle_min);
     free(run.angle_max);
     load_peaks_free(&run.loads);
+    frame_loads_free(&run.frame);
     free(opts.controls);
     free(opts.recruits);
     free(opts.muscle_settings);

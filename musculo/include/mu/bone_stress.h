@@ -111,6 +111,16 @@ MU_API mu_bone_beam mu_model_bone_beam(const mu_model *model, int bone);
  * has no loads to read); with the error for a bad index or NULL model. */
 MU_API mu_bone_stress mu_model_bone_stress(const mu_model *model, int bone);
 
+/** Every bone's worst section now, stresses[b] for description bone b in
+ * 0 .. desc->bone_count - 1 (stresses must hold that many; NULL only when
+ * there are none): the same values, bit for bit, as
+ * mu_model_bone_stress(model, b) for each b, NaN fields for the bones it
+ * gives NaN, but each rigid body's loads are collected once for all the
+ * bones glued into it rather than once per bone, the cost of reading a
+ * whole model every frame (`sinew run`). RB_OK, or the error (NULL
+ * model or stresses, memory). */
+MU_API rb_status mu_model_bone_stresses(const mu_model *model, mu_bone_stress *stresses);
+
 /** The internal loads at section `s` (m, -L/2 .. L/2) counting the point
  * loads at s beyond the cut when `include_at_s`. NaN as above. */
 MU_API mu_bone_section mu_model_bone_section(const mu_model *model, int bone, double s, bool include_at_s);
