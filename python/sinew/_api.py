@@ -880,6 +880,7 @@ MU_FUNCTIONS = {
     "mu_model_pose_hinge": (S, [M, c_int, c_double]),
     "mu_model_bone_beam": (BoneBeam, [M, c_int]),
     "mu_model_bone_stress": (BoneStress, [M, c_int]),
+    "mu_model_bone_stresses": (S, [M, POINTER(BoneStress)]),
     "mu_model_bone_section": (BoneSection, [M, c_int, c_double, c_bool]),
     "mu_model_bone_sections": (S, [M, c_int, c_int, POINTER(BoneSection)]),
     "mu_model_check_tree": (S, [M]),

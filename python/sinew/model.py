@@ -513,10 +513,11 @@ class Model:
     def bone_stress(self):
         """Each description bone's worst section now (STRESS_DTYPE); NaN for
         a bone not built or fixed to the ground."""
-        m = self._m
-        out = np.empty(self._d.bone_count, STRESS_DTYPE)
-        for b in range(out.shape[0]):
-            s = mu.mu_model_bone_stress(m, b)
+        count = self._d.bone_count
+        stresses = (_api.BoneStress * max(count, 1))()
+        check(mu.mu_model_bone_stresses(self._m, stresses))
+        out = np.empty(count, STRESS_DTYPE)
+        for b, s in enumerate(stresses[:count]):
             w = s.worst
             out[b] = (w.stress, s.strain, w.safety_factor, w.s, w.axial_force, w.bending_moment, w.shear_force)
         return out

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import control_file, errors
+from . import _api, control_file, errors
 from ._lib import mu
 from .controls import Schedule
 from .model import Model
@@ -85,6 +85,7 @@ class Recorder:
         ]
         self.arms = np.zeros(max(self.muscles, 1))
         self.arms_pointer = self.arms.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
+        self.stresses = (_api.BoneStress * max(model._d.bone_count, 1))()
 
     def columns(self):
         """The CSV header's names, in order."""
@@ -149,8 +150,10 @@ class Recorder:
             for k in range(self.muscles):
                 if self.crossing[slot][k]:
                     row += [self.arms[k], readouts[k].total_force * self.arms[k]]
+        if self.bones:
+            errors.check(mu.mu_model_bone_stresses(m, self.stresses))
         for b in self.bones:
-            s = mu.mu_model_bone_stress(m, b)
+            s = self.stresses[b]
             w = s.worst
             row += [w.stress, s.strain, w.safety_factor, w.s, w.axial_force, w.bending_moment]
         return row
