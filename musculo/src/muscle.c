@@ -61,6 +61,7 @@ struct mu_muscle {
     double substep;               /* s: h of the pending step, 0 when none */
     double target_tension;        /* < 0: activation control */
     double base_tension, damping; /* the law handed to the cable this substep */
+    double path_speed;            /* m/s: the path's lengthening speed at the last measure */
     mu_muscle_readout readout;
 };
 
@@ -465,6 +466,7 @@ static void measure_at(mu_muscle *muscle, const rb_world *world, double path, do
      * law at the end velocity instead would amplify a residual of a few
      * mm/s by the 10⁴-10⁵ N·s/m of the force-velocity slope.) */
     const double total = rb_cable_tension(world, muscle->cable);
+    muscle->path_speed = speed;
     if (muscle->compliant) {
         if (muscle->substep > 0.0) {
             advance_fibre(muscle, path, total);
@@ -558,6 +560,11 @@ rb_status mu_muscle_solve_equilibrium(mu_muscle *muscle, const rb_world *world)
     const double passive = muscle->max_force * mu_curve_passive_length(muscle->curves, l) * cosine;
     fill_readout(muscle, path, fibre_length, 0.0, active, passive, active + passive);
     return RB_OK;
+}
+
+double mu_muscle_path_speed(const mu_muscle *muscle)
+{
+    return mu_refuse_null("mu_muscle_path_speed", "muscle", muscle) ? NAN : muscle->path_speed;
 }
 
 mu_muscle_readout mu_muscle_read(const mu_muscle *muscle)
