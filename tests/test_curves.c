@@ -11,6 +11,7 @@
 #define _POSIX_C_SOURCE 200809L /* mkdtemp */
 
 #include <criterion/criterion.h>
+#include <gsl/gsl_interp.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -457,6 +458,49 @@ Test(curves, hinted_look_ups_equal_plain_ones)
         }
         mu_curves_destroy(curves);
     }
+}
+
+Test(curves, straight_lines_equal_gsl_linear_interpolant_bit_for_bit)
+{
+    /* The linear tables are evaluated by the library's own search and
+     * line, with GSL's rounding: the value and the slope must equal GSL's
+     * linear interpolant (over the file's knots, read by this test) to the
+     * last bit, at every knot, between knots and along a walk that jumps
+     * back and forth (hinted and plain). Inside the table only: the ends
+     * are clamped. */
+    mu_curves *curves = seed_tables(MU_INTERPOLATION_LINEAR);
+    for (size_t c = 0; c < 3; c++) {
+        const knots k = read_seed_knots(curve_kinds[c].name);
+        gsl_interp *line = gsl_interp_alloc(gsl_interp_linear, k.count);
+        cr_assert_not_null(line);
+        gsl_interp_init(line, k.x, k.y, k.count);
+        mu_curve_hint hint = {0};
+        double walk = 0.0;
+        for (int n = 0; n < 3000; n++) {
+            double x = 0.0;
+            if (n < 2 * (int)k.count - 2) { /* the knots but the last, and the midpoints */
+                const size_t i = (size_t)n / 2;
+                x = n % 2 == 0 ? k.x[i] : 0.5 * (k.x[i] + k.x[i + 1]);
+            } else {
+                walk = fmod(walk + 0.37 + 0.6 * sin(n), 1.0);
+                x = k.x[0] + walk * (k.x[k.count - 1] - k.x[0]);
+            }
+            /* f_V is 0 from the maximum shortening speed on, ṽ <= -1, where the table starts just below -1. */
+            if (!(x > k.x[0] && x < k.x[k.count - 1]) || (c == 2 && x <= -1.0)) {
+                continue;
+            }
+            const double expected = fmax(gsl_interp_eval(line, k.x, k.y, x, NULL), 0.0);
+            cr_expect_eq(curve_kinds[c].evaluate(curves, x), expected, "%s(%.17g)", curve_kinds[c].name, x);
+            if (c == 2) {
+                const double slope = fmax(gsl_interp_eval_deriv(line, k.x, k.y, x, NULL), 0.0);
+                cr_expect_eq(mu_curve_velocity_slope(curves, x), slope, "f_V'(%.17g)", x);
+                cr_expect_eq(mu_curve_velocity_slope_hinted(curves, &hint, x), slope, "f_V'(%.17g), hinted", x);
+                cr_expect_eq(mu_curve_velocity_hinted(curves, &hint, x), expected, "f_V(%.17g), hinted", x);
+            }
+        }
+        gsl_interp_free(line);
+    }
+    mu_curves_destroy(curves);
 }
 
 /* A scratch directory for one test's files, removed by remove_scratch. */

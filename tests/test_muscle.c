@@ -272,3 +272,35 @@ Test(muscle, advance_is_measure_then_prepare)
     destroy_world_and_expect_no_leak(merged.world);
     mu_curves_destroy(curves);
 }
+
+Test(muscle, path_speed_is_the_lengthening_speed_of_the_last_measure)
+{
+    /* The model's energy account takes L' from the muscle instead of
+     * reading the path again: it must be what the path does. The hanging
+     * mass moves straight down from the anchor, so L' = -v_y of the mass;
+     * the engine's own read of the cable gives the same bits. */
+    mu_curves *curves = tables();
+    hanging s = make_hanging(curves);
+    const double h = 1.0 / 600.0;
+    cr_expect_eq(mu_muscle_path_speed(s.muscle), 0.0, "0 before the first measure");
+    cr_assert_eq(mu_muscle_prepare(s.muscle, s.world, h), RB_OK);
+    double fastest = 0.0;
+    for (int n = 0; n < 300; ++n) {
+        step_world(s.world, h, 1);
+        cr_assert_eq(n % 2 == 0 ? mu_muscle_advance(s.muscle, s.world, h) : mu_muscle_measure(s.muscle, s.world), RB_OK,
+                     "%s", rb_last_error());
+        const double speed = mu_muscle_path_speed(s.muscle);
+        const rb_cable_id cable = mu_muscle_cable(s.muscle);
+        cr_expect_eq(speed, rb_cable_lengthening_speed(s.world, cable), "substep %d", n);
+        cr_expect(fabs(speed + rb_body_linear_velocity(s.world, s.mass).y) <= 1e-12,
+                  "substep %d: L' = %.17g, -v_y = %.17g", n, speed, -rb_body_linear_velocity(s.world, s.mass).y);
+        fastest = fmax(fastest, fabs(speed));
+        if (n % 2 == 1) {
+            cr_assert_eq(mu_muscle_prepare(s.muscle, s.world, h), RB_OK);
+        }
+    }
+    cr_expect(fastest > 0.01, "the mass moved (%g m/s at most)", fastest);
+    mu_muscle_destroy(s.muscle, s.world);
+    destroy_world_and_expect_no_leak(s.world);
+    mu_curves_destroy(curves);
+}

@@ -322,7 +322,7 @@ void rb_cables_solve(rb_world *world, double h)
         }
         double c_k = cable->damping * cable->inverse_mass;
         double total = h * (cable->base_tension + cable->damping * speed + c_k * cable->impulse) / (1.0 + h * c_k);
-        total = fmax(total, 0.0);
+        total = total > 0.0 ? total : 0.0; /* fmax(total, 0), NaN and -0 included, without libm's call */
         apply(cable, world, total - cable->impulse);
         cable->impulse = total;
     }

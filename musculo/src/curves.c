@@ -4,9 +4,9 @@
  *
  * - tabulated: the tables of Castanyer ("Implementació d'un model
  *   computacional de sistemes musculoesquelètics", 2023-24), digitised
- *   from Ross et al. 2018 (PLOS Comput Biol), interpolated by GSL,
- *   straight lines as Castanyer's or
- *   Steffen's monotone cubic (Steffen 1990, Astron. Astrophys. 239:443),
+ *   from Ross et al. 2018 (PLOS Comput Biol), interpolated by
+ *   straight lines as Castanyer's (evaluated here) or by GSL's
+ *   Steffen monotone cubic (Steffen 1990, Astron. Astrophys. 239:443),
  *   which is smooth yet never overshoots its knots; outside the table f_P
  *   and f_V keep their end values and f_L is 0;
  * - analytic: the Gaussian force-length of the MATLAB worksheet "1D
@@ -32,6 +32,7 @@
 
 struct mu_curves {
     bool tabulated;
+    bool linear; /* tabulated, straight lines between the knots */
     /* Tabulated: the knots and GSL's interpolants over them. */
     mu_curve_table tables[MU_CURVE_KIND_COUNT];
     gsl_interp *interpolants[MU_CURVE_KIND_COUNT];
@@ -82,6 +83,7 @@ static rb_status create_tabulated(const char *f, const char *path, FILE *file, m
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "%s: out of memory", f);
     }
     curves->tabulated = true;
+    curves->linear = interpolation == MU_INTERPOLATION_LINEAR;
     /* The reader asks for GSL's own minimum (2 knots for lines, 3 for
      * Steffen) and strictly increasing x, the two things gsl_interp_alloc
      * and gsl_interp_init reject, so neither can fail below but for memory
@@ -225,6 +227,63 @@ static void end_lookup(mu_curve_kind kind, mu_curve_hint *hint, const gsl_interp
     }
 }
 
+/* The interval [x_i, x_i+1) that holds x, for x_0 <= x < x_last, found
+ * from the hint's interval `start` when x is still in it (a muscle moves
+ * little between two look-ups), else by bisection on the side of it where
+ * x lies, keeping x_lo <= x < x_hi. The knots rise strictly, so the
+ * interval is unique: it is the one GSL's accelerated search finds, and a
+ * hint serves both. */
+static size_t find_interval(const mu_curve_table *table, size_t start, double x)
+{
+    size_t lo = 0;
+    size_t hi = table->count - 1;
+    if (start + 1 < table->count) {
+        if (x < table->x[start]) {
+            hi = start;
+        } else if (x < table->x[start + 1]) {
+            return start;
+        } else {
+            lo = start;
+        }
+    }
+    while (hi > lo + 1) {
+        const size_t middle = lo + (hi - lo) / 2;
+        if (table->x[middle] > x) {
+            hi = middle;
+        } else {
+            lo = middle;
+        }
+    }
+    return lo;
+}
+
+/* The straight line between the knots around x (x_0 <= x < x_last), and
+ * its slope, in the hint's interval, which it updates. The value is
+ * y_i + (x - x_i)/(x_i+1 - x_i)·(y_i+1 - y_i), evaluated in that order,
+ * as GSL's linear interpolant does, so both give the same bits. */
+static size_t linear_interval(const mu_curves *curves, mu_curve_kind kind, mu_curve_hint *hint, double x)
+{
+    const size_t interval = find_interval(&curves->tables[kind], hint != NULL ? hint->interval[kind] : 0, x);
+    if (hint != NULL) {
+        hint->interval[kind] = interval;
+    }
+    return interval;
+}
+
+static double linear_value(const mu_curves *curves, mu_curve_kind kind, mu_curve_hint *hint, double x)
+{
+    const mu_curve_table *table = &curves->tables[kind];
+    const size_t i = linear_interval(curves, kind, hint, x);
+    return table->y[i] + (x - table->x[i]) / (table->x[i + 1] - table->x[i]) * (table->y[i + 1] - table->y[i]);
+}
+
+static double linear_slope(const mu_curves *curves, mu_curve_kind kind, mu_curve_hint *hint, double x)
+{
+    const mu_curve_table *table = &curves->tables[kind];
+    const size_t i = linear_interval(curves, kind, hint, x);
+    return (table->y[i + 1] - table->y[i]) / (table->x[i + 1] - table->x[i]);
+}
+
 /* The interpolant at x, and never below 0: a muscle only pulls, and a
  * hand-edited table may dip below (the original report's annex prints
  * -0.001 for the first passive knots). Outside the table f_P and f_V keep
@@ -245,6 +304,8 @@ static double tabulated_value(const mu_curves *curves, mu_curve_kind kind, mu_cu
         y = table->y[0];
     } else if (x >= table->x[last]) {
         y = table->y[last];
+    } else if (curves->linear) {
+        y = linear_value(curves, kind, hint, x);
     } else {
         gsl_interp_accel accel;
         y = gsl_interp_eval(curves->interpolants[kind], table->x, table->y, x,
@@ -265,10 +326,15 @@ static double tabulated_slope(const mu_curves *curves, mu_curve_kind kind, mu_cu
     if (!(x > table->x[0] && x < table->x[table->count - 1])) {
         return 0.0;
     }
-    gsl_interp_accel accel;
-    const double slope = gsl_interp_eval_deriv(curves->interpolants[kind], table->x, table->y, x,
-                                               start_lookup(curves, kind, hint, &accel));
-    end_lookup(kind, hint, &accel);
+    double slope = 0.0;
+    if (curves->linear) {
+        slope = linear_slope(curves, kind, hint, x);
+    } else {
+        gsl_interp_accel accel;
+        slope = gsl_interp_eval_deriv(curves->interpolants[kind], table->x, table->y, x,
+                                      start_lookup(curves, kind, hint, &accel));
+        end_lookup(kind, hint, &accel);
+    }
     return slope < 0.0 ? 0.0 : slope;
 }
 

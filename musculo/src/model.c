@@ -567,13 +567,16 @@ static double mechanical_energy(const mu_model *model)
  * at −L' does T·(−L'); a torque τ turning its body against its reaction
  * body at Δω does τ·Δω. The engine moves the bodies with the velocities
  * a substep ends with (semi-implicit Euler), so that rate times the
- * substep is the work of the substep. */
+ * substep is the work of the substep. The muscles have just been
+ * measured at these velocities (their readout's total force is the
+ * cable's T, and they keep the L' they read), so their paths are not
+ * read again. */
 static double work_rate(const mu_model *model)
 {
     double rate = 0.0;
     for (int i = 0; i < model->built_muscle_count; ++i) {
-        const rb_cable_id cable = mu_muscle_cable(model->muscles[model->built_muscles[i]]);
-        rate -= rb_cable_tension(model->world, cable) * rb_cable_lengthening_speed(model->world, cable);
+        const mu_muscle *muscle = model->muscles[model->built_muscles[i]];
+        rate -= mu_muscle_read(muscle).total_force * mu_muscle_path_speed(muscle);
     }
     for (int t = 0; t < model->built_torque_muscle_count; ++t) {
         rate += mu_torque_actuator_power(model->actuators[t], model->world);
@@ -582,7 +585,8 @@ static double work_rate(const mu_model *model)
 }
 
 /* Adds the work of the substep that just ended (of work_rate_h s) to the
- * account; called as every substep starts, and after the step's last. */
+ * account; called once the muscles have measured that substep: as every
+ * substep after the first starts, and after the step's last. */
 static void account_substep_work(mu_model *model)
 {
     if (model->energy_started && model->work_rate_h > 0.0) {
@@ -619,14 +623,13 @@ mu_model_energy mu_model_energy_account(const mu_model *model)
 }
 
 /* The engine's substep callback: each substep after the first starts by
- * reading what the previous one did to the muscles; then every muscle
- * sets its cable's tension law from its state now. The first error is
- * kept for mu_model_step to report, since the step cannot stop midway. */
+ * reading what the previous one did to the muscles (and, from that
+ * reading, the work it did); then every muscle sets its cable's tension
+ * law from its state now. The first error is kept for mu_model_step to
+ * report, since the step cannot stop midway. */
 static void update_muscles(rb_world *world, int substep, double h, void *context)
 {
     mu_model *model = context;
-    account_substep_work(model);
-    model->work_rate_h = h;
     rb_status status = RB_OK;
     int failed = -1;
     for (int i = 0; status == RB_OK && i < model->built_muscle_count; ++i) {
@@ -634,6 +637,8 @@ static void update_muscles(rb_world *world, int substep, double h, void *context
         status = substep > 0 ? mu_muscle_advance(muscle, world, h) : mu_muscle_prepare(muscle, world, h);
         failed = status != RB_OK ? model->built_muscles[i] : failed;
     }
+    account_substep_work(model);
+    model->work_rate_h = h;
     if (model->substep_status == RB_OK && status != RB_OK) {
         model->substep_status = status;
         /* Named now, in the user's terms: the engine calls left in the step clear the message. */

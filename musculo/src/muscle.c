@@ -61,6 +61,7 @@ struct mu_muscle {
     double substep;               /* s: h of the pending step, 0 when none */
     double target_tension;        /* < 0: activation control */
     double base_tension, damping; /* the law handed to the cable this substep */
+    double path_speed;            /* m/s: the path's lengthening speed at the last measure */
     mu_muscle_readout readout;
 };
 
@@ -380,19 +381,48 @@ static void control_tension(mu_muscle *muscle)
     }
 }
 
+/* The path as the muscle reads it at the start of a substep and, for a
+ * rigid tendon, the fibre the path fixes. Within mu_muscle_advance the
+ * measure of the substep that ended and the law of the next one share
+ * it: the fibre's length, pennation and parallel elastic force depend on
+ * the pose alone, not on the activation the law then updates. */
+typedef struct path_reading {
+    double path;  /* m */
+    double speed; /* m/s, < 0 while shortening */
+    /* Rigid tendon only: */
+    double fibre_length; /* m */
+    double normalized;   /* l̃ = fibre length / optimal length */
+    double cosine;       /* cos α */
+    double passive;      /* N along the path: Fmax·f_P(l̃)·cos α */
+} path_reading;
+
+static rb_status read_path(mu_muscle *muscle, const rb_world *world, path_reading *reading)
+{
+    *reading = (path_reading){0};
+    rb_status status = rb_cable_state(world, muscle->cable, &reading->path, &reading->speed);
+    if (status == RB_OK && !muscle->compliant) {
+        reading->fibre_length = rigid_fibre_length(muscle, reading->path);
+        reading->cosine = pennation_cosine(reading->fibre_length, muscle->width);
+        reading->normalized = reading->fibre_length / muscle->rest_length;
+        reading->passive = muscle->max_force *
+                           mu_curve_passive_length_hinted(muscle->curves, &muscle->hint, reading->normalized) *
+                           reading->cosine;
+    }
+    return status;
+}
+
 /* The rigid tendon's law: the force at the present velocity and its
  * slope in the path's speed (see the top of this file). */
-static void prepare_rigid(mu_muscle *muscle, double path, double speed)
+static void prepare_rigid(mu_muscle *muscle, const path_reading *reading)
 {
-    const double fibre_length = rigid_fibre_length(muscle, path);
-    const double cosine = pennation_cosine(fibre_length, muscle->width);
-    const double l = fibre_length / muscle->rest_length;
+    const double speed = reading->speed;
+    const double cosine = reading->cosine;
+    const double l = reading->normalized;
     const double v = speed * cosine / muscle->max_velocity;
     const double fl = mu_curve_active_length_hinted(muscle->curves, &muscle->hint, l);
     const double active = muscle->max_force * muscle->activation * fl *
                           mu_curve_velocity_hinted(muscle->curves, &muscle->hint, v) * cosine;
-    const double passive =
-        muscle->max_force * mu_curve_passive_length_hinted(muscle->curves, &muscle->hint, l) * cosine;
+    const double passive = reading->passive;
     muscle->damping = muscle->max_force * muscle->activation * fl *
                       mu_curve_velocity_slope_hinted(muscle->curves, &muscle->hint, v) / muscle->max_velocity * cosine *
                       cosine;
@@ -417,8 +447,10 @@ static void advance_activation(mu_muscle *muscle, double h)
 }
 
 /* mu_muscle_prepare at the path's length and lengthening speed now. */
-static rb_status prepare_at(mu_muscle *muscle, rb_world *world, double h, double path, double speed)
+static rb_status prepare_at(mu_muscle *muscle, rb_world *world, double h, const path_reading *reading)
 {
+    const double path = reading->path;
+    const double speed = reading->speed;
     if (muscle->target_tension >= 0.0) {
         control_tension(muscle);
     }
@@ -432,7 +464,7 @@ static rb_status prepare_at(mu_muscle *muscle, rb_world *world, double h, double
         muscle->damping = muscle->step.path_damping;
         muscle->base_tension = muscle->step.tension - muscle->damping * speed;
     } else {
-        prepare_rigid(muscle, path, speed);
+        prepare_rigid(muscle, reading);
     }
     return rb_cable_set_tension_law(world, muscle->cable, muscle->base_tension, muscle->damping);
 }
@@ -457,14 +489,17 @@ static void advance_fibre(mu_muscle *muscle, double path, double tension)
 }
 
 /* mu_muscle_measure at the path's length and lengthening speed now. */
-static void measure_at(mu_muscle *muscle, const rb_world *world, double path, double speed)
+static void measure_at(mu_muscle *muscle, const rb_world *world, const path_reading *reading)
 {
+    const double path = reading->path;
+    const double speed = reading->speed;
     /* The tension the solver applied: the law at the velocity it solved
      * for, which the iterations reach only approximately when the muscle
      * shares its bodies with joints and other muscles. (Evaluating the
      * law at the end velocity instead would amplify a residual of a few
      * mm/s by the 10⁴-10⁵ N·s/m of the force-velocity slope.) */
     const double total = rb_cable_tension(world, muscle->cable);
+    muscle->path_speed = speed;
     if (muscle->compliant) {
         if (muscle->substep > 0.0) {
             advance_fibre(muscle, path, total);
@@ -472,12 +507,9 @@ static void measure_at(mu_muscle *muscle, const rb_world *world, double path, do
         fill_compliant_readout(muscle, path, total);
         return;
     }
-    const double fibre_length = rigid_fibre_length(muscle, path);
-    const double cosine = pennation_cosine(fibre_length, muscle->width);
-    const double passive =
-        muscle->max_force *
-        mu_curve_passive_length_hinted(muscle->curves, &muscle->hint, fibre_length / muscle->rest_length) * cosine;
-    fill_readout(muscle, path, fibre_length, speed * cosine, fmax(total - passive, 0.0), passive, total);
+    const double passive = reading->passive;
+    fill_readout(muscle, path, reading->fibre_length, speed * reading->cosine, fmax(total - passive, 0.0), passive,
+                 total);
 }
 
 static rb_status check_prepare(const mu_muscle *muscle, const rb_world *world, double h, const char *function)
@@ -494,12 +526,11 @@ static rb_status check_prepare(const mu_muscle *muscle, const rb_world *world, d
 rb_status mu_muscle_prepare(mu_muscle *muscle, rb_world *world, double h)
 {
     rb_status status = check_prepare(muscle, world, h, "mu_muscle_prepare");
-    double path = 0.0;
-    double speed = 0.0;
+    path_reading reading;
     if (status == RB_OK) {
-        status = rb_cable_state(world, muscle->cable, &path, &speed);
+        status = read_path(muscle, world, &reading);
     }
-    return status != RB_OK ? status : prepare_at(muscle, world, h, path, speed);
+    return status != RB_OK ? status : prepare_at(muscle, world, h, &reading);
 }
 
 rb_status mu_muscle_measure(mu_muscle *muscle, const rb_world *world)
@@ -507,11 +538,10 @@ rb_status mu_muscle_measure(mu_muscle *muscle, const rb_world *world)
     if (mu_refuse_null("mu_muscle_measure", "muscle", muscle) || mu_refuse_null("mu_muscle_measure", "world", world)) {
         return RB_ERR_INVALID_ARGUMENT;
     }
-    double path = 0.0;
-    double speed = 0.0;
-    rb_status status = rb_cable_state(world, muscle->cable, &path, &speed);
+    path_reading reading;
+    rb_status status = read_path(muscle, world, &reading);
     if (status == RB_OK) {
-        measure_at(muscle, world, path, speed);
+        measure_at(muscle, world, &reading);
     }
     return status;
 }
@@ -519,16 +549,15 @@ rb_status mu_muscle_measure(mu_muscle *muscle, const rb_world *world)
 rb_status mu_muscle_advance(mu_muscle *muscle, rb_world *world, double h)
 {
     rb_status status = check_prepare(muscle, world, h, "mu_muscle_advance");
-    double path = 0.0;
-    double speed = 0.0;
+    path_reading reading;
     if (status == RB_OK) {
-        status = rb_cable_state(world, muscle->cable, &path, &speed);
+        status = read_path(muscle, world, &reading);
     }
     if (status != RB_OK) {
         return status;
     }
-    measure_at(muscle, world, path, speed);
-    return prepare_at(muscle, world, h, path, speed);
+    measure_at(muscle, world, &reading);
+    return prepare_at(muscle, world, h, &reading);
 }
 
 rb_status mu_muscle_solve_equilibrium(mu_muscle *muscle, const rb_world *world)
@@ -558,6 +587,11 @@ rb_status mu_muscle_solve_equilibrium(mu_muscle *muscle, const rb_world *world)
     const double passive = muscle->max_force * mu_curve_passive_length(muscle->curves, l) * cosine;
     fill_readout(muscle, path, fibre_length, 0.0, active, passive, active + passive);
     return RB_OK;
+}
+
+double mu_muscle_path_speed(const mu_muscle *muscle)
+{
+    return mu_refuse_null("mu_muscle_path_speed", "muscle", muscle) ? NAN : muscle->path_speed;
 }
 
 mu_muscle_readout mu_muscle_read(const mu_muscle *muscle)

@@ -175,6 +175,12 @@ MU_API rb_status mu_muscle_measure(mu_muscle *muscle, const rb_world *world);
  * substep left is the one the next starts from. */
 MU_API rb_status mu_muscle_advance(mu_muscle *muscle, rb_world *world, double h);
 MU_API mu_muscle_readout mu_muscle_read(const mu_muscle *muscle);
+/** m/s: the path's lengthening speed when the muscle was last measured
+ * (mu_muscle_measure or mu_muscle_advance), < 0 while shortening; with
+ * the readout's total force it gives the power the muscle then put into
+ * the bodies, −T·L', without reading the path again. 0 before the first
+ * measure. */
+MU_API double mu_muscle_path_speed(const mu_muscle *muscle);
 
 #ifdef __cplusplus
 }
