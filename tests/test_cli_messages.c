@@ -124,3 +124,40 @@ Test(cli_messages, run_help_and_the_readme_name_every_builtin_model)
                   name);
     }
 }
+
+/* `sinew --help` keeps its summaries in one column: a usage longer than
+ * the column puts its summary on the next line, so no line runs past 100
+ * characters and every summary starts at the same place (moment-arms,
+ * inverse and optimize ran theirs on from the usage). */
+Test(cli_messages, the_command_list_keeps_one_column)
+{
+    char command[1024];
+    snprintf(command, sizeof command, "'%s' --help", SINEW_TOOL);
+    FILE *p = popen(command, "r");
+    cr_assert_not_null(p);
+    char line[512];
+    bool listing = false;
+    int column = -1, lines = 0;
+    while (fgets(line, sizeof line, p) != NULL) {
+        cr_expect_leq(strlen(line), 101, "a line of %zu characters: %s", strlen(line), line);
+        if (strcmp(line, "commands:\n") == 0) {
+            listing = true;
+            continue;
+        }
+        if (!listing || line[0] == '\n') {
+            listing = listing && line[0] != '\n';
+            continue;
+        }
+        /* The summary starts after the usage's run of two or more spaces. */
+        const char *gap = strstr(line + 2, "  ");
+        if (gap == NULL) {
+            continue; /* a usage on its own line */
+        }
+        const int start = (int)(gap - line) + (int)strspn(gap, " ");
+        column = column < 0 ? start : column;
+        cr_expect_eq(start, column, "a summary at column %d, not %d: %s", start, column, line);
+        ++lines;
+    }
+    cr_assert_eq(pclose(p), 0);
+    cr_assert_geq(lines, 10, "the command list has %d summaries", lines);
+}

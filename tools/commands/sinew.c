@@ -46,10 +46,17 @@ static void print_usage(FILE *stream)
           "\n"
           "commands:\n",
           stream);
+    /* A usage longer than the column puts its summary on the next line,
+     * under the others. */
+    enum { COLUMN = 30 };
     for (int k = 0; k < COMMAND_COUNT; ++k) {
-        char label[64];
-        snprintf(label, sizeof label, "%s %s", commands[k].name, commands[k].synopsis);
-        fprintf(stream, "  %-30s %s\n", label, commands[k].summary);
+        char label[128];
+        const int length = snprintf(label, sizeof label, "%s %s", commands[k].name, commands[k].synopsis);
+        if (length > COLUMN) {
+            fprintf(stream, "  %s\n  %-*s %s\n", label, COLUMN, "", commands[k].summary);
+        } else {
+            fprintf(stream, "  %-*s %s\n", COLUMN, label, commands[k].summary);
+        }
     }
     fputs("\n"
           "`sinew COMMAND --help` describes a command's arguments and options.\n"
