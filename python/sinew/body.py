@@ -8,8 +8,9 @@ with the C message; a body of a closed world raises :class:`sinew.Closed`.
 import ctypes
 
 from . import _api, errors, records
+from ._handle import Handle
 from ._lib import rb
-from .errors import boolean, check, checked, pair, real
+from .errors import boolean, pair, real
 
 #: rb_body_type names, in the enum's order.
 BODY_TYPES = ("static", "kinematic", "dynamic")
@@ -19,49 +20,12 @@ def _v(name, value):
     return _api.Vec2(*pair(name, value))
 
 
-class Body:
-    """A body of a :class:`~sinew.World`; made by ``World.create_body``."""
+class Body(Handle):
+    """A body of a :class:`~sinew.World`; made by ``World.create_body``.
+    ``destroy()`` destroys its shapes and contacts too."""
 
-    __slots__ = ("_world", "_id")
-
-    def __init__(self, world, body_id):
-        self._world = world
-        self._id = _api.BodyId(body_id.index, body_id.generation, body_id.world)
-
-    def _get(self, function, *args):
-        return checked(function, self._world._w, self._id, *args)
-
-    def _set(self, function, *args):
-        check(function(self._world._w, self._id, *args))
-
-    @property
-    def world(self):
-        return self._world
-
-    @property
-    def key(self):
-        """(index, generation, world serial): equal for handles of one body."""
-        return (self._id.index, self._id.generation, self._id.world)
-
-    def __eq__(self, other):
-        return isinstance(other, Body) and other.key == self.key
-
-    def __hash__(self):
-        return hash(("Body",) + self.key)
-
-    def __repr__(self):
-        return f"<sinew.Body {self._id.index}.{self._id.generation}>"
-
-    @property
-    def valid(self):
-        """False once the body is destroyed (or its world closed)."""
-        if self._world.closed:
-            return False
-        return bool(rb.rb_body_is_valid(self._world._w, self._id))
-
-    def destroy(self):
-        """Destroys the body, its shapes and its contacts."""
-        self._set(rb.rb_body_destroy)
+    __slots__ = ()
+    _FAMILY, _ID, _IS_VALID, _DESTROY = "Body", _api.BodyId, "rb_body_is_valid", "rb_body_destroy"
 
     # ---------------------------------------------------------------- type
 

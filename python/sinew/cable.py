@@ -5,28 +5,16 @@ T = base_tension + damping·L' (never below 0), solved implicitly; made by
 import ctypes
 
 from . import _api, records
+from ._handle import Handle
 from ._lib import rb
 from .errors import check, checked, real
 
 
-class Cable:
-    """A cable of a world."""
+class Cable(Handle):
+    """A cable of a world. Equal handles compare equal."""
 
-    __slots__ = ("_world", "_id")
-
-    def __init__(self, world, cable_id):
-        self._world = world
-        self._id = _api.CableId(cable_id.index, cable_id.generation, cable_id.world)
-
-    def __repr__(self):
-        return f"<sinew.Cable {self._id.index}.{self._id.generation}>"
-
-    @property
-    def valid(self):
-        return not self._world.closed and bool(rb.rb_cable_is_valid(self._world._w, self._id))
-
-    def destroy(self):
-        check(rb.rb_cable_destroy(self._world._w, self._id))
+    __slots__ = ()
+    _FAMILY, _ID, _IS_VALID, _DESTROY = "Cable", _api.CableId, "rb_cable_is_valid", "rb_cable_destroy"
 
     def set_tension_law(self, base_tension, damping=0.0):
         """T = base_tension (N) + damping (N·s/m) · lengthening speed, from the next step."""

@@ -10,6 +10,7 @@ substep of the last step.
 import ctypes
 
 from . import _api, records
+from ._handle import Handle
 from ._lib import rb
 from .errors import boolean, check, checked, pair, real
 from .world import set_fields
@@ -34,40 +35,11 @@ def make_joint(world, kind, definition, fields):
     return _CLASSES[kind](world, out)
 
 
-class Joint:
+class Joint(Handle):
     """What every joint has: its bodies, anchors and reaction."""
 
-    __slots__ = ("_world", "_id")
-
-    def __init__(self, world, joint_id):
-        self._world = world
-        self._id = _api.JointId(joint_id.index, joint_id.generation, joint_id.world)
-
-    def _get(self, function, *args):
-        return checked(function, self._world._w, self._id, *args)
-
-    def _set(self, function, *args):
-        check(function(self._world._w, self._id, *args))
-
-    @property
-    def key(self):
-        return (self._id.index, self._id.generation, self._id.world)
-
-    def __eq__(self, other):
-        return isinstance(other, Joint) and other.key == self.key
-
-    def __hash__(self):
-        return hash(("Joint",) + self.key)
-
-    def __repr__(self):
-        return f"<sinew.{type(self).__name__} {self._id.index}.{self._id.generation}>"
-
-    @property
-    def valid(self):
-        return not self._world.closed and bool(rb.rb_joint_is_valid(self._world._w, self._id))
-
-    def destroy(self):
-        self._set(rb.rb_joint_destroy)
+    __slots__ = ()
+    _FAMILY, _ID, _IS_VALID, _DESTROY = "Joint", _api.JointId, "rb_joint_is_valid", "rb_joint_destroy"
 
     @property
     def type(self):

@@ -6,8 +6,9 @@ the larger of two touching shapes'."""
 import ctypes
 
 from . import _api, errors, records
+from ._handle import Handle
 from ._lib import rb
-from .errors import bits, boolean, check, checked, integer, pair, real
+from .errors import bits, boolean, check, integer, pair, real
 
 #: rb_shape_type names, in the enum's order.
 SHAPE_TYPES = ("circle", "polygon", "segment", "chain_segment")
@@ -80,40 +81,11 @@ def make_polygon(points, hull):
     return polygon
 
 
-class Shape:
+class Shape(Handle):
     """A shape of a body. Equal handles compare equal."""
 
-    __slots__ = ("_world", "_id")
-
-    def __init__(self, world, shape_id):
-        self._world = world
-        self._id = _api.ShapeId(shape_id.index, shape_id.generation, shape_id.world)
-
-    def _get(self, function, *args):
-        return checked(function, self._world._w, self._id, *args)
-
-    def _set(self, function, *args):
-        check(function(self._world._w, self._id, *args))
-
-    @property
-    def key(self):
-        return (self._id.index, self._id.generation, self._id.world)
-
-    def __eq__(self, other):
-        return isinstance(other, Shape) and other.key == self.key
-
-    def __hash__(self):
-        return hash(("Shape",) + self.key)
-
-    def __repr__(self):
-        return f"<sinew.Shape {self._id.index}.{self._id.generation}>"
-
-    @property
-    def valid(self):
-        return not self._world.closed and bool(rb.rb_shape_is_valid(self._world._w, self._id))
-
-    def destroy(self):
-        self._set(rb.rb_shape_destroy)
+    __slots__ = ()
+    _FAMILY, _ID, _IS_VALID, _DESTROY = "Shape", _api.ShapeId, "rb_shape_is_valid", "rb_shape_destroy"
 
     @property
     def type(self):

@@ -153,6 +153,13 @@ def test_joints_and_cables(world):
     assert cable.tension == pytest.approx(2.0, rel=1e-12)
     assert weight.linear_velocity.y > 0.0  # pulled up towards the anchor
     assert [tuple(p) for p in cable.points][0] == pytest.approx((5.0, 0.0))
+    # Handles of one object compare equal, of different families never.
+    again = sinew.Cable(world, cable._id)
+    assert again == cable and hash(again) == hash(cable) and again != weight
+    cable.destroy()
+    assert not again.valid
+    with pytest.raises(sinew.StaleId):
+        again.length
 
 
 def test_mouse_weld_and_shapes(world):
