@@ -46,6 +46,51 @@ static const double *column_of(const csv_table *table, const char *name)
     return table->columns[c].values;
 }
 
+/* Each muscle's peak force and its time, each hinge's last, least and
+ * largest angle in the JSON summary `root` are those of the run's CSV to
+ * `relative` (the CSV's digits: 10 give 5e-10, 17 the doubles: 0). */
+static void figures_are_the_csvs(const json_t *root, const csv_table *table, double relative, int *muscles, int *hinges)
+{
+    const double *time = column_of(table, "time_s");
+    size_t k;
+    json_t *item;
+    *muscles = *hinges = 0;
+    json_array_foreach(json_object_get(root, "muscles"), k, item)
+    {
+        char name[256];
+        snprintf(name, sizeof name, "%s.total_force_N", json_string_value(json_object_get(item, "name")));
+        const double *force = column_of(table, name);
+        long at = 0;
+        for (long row = 1; row < table->row_count; ++row) {
+            at = force[row] > force[at] ? row : at;
+        }
+        const double peak = json_real_value(json_object_get(item, "peak_force_N"));
+        cr_assert_float_eq(peak, force[at], relative * fabs(peak), "%s: %.17g in the CSV", name, force[at]);
+        cr_assert_float_eq(json_real_value(json_object_get(item, "peak_time_s")), time[at], relative * time[at], "%s",
+                           name);
+        ++*muscles;
+    }
+    json_array_foreach(json_object_get(root, "hinges"), k, item)
+    {
+        char name[256];
+        snprintf(name, sizeof name, "%s.angle_deg", json_string_value(json_object_get(item, "name")));
+        const double *angle = column_of(table, name);
+        double least = angle[0], largest = angle[0];
+        for (long row = 1; row < table->row_count; ++row) {
+            least = fmin(least, angle[row]);
+            largest = fmax(largest, angle[row]);
+        }
+        const double last = angle[table->row_count - 1];
+        cr_assert_float_eq(json_real_value(json_object_get(item, "final_angle_deg")), last, relative * fabs(last),
+                           "%s: %.17g in the CSV", name, last);
+        cr_assert_float_eq(json_real_value(json_object_get(item, "min_angle_deg")), least, relative * fabs(least), "%s",
+                           name);
+        cr_assert_float_eq(json_real_value(json_object_get(item, "max_angle_deg")), largest, relative * fabs(largest),
+                           "%s", name);
+        ++*hinges;
+    }
+}
+
 Test(run_summary, its_figures_are_those_of_the_runs_csv)
 {
     char dir[] = "/tmp/sinew-run-summary-XXXXXX";
@@ -70,48 +115,9 @@ Test(run_summary, its_figures_are_those_of_the_runs_csv)
     const json_t *arguments = json_object_get(root, "arguments");
     cr_assert_eq(json_array_size(arguments), 11);
     cr_assert_str_eq(json_string_value(json_array_get(arguments, 6)), "Biceps Long=0.7");
-    const double *time = column_of(&table, "time_s");
-
-    size_t k;
-    json_t *item;
-    int muscles = 0;
-    json_array_foreach(json_object_get(root, "muscles"), k, item)
-    {
-        char name[256];
-        snprintf(name, sizeof name, "%s.total_force_N", json_string_value(json_object_get(item, "name")));
-        const double *force = column_of(&table, name);
-        long at = 0;
-        for (long row = 1; row < table.row_count; ++row) {
-            at = force[row] > force[at] ? row : at;
-        }
-        /* The CSV holds 10 significant digits; the summary the double. */
-        double peak = json_real_value(json_object_get(item, "peak_force_N"));
-        cr_assert_float_eq(peak, force[at], 1e-9 * fabs(peak) + 1e-12, "%s", name);
-        cr_assert_float_eq(json_real_value(json_object_get(item, "peak_time_s")), time[at], 1e-9, "%s", name);
-        ++muscles;
-    }
+    int muscles, hinges;
+    figures_are_the_csvs(root, &table, 1e-9, &muscles, &hinges);
     cr_assert_eq(muscles, 5);
-    int hinges = 0;
-    json_array_foreach(json_object_get(root, "hinges"), k, item)
-    {
-        char name[256];
-        snprintf(name, sizeof name, "%s.angle_deg", json_string_value(json_object_get(item, "name")));
-        const double *angle = column_of(&table, name);
-        double least = angle[0], largest = angle[0];
-        /* 10 significant digits: within 5e-10 of the value, relatively. */
-        double within = 1e-9 * fabs(angle[table.row_count - 1]) + 1e-9;
-        for (long row = 1; row < table.row_count; ++row) {
-            least = fmin(least, angle[row]);
-            largest = fmax(largest, angle[row]);
-        }
-        cr_assert_float_eq(json_real_value(json_object_get(item, "final_angle_deg")), angle[table.row_count - 1],
-                           within, "%s", name);
-        cr_assert_float_eq(json_real_value(json_object_get(item, "min_angle_deg")), least, 1e-9 * fabs(least) + 1e-9,
-                           "%s", name);
-        cr_assert_float_eq(json_real_value(json_object_get(item, "max_angle_deg")), largest,
-                           1e-9 * fabs(largest) + 1e-9, "%s", name);
-        ++hinges;
-    }
     cr_assert_eq(hinges, 2);
     const json_t *timing = json_object_get(root, "timing");
     cr_assert_gt(json_real_value(json_object_get(timing, "real_time_factor")), 0.0);
@@ -194,28 +200,9 @@ Test(run_summary, seventeen_digits_write_the_runs_own_doubles)
     csv_table table;
     char error[1024];
     cr_assert(csv_table_read(path, &table, error, sizeof error), "%s", error);
-    size_t k;
-    json_t *item;
-    json_array_foreach(json_object_get(root, "muscles"), k, item)
-    {
-        char name[256];
-        snprintf(name, sizeof name, "%s.total_force_N", json_string_value(json_object_get(item, "name")));
-        const double *force = column_of(&table, name);
-        double largest = force[0];
-        for (long row = 1; row < table.row_count; ++row) {
-            largest = fmax(largest, force[row]);
-        }
-        cr_assert_eq(largest, json_real_value(json_object_get(item, "peak_force_N")), "%s: %.17g in the CSV", name,
-                     largest);
-    }
-    json_array_foreach(json_object_get(root, "hinges"), k, item)
-    {
-        char name[256];
-        snprintf(name, sizeof name, "%s.angle_deg", json_string_value(json_object_get(item, "name")));
-        const double last = column_of(&table, name)[table.row_count - 1];
-        cr_assert_eq(last, json_real_value(json_object_get(item, "final_angle_deg")), "%s: %.17g in the CSV", name,
-                     last);
-    }
+    int muscles, hinges;
+    figures_are_the_csvs(root, &table, 0.0, &muscles, &hinges);
+    cr_assert(muscles > 0 && hinges > 0);
     csv_table_free(&table);
     json_decref(root);
     remove_in(dir, "arm.csv");

@@ -77,7 +77,9 @@ JSON
 [ "$(ls local/*.summary.json | wc -l)" = 6 ] || fail "the local sweep did not write 6 summaries"
 
 # The emitted script: 6 runs, 4 a task, so 2 tasks, the second with 2 runs.
-for out in by_hand by_slurm; do
+# The folder Slurm runs in has a space in its name, which the script's
+# #SBATCH lines must quote for sbatch.
+for out in by_hand "by slurm"; do
     "$sinew" sweep arm_sweep.json --out "$out" --emit slurm --chunk 4 > "$out.log" ||
         fail "--emit slurm failed: $(cat "$out.log")"
     bash -n "$out/sweep.sbatch" || fail "$out/sweep.sbatch is not valid bash"
@@ -171,13 +173,13 @@ echo "slurm: $(sinfo --noheader --format='%P %t %N %c CPUs')"
 
 # Polled every 0.2 s: `sbatch --wait` polls ever more slowly (10 s for
 # this job that takes well under one).
-job=$(sbatch --parsable by_slurm/sweep.sbatch) || fail "sbatch refused the script"
+job=$(sbatch --parsable "by slurm/sweep.sbatch") || fail "sbatch refused the script"
 for _ in $(seq 1 1000); do
     states=$(scontrol show job "$job" 2> /dev/null | grep -o 'JobState=[A-Z_]*' | sort -u | tr '\n' ' ')
     [ -n "$states" ] && ! grep -Eq 'PENDING|RUNNING|CONFIGURING|COMPLETING' <<< "$states" && break
     sleep 0.2
 done
-[ "$states" = "JobState=COMPLETED " ] || fail "the array job ended $states: $(cat by_slurm/slurm-*.out 2> /dev/null)"
-"$sinew" sweep arm_sweep.json --out by_slurm --gather > gather.log || fail "gathering failed: $(cat gather.log)"
-same_results local by_slurm '^(jobs.txt|sweep.sbatch|slurm-.*\.out)$'
+[ "$states" = "JobState=COMPLETED " ] || fail "the array job ended $states: $(cat "by slurm"/slurm-*.out 2> /dev/null)"
+"$sinew" sweep arm_sweep.json --out "by slurm" --gather > gather.log || fail "gathering failed: $(cat gather.log)"
+same_results local "by slurm" '^(jobs.txt|sweep.sbatch|slurm-.*\.out)$'
 echo "the sweep run by Slurm (2 array tasks) wrote the local sweep's files"

@@ -106,6 +106,9 @@ bool chart_figure_draw(const chart_figure *figure, cairo_t *cr, char *error, siz
  * no file behind and keeps an earlier one. */
 bool chart_write_png(const chart_figure *figure, const char *path, char *error, size_t error_size);
 bool chart_write_svg(const chart_figure *figure, const char *path, char *error, size_t error_size);
+/* chart_write_png for a command: false after printing "sinew: MESSAGE" on
+ * stderr. */
+bool chart_write_png_or_say(const chart_figure *figure, const char *path);
 /* Either, by the path's extension: ".png" or ".svg" (any case). */
 bool chart_write_file(const chart_figure *figure, const char *path, char *error, size_t error_size);
 

@@ -218,6 +218,16 @@ bool chart_write_png(const chart_figure *figure, const char *path, char *error, 
     return write_figure(figure, path, FILE_PNG, "chart_write_png", error, error_size);
 }
 
+bool chart_write_png_or_say(const chart_figure *figure, const char *path)
+{
+    char error[CHART_ERROR_SIZE];
+    const bool written = chart_write_png(figure, path, error, sizeof error);
+    if (!written) {
+        fprintf(stderr, "sinew: %s\n", error);
+    }
+    return written;
+}
+
 bool chart_write_svg(const chart_figure *figure, const char *path, char *error, size_t error_size)
 {
     return write_figure(figure, path, FILE_SVG, "chart_write_svg", error, error_size);

@@ -193,12 +193,7 @@ static bool write_figure(const char *path, const result *r, const mu_model *mode
          .series_count = angles},
     };
     const chart_figure figure = {.charts = charts, .chart_count = 2, .columns = 1, .width = 1000, .height = 1000};
-    char error[CHART_ERROR_SIZE];
-    const bool written = chart_write_png(&figure, path, error, sizeof error);
-    if (!written) {
-        fprintf(stderr, "sinew: %s\n", error);
-    }
-    return written;
+    return chart_write_png_or_say(&figure, path);
 }
 
 static json_t *inverse_settings(mu_model *model, const mu_model_options *options, const motion_analysis_options *opts,

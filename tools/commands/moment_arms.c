@@ -369,11 +369,7 @@ static bool write_figure(const char *path, const sweep *s, const mu_model *model
                             .series_count = muscles};
     }
     const chart_figure figure = {.charts = charts, .chart_count = 4, .columns = 2, .width = 1400, .height = 1000};
-    char error[CHART_ERROR_SIZE];
-    const bool written = chart_write_png(&figure, path, error, sizeof error);
-    if (!written) {
-        fprintf(stderr, "sinew: %s\n", error);
-    }
+    const bool written = chart_write_png_or_say(&figure, path);
     free(columns);
     free(series);
     return written;

@@ -21,6 +21,21 @@ void sweep_shell_word(FILE *stream, const char *text)
     fputc('\'', stream);
 }
 
+/* An #SBATCH option's value: sbatch reads these lines itself, not the
+ * shell, and takes a value in double quotes whole, spaces and all, with
+ * '\\' and '"' escaped by a backslash. */
+static void sbatch_value(FILE *stream, const char *text, const char *suffix)
+{
+    fputc('"', stream);
+    for (const char *c = text; *c != '\0'; ++c) {
+        if (*c == '"' || *c == '\\') {
+            fputc('\\', stream);
+        }
+        fputc(*c, stream);
+    }
+    fprintf(stream, "%s\"\n", suffix);
+}
+
 /* OUT/NAME, in `path`; false when it does not fit. */
 static bool out_path(const char *out_dir, const char *name, char *path, size_t size, char *error, size_t error_size)
 {
@@ -83,8 +98,10 @@ bool sweep_write_slurm_script(const sweep_plan *plan, int count, int chunk, cons
     fprintf(s, "#SBATCH --array=0-%d\n", tasks - 1);
     fputs("#SBATCH --ntasks=1\n", s);
     fputs("#SBATCH --cpus-per-task=1\n", s);
-    fprintf(s, "#SBATCH --chdir=%s\n", out_dir);
-    fprintf(s, "#SBATCH --output=%s/slurm-%%A_%%a.out\n", out_dir);
+    fputs("#SBATCH --chdir=", s);
+    sbatch_value(s, out_dir, "");
+    fputs("#SBATCH --output=", s);
+    sbatch_value(s, out_dir, "/slurm-%A_%a.out");
     fputs("set -u\n", s);
     fputs("jobs=", s);
     sweep_shell_word(s, jobs);
