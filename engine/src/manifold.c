@@ -15,20 +15,17 @@
 /* Below this centre distance two circles have no defined normal (m). */
 #define COINCIDENT_DISTANCE 1e-12
 
-rb_manifold rb_manifold_to_world(rb_manifold local, rb_transform xf)
+void rb_manifold_to_world(rb_manifold *m, rb_transform xf)
 {
-    rb_manifold m = local;
-    m.normal = rb_rotate(xf.q, local.normal);
-    for (int i = 0; i < m.point_count; ++i) {
-        m.points[i].point = rb_transform_point(xf, local.points[i].point);
+    m->normal = rb_rotate(xf.q, m->normal);
+    for (int i = 0; i < m->point_count; ++i) {
+        m->points[i].point = rb_transform_point(xf, m->points[i].point);
     }
-    return m;
 }
 
 void rb_manifold_add_point(rb_manifold *m, rb_vec2 point, double separation, uint32_t id)
 {
     rb_manifold_point *p = &m->points[m->point_count++];
-    *p = (rb_manifold_point){0};
     p->point = point;
     p->separation = separation;
     p->id = id;
@@ -56,6 +53,15 @@ rb_manifold rb_collide_circles(const rb_circle *a, rb_transform xfa, const rb_ci
 
 rb_manifold rb_collide_polygon_and_circle(const rb_polygon *a, rb_transform xfa, const rb_circle *b, rb_transform xfb,
                                           double speculative_distance)
+{
+    if (rb_polygon_is_box(a)) {
+        return rb_collide_box_and_circle(a, xfa, b, xfb, speculative_distance);
+    }
+    return rb_collide_convex_polygon_and_circle(a, xfa, b, xfb, speculative_distance);
+}
+
+rb_manifold rb_collide_convex_polygon_and_circle(const rb_polygon *a, rb_transform xfa, const rb_circle *b,
+                                                 rb_transform xfb, double speculative_distance)
 {
     rb_vec2 c = rb_inv_transform_point(xfa, rb_transform_point(xfb, b->center));
     double radius = b->radius;
@@ -102,19 +108,8 @@ rb_manifold rb_collide_polygon_and_circle(const rb_polygon *a, rb_transform xfa,
     m.normal = normal;
     rb_vec2 surface_b = rb_mul_sub(c, radius, normal);
     rb_manifold_add_point(&m, rb_lerp(surface_a, surface_b, 0.5), separation, 0);
-    return rb_manifold_to_world(m, xfa);
-}
-
-/* The polygon in its own frame: a copy, which no rotation can round. */
-static rb_placed_polygon polygon_in_own_frame(const rb_polygon *polygon)
-{
-    rb_placed_polygon placed;
-    placed.count = polygon->count;
-    for (int i = 0; i < polygon->count; ++i) {
-        placed.vertices[i] = polygon->vertices[i];
-        placed.normals[i] = polygon->normals[i];
-    }
-    return placed;
+    rb_manifold_to_world(&m, xfa);
+    return m;
 }
 
 rb_placed_polygon rb_place_polygon(const rb_polygon *polygon, rb_transform xf)
@@ -128,68 +123,61 @@ rb_placed_polygon rb_place_polygon(const rb_polygon *polygon, rb_transform xf)
     return placed;
 }
 
-/* The edge of `p` along whose normal `q` reaches least far below it:
- * the separation of the two polygons on that axis. */
-static double max_edge_separation(const rb_placed_polygon *p, const rb_placed_polygon *q, int *edge)
+/* The edge of `p` along whose normal `q` reaches least far below it,
+ * and the separation of the two outlines on that axis: the largest over
+ * p's edges of the smallest over q's vertices. */
+static rb_axis max_edge_separation(rb_outline p, rb_outline q)
 {
-    double best = -INFINITY;
-    *edge = 0;
-    for (int i = 0; i < p->count; ++i) {
+    rb_axis best = {0, -INFINITY};
+    for (int i = 0; i < p.count; ++i) {
         double deepest = INFINITY;
-        for (int j = 0; j < q->count; ++j) {
-            double s = rb_dot(p->normals[i], rb_sub(q->vertices[j], p->vertices[i]));
+        for (int j = 0; j < q.count; ++j) {
+            double s = rb_dot(p.normals[i], rb_sub(q.vertices[j], p.vertices[i]));
             deepest = s < deepest ? s : deepest;
         }
-        if (deepest > best) {
-            best = deepest;
-            *edge = i;
+        if (deepest > best.separation) {
+            best = (rb_axis){i, deepest};
         }
     }
     return best;
 }
 
-/* Keeps the part of segment `in` where dot(normal, p) <= offset, in the
- * segment's order. Returns the number of points kept (2 unless the
- * segment lies wholly outside). */
-static int clip_segment(const rb_vec2 in[2], rb_vec2 out[2], rb_vec2 normal, double offset)
+/* Keeps the part of the segment `ends` where dot(normal, p) <= offset,
+ * in the segment's order. False when the segment lies wholly outside. */
+static bool clip_segment(rb_vec2 ends[2], rb_vec2 normal, double offset)
 {
-    double d0 = rb_dot(normal, in[0]) - offset;
-    double d1 = rb_dot(normal, in[1]) - offset;
+    double d0 = rb_dot(normal, ends[0]) - offset;
+    double d1 = rb_dot(normal, ends[1]) - offset;
     if (d0 > 0.0 && d1 > 0.0) {
-        return 0;
+        return false;
     }
-    out[0] = in[0];
-    out[1] = in[1];
     if (d0 > 0.0) {
-        out[0] = rb_lerp(in[0], in[1], d0 / (d0 - d1));
+        ends[0] = rb_lerp(ends[0], ends[1], d0 / (d0 - d1));
     } else if (d1 > 0.0) {
-        out[1] = rb_lerp(in[0], in[1], d0 / (d0 - d1));
+        ends[1] = rb_lerp(ends[0], ends[1], d0 / (d0 - d1));
     }
-    return 2;
+    return true;
 }
 
-rb_edge rb_polygon_edge(const rb_placed_polygon *polygon, int i)
+rb_edge rb_polygon_edge(rb_outline outline, int i)
 {
-    int next = i + 1 < polygon->count ? i + 1 : 0;
-    return (rb_edge){polygon->vertices[i], polygon->vertices[next], i, next};
+    int next = i + 1 < outline.count ? i + 1 : 0;
+    return (rb_edge){outline.vertices[i], outline.vertices[next], i, next};
 }
 
-rb_manifold rb_clip_incident_edge(rb_edge reference, rb_vec2 reference_normal, rb_edge incident, bool flip,
-                                  double speculative_distance)
+void rb_clip_incident_edge(rb_edge reference, rb_vec2 reference_normal, rb_edge incident, bool flip,
+                           double speculative_distance, rb_manifold *m)
 {
-    rb_manifold m = {0};
     rb_vec2 tangent = rb_normalize(rb_sub(reference.v2, reference.v1));
-    rb_vec2 ends[2] = {incident.v1, incident.v2};
-    rb_vec2 clipped_once[2];
-    rb_vec2 clipped[2];
-    if (clip_segment(ends, clipped_once, rb_neg(tangent), -rb_dot(tangent, reference.v1)) < 2 ||
-        clip_segment(clipped_once, clipped, tangent, rb_dot(tangent, reference.v2)) < 2) {
-        return m;
+    rb_vec2 clipped[2] = {incident.v1, incident.v2};
+    if (!clip_segment(clipped, rb_neg(tangent), -rb_dot(tangent, reference.v1)) ||
+        !clip_segment(clipped, tangent, rb_dot(tangent, reference.v2))) {
+        return;
     }
 
     /* The manifold normal points from A to B. */
-    m.normal = flip ? rb_neg(reference_normal) : reference_normal;
-    m.reference_on_b = flip;
+    m->normal = flip ? rb_neg(reference_normal) : reference_normal;
+    m->reference_on_b = flip;
     /* The incident edge runs against the reference face: its first end
      * lies towards the face's second vertex, its second end towards the
      * first. */
@@ -204,51 +192,71 @@ rb_manifold rb_clip_incident_edge(rb_edge reference, rb_vec2 reference_normal, r
             rb_vec2 midpoint = rb_mul_sub(clipped[i], 0.5 * separation, reference_normal);
             uint32_t id = flip ? rb_feature_id(incident_vertex[i], reference_vertex[i])
                                : rb_feature_id(reference_vertex[i], incident_vertex[i]);
-            rb_manifold_add_point(&m, midpoint, separation, id);
+            rb_manifold_add_point(m, midpoint, separation, id);
         }
     }
-    return m;
 }
 
-rb_manifold rb_collide_placed_polygons(const rb_placed_polygon *pa, const rb_placed_polygon *pb,
-                                       double speculative_distance)
+void rb_manifold_from_axes(rb_outline a, rb_outline b, rb_axis axis_a, rb_axis axis_b, double speculative_distance,
+                           rb_manifold *m)
 {
-    rb_manifold m = {0};
-    int edge_a;
-    double separation_a = max_edge_separation(pa, pb, &edge_a);
-    if (separation_a > speculative_distance) {
-        return m;
-    }
-    int edge_b;
-    double separation_b = max_edge_separation(pb, pa, &edge_b);
-    if (separation_b > speculative_distance) {
-        return m;
-    }
-
-    bool flip = separation_b > separation_a + RB_REFERENCE_FACE_TOLERANCE;
-    const rb_placed_polygon *reference = flip ? pb : pa;
-    const rb_placed_polygon *incident = flip ? pa : pb;
-    int reference_edge = flip ? edge_b : edge_a;
-    rb_vec2 reference_normal = reference->normals[reference_edge];
+    bool flip = axis_b.separation > axis_a.separation + RB_REFERENCE_FACE_TOLERANCE;
+    rb_outline reference = flip ? b : a;
+    rb_outline incident = flip ? a : b;
+    int reference_edge = flip ? axis_b.edge : axis_a.edge;
+    rb_vec2 reference_normal = reference.normals[reference_edge];
 
     /* The incident edge: the one whose normal opposes the reference normal most. */
     int incident_edge = 0;
     double most_opposed = INFINITY;
-    for (int i = 0; i < incident->count; ++i) {
-        double d = rb_dot(reference_normal, incident->normals[i]);
+    for (int i = 0; i < incident.count; ++i) {
+        double d = rb_dot(reference_normal, incident.normals[i]);
         if (d < most_opposed) {
             most_opposed = d;
             incident_edge = i;
         }
     }
-    return rb_clip_incident_edge(rb_polygon_edge(reference, reference_edge), reference_normal,
-                                 rb_polygon_edge(incident, incident_edge), flip, speculative_distance);
+    rb_clip_incident_edge(rb_polygon_edge(reference, reference_edge), reference_normal,
+                          rb_polygon_edge(incident, incident_edge), flip, speculative_distance, m);
+}
+
+/* SAT over every edge of both outlines, stopping at the first outline
+ * whose best axis separates them. */
+static void collide_outlines(rb_outline a, rb_outline b, double speculative_distance, rb_manifold *m)
+{
+    rb_axis axis_a = max_edge_separation(a, b);
+    if (axis_a.separation > speculative_distance) {
+        return;
+    }
+    rb_axis axis_b = max_edge_separation(b, a);
+    if (axis_b.separation > speculative_distance) {
+        return;
+    }
+    rb_manifold_from_axes(a, b, axis_a, axis_b, speculative_distance, m);
+}
+
+void rb_collide_placed_polygons(const rb_placed_polygon *pa, const rb_placed_polygon *pb, double speculative_distance,
+                                rb_manifold *m)
+{
+    collide_outlines(rb_placed_outline(pa), rb_placed_outline(pb), speculative_distance, m);
 }
 
 rb_manifold rb_collide_polygons(const rb_polygon *a, rb_transform xfa, const rb_polygon *b, rb_transform xfb,
                                 double speculative_distance)
 {
-    rb_placed_polygon pa = polygon_in_own_frame(a);
+    if (rb_polygon_is_box(a)) {
+        return rb_collide_box_and_polygon(a, xfa, b, xfb, speculative_distance);
+    }
+    return rb_collide_convex_polygons(a, xfa, b, xfb, speculative_distance);
+}
+
+/* Shape A is read in its own frame as it is; B is placed in it. */
+rb_manifold rb_collide_convex_polygons(const rb_polygon *a, rb_transform xfa, const rb_polygon *b, rb_transform xfb,
+                                       double speculative_distance)
+{
     rb_placed_polygon pb = rb_place_polygon(b, rb_inv_mul_transforms(xfa, xfb));
-    return rb_manifold_to_world(rb_collide_placed_polygons(&pa, &pb, speculative_distance), xfa);
+    rb_manifold m = {0};
+    collide_outlines(rb_polygon_outline(a), rb_placed_outline(&pb), speculative_distance, &m);
+    rb_manifold_to_world(&m, xfa);
+    return m;
 }

@@ -25,11 +25,59 @@ typedef struct rb_placed_polygon {
 
 rb_placed_polygon rb_place_polygon(const rb_polygon *polygon, rb_transform xf);
 
-/* The manifold of two outlines given in the same frame (shape A's), in
- * that frame: the reference face on the axis of least penetration,
- * shape A's unless B's is deeper by RB_REFERENCE_FACE_TOLERANCE. */
-rb_manifold rb_collide_placed_polygons(const rb_placed_polygon *pa, const rb_placed_polygon *pb,
+/* An outline read where it lies, without a copy: a polygon in its own
+ * frame, or a placed polygon. */
+typedef struct rb_outline {
+    const rb_vec2 *vertices;
+    const rb_vec2 *normals;
+    int count;
+} rb_outline;
+
+static inline rb_outline rb_polygon_outline(const rb_polygon *polygon)
+{
+    return (rb_outline){polygon->vertices, polygon->normals, polygon->count};
+}
+
+static inline rb_outline rb_placed_outline(const rb_placed_polygon *placed)
+{
+    return (rb_outline){placed->vertices, placed->normals, placed->count};
+}
+
+/* An outline's best separating axis: the edge along whose normal the
+ * other outline reaches least far below it, and that separation (m). */
+typedef struct rb_axis {
+    int edge;
+    double separation;
+} rb_axis;
+
+/* The functions below that take `rb_manifold *m` write a manifold into
+ * one that starts zeroed (no points, no impulses), in the frame their
+ * arguments are given in. */
+
+/* The manifold of two outlines given in the same frame (shape A's), from
+ * each one's best axis (neither separating by more than the speculative
+ * distance): the reference face is on the axis of least penetration,
+ * shape A's unless B's is deeper by RB_REFERENCE_FACE_TOLERANCE; the
+ * incident edge is the other outline's edge most opposed to it, clipped
+ * to the face. */
+void rb_manifold_from_axes(rb_outline a, rb_outline b, rb_axis axis_a, rb_axis axis_b, double speculative_distance,
+                           rb_manifold *m);
+
+/* The manifold of two outlines given in the same frame (shape A's): both
+ * outlines' best axes by a search over every edge and vertex, then
+ * rb_manifold_from_axes. */
+void rb_collide_placed_polygons(const rb_placed_polygon *pa, const rb_placed_polygon *pb, double speculative_distance,
+                                rb_manifold *m);
+
+/* rb_collide_polygons for any two convex polygons: the reference that
+ * the box path (box_manifold.c) must reproduce. */
+rb_manifold rb_collide_convex_polygons(const rb_polygon *a, rb_transform xfa, const rb_polygon *b, rb_transform xfb,
                                        double speculative_distance);
+
+/* rb_collide_polygon_and_circle for any convex polygon: the reference
+ * of the box path. */
+rb_manifold rb_collide_convex_polygon_and_circle(const rb_polygon *a, rb_transform xfa, const rb_circle *b,
+                                                 rb_transform xfb, double speculative_distance);
 
 /* An edge of an outline: its two vertices in the outline's order, and
  * their indices in it, which name the vertices in feature ids. */
@@ -38,20 +86,37 @@ typedef struct rb_edge {
     int index1, index2;
 } rb_edge;
 
-/* Edge `i` of a polygon: from vertex i to the next. */
-rb_edge rb_polygon_edge(const rb_placed_polygon *polygon, int i);
+/* Edge `i` of an outline: from vertex i to the next. */
+rb_edge rb_polygon_edge(rb_outline outline, int i);
 
 /* Clips the incident edge to the side planes of the reference face
  * (outward normal `reference_normal`) and keeps the points within the
  * speculative distance of the face. `flip` says the reference face is
  * shape B's; the normal is then reversed, so it still points from A to
- * B. Empty when the incident edge misses the face. */
-rb_manifold rb_clip_incident_edge(rb_edge reference, rb_vec2 reference_normal, rb_edge incident, bool flip,
-                                  double speculative_distance);
+ * B. No points when the incident edge misses the face. */
+void rb_clip_incident_edge(rb_edge reference, rb_vec2 reference_normal, rb_edge incident, bool flip,
+                           double speculative_distance, rb_manifold *m);
 
+/* Adds a point to a manifold, its impulses left zero. */
 void rb_manifold_add_point(rb_manifold *m, rb_vec2 point, double separation, uint32_t id);
 
 /* Moves a manifold computed in xf's local frame to the world. */
-rb_manifold rb_manifold_to_world(rb_manifold local, rb_transform xf);
+void rb_manifold_to_world(rb_manifold *m, rb_transform xf);
+
+/* ---- boxes (box_manifold.c) ---- */
+
+/* Whether a polygon is a box the box path takes: four vertices on an
+ * axis-aligned rectangle of its own frame, counter-clockwise from the
+ * lower left corner, as rb_make_box and rb_make_offset_box at angle 0
+ * make them (a box turned in its body frame takes the general path). */
+bool rb_polygon_is_box(const rb_polygon *polygon);
+
+/* rb_collide_polygons and rb_collide_polygon_and_circle when shape A is
+ * a box (rb_polygon_is_box; B any convex polygon): the general path's
+ * manifold, bit for bit, for less work. */
+rb_manifold rb_collide_box_and_polygon(const rb_polygon *a, rb_transform xfa, const rb_polygon *b, rb_transform xfb,
+                                       double speculative_distance);
+rb_manifold rb_collide_box_and_circle(const rb_polygon *a, rb_transform xfa, const rb_circle *b, rb_transform xfb,
+                                      double speculative_distance);
 
 #endif

@@ -68,7 +68,8 @@ rb_manifold rb_collide_segment_and_circle(const rb_segment *a, rb_transform xfa,
         rb_vec2 normal = offset >= 0.0 ? left : rb_neg(left);
         m = circle_point(rb_mul_sub(c, fabs(offset), normal), normal, fabs(offset), c, b->radius, speculative_distance);
     }
-    return rb_manifold_to_world(m, xfa);
+    rb_manifold_to_world(&m, xfa);
+    return m;
 }
 
 /* The segment as a two-vertex outline in its own frame. */
@@ -88,7 +89,10 @@ rb_manifold rb_collide_segment_and_polygon(const rb_segment *a, rb_transform xfa
 {
     rb_placed_polygon pa = place_segment(a);
     rb_placed_polygon pb = rb_place_polygon(b, rb_inv_mul_transforms(xfa, xfb));
-    return rb_manifold_to_world(rb_collide_placed_polygons(&pa, &pb, speculative_distance), xfa);
+    rb_manifold m = {0};
+    rb_collide_placed_polygons(&pa, &pb, speculative_distance, &m);
+    rb_manifold_to_world(&m, xfa);
+    return m;
 }
 
 /* ---- chain segments -------------------------------------------------------- */
@@ -140,7 +144,8 @@ rb_manifold rb_collide_chain_segment_and_circle(const rb_chain_segment *a, rb_tr
     } else {
         m = circle_point(rb_mul_sub(c, offset, f.normal), f.normal, offset, c, b->radius, speculative_distance);
     }
-    return rb_manifold_to_world(m, xfa);
+    rb_manifold_to_world(&m, xfa);
+    return m;
 }
 
 /* Whether `n` (unit, from the segment to the other shape) is a normal
@@ -208,8 +213,8 @@ rb_manifold rb_collide_chain_segment_and_polygon(const rb_chain_segment *a, rb_t
     const rb_edge front = {f.p2, f.p1, 1, 0};
     if (polygon_separation > segment_separation + RB_REFERENCE_FACE_TOLERANCE &&
         admits_normal(a, &f, rb_neg(pb.normals[polygon_edge]))) {
-        m = rb_clip_incident_edge(rb_polygon_edge(&pb, polygon_edge), pb.normals[polygon_edge], front, true,
-                                  speculative_distance);
+        rb_clip_incident_edge(rb_polygon_edge(rb_placed_outline(&pb), polygon_edge), pb.normals[polygon_edge], front,
+                              true, speculative_distance, &m);
     } else {
         /* The incident edge: the polygon's edge most opposed to the front. */
         int incident_edge = 0;
@@ -221,7 +226,9 @@ rb_manifold rb_collide_chain_segment_and_polygon(const rb_chain_segment *a, rb_t
                 incident_edge = i;
             }
         }
-        m = rb_clip_incident_edge(front, f.normal, rb_polygon_edge(&pb, incident_edge), false, speculative_distance);
+        rb_clip_incident_edge(front, f.normal, rb_polygon_edge(rb_placed_outline(&pb), incident_edge), false,
+                              speculative_distance, &m);
     }
-    return rb_manifold_to_world(m, xfa);
+    rb_manifold_to_world(&m, xfa);
+    return m;
 }
