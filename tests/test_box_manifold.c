@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The box path of the narrow phase (engine/src/box_manifold.c) against
- * the general polygon path it stands in for (rb_collide_convex_polygons,
- * rb_collide_convex_polygon_and_circle in engine/src/manifold.c).
+ * the general polygon path it stands in for (rb_collide_convex_polygons
+ * in engine/src/manifold.c).
  *
  * The claim checked is the strongest there is: on every pose the two
  * paths give the same manifold to the bit (normal, points, separations,
@@ -332,32 +332,4 @@ Test(box_manifold, recognises_boxes_and_only_boxes)
     const rb_vec2 triangle[3] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
     cr_assert_eq(rb_make_polygon(triangle, 3, &p), RB_OK);
     cr_expect(!rb_polygon_is_box(&p), "a triangle is not a box");
-}
-
-Test(box_manifold, circle_path_matches_the_general_path)
-{
-    uint64_t rng = 2021;
-    coverage seen = {0};
-    for (int i = 0; i < 40000; ++i) {
-        rb_polygon a = random_box(&rng);
-        rb_circle b = {{uniform(&rng, -0.3, 0.3), uniform(&rng, -0.3, 0.3)}, uniform(&rng, 0.01, 1.5)};
-        rb_transform xfa = random_pose(&rng);
-        rb_transform xfb = {rb_add(xfa.p, rb_v2(uniform(&rng, -4.0, 4.0), uniform(&rng, -4.0, 4.0))),
-                            rb_rot_from_angle(uniform(&rng, -RB_PI, RB_PI))};
-        if (pick(&rng, 4) == 0) {
-            /* Centre exactly on a corner, on a face's plane, or at A's centre. */
-            rb_vec2 targets[3] = {a.vertices[pick(&rng, 4)], rb_lerp(a.vertices[0], a.vertices[1], 0.5),
-                                  rb_lerp(a.vertices[0], a.vertices[2], 0.5)};
-            xfb = (rb_transform){rb_transform_point(xfa, targets[pick(&rng, 3)]), {1.0, 0.0}};
-            b.center = rb_v2(0.0, 0.0);
-        }
-        double speculative = speculative_distances[pick(&rng, 3)];
-        rb_manifold fast = rb_collide_box_and_circle(&a, xfa, &b, xfb, speculative);
-        rb_manifold general = rb_collide_convex_polygon_and_circle(&a, xfa, &b, xfb, speculative);
-        expect_same_manifold(&fast, &general, "circle pose", i, &seen);
-        rb_manifold dispatched = rb_collide_polygon_and_circle(&a, xfa, &b, xfb, speculative);
-        expect_same_manifold(&dispatched, &general, "rb_collide_polygon_and_circle, circle pose", i, &seen);
-    }
-    cr_expect(seen.empty > 5000 && seen.one_point > 5000, "%d compared, %d empty, %d with a point", seen.compared,
-              seen.empty, seen.one_point);
 }

@@ -15,14 +15,6 @@
 /* Below this centre distance two circles have no defined normal (m). */
 #define COINCIDENT_DISTANCE 1e-12
 
-void rb_manifold_to_world(rb_manifold *m, rb_transform xf)
-{
-    m->normal = rb_rotate(xf.q, m->normal);
-    for (int i = 0; i < m->point_count; ++i) {
-        m->points[i].point = rb_transform_point(xf, m->points[i].point);
-    }
-}
-
 void rb_manifold_add_point(rb_manifold *m, rb_vec2 point, double separation, uint32_t id)
 {
     rb_manifold_point *p = &m->points[m->point_count++];
@@ -53,15 +45,6 @@ rb_manifold rb_collide_circles(const rb_circle *a, rb_transform xfa, const rb_ci
 
 rb_manifold rb_collide_polygon_and_circle(const rb_polygon *a, rb_transform xfa, const rb_circle *b, rb_transform xfb,
                                           double speculative_distance)
-{
-    if (rb_polygon_is_box(a)) {
-        return rb_collide_box_and_circle(a, xfa, b, xfb, speculative_distance);
-    }
-    return rb_collide_convex_polygon_and_circle(a, xfa, b, xfb, speculative_distance);
-}
-
-rb_manifold rb_collide_convex_polygon_and_circle(const rb_polygon *a, rb_transform xfa, const rb_circle *b,
-                                                 rb_transform xfb, double speculative_distance)
 {
     rb_vec2 c = rb_inv_transform_point(xfa, rb_transform_point(xfb, b->center));
     double radius = b->radius;
@@ -112,27 +95,16 @@ rb_manifold rb_collide_convex_polygon_and_circle(const rb_polygon *a, rb_transfo
     return m;
 }
 
-rb_placed_polygon rb_place_polygon(const rb_polygon *polygon, rb_transform xf)
-{
-    rb_placed_polygon placed;
-    placed.count = polygon->count;
-    for (int i = 0; i < polygon->count; ++i) {
-        placed.vertices[i] = rb_transform_point(xf, polygon->vertices[i]);
-        placed.normals[i] = rb_rotate(xf.q, polygon->normals[i]);
-    }
-    return placed;
-}
-
 /* The edge of `p` along whose normal `q` reaches least far below it,
  * and the separation of the two outlines on that axis: the largest over
  * p's edges of the smallest over q's vertices. */
-static rb_axis max_edge_separation(rb_outline p, rb_outline q)
+static rb_axis max_edge_separation(const rb_outline *p, const rb_outline *q)
 {
     rb_axis best = {0, -INFINITY};
-    for (int i = 0; i < p.count; ++i) {
+    for (int i = 0; i < p->count; ++i) {
         double deepest = INFINITY;
-        for (int j = 0; j < q.count; ++j) {
-            double s = rb_dot(p.normals[i], rb_sub(q.vertices[j], p.vertices[i]));
+        for (int j = 0; j < q->count; ++j) {
+            double s = rb_dot(p->normals[i], rb_sub(q->vertices[j], p->vertices[i]));
             deepest = s < deepest ? s : deepest;
         }
         if (deepest > best.separation) {
@@ -159,20 +131,27 @@ static bool clip_segment(rb_vec2 ends[2], rb_vec2 normal, double offset)
     return true;
 }
 
-rb_edge rb_polygon_edge(rb_outline outline, int i)
+rb_edge rb_polygon_edge(const rb_outline *outline, int i)
 {
-    int next = i + 1 < outline.count ? i + 1 : 0;
-    return (rb_edge){outline.vertices[i], outline.vertices[next], i, next};
+    int next = i + 1 < outline->count ? i + 1 : 0;
+    return (rb_edge){outline->vertices[i], outline->vertices[next], i, next};
 }
 
-void rb_clip_incident_edge(rb_edge reference, rb_vec2 reference_normal, rb_edge incident, bool flip,
-                           double speculative_distance, rb_manifold *m)
+/* rb_clip_incident_edge, which the polygon paths below call where the
+ * compiler can inline it. */
+static void clip_incident_edge(const rb_edge *reference, rb_vec2 reference_normal, const rb_edge *incident, bool flip,
+                               double speculative_distance, rb_manifold *m)
 {
-    rb_vec2 tangent = rb_normalize(rb_sub(reference.v2, reference.v1));
-    rb_vec2 clipped[2] = {incident.v1, incident.v2};
-    if (!clip_segment(clipped, rb_neg(tangent), -rb_dot(tangent, reference.v1)) ||
-        !clip_segment(clipped, tangent, rb_dot(tangent, reference.v2))) {
-        return;
+    rb_vec2 tangent = rb_normalize(rb_sub(reference->v2, reference->v1));
+    rb_vec2 clipped[2] = {incident->v1, incident->v2};
+    /* The side planes: beyond the first vertex against the tangent,
+     * beyond the second along it. */
+    const rb_vec2 side_normals[2] = {rb_neg(tangent), tangent};
+    const double side_offsets[2] = {-rb_dot(tangent, reference->v1), rb_dot(tangent, reference->v2)};
+    for (int k = 0; k < 2; ++k) {
+        if (!clip_segment(clipped, side_normals[k], side_offsets[k])) {
+            return;
+        }
     }
 
     /* The manifold normal points from A to B. */
@@ -181,10 +160,10 @@ void rb_clip_incident_edge(rb_edge reference, rb_vec2 reference_normal, rb_edge 
     /* The incident edge runs against the reference face: its first end
      * lies towards the face's second vertex, its second end towards the
      * first. */
-    const int incident_vertex[2] = {incident.index1, incident.index2};
-    const int reference_vertex[2] = {reference.index2, reference.index1};
+    const int incident_vertex[2] = {incident->index1, incident->index2};
+    const int reference_vertex[2] = {reference->index2, reference->index1};
     for (int i = 0; i < 2; ++i) {
-        double separation = rb_dot(reference_normal, rb_sub(clipped[i], reference.v1));
+        double separation = rb_dot(reference_normal, rb_sub(clipped[i], reference->v1));
         if (separation <= speculative_distance) {
             /* The clipped point lies on the incident surface; the
              * reference surface is `separation` behind it along the
@@ -197,32 +176,39 @@ void rb_clip_incident_edge(rb_edge reference, rb_vec2 reference_normal, rb_edge 
     }
 }
 
-void rb_manifold_from_axes(rb_outline a, rb_outline b, rb_axis axis_a, rb_axis axis_b, double speculative_distance,
-                           rb_manifold *m)
+void rb_clip_incident_edge(const rb_edge *reference, rb_vec2 reference_normal, const rb_edge *incident, bool flip,
+                           double speculative_distance, rb_manifold *m)
+{
+    clip_incident_edge(reference, reference_normal, incident, flip, speculative_distance, m);
+}
+
+void rb_manifold_from_axes(const rb_outline *a, const rb_outline *b, rb_axis axis_a, rb_axis axis_b,
+                           double speculative_distance, rb_manifold *m)
 {
     bool flip = axis_b.separation > axis_a.separation + RB_REFERENCE_FACE_TOLERANCE;
-    rb_outline reference = flip ? b : a;
-    rb_outline incident = flip ? a : b;
+    const rb_outline *reference = flip ? b : a;
+    const rb_outline *incident = flip ? a : b;
     int reference_edge = flip ? axis_b.edge : axis_a.edge;
-    rb_vec2 reference_normal = reference.normals[reference_edge];
+    rb_vec2 reference_normal = reference->normals[reference_edge];
 
     /* The incident edge: the one whose normal opposes the reference normal most. */
     int incident_edge = 0;
     double most_opposed = INFINITY;
-    for (int i = 0; i < incident.count; ++i) {
-        double d = rb_dot(reference_normal, incident.normals[i]);
+    for (int i = 0; i < incident->count; ++i) {
+        double d = rb_dot(reference_normal, incident->normals[i]);
         if (d < most_opposed) {
             most_opposed = d;
             incident_edge = i;
         }
     }
-    rb_clip_incident_edge(rb_polygon_edge(reference, reference_edge), reference_normal,
-                          rb_polygon_edge(incident, incident_edge), flip, speculative_distance, m);
+    rb_edge reference_face = rb_polygon_edge(reference, reference_edge);
+    rb_edge incident_face = rb_polygon_edge(incident, incident_edge);
+    clip_incident_edge(&reference_face, reference_normal, &incident_face, flip, speculative_distance, m);
 }
 
 /* SAT over every edge of both outlines, stopping at the first outline
  * whose best axis separates them. */
-static void collide_outlines(rb_outline a, rb_outline b, double speculative_distance, rb_manifold *m)
+static void collide_outlines(const rb_outline *a, const rb_outline *b, double speculative_distance, rb_manifold *m)
 {
     rb_axis axis_a = max_edge_separation(a, b);
     if (axis_a.separation > speculative_distance) {
@@ -238,7 +224,9 @@ static void collide_outlines(rb_outline a, rb_outline b, double speculative_dist
 void rb_collide_placed_polygons(const rb_placed_polygon *pa, const rb_placed_polygon *pb, double speculative_distance,
                                 rb_manifold *m)
 {
-    collide_outlines(rb_placed_outline(pa), rb_placed_outline(pb), speculative_distance, m);
+    rb_outline a = rb_placed_outline(pa);
+    rb_outline b = rb_placed_outline(pb);
+    collide_outlines(&a, &b, speculative_distance, m);
 }
 
 rb_manifold rb_collide_polygons(const rb_polygon *a, rb_transform xfa, const rb_polygon *b, rb_transform xfb,
@@ -254,9 +242,12 @@ rb_manifold rb_collide_polygons(const rb_polygon *a, rb_transform xfa, const rb_
 rb_manifold rb_collide_convex_polygons(const rb_polygon *a, rb_transform xfa, const rb_polygon *b, rb_transform xfb,
                                        double speculative_distance)
 {
-    rb_placed_polygon pb = rb_place_polygon(b, rb_inv_mul_transforms(xfa, xfb));
+    rb_placed_polygon pb;
+    rb_place_polygon(b, rb_inv_mul_transforms(xfa, xfb), &pb);
     rb_manifold m = {0};
-    collide_outlines(rb_polygon_outline(a), rb_placed_outline(&pb), speculative_distance, &m);
+    rb_outline outline_a = rb_polygon_outline(a);
+    rb_outline outline_b = rb_placed_outline(&pb);
+    collide_outlines(&outline_a, &outline_b, speculative_distance, &m);
     rb_manifold_to_world(&m, xfa);
     return m;
 }

@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* The pieces of the narrow phase that the polygon and the segment
+/* The pieces of the narrow phase that the polygon, box and segment
  * manifolds share: placing a polygon in another frame, SAT between two
- * placed convex outlines, and clipping an incident edge against a
- * reference face. */
+ * placed convex outlines, the manifold from their best axes, and
+ * clipping an incident edge against a reference face. */
 #ifndef RB_MANIFOLD_INTERNAL_H
 #define RB_MANIFOLD_INTERNAL_H
 
@@ -23,7 +23,16 @@ typedef struct rb_placed_polygon {
     int count;
 } rb_placed_polygon;
 
-rb_placed_polygon rb_place_polygon(const rb_polygon *polygon, rb_transform xf);
+/* The polygon placed by xf, written into `placed` (a copy of the
+ * whole struct would cost a fifth of a box's manifold). */
+static inline void rb_place_polygon(const rb_polygon *polygon, rb_transform xf, rb_placed_polygon *placed)
+{
+    placed->count = polygon->count;
+    for (int i = 0; i < polygon->count; ++i) {
+        placed->vertices[i] = rb_transform_point(xf, polygon->vertices[i]);
+        placed->normals[i] = rb_rotate(xf.q, polygon->normals[i]);
+    }
+}
 
 /* An outline read where it lies, without a copy: a polygon in its own
  * frame, or a placed polygon. */
@@ -60,8 +69,8 @@ typedef struct rb_axis {
  * shape A's unless B's is deeper by RB_REFERENCE_FACE_TOLERANCE; the
  * incident edge is the other outline's edge most opposed to it, clipped
  * to the face. */
-void rb_manifold_from_axes(rb_outline a, rb_outline b, rb_axis axis_a, rb_axis axis_b, double speculative_distance,
-                           rb_manifold *m);
+void rb_manifold_from_axes(const rb_outline *a, const rb_outline *b, rb_axis axis_a, rb_axis axis_b,
+                           double speculative_distance, rb_manifold *m);
 
 /* The manifold of two outlines given in the same frame (shape A's): both
  * outlines' best axes by a search over every edge and vertex, then
@@ -74,11 +83,6 @@ void rb_collide_placed_polygons(const rb_placed_polygon *pa, const rb_placed_pol
 rb_manifold rb_collide_convex_polygons(const rb_polygon *a, rb_transform xfa, const rb_polygon *b, rb_transform xfb,
                                        double speculative_distance);
 
-/* rb_collide_polygon_and_circle for any convex polygon: the reference
- * of the box path. */
-rb_manifold rb_collide_convex_polygon_and_circle(const rb_polygon *a, rb_transform xfa, const rb_circle *b,
-                                                 rb_transform xfb, double speculative_distance);
-
 /* An edge of an outline: its two vertices in the outline's order, and
  * their indices in it, which name the vertices in feature ids. */
 typedef struct rb_edge {
@@ -87,36 +91,48 @@ typedef struct rb_edge {
 } rb_edge;
 
 /* Edge `i` of an outline: from vertex i to the next. */
-rb_edge rb_polygon_edge(rb_outline outline, int i);
+rb_edge rb_polygon_edge(const rb_outline *outline, int i);
 
 /* Clips the incident edge to the side planes of the reference face
  * (outward normal `reference_normal`) and keeps the points within the
  * speculative distance of the face. `flip` says the reference face is
  * shape B's; the normal is then reversed, so it still points from A to
  * B. No points when the incident edge misses the face. */
-void rb_clip_incident_edge(rb_edge reference, rb_vec2 reference_normal, rb_edge incident, bool flip,
+void rb_clip_incident_edge(const rb_edge *reference, rb_vec2 reference_normal, const rb_edge *incident, bool flip,
                            double speculative_distance, rb_manifold *m);
 
 /* Adds a point to a manifold, its impulses left zero. */
 void rb_manifold_add_point(rb_manifold *m, rb_vec2 point, double separation, uint32_t id);
 
 /* Moves a manifold computed in xf's local frame to the world. */
-void rb_manifold_to_world(rb_manifold *m, rb_transform xf);
+static inline void rb_manifold_to_world(rb_manifold *m, rb_transform xf)
+{
+    m->normal = rb_rotate(xf.q, m->normal);
+    for (int i = 0; i < m->point_count; ++i) {
+        m->points[i].point = rb_transform_point(xf, m->points[i].point);
+    }
+}
 
 /* ---- boxes (box_manifold.c) ---- */
 
-/* Whether a polygon is a box the box path takes: four vertices on an
- * axis-aligned rectangle of its own frame, counter-clockwise from the
- * lower left corner, as rb_make_box and rb_make_offset_box at angle 0
- * make them (a box turned in its body frame takes the general path). */
-bool rb_polygon_is_box(const rb_polygon *polygon);
+/* Whether a polygon is a box the box path takes: four vertices in turn
+ * round an axis-aligned rectangle of its own frame, starting on a
+ * horizontal edge, with normals whose other component is exactly zero,
+ * as rb_make_box and rb_make_offset_box at angle 0 make them (a box
+ * turned in its body frame takes the general path). The comparisons are
+ * combined with & rather than &&: one branch instead of nine. */
+static inline bool rb_polygon_is_box(const rb_polygon *polygon)
+{
+    const rb_vec2 *v = polygon->vertices;
+    const rb_vec2 *n = polygon->normals;
+    return (polygon->count == 4) & (v[0].y == v[1].y) & (v[1].x == v[2].x) & (v[2].y == v[3].y) & (v[3].x == v[0].x) &
+           (n[0].x == 0.0) & (n[1].y == 0.0) & (n[2].x == 0.0) & (n[3].y == 0.0);
+}
 
-/* rb_collide_polygons and rb_collide_polygon_and_circle when shape A is
- * a box (rb_polygon_is_box; B any convex polygon): the general path's
- * manifold, bit for bit, for less work. */
+/* rb_collide_polygons when shape A is a box (rb_polygon_is_box; B any
+ * convex polygon): the general path's manifold, bit for bit, for less
+ * work. */
 rb_manifold rb_collide_box_and_polygon(const rb_polygon *a, rb_transform xfa, const rb_polygon *b, rb_transform xfb,
                                        double speculative_distance);
-rb_manifold rb_collide_box_and_circle(const rb_polygon *a, rb_transform xfa, const rb_circle *b, rb_transform xfb,
-                                      double speculative_distance);
 
 #endif

@@ -88,7 +88,8 @@ rb_manifold rb_collide_segment_and_polygon(const rb_segment *a, rb_transform xfa
                                            double speculative_distance)
 {
     rb_placed_polygon pa = place_segment(a);
-    rb_placed_polygon pb = rb_place_polygon(b, rb_inv_mul_transforms(xfa, xfb));
+    rb_placed_polygon pb;
+    rb_place_polygon(b, rb_inv_mul_transforms(xfa, xfb), &pb);
     rb_manifold m = {0};
     rb_collide_placed_polygons(&pa, &pb, speculative_distance, &m);
     rb_manifold_to_world(&m, xfa);
@@ -180,7 +181,8 @@ rb_manifold rb_collide_chain_segment_and_polygon(const rb_chain_segment *a, rb_t
 {
     chain_frame f = make_chain_frame(a);
     rb_transform relative = rb_inv_mul_transforms(xfa, xfb);
-    rb_placed_polygon pb = rb_place_polygon(b, relative);
+    rb_placed_polygon pb;
+    rb_place_polygon(b, relative, &pb);
     rb_manifold m = {0};
     if (rb_dot(f.normal, rb_sub(rb_transform_point(relative, b->centroid), f.p1)) < 0.0) {
         return m; /* behind a one-sided segment */
@@ -211,10 +213,11 @@ rb_manifold rb_collide_chain_segment_and_polygon(const rb_chain_segment *a, rb_t
 
     /* The front face is edge 1 of the two-vertex outline: point2 -> point1. */
     const rb_edge front = {f.p2, f.p1, 1, 0};
+    const rb_outline polygon = rb_placed_outline(&pb);
     if (polygon_separation > segment_separation + RB_REFERENCE_FACE_TOLERANCE &&
         admits_normal(a, &f, rb_neg(pb.normals[polygon_edge]))) {
-        rb_clip_incident_edge(rb_polygon_edge(rb_placed_outline(&pb), polygon_edge), pb.normals[polygon_edge], front,
-                              true, speculative_distance, &m);
+        rb_edge face = rb_polygon_edge(&polygon, polygon_edge);
+        rb_clip_incident_edge(&face, pb.normals[polygon_edge], &front, true, speculative_distance, &m);
     } else {
         /* The incident edge: the polygon's edge most opposed to the front. */
         int incident_edge = 0;
@@ -226,8 +229,8 @@ rb_manifold rb_collide_chain_segment_and_polygon(const rb_chain_segment *a, rb_t
                 incident_edge = i;
             }
         }
-        rb_clip_incident_edge(front, f.normal, rb_polygon_edge(rb_placed_outline(&pb), incident_edge), false,
-                              speculative_distance, &m);
+        rb_edge incident = rb_polygon_edge(&polygon, incident_edge);
+        rb_clip_incident_edge(&front, f.normal, &incident, false, speculative_distance, &m);
     }
     rb_manifold_to_world(&m, xfa);
     return m;
