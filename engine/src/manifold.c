@@ -8,7 +8,9 @@
  * speculative distance becomes a manifold point (Gottschalk 1996 for
  * SAT; face clipping as in Catto, "Contact Manifolds", GDC 2007).
  * Everything is computed in shape A's frame and moved to the world at
- * the end.
+ * the end. This search over every edge and vertex is the general path
+ * and the reference; when shape A is a box, box_manifold.c finds the
+ * same axes with less work and hands them to rb_manifold_from_axes.
  */
 #include "manifold_internal.h"
 
@@ -137,10 +139,8 @@ rb_edge rb_polygon_edge(const rb_outline *outline, int i)
     return (rb_edge){outline->vertices[i], outline->vertices[next], i, next};
 }
 
-/* rb_clip_incident_edge, which the polygon paths below call where the
- * compiler can inline it. */
-static void clip_incident_edge(const rb_edge *reference, rb_vec2 reference_normal, const rb_edge *incident, bool flip,
-                               double speculative_distance, rb_manifold *m)
+void rb_clip_incident_edge(const rb_edge *reference, rb_vec2 reference_normal, const rb_edge *incident, bool flip,
+                           double speculative_distance, rb_manifold *m)
 {
     rb_vec2 tangent = rb_normalize(rb_sub(reference->v2, reference->v1));
     rb_vec2 clipped[2] = {incident->v1, incident->v2};
@@ -176,12 +176,6 @@ static void clip_incident_edge(const rb_edge *reference, rb_vec2 reference_norma
     }
 }
 
-void rb_clip_incident_edge(const rb_edge *reference, rb_vec2 reference_normal, const rb_edge *incident, bool flip,
-                           double speculative_distance, rb_manifold *m)
-{
-    clip_incident_edge(reference, reference_normal, incident, flip, speculative_distance, m);
-}
-
 void rb_manifold_from_axes(const rb_outline *a, const rb_outline *b, rb_axis axis_a, rb_axis axis_b,
                            double speculative_distance, rb_manifold *m)
 {
@@ -203,7 +197,7 @@ void rb_manifold_from_axes(const rb_outline *a, const rb_outline *b, rb_axis axi
     }
     rb_edge reference_face = rb_polygon_edge(reference, reference_edge);
     rb_edge incident_face = rb_polygon_edge(incident, incident_edge);
-    clip_incident_edge(&reference_face, reference_normal, &incident_face, flip, speculative_distance, m);
+    rb_clip_incident_edge(&reference_face, reference_normal, &incident_face, flip, speculative_distance, m);
 }
 
 /* SAT over every edge of both outlines, stopping at the first outline

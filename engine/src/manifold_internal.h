@@ -119,14 +119,14 @@ static inline void rb_manifold_to_world(rb_manifold *m, rb_transform xf)
  * round an axis-aligned rectangle of its own frame, starting on a
  * horizontal edge, with normals whose other component is exactly zero,
  * as rb_make_box and rb_make_offset_box at angle 0 make them (a box
- * turned in its body frame takes the general path). The comparisons are
- * combined with & rather than &&: one branch instead of nine. */
+ * turned in its body frame takes the general path). Past the count, the
+ * comparisons are combined with & rather than &&: one branch, not eight. */
 static inline bool rb_polygon_is_box(const rb_polygon *polygon)
 {
     const rb_vec2 *v = polygon->vertices;
     const rb_vec2 *n = polygon->normals;
-    return (polygon->count == 4) & (v[0].y == v[1].y) & (v[1].x == v[2].x) & (v[2].y == v[3].y) & (v[3].x == v[0].x) &
-           (n[0].x == 0.0) & (n[1].y == 0.0) & (n[2].x == 0.0) & (n[3].y == 0.0);
+    return polygon->count == 4 && (v[0].y == v[1].y) & (v[1].x == v[2].x) & (v[2].y == v[3].y) & (v[3].x == v[0].x) &
+                                      (n[0].x == 0.0) & (n[1].y == 0.0) & (n[2].x == 0.0) & (n[3].y == 0.0);
 }
 
 /* rb_collide_polygons when shape A is a box (rb_polygon_is_box; B any
