@@ -464,8 +464,7 @@ void rb_joints_warm_start(rb_world *world, double h)
         prepare_frame(world, joint);
         switch (joint->type) {
         case RB_JOINT_REVOLUTE:
-            rb_point_constraint_prepare(world, joint, h);
-            rb_revolute_warm_start(world, joint);
+            rb_revolute_warm_start(world, joint, h);
             break;
         case RB_JOINT_WELD:
             rb_point_constraint_prepare(world, joint, h);

@@ -48,7 +48,11 @@ void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double 
     f->point_inverse11 = inverse_det * k->k22;
     f->point_inverse12 = -inverse_det * k->k12;
     f->point_inverse22 = inverse_det * k->k11;
+    rb_point_constraint_prepare_drift(world, joint, h);
+}
 
+void rb_point_constraint_prepare_drift(const rb_world *world, rb_joint *joint, double h)
+{
     /* Solve for the velocities that keep the anchors together at the end
      * of the substep, not just momentarily (SHAKE; Ryckaert, Ciccotti,
      * Berendsen, J. Comput. Phys. 23, 1977): the anchor offsets turn with
@@ -66,6 +70,7 @@ void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double 
      * capped at one linear slop per substep. The angular velocities are
      * the substep's starting ones (rb_joints_prepare recorded them before
      * any warm start), so the drift is fixed for the substep. */
+    rb_joint_frame *f = &joint->frame;
     const double omega_a = world->substep_omega[joint->body_a];
     const double omega_b = world->substep_omega[joint->body_b];
     rb_vec2 drift = rb_scale(0.5 * h, rb_sub(rb_scale(omega_b * omega_b, f->rb), rb_scale(omega_a * omega_a, f->ra)));
@@ -81,7 +86,6 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
     rb_body_state *a = rb_joint_state_a(world, joint);
     rb_body_state *b = rb_joint_state_b(world, joint);
     const rb_joint_frame *f = &joint->frame;
-    const rb_block_matrix k = f->point_mass;
     rb_vec2 drift = f->point_drift;
     const rb_rigid_response *response = &world->joint_response;
     rb_vec2 cdot = rb_sub(rb_joint_relative_velocity(joint, a, b), drift);
@@ -94,6 +98,7 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
     if (row != NULL) {
         /* The row is s·(ωB - ωA) + bias = 0 with s = ±1; in K its coupling
          * terms take the sign s. */
+        const rb_block_matrix k = f->point_mass;
         rb_block_matrix ks = k;
         ks.k13 *= row->sign;
         ks.k23 *= row->sign;

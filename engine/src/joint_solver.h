@@ -200,6 +200,9 @@ typedef struct rb_angular_row {
 /* Sets the frame's point_mass and point_drift for the substep; after
  * the frame is prepared, before any solve. */
 void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h);
+/* Sets only the frame's point_drift: what a pin its tree solves needs
+ * (joint_tree.h). */
+void rb_point_constraint_prepare_drift(const rb_world *world, rb_joint *joint, double h);
 /* Velocity solve of the pin (and the row, if not NULL) under the pass's
  * response; the row's bias is its own. */
 void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumulated, const rb_angular_row *row);
@@ -211,7 +214,9 @@ double rb_point_constraint_correct(rb_world *world, rb_joint *joint, const doubl
 /* ---- the types ------------------------------------------------------------ */
 
 void rb_revolute_prepare_step(rb_joint *joint);
-void rb_revolute_warm_start(rb_world *world, rb_joint *joint);
+/* Prepares the pin for the substep of length h (joint_point.c), then
+ * warm starts it. */
+void rb_revolute_warm_start(rb_world *world, rb_joint *joint, double h);
 void rb_revolute_solve(rb_world *world, rb_joint *joint, double h);
 bool rb_revolute_correct(rb_world *world, rb_joint *joint);
 double rb_revolute_angle_error(const rb_world *world, const rb_joint *joint);

@@ -176,6 +176,10 @@ static int add_node(rb_world *world, int body, int joint, int parent)
     node->joint = joint;
     node->parent = parent;
     node->dim = body >= 0 ? 3 : 2;
+    if (parent >= 0) { /* the edge's pin and body: one is the node, the other its parent */
+        const rb_tree_node *up = &tree->nodes[parent];
+        node->edge_on_b = (body >= 0 ? body : up->body) == world->joints[joint >= 0 ? joint : up->joint].body_b;
+    }
     if (body >= 0) {
         tree->body_node[body] = index;
         node->mass = 1.0 / world->bodies[body].inv_mass; /* finite: the body moves freely */
@@ -277,13 +281,11 @@ void rb_joint_tree_build(rb_world *world)
 
 /* s and r of the edge between node `n` and its parent, r the pin's
  * offset (measured before factoring) on the edge's body. */
-static void edge(const rb_world *world, const rb_tree_node *node, const rb_tree_node *parent, double *s, rb_vec2 *r)
+static void edge(const rb_tree_node *node, const rb_tree_node *parent, double *s, rb_vec2 *r)
 {
     const rb_tree_node *pin = node->joint >= 0 ? node : parent;
-    const int b = node->body >= 0 ? node->body : parent->body;
-    const bool on_b = b == world->joints[pin->joint].body_b;
-    *s = on_b ? 1.0 : -1.0;
-    *r = on_b ? pin->rb : pin->ra;
+    *s = node->edge_on_b ? 1.0 : -1.0;
+    *r = node->edge_on_b ? pin->rb : pin->ra;
 }
 
 /* A pin's anchor offsets at the bodies' poses now. */
@@ -390,7 +392,7 @@ static bool factor(rb_world *world)
         rb_tree_node *parent = &tree->nodes[node->parent];
         double s;
         rb_vec2 r;
-        edge(world, node, parent, &s, &r);
+        edge(node, parent, &s, &r);
         if (node->body >= 0) {
             eliminate_body(node, parent, s, r);
         } else {
@@ -458,8 +460,11 @@ void rb_joint_tree_factor_velocities(rb_world *world)
 {
     rb_joint_tree *tree = &world->joint_tree;
     for (int n = 0; n < tree->node_count; ++n) {
-        if (tree->nodes[n].joint >= 0) {
-            measure_offsets(world, &tree->nodes[n]); /* the substep's, as the pins' frames will hold them */
+        rb_tree_node *node = &tree->nodes[n];
+        if (node->joint >= 0) { /* the substep's offsets, which the pin's frame holds */
+            const rb_joint_frame *f = &world->joints[node->joint].frame;
+            node->ra = f->ra;
+            node->rb = f->rb;
         }
     }
     tree->pose_factors = false;

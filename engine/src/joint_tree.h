@@ -80,7 +80,8 @@
 void rb_joint_tree_build(rb_world *world);
 
 /* Factors the trees at the substep's anchors: the pins' offsets at the
- * poses at the substep's start, the ones the pins' frames hold. */
+ * poses at the substep's start, which their frames hold once the joints
+ * are prepared for the substep (rb_joints_warm_start). */
 void rb_joint_tree_factor_velocities(rb_world *world);
 
 /* One velocity pass over the trees' pins: the impulses that make every

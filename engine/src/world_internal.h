@@ -293,8 +293,9 @@ typedef struct rb_cable {
  * the bookkeeping of the pool and the bodies' lists last. */
 typedef struct rb_joint {
     rb_joint_type type;
-    bool in_tree; /* this step, a pin solved with its tree (joint_tree.h) */
-    int body_a;   /* -1 for a mouse joint */
+    bool in_tree;   /* this step, a pin solved with its tree (joint_tree.h) */
+    bool plain_pin; /* this step, a revolute joint with no limit, motor or spring: the point constraint alone */
+    int body_a;     /* -1 for a mouse joint */
     int body_b;
     rb_joint_frame frame;
     union {
@@ -320,6 +321,7 @@ typedef struct rb_tree_node {
     int joint;            /* joint slot, or -1 for a body */
     int parent;           /* node index, -1 for a root */
     int dim;              /* 3 for a body (vx, vy, ω), 2 for a pin (its impulse) */
+    bool edge_on_b;       /* the edge to the parent joins a pin to its body B (else to its body A) */
     double pivot[9];      /* D(node), dim × dim, summed from its children */
     double dinv[9];       /* D(node)⁻¹ */
     double x[6];          /* D(node)⁻¹·H(node, parent) */
