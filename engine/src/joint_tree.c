@@ -220,11 +220,47 @@ static void grow_tree(rb_world *world, int root)
     }
 }
 
+static bool in_a_tree(const rb_joint_tree *tree, int body) { return body >= 0 && tree->body_node[body] >= 0; }
+
+/* Whether no row but the trees' own pins acts on a body in a tree this
+ * step: no other joint, no motor or spring of a pin in a tree, no cable,
+ * no contact with a manifold point. A velocity pass then solves the trees
+ * exactly, and the substep's further passes would find only rounding
+ * left to correct. */
+static bool trees_alone(const rb_world *world)
+{
+    const rb_joint_tree *tree = &world->joint_tree;
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        const rb_joint *joint = &world->joints[world->active_joints[k]];
+        bool its_pin_only = joint->in_tree && joint->plain_pin;
+        if (!its_pin_only && (in_a_tree(tree, joint->body_a) || in_a_tree(tree, joint->body_b))) {
+            return false;
+        }
+    }
+    for (int i = 0; i < world->cable_slots; ++i) {
+        const rb_cable *cable = &world->cables[i];
+        for (int p = 0; cable->in_use && p < cable->point_count; ++p) {
+            if (in_a_tree(tree, cable->bodies[p])) {
+                return false;
+            }
+        }
+    }
+    for (int i = 0; i < world->contact_count; ++i) {
+        const rb_contact *contact = &world->contacts[i];
+        if (contact->manifold.point_count > 0 &&
+            (in_a_tree(tree, contact->body_a) || in_a_tree(tree, contact->body_b))) {
+            return false;
+        }
+    }
+    return true;
+}
+
 void rb_joint_tree_build(rb_world *world)
 {
     rb_joint_tree *tree = &world->joint_tree;
     tree->node_count = 0;
     tree->pose_factors = false;
+    tree->alone = false;
     if (!clear_and_find_uneven(world) || !tree->enabled) {
         return;
     }
@@ -263,6 +299,7 @@ void rb_joint_tree_build(rb_world *world)
             grow_tree(world, add_node(world, joint->body_a, -1, -1));
         }
     }
+    tree->alone = trees_alone(world);
 }
 
 /* ---- factor and solve ----------------------------------------------------- */
@@ -469,14 +506,16 @@ void rb_joint_tree_factor_velocities(rb_world *world)
     }
     tree->pose_factors = false;
     tree->velocity_factors = tree->node_count > 0 && factor(world);
+    tree->solved = false;
 }
 
 void rb_joint_tree_solve_velocities(rb_world *world)
 {
     rb_joint_tree *tree = &world->joint_tree;
-    if (!tree->velocity_factors) {
+    if (!tree->velocity_factors || (tree->alone && tree->solved)) {
         return;
     }
+    tree->solved = true;
     const rb_rigid_response *response = &world->joint_response;
     for (int n = 0; n < tree->node_count; ++n) {
         rb_tree_node *node = &tree->nodes[n];

@@ -336,6 +336,8 @@ typedef struct rb_joint_tree {
     bool enabled;          /* set by the solvers that use it (NGS, soft step) */
     bool velocity_factors; /* the nodes hold this substep's velocity factors */
     bool pose_factors;     /* the nodes hold factors at the bodies' current poses */
+    bool alone;            /* this step, no row outside the trees acts on a body in them */
+    bool solved;           /* this substep's velocity pass has solved the trees */
     rb_tree_node *nodes;   /* breadth first from each root: a parent before its children */
     int node_count, node_capacity;
     int *body_node; /* per body slot: its node, or -1 */
