@@ -86,13 +86,8 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
     rb_body_state *a = rb_joint_state_a(world, joint);
     rb_body_state *b = rb_joint_state_b(world, joint);
     const rb_joint_frame *f = &joint->frame;
-    rb_vec2 drift = f->point_drift;
     const rb_rigid_response *response = &world->joint_response;
-    rb_vec2 cdot = rb_sub(rb_joint_relative_velocity(joint, a, b), drift);
-    if (response->bias_rate > 0.0) {
-        rb_vec2 gap = rb_sub(rb_add(b->center, f->rb), rb_add(a->center, f->ra));
-        cdot = rb_mul_add(cdot, response->bias_rate, gap);
-    }
+    rb_vec2 cdot = rb_point_velocity_error(world, joint, a, b);
 
     rb_vec2 impulse;
     if (row != NULL) {
@@ -121,13 +116,7 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
             return;
         }
     }
-    /* The pin alone: x = -K⁻¹·Cdot with the substep's inverse (0 when K
-     * is singular, which only two bodies that cannot move make). */
-    impulse = rb_v2(-(f->point_inverse11 * cdot.x + f->point_inverse12 * cdot.y),
-                    -(f->point_inverse12 * cdot.x + f->point_inverse22 * cdot.y));
-    impulse = rb_soften(response, impulse, *accumulated);
-    *accumulated = rb_add(*accumulated, impulse);
-    rb_joint_apply_linear(joint, a, b, impulse);
+    rb_point_alone_solve(world, joint, a, b, cdot, accumulated);
 }
 
 double rb_point_constraint_correct(rb_world *world, rb_joint *joint, const double *angle_error)

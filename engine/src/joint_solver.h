@@ -197,6 +197,38 @@ typedef struct rb_angular_row {
     bool one_sided;
 } rb_angular_row;
 
+/* The point's velocity error in a pass: Cdot less the substep's
+ * centripetal drift (rb_point_constraint_prepare_drift), plus the
+ * response's bias on the anchors' gap at the current poses. */
+static inline rb_vec2 rb_point_velocity_error(const rb_world *world, const rb_joint *joint, const rb_body_state *a,
+                                              const rb_body_state *b)
+{
+    const rb_joint_frame *f = &joint->frame;
+    rb_vec2 cdot = rb_sub(rb_joint_relative_velocity(joint, a, b), f->point_drift);
+    const rb_rigid_response *response = &world->joint_response;
+    if (response->bias_rate > 0.0) {
+        rb_vec2 gap = rb_sub(rb_add(b->center, f->rb), rb_add(a->center, f->ra));
+        cdot = rb_mul_add(cdot, response->bias_rate, gap);
+    }
+    return cdot;
+}
+
+/* The pin alone, for its velocity error cdot: x = -K⁻¹·cdot with the
+ * substep's inverse (0 when K is singular, which only two bodies that
+ * cannot move make), as the pass's response delivers it, added to
+ * *accumulated and applied at the anchors. Inline: the joint grid's and
+ * the chains' pins run it in every velocity pass. */
+static inline void rb_point_alone_solve(const rb_world *world, const rb_joint *joint, rb_body_state *a,
+                                        rb_body_state *b, rb_vec2 cdot, rb_vec2 *accumulated)
+{
+    const rb_joint_frame *f = &joint->frame;
+    rb_vec2 impulse = rb_v2(-(f->point_inverse11 * cdot.x + f->point_inverse12 * cdot.y),
+                            -(f->point_inverse12 * cdot.x + f->point_inverse22 * cdot.y));
+    impulse = rb_soften(&world->joint_response, impulse, *accumulated);
+    *accumulated = rb_add(*accumulated, impulse);
+    rb_joint_apply_linear(joint, a, b, impulse);
+}
+
 /* Sets the frame's point_mass and point_drift for the substep; after
  * the frame is prepared, before any solve. */
 void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h);

@@ -516,22 +516,15 @@ void rb_joint_tree_solve_velocities(rb_world *world)
         return;
     }
     tree->solved = true;
-    const rb_rigid_response *response = &world->joint_response;
     for (int n = 0; n < tree->node_count; ++n) {
         rb_tree_node *node = &tree->nodes[n];
         if (node->joint < 0) {
             memset(node->value, 0, sizeof node->value);
             continue;
         }
-        rb_joint *joint = &world->joints[node->joint];
-        const rb_joint_frame *f = &joint->frame;
-        rb_body_state *a = rb_joint_state_a(world, joint);
-        rb_body_state *b = rb_joint_state_b(world, joint);
-        rb_vec2 cdot = rb_sub(rb_joint_relative_velocity(joint, a, b), f->point_drift);
-        if (response->bias_rate > 0.0) {
-            rb_vec2 gap = rb_sub(rb_add(b->center, f->rb), rb_add(a->center, f->ra));
-            cdot = rb_mul_add(cdot, response->bias_rate, gap);
-        }
+        const rb_joint *joint = &world->joints[node->joint];
+        rb_vec2 cdot =
+            rb_point_velocity_error(world, joint, rb_joint_state_a(world, joint), rb_joint_state_b(world, joint));
         node->value[0] = cdot.x;
         node->value[1] = cdot.y;
     }
