@@ -243,15 +243,17 @@ static void solve_limits(rb_world *world, rb_joint *joint, rb_body_state *a, rb_
 void rb_revolute_solve(rb_world *world, rb_joint *joint, double h)
 {
     rb_revolute_data *r = &joint->as.revolute;
-    rb_body_state *a = rb_joint_state_a(world, joint);
-    rb_body_state *b = rb_joint_state_b(world, joint);
     if (joint->plain_pin) {
         /* The point alone, unless its tree solves it. */
         if (!joint->in_tree) {
+            rb_body_state *a = rb_joint_state_a(world, joint);
+            rb_body_state *b = rb_joint_state_b(world, joint);
             rb_point_alone_solve(world, joint, a, b, rb_point_velocity_error(world, joint, a, b), &r->point_impulse);
         }
         return;
     }
+    rb_body_state *a = rb_joint_state_a(world, joint);
+    rb_body_state *b = rb_joint_state_b(world, joint);
     if (r->axial_mass > 0.0) {
         double angle = rb_joint_relative_angle(world, joint, r->reference_angle);
         if (r->enable_spring && r->spring_hertz > 0.0) {
