@@ -244,12 +244,11 @@ void rb_revolute_solve(rb_world *world, rb_joint *joint, double h)
 {
     rb_revolute_data *r = &joint->as.revolute;
     if (joint->plain_pin) {
-        /* The point alone, unless its tree solves it. */
-        if (!joint->in_tree) {
-            rb_body_state *a = rb_joint_state_a(world, joint);
-            rb_body_state *b = rb_joint_state_b(world, joint);
-            rb_point_alone_solve(world, joint, a, b, rb_point_velocity_error(world, joint, a, b), &r->point_impulse);
-        }
+        /* The point alone (a plain pin its tree solves is not visited:
+         * rb_joints_solve_velocities). */
+        rb_body_state *a = rb_joint_state_a(world, joint);
+        rb_body_state *b = rb_joint_state_b(world, joint);
+        rb_point_alone_solve(world, joint, a, b, rb_point_velocity_error(world, joint, a, b), &r->point_impulse);
         return;
     }
     rb_body_state *a = rb_joint_state_a(world, joint);

@@ -273,7 +273,9 @@ void rb_joint_tree_build(rb_world *world)
     }
     int pins = choose_pins(world);
     /* A forest of `pins` edges has at most 2·pins bodies. */
-    if (pins == 0 || rb_grow_array((void **)&tree->nodes, &tree->node_capacity, 3 * pins, sizeof(rb_tree_node)) != 0) {
+    if (pins == 0 || rb_grow_array((void **)&tree->nodes, &tree->node_capacity, 3 * pins, sizeof(rb_tree_node)) != 0 ||
+        rb_grow_array((void **)&tree->gauss_seidel_joints, &tree->gauss_seidel_capacity, world->active_joint_count,
+                      sizeof(int)) != 0) {
         for (int k = 0; k < world->active_joint_count; ++k) {
             world->joints[world->active_joints[k]].in_tree = false;
         }
@@ -297,6 +299,13 @@ void rb_joint_tree_build(rb_world *world)
         bool both_move = moves_freely(f->inv_mass_a, f->inv_inertia_a) && moves_freely(f->inv_mass_b, f->inv_inertia_b);
         if (joint->in_tree && both_move && tree->body_node[joint->body_a] < 0) {
             grow_tree(world, add_node(world, joint->body_a, -1, -1));
+        }
+    }
+    tree->gauss_seidel_count = 0;
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        const rb_joint *joint = &world->joints[world->active_joints[k]];
+        if (!(joint->in_tree && joint->plain_pin)) {
+            tree->gauss_seidel_joints[tree->gauss_seidel_count++] = world->active_joints[k];
         }
     }
     tree->alone = trees_alone(world);
@@ -700,5 +709,6 @@ void rb_joint_tree_free(rb_world *world)
     rb_free_array((void **)&tree->union_parent, &tree->union_capacity, sizeof(int));
     rb_free_array((void **)&tree->grounded, &tree->grounded_capacity, 1);
     rb_free_array((void **)&tree->mass_range, &tree->mass_range_capacity, sizeof(double));
+    rb_free_array((void **)&tree->gauss_seidel_joints, &tree->gauss_seidel_capacity, sizeof(int));
     tree->node_count = 0;
 }

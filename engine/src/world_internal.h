@@ -348,6 +348,10 @@ typedef struct rb_joint_tree {
     int grounded_capacity;
     double *mass_range; /* per union root: its lightest and heaviest body's mass, kg */
     int mass_range_capacity;
+    /* While there are nodes: this step's active joints less the plain
+     * pins the trees solve, the joints the Gauss-Seidel passes visit. */
+    int *gauss_seidel_joints;
+    int gauss_seidel_count, gauss_seidel_capacity;
 } rb_joint_tree;
 
 struct rb_world {
