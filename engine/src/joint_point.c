@@ -38,16 +38,30 @@ static void apply(const rb_joint *joint, rb_body_state *a, rb_body_state *b, rb_
     rb_joint_apply_angular(joint, a, b, angular);
 }
 
-void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h)
+/* The inverse of K's upper-left 2x2, the pin alone, or all 0 when that
+ * is singular. */
+static void set_point_inverse(rb_joint_frame *f, const rb_block_matrix *k)
 {
-    rb_joint_frame *f = &joint->frame;
-    f->point_mass = make_mass_matrix(f, f->ra, f->rb);
-    const rb_block_matrix *k = &f->point_mass;
     double det = k->k11 * k->k22 - k->k12 * k->k12;
     double inverse_det = det > 0.0 ? 1.0 / det : 0.0;
     f->point_inverse11 = inverse_det * k->k22;
     f->point_inverse12 = -inverse_det * k->k12;
     f->point_inverse22 = inverse_det * k->k11;
+}
+
+void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h)
+{
+    rb_joint_frame *f = &joint->frame;
+    f->point_mass = make_mass_matrix(f, f->ra, f->rb);
+    set_point_inverse(f, &f->point_mass);
+    rb_point_constraint_prepare_drift(world, joint, h);
+}
+
+void rb_point_alone_prepare(const rb_world *world, rb_joint *joint, double h)
+{
+    rb_joint_frame *f = &joint->frame;
+    const rb_block_matrix k = make_mass_matrix(f, f->ra, f->rb);
+    set_point_inverse(f, &k);
     rb_point_constraint_prepare_drift(world, joint, h);
 }
 

@@ -190,7 +190,7 @@ void rb_revolute_warm_start(rb_world *world, rb_joint *joint, double h)
         if (joint->in_tree) {
             rb_point_constraint_prepare_drift(world, joint, h);
         } else {
-            rb_point_constraint_prepare(world, joint, h);
+            rb_point_alone_prepare(world, joint, h);
         }
         rb_joint_apply_linear(joint, a, b, r->point_impulse);
         return;

@@ -233,6 +233,10 @@ static inline void rb_point_alone_solve(const rb_world *world, const rb_joint *j
 /* Sets the frame's point_mass and point_drift for the substep; after
  * the frame is prepared, before any solve. */
 void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h);
+/* Sets the frame's point inverse and point_drift, not point_mass: what
+ * a pin without an angular row reads (rb_point_alone_solve), with one
+ * cache line less written a pin a substep. */
+void rb_point_alone_prepare(const rb_world *world, rb_joint *joint, double h);
 /* Sets only the frame's point_drift: what a pin its tree solves needs
  * (joint_tree.h). */
 void rb_point_constraint_prepare_drift(const rb_world *world, rb_joint *joint, double h);
