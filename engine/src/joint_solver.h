@@ -42,11 +42,12 @@ void rb_joints_prepare(rb_world *world);
 void rb_joints_warm_start(rb_world *world, double h);
 /* One pass over the joints, in creation order or (backwards) the reverse,
  * but for the plain pins their trees solve (joint_tree.h), which both
- * passes leave to the trees. NGS and Baumgarte alternate: in a chain an impulse travels one joint per
- * pass in the pass's direction, so alternating sweeps (symmetric
- * Gauss-Seidel) carry both ends' information in half the passes; a 10-link
- * chain's worst gap at 60 Hz drops from 8.3 to 5.6 mm at the same cost.
- * The soft step sweeps one way only (solver_soft_step.c). */
+ * passes leave to the trees. NGS and Baumgarte alternate: in a chain an
+ * impulse travels one joint per pass in the pass's direction, so
+ * alternating sweeps (symmetric Gauss-Seidel) carry both ends'
+ * information in half the passes; a 10-link chain's worst gap at 60 Hz
+ * drops from 8.3 to 5.6 mm at the same cost. The soft step sweeps one way
+ * only (solver_soft_step.c). */
 void rb_joints_solve_velocities(rb_world *world, double h, bool backwards);
 /* One NGS pass, in either order; returns whether every joint was within
  * its tolerance. */
