@@ -56,9 +56,10 @@ static void pin(tree_scene *scene, rb_body_id a, rb_body_id b, rb_vec2 anchor)
 }
 
 /* Body 0 pinned to the ground; bodies 1, 2, 3 pinned to body 0 (a
- * branch); 4, 5, 6 a chain from body 1; 7 pinned to body 6, to the ground
- * again (a loop through the ground) and to body 2 (a loop). */
-static tree_scene make_tree(void)
+ * branch); 4, 5, 6 a chain from body 1; 7 pinned to body 6 and, with
+ * `loops`, to the ground again (a loop through the ground) and to body 2
+ * (a loop). */
+static tree_scene make_tree_with(bool loops)
 {
     tree_scene scene = {.world = make_world(rb_v2(0.0, -9.8))};
     rb_body_def ground = rb_default_body_def();
@@ -75,8 +76,10 @@ static tree_scene make_tree(void)
     pin(&scene, scene.bodies[4], scene.bodies[5], rb_v2(2.2, 0.2));
     pin(&scene, scene.bodies[5], scene.bodies[6], rb_v2(2.7, 0.0));
     pin(&scene, scene.bodies[6], scene.bodies[7], rb_v2(3.3, 0.3));
-    pin(&scene, scene.ground, scene.bodies[7], rb_v2(3.6, 0.2));
-    pin(&scene, scene.bodies[2], scene.bodies[7], rb_v2(3.4, 0.1));
+    if (loops) {
+        pin(&scene, scene.ground, scene.bodies[7], rb_v2(3.6, 0.2));
+        pin(&scene, scene.bodies[2], scene.bodies[7], rb_v2(3.4, 0.1));
+    }
     /* Velocities the pins do not allow. */
     for (int i = 0; i < BODIES; ++i) {
         cr_assert_eq(rb_body_set_linear_velocity(scene.world, scene.bodies[i], rb_v2(sin(1.7 * i), cos(2.3 * i))),
@@ -85,6 +88,8 @@ static tree_scene make_tree(void)
     }
     return scene;
 }
+
+static tree_scene make_tree(void) { return make_tree_with(true); }
 
 /* The solver's set-up of one substep of h, as rb_solver_sequential_substep
  * does it, with the trees on (NGS). */
@@ -95,8 +100,8 @@ static void prepare(rb_world *world, double h)
     world->joint_response = (rb_rigid_response){.mass_scale = 1.0};
     rb_joints_prepare(world);
     rb_joint_tree_build(world);
-    rb_joint_tree_factor_velocities(world);
     rb_joints_warm_start(world, h); /* the frames; the impulses are still 0 */
+    rb_joint_tree_factor_velocities(world);
 }
 
 static rb_joint *joint_of(rb_world *world, rb_joint_id id) { return &world->joints[id.index]; }
@@ -159,6 +164,47 @@ Test(joint_tree, one_velocity_pass_meets_every_pin_with_the_pins_impulses)
         expect_vec_near(momentum, force, 1e-9 * (1.0 + rb_length(force)), "a body's momentum change");
         expect_near(angular, torque, 1e-9 * (1.0 + fabs(torque)), "a body's angular momentum change");
     }
+    destroy_world_and_expect_no_leak(scene.world);
+}
+
+/* With no other row on its bodies, one pass solves the tree and a second
+ * one, which the solver skips, would change no velocity beyond rounding;
+ * the pins that close loops are rows of Gauss-Seidel on its bodies, and
+ * then every pass solves the tree. */
+Test(joint_tree, a_tree_alone_needs_one_velocity_pass_a_substep)
+{
+    tree_scene scene = make_tree_with(false);
+    rb_world *world = scene.world;
+    prepare(world, 1.0 / 360.0);
+    cr_assert(world->joint_tree.alone, "no row but the tree's pins acts on its bodies");
+    rb_joint_tree_solve_velocities(world);
+    rb_body_state solved[BODIES];
+    for (int i = 0; i < BODIES; ++i) {
+        solved[i] = world->states[scene.bodies[i].index];
+    }
+    rb_joint_tree_solve_velocities(world); /* skipped */
+    for (int i = 0; i < BODIES; ++i) {
+        const rb_body_state *now = &world->states[scene.bodies[i].index];
+        cr_expect(now->linear_velocity.x == solved[i].linear_velocity.x &&
+                      now->linear_velocity.y == solved[i].linear_velocity.y &&
+                      now->angular_velocity == solved[i].angular_velocity,
+                  "body %d: the second pass is skipped", i);
+    }
+    world->joint_tree.solved = false; /* the pass the solver skips, done */
+    rb_joint_tree_solve_velocities(world);
+    for (int i = 0; i < BODIES; ++i) {
+        const rb_body_state *now = &world->states[scene.bodies[i].index];
+        double speed = rb_length(solved[i].linear_velocity) + fabs(solved[i].angular_velocity);
+        expect_vec_near(now->linear_velocity, solved[i].linear_velocity, 1e-12 * (1.0 + speed),
+                        "a second pass's change of a body's velocity");
+        expect_near(now->angular_velocity, solved[i].angular_velocity, 1e-12 * (1.0 + speed),
+                    "a second pass's change of a body's angular velocity");
+    }
+    destroy_world_and_expect_no_leak(scene.world);
+
+    scene = make_tree();
+    prepare(scene.world, 1.0 / 360.0);
+    cr_expect_not(scene.world->joint_tree.alone, "the pins closing loops act on the tree's bodies");
     destroy_world_and_expect_no_leak(scene.world);
 }
 

@@ -363,13 +363,8 @@ static bool is_active(const rb_world *world, const rb_joint *joint)
     return b_moves || (a->type == RB_BODY_DYNAMIC && a->awake);
 }
 
-/* The k-th joint of this step's active list, counted from the end when
- * sweeping backwards. */
-static rb_joint *active_joint(rb_world *world, int k, bool backwards)
-{
-    int n = world->active_joint_count;
-    return &world->joints[world->active_joints[backwards ? n - 1 - k : k]];
-}
+/* The k-th joint of this step's active list. */
+static rb_joint *active_joint(rb_world *world, int k) { return &world->joints[world->active_joints[k]]; }
 
 /* What the step cannot change: while the world is locked no body changes
  * its mass, centre or type, falls asleep or wakes, and no joint its
@@ -396,7 +391,7 @@ static void prepare_frame_for_step(rb_world *world, rb_joint *joint)
 static void prepare_for_step(rb_world *world)
 {
     for (int k = 0; k < world->active_joint_count; ++k) {
-        rb_joint *joint = active_joint(world, k, false);
+        rb_joint *joint = active_joint(world, k);
         prepare_frame_for_step(world, joint);
         switch (joint->type) {
         case RB_JOINT_REVOLUTE:
@@ -460,12 +455,11 @@ static void prepare_frame(rb_world *world, rb_joint *joint)
 void rb_joints_warm_start(rb_world *world, double h)
 {
     for (int k = 0; k < world->active_joint_count; ++k) {
-        rb_joint *joint = active_joint(world, k, false);
+        rb_joint *joint = active_joint(world, k);
         prepare_frame(world, joint);
         switch (joint->type) {
         case RB_JOINT_REVOLUTE:
-            rb_point_constraint_prepare(world, joint, h);
-            rb_revolute_warm_start(world, joint);
+            rb_revolute_warm_start(world, joint, h);
             break;
         case RB_JOINT_WELD:
             rb_point_constraint_prepare(world, joint, h);
@@ -488,10 +482,33 @@ void rb_joints_warm_start(rb_world *world, double h)
     }
 }
 
+/* The joints the Gauss-Seidel passes visit this step: the active ones,
+ * less the plain pins the trees solve whole (joint_tree.h). */
+typedef struct pass_list {
+    const int *joints; /* slots */
+    int count;
+} pass_list;
+
+static pass_list pass_joints(const rb_world *world)
+{
+    const rb_joint_tree *tree = &world->joint_tree;
+    if (tree->node_count > 0) {
+        return (pass_list){tree->gauss_seidel_joints, tree->gauss_seidel_count};
+    }
+    return (pass_list){world->active_joints, world->active_joint_count};
+}
+
+/* The k-th joint of the list, counted from the end when sweeping backwards. */
+static rb_joint *pass_joint(rb_world *world, pass_list list, int k, bool backwards)
+{
+    return &world->joints[list.joints[backwards ? list.count - 1 - k : k]];
+}
+
 void rb_joints_solve_velocities(rb_world *world, double h, bool backwards)
 {
-    for (int k = 0; k < world->active_joint_count; ++k) {
-        rb_joint *joint = active_joint(world, k, backwards);
+    const pass_list list = pass_joints(world);
+    for (int k = 0; k < list.count; ++k) {
+        rb_joint *joint = pass_joint(world, list, k, backwards);
         switch (joint->type) {
         case RB_JOINT_REVOLUTE:
             rb_revolute_solve(world, joint, h);
@@ -518,8 +535,9 @@ void rb_joints_solve_velocities(rb_world *world, double h, bool backwards)
 bool rb_joints_correct_positions(rb_world *world, bool backwards)
 {
     bool all_within = true;
-    for (int k = 0; k < world->active_joint_count; ++k) {
-        rb_joint *joint = active_joint(world, k, backwards);
+    const pass_list list = pass_joints(world);
+    for (int k = 0; k < list.count; ++k) {
+        rb_joint *joint = pass_joint(world, list, k, backwards);
         bool within = true;
         switch (joint->type) {
         case RB_JOINT_REVOLUTE:

@@ -38,17 +38,35 @@ static void apply(const rb_joint *joint, rb_body_state *a, rb_body_state *b, rb_
     rb_joint_apply_angular(joint, a, b, angular);
 }
 
-void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h)
+/* The inverse of K's upper-left 2x2, the pin alone, or all 0 when that
+ * is singular. */
+static void set_point_inverse(rb_joint_frame *f, const rb_block_matrix *k)
 {
-    rb_joint_frame *f = &joint->frame;
-    f->point_mass = make_mass_matrix(f, f->ra, f->rb);
-    const rb_block_matrix *k = &f->point_mass;
     double det = k->k11 * k->k22 - k->k12 * k->k12;
     double inverse_det = det > 0.0 ? 1.0 / det : 0.0;
     f->point_inverse11 = inverse_det * k->k22;
     f->point_inverse12 = -inverse_det * k->k12;
     f->point_inverse22 = inverse_det * k->k11;
+}
 
+void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h)
+{
+    rb_joint_frame *f = &joint->frame;
+    f->point_mass = make_mass_matrix(f, f->ra, f->rb);
+    set_point_inverse(f, &f->point_mass);
+    rb_point_constraint_prepare_drift(world, joint, h);
+}
+
+void rb_point_alone_prepare(const rb_world *world, rb_joint *joint, double h)
+{
+    rb_joint_frame *f = &joint->frame;
+    const rb_block_matrix k = make_mass_matrix(f, f->ra, f->rb);
+    set_point_inverse(f, &k);
+    rb_point_constraint_prepare_drift(world, joint, h);
+}
+
+void rb_point_constraint_prepare_drift(const rb_world *world, rb_joint *joint, double h)
+{
     /* Solve for the velocities that keep the anchors together at the end
      * of the substep, not just momentarily (SHAKE; Ryckaert, Ciccotti,
      * Berendsen, J. Comput. Phys. 23, 1977): the anchor offsets turn with
@@ -66,6 +84,7 @@ void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double 
      * capped at one linear slop per substep. The angular velocities are
      * the substep's starting ones (rb_joints_prepare recorded them before
      * any warm start), so the drift is fixed for the substep. */
+    rb_joint_frame *f = &joint->frame;
     const double omega_a = world->substep_omega[joint->body_a];
     const double omega_b = world->substep_omega[joint->body_b];
     rb_vec2 drift = rb_scale(0.5 * h, rb_sub(rb_scale(omega_b * omega_b, f->rb), rb_scale(omega_a * omega_a, f->ra)));
@@ -81,19 +100,14 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
     rb_body_state *a = rb_joint_state_a(world, joint);
     rb_body_state *b = rb_joint_state_b(world, joint);
     const rb_joint_frame *f = &joint->frame;
-    const rb_block_matrix k = f->point_mass;
-    rb_vec2 drift = f->point_drift;
     const rb_rigid_response *response = &world->joint_response;
-    rb_vec2 cdot = rb_sub(rb_joint_relative_velocity(joint, a, b), drift);
-    if (response->bias_rate > 0.0) {
-        rb_vec2 gap = rb_sub(rb_add(b->center, f->rb), rb_add(a->center, f->ra));
-        cdot = rb_mul_add(cdot, response->bias_rate, gap);
-    }
+    rb_vec2 cdot = rb_point_velocity_error(world, joint, a, b);
 
     rb_vec2 impulse;
     if (row != NULL) {
         /* The row is s·(ωB - ωA) + bias = 0 with s = ±1; in K its coupling
          * terms take the sign s. */
+        const rb_block_matrix k = f->point_mass;
         rb_block_matrix ks = k;
         ks.k13 *= row->sign;
         ks.k23 *= row->sign;
@@ -116,13 +130,7 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
             return;
         }
     }
-    /* The pin alone: x = -K⁻¹·Cdot with the substep's inverse (0 when K
-     * is singular, which only two bodies that cannot move make). */
-    impulse = rb_v2(-(f->point_inverse11 * cdot.x + f->point_inverse12 * cdot.y),
-                    -(f->point_inverse12 * cdot.x + f->point_inverse22 * cdot.y));
-    impulse = rb_soften(response, impulse, *accumulated);
-    *accumulated = rb_add(*accumulated, impulse);
-    rb_joint_apply_linear(joint, a, b, impulse);
+    rb_point_alone_solve(world, joint, a, b, cdot, accumulated);
 }
 
 double rb_point_constraint_correct(rb_world *world, rb_joint *joint, const double *angle_error)

@@ -175,13 +175,27 @@ void rb_revolute_prepare_step(rb_joint *joint)
     if (!r->enable_upper) {
         r->upper_impulse = 0.0;
     }
+    joint->plain_pin = !r->enable_lower && !r->enable_upper && !r->enable_motor && !r->enable_spring;
 }
 
-void rb_revolute_warm_start(rb_world *world, rb_joint *joint)
+void rb_revolute_warm_start(rb_world *world, rb_joint *joint, double h)
 {
     rb_body_state *a = rb_joint_state_a(world, joint);
     rb_body_state *b = rb_joint_state_b(world, joint);
     const rb_revolute_data *r = &joint->as.revolute;
+    if (joint->plain_pin) {
+        /* The joint grid's and the chains' pins: the point alone, its
+         * angular impulses all zero. A pin its tree solves needs only its
+         * drift; the tree factors its own matrix (joint_tree.h). */
+        if (joint->in_tree) {
+            rb_point_constraint_prepare_drift(world, joint, h);
+        } else {
+            rb_point_alone_prepare(world, joint, h);
+        }
+        rb_joint_apply_linear(joint, a, b, r->point_impulse);
+        return;
+    }
+    rb_point_constraint_prepare(world, joint, h);
     rb_joint_apply_linear(joint, a, b, r->point_impulse);
     rb_joint_apply_angular(joint, a, b, r->motor_impulse + r->spring_impulse + r->lower_impulse - r->upper_impulse);
 }
@@ -229,12 +243,12 @@ static void solve_limits(rb_world *world, rb_joint *joint, rb_body_state *a, rb_
 void rb_revolute_solve(rb_world *world, rb_joint *joint, double h)
 {
     rb_revolute_data *r = &joint->as.revolute;
-    if (!r->enable_spring && !r->enable_motor && !r->enable_lower && !r->enable_upper) {
-        /* A plain pin, the joint grid's and a chain's: the point alone,
-         * unless its tree solves it. */
-        if (!joint->in_tree) {
-            rb_point_constraint_solve(world, joint, &r->point_impulse, NULL);
-        }
+    if (joint->plain_pin) {
+        /* The point alone (a plain pin its tree solves is not visited:
+         * rb_joints_solve_velocities). */
+        rb_body_state *a = rb_joint_state_a(world, joint);
+        rb_body_state *b = rb_joint_state_b(world, joint);
+        rb_point_alone_solve(world, joint, a, b, rb_point_velocity_error(world, joint, a, b), &r->point_impulse);
         return;
     }
     rb_body_state *a = rb_joint_state_a(world, joint);
@@ -284,6 +298,9 @@ bool rb_revolute_correct(rb_world *world, rb_joint *joint)
 {
     if (joint->in_tree) { /* corrected with its tree (joint_tree.h) */
         return true;
+    }
+    if (joint->plain_pin) { /* no angle to read, no limit to hold */
+        return rb_point_constraint_correct(world, joint, NULL) <= world->settings.linear_slop;
     }
     rb_revolute_data *r = &joint->as.revolute;
     double angle = rb_joint_relative_angle(world, joint, r->reference_angle);

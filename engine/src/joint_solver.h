@@ -40,12 +40,14 @@ void rb_joints_prepare(rb_world *world);
  * starts it with its accumulated impulses. One pass where two passes over
  * every joint would each read it from memory. */
 void rb_joints_warm_start(rb_world *world, double h);
-/* One pass over the joints, in creation order or (backwards) the reverse.
- * NGS and Baumgarte alternate: in a chain an impulse travels one joint per
- * pass in the pass's direction, so alternating sweeps (symmetric
- * Gauss-Seidel) carry both ends' information in half the passes; a 10-link
- * chain's worst gap at 60 Hz drops from 8.3 to 5.6 mm at the same cost.
- * The soft step sweeps one way only (solver_soft_step.c). */
+/* One pass over the joints, in creation order or (backwards) the reverse,
+ * but for the plain pins their trees solve (joint_tree.h), which both
+ * passes leave to the trees. NGS and Baumgarte alternate: in a chain an
+ * impulse travels one joint per pass in the pass's direction, so
+ * alternating sweeps (symmetric Gauss-Seidel) carry both ends'
+ * information in half the passes; a 10-link chain's worst gap at 60 Hz
+ * drops from 8.3 to 5.6 mm at the same cost. The soft step sweeps one way
+ * only (solver_soft_step.c). */
 void rb_joints_solve_velocities(rb_world *world, double h, bool backwards);
 /* One NGS pass, in either order; returns whether every joint was within
  * its tolerance. */
@@ -197,9 +199,48 @@ typedef struct rb_angular_row {
     bool one_sided;
 } rb_angular_row;
 
+/* The point's velocity error in a pass: Cdot less the substep's
+ * centripetal drift (rb_point_constraint_prepare_drift), plus the
+ * response's bias on the anchors' gap at the current poses. */
+static inline rb_vec2 rb_point_velocity_error(const rb_world *world, const rb_joint *joint, const rb_body_state *a,
+                                              const rb_body_state *b)
+{
+    const rb_joint_frame *f = &joint->frame;
+    rb_vec2 cdot = rb_sub(rb_joint_relative_velocity(joint, a, b), f->point_drift);
+    const rb_rigid_response *response = &world->joint_response;
+    if (response->bias_rate > 0.0) {
+        rb_vec2 gap = rb_sub(rb_add(b->center, f->rb), rb_add(a->center, f->ra));
+        cdot = rb_mul_add(cdot, response->bias_rate, gap);
+    }
+    return cdot;
+}
+
+/* The pin alone, for its velocity error cdot: x = -K⁻¹·cdot with the
+ * substep's inverse (0 when K is singular, which only two bodies that
+ * cannot move make), as the pass's response delivers it, added to
+ * *accumulated and applied at the anchors. Inline: the joint grid's and
+ * the chains' pins run it in every velocity pass. */
+static inline void rb_point_alone_solve(const rb_world *world, const rb_joint *joint, rb_body_state *a,
+                                        rb_body_state *b, rb_vec2 cdot, rb_vec2 *accumulated)
+{
+    const rb_joint_frame *f = &joint->frame;
+    rb_vec2 impulse = rb_v2(-(f->point_inverse11 * cdot.x + f->point_inverse12 * cdot.y),
+                            -(f->point_inverse12 * cdot.x + f->point_inverse22 * cdot.y));
+    impulse = rb_soften(&world->joint_response, impulse, *accumulated);
+    *accumulated = rb_add(*accumulated, impulse);
+    rb_joint_apply_linear(joint, a, b, impulse);
+}
+
 /* Sets the frame's point_mass and point_drift for the substep; after
  * the frame is prepared, before any solve. */
 void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h);
+/* Sets the frame's point inverse and point_drift, not point_mass: what
+ * a pin without an angular row reads (rb_point_alone_solve), with one
+ * cache line less written a pin a substep. */
+void rb_point_alone_prepare(const rb_world *world, rb_joint *joint, double h);
+/* Sets only the frame's point_drift: what a pin its tree solves needs
+ * (joint_tree.h). */
+void rb_point_constraint_prepare_drift(const rb_world *world, rb_joint *joint, double h);
 /* Velocity solve of the pin (and the row, if not NULL) under the pass's
  * response; the row's bias is its own. */
 void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumulated, const rb_angular_row *row);
@@ -211,7 +252,9 @@ double rb_point_constraint_correct(rb_world *world, rb_joint *joint, const doubl
 /* ---- the types ------------------------------------------------------------ */
 
 void rb_revolute_prepare_step(rb_joint *joint);
-void rb_revolute_warm_start(rb_world *world, rb_joint *joint);
+/* Prepares the pin for the substep of length h (joint_point.c), then
+ * warm starts it. */
+void rb_revolute_warm_start(rb_world *world, rb_joint *joint, double h);
 void rb_revolute_solve(rb_world *world, rb_joint *joint, double h);
 bool rb_revolute_correct(rb_world *world, rb_joint *joint);
 double rb_revolute_angle_error(const rb_world *world, const rb_joint *joint);

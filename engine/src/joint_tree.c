@@ -176,6 +176,10 @@ static int add_node(rb_world *world, int body, int joint, int parent)
     node->joint = joint;
     node->parent = parent;
     node->dim = body >= 0 ? 3 : 2;
+    if (parent >= 0) { /* the edge's pin and body: one is the node, the other its parent */
+        const rb_tree_node *up = &tree->nodes[parent];
+        node->edge_on_b = (body >= 0 ? body : up->body) == world->joints[joint >= 0 ? joint : up->joint].body_b;
+    }
     if (body >= 0) {
         tree->body_node[body] = index;
         node->mass = 1.0 / world->bodies[body].inv_mass; /* finite: the body moves freely */
@@ -216,11 +220,47 @@ static void grow_tree(rb_world *world, int root)
     }
 }
 
+static bool in_a_tree(const rb_joint_tree *tree, int body) { return body >= 0 && tree->body_node[body] >= 0; }
+
+/* Whether no row but the trees' own pins acts on a body in a tree this
+ * step: no other joint, no motor or spring of a pin in a tree, no cable,
+ * no contact with a manifold point. A velocity pass then solves the trees
+ * exactly, and the substep's further passes would find only rounding
+ * left to correct. */
+static bool trees_alone(const rb_world *world)
+{
+    const rb_joint_tree *tree = &world->joint_tree;
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        const rb_joint *joint = &world->joints[world->active_joints[k]];
+        bool its_pin_only = joint->in_tree && joint->plain_pin;
+        if (!its_pin_only && (in_a_tree(tree, joint->body_a) || in_a_tree(tree, joint->body_b))) {
+            return false;
+        }
+    }
+    for (int i = 0; i < world->cable_slots; ++i) {
+        const rb_cable *cable = &world->cables[i];
+        for (int p = 0; cable->in_use && p < cable->point_count; ++p) {
+            if (in_a_tree(tree, cable->bodies[p])) {
+                return false;
+            }
+        }
+    }
+    for (int i = 0; i < world->contact_count; ++i) {
+        const rb_contact *contact = &world->contacts[i];
+        if (contact->manifold.point_count > 0 &&
+            (in_a_tree(tree, contact->body_a) || in_a_tree(tree, contact->body_b))) {
+            return false;
+        }
+    }
+    return true;
+}
+
 void rb_joint_tree_build(rb_world *world)
 {
     rb_joint_tree *tree = &world->joint_tree;
     tree->node_count = 0;
     tree->pose_factors = false;
+    tree->alone = false;
     if (!clear_and_find_uneven(world) || !tree->enabled) {
         return;
     }
@@ -233,7 +273,9 @@ void rb_joint_tree_build(rb_world *world)
     }
     int pins = choose_pins(world);
     /* A forest of `pins` edges has at most 2·pins bodies. */
-    if (pins == 0 || rb_grow_array((void **)&tree->nodes, &tree->node_capacity, 3 * pins, sizeof(rb_tree_node)) != 0) {
+    if (pins == 0 || rb_grow_array((void **)&tree->nodes, &tree->node_capacity, 3 * pins, sizeof(rb_tree_node)) != 0 ||
+        rb_grow_array((void **)&tree->gauss_seidel_joints, &tree->gauss_seidel_capacity, world->active_joint_count,
+                      sizeof(int)) != 0) {
         for (int k = 0; k < world->active_joint_count; ++k) {
             world->joints[world->active_joints[k]].in_tree = false;
         }
@@ -259,6 +301,14 @@ void rb_joint_tree_build(rb_world *world)
             grow_tree(world, add_node(world, joint->body_a, -1, -1));
         }
     }
+    tree->gauss_seidel_count = 0;
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        const rb_joint *joint = &world->joints[world->active_joints[k]];
+        if (!(joint->in_tree && joint->plain_pin)) {
+            tree->gauss_seidel_joints[tree->gauss_seidel_count++] = world->active_joints[k];
+        }
+    }
+    tree->alone = trees_alone(world);
 }
 
 /* ---- factor and solve ----------------------------------------------------- */
@@ -277,13 +327,11 @@ void rb_joint_tree_build(rb_world *world)
 
 /* s and r of the edge between node `n` and its parent, r the pin's
  * offset (measured before factoring) on the edge's body. */
-static void edge(const rb_world *world, const rb_tree_node *node, const rb_tree_node *parent, double *s, rb_vec2 *r)
+static void edge(const rb_tree_node *node, const rb_tree_node *parent, double *s, rb_vec2 *r)
 {
     const rb_tree_node *pin = node->joint >= 0 ? node : parent;
-    const int b = node->body >= 0 ? node->body : parent->body;
-    const bool on_b = b == world->joints[pin->joint].body_b;
-    *s = on_b ? 1.0 : -1.0;
-    *r = on_b ? pin->rb : pin->ra;
+    *s = node->edge_on_b ? 1.0 : -1.0;
+    *r = node->edge_on_b ? pin->rb : pin->ra;
 }
 
 /* A pin's anchor offsets at the bodies' poses now. */
@@ -390,7 +438,7 @@ static bool factor(rb_world *world)
         rb_tree_node *parent = &tree->nodes[node->parent];
         double s;
         rb_vec2 r;
-        edge(world, node, parent, &s, &r);
+        edge(node, parent, &s, &r);
         if (node->body >= 0) {
             eliminate_body(node, parent, s, r);
         } else {
@@ -458,36 +506,34 @@ void rb_joint_tree_factor_velocities(rb_world *world)
 {
     rb_joint_tree *tree = &world->joint_tree;
     for (int n = 0; n < tree->node_count; ++n) {
-        if (tree->nodes[n].joint >= 0) {
-            measure_offsets(world, &tree->nodes[n]); /* the substep's, as the pins' frames will hold them */
+        rb_tree_node *node = &tree->nodes[n];
+        if (node->joint >= 0) { /* the substep's offsets, which the pin's frame holds */
+            const rb_joint_frame *f = &world->joints[node->joint].frame;
+            node->ra = f->ra;
+            node->rb = f->rb;
         }
     }
     tree->pose_factors = false;
     tree->velocity_factors = tree->node_count > 0 && factor(world);
+    tree->solved = false;
 }
 
 void rb_joint_tree_solve_velocities(rb_world *world)
 {
     rb_joint_tree *tree = &world->joint_tree;
-    if (!tree->velocity_factors) {
+    if (!tree->velocity_factors || (tree->alone && tree->solved)) {
         return;
     }
-    const rb_rigid_response *response = &world->joint_response;
+    tree->solved = true;
     for (int n = 0; n < tree->node_count; ++n) {
         rb_tree_node *node = &tree->nodes[n];
         if (node->joint < 0) {
             memset(node->value, 0, sizeof node->value);
             continue;
         }
-        rb_joint *joint = &world->joints[node->joint];
-        const rb_joint_frame *f = &joint->frame;
-        rb_body_state *a = rb_joint_state_a(world, joint);
-        rb_body_state *b = rb_joint_state_b(world, joint);
-        rb_vec2 cdot = rb_sub(rb_joint_relative_velocity(joint, a, b), f->point_drift);
-        if (response->bias_rate > 0.0) {
-            rb_vec2 gap = rb_sub(rb_add(b->center, f->rb), rb_add(a->center, f->ra));
-            cdot = rb_mul_add(cdot, response->bias_rate, gap);
-        }
+        const rb_joint *joint = &world->joints[node->joint];
+        rb_vec2 cdot =
+            rb_point_velocity_error(world, joint, rb_joint_state_a(world, joint), rb_joint_state_b(world, joint));
         node->value[0] = cdot.x;
         node->value[1] = cdot.y;
     }
@@ -663,5 +709,6 @@ void rb_joint_tree_free(rb_world *world)
     rb_free_array((void **)&tree->union_parent, &tree->union_capacity, sizeof(int));
     rb_free_array((void **)&tree->grounded, &tree->grounded_capacity, 1);
     rb_free_array((void **)&tree->mass_range, &tree->mass_range_capacity, sizeof(double));
+    rb_free_array((void **)&tree->gauss_seidel_joints, &tree->gauss_seidel_capacity, sizeof(int));
     tree->node_count = 0;
 }

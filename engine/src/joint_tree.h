@@ -80,13 +80,18 @@
 void rb_joint_tree_build(rb_world *world);
 
 /* Factors the trees at the substep's anchors: the pins' offsets at the
- * poses at the substep's start, the ones the pins' frames hold. */
+ * poses at the substep's start, which their frames hold once the joints
+ * are prepared for the substep (rb_joints_warm_start). */
 void rb_joint_tree_factor_velocities(rb_world *world);
 
 /* One velocity pass over the trees' pins: the impulses that make every
  * pin's anchors move together (less the centripetal drift the pin
  * prepared, plus the response's bias), applied to the bodies and added to
- * each pin's accumulated impulse. */
+ * each pin's accumulated impulse. When no other row acts on the trees'
+ * bodies this step (no other joint, cable or contact), the substep's
+ * first pass leaves nothing to solve but rounding, and the further passes
+ * return at once: a chain's worst gap stays as it was, at the cost of one
+ * pass a substep. */
 void rb_joint_tree_solve_velocities(rb_world *world);
 
 /* One soft-step pass over the trees' pins under the pass's response

@@ -88,13 +88,13 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
     if (substep == 0) {
         rb_joint_tree_build(world);
     }
-    rb_joint_tree_factor_velocities(world);
     rb_contact_solver_prepare_substep(world, h,
                                       (rb_substep_rows){.first_substep = substep == 0,
                                                         .baumgarte_bias = contact_bias,
                                                         .block_normals = world->settings.block_solver});
     rb_cables_warm_start(world);
     rb_joints_warm_start(world, h);
+    rb_joint_tree_factor_velocities(world);
     rb_contact_solver_warm_start(world);
     profile->warm_start += rb_world_clock(world) - t;
 

@@ -293,8 +293,9 @@ typedef struct rb_cable {
  * the bookkeeping of the pool and the bodies' lists last. */
 typedef struct rb_joint {
     rb_joint_type type;
-    bool in_tree; /* this step, a pin solved with its tree (joint_tree.h) */
-    int body_a;   /* -1 for a mouse joint */
+    bool in_tree;   /* this step, a pin solved with its tree (joint_tree.h) */
+    bool plain_pin; /* this step, a revolute joint with no limit, motor or spring: the point constraint alone */
+    int body_a;     /* -1 for a mouse joint */
     int body_b;
     rb_joint_frame frame;
     union {
@@ -320,6 +321,7 @@ typedef struct rb_tree_node {
     int joint;            /* joint slot, or -1 for a body */
     int parent;           /* node index, -1 for a root */
     int dim;              /* 3 for a body (vx, vy, ω), 2 for a pin (its impulse) */
+    bool edge_on_b;       /* the edge to the parent joins a pin to its body B (else to its body A) */
     double pivot[9];      /* D(node), dim × dim, summed from its children */
     double dinv[9];       /* D(node)⁻¹ */
     double x[6];          /* D(node)⁻¹·H(node, parent) */
@@ -334,6 +336,8 @@ typedef struct rb_joint_tree {
     bool enabled;          /* set by the solvers that use it (NGS, soft step) */
     bool velocity_factors; /* the nodes hold this substep's velocity factors */
     bool pose_factors;     /* the nodes hold factors at the bodies' current poses */
+    bool alone;            /* this step, no row outside the trees acts on a body in them */
+    bool solved;           /* this substep's velocity pass has solved the trees */
     rb_tree_node *nodes;   /* breadth first from each root: a parent before its children */
     int node_count, node_capacity;
     int *body_node; /* per body slot: its node, or -1 */
@@ -344,6 +348,10 @@ typedef struct rb_joint_tree {
     int grounded_capacity;
     double *mass_range; /* per union root: its lightest and heaviest body's mass, kg */
     int mass_range_capacity;
+    /* While there are nodes: this step's active joints less the plain
+     * pins the trees solve, the joints the Gauss-Seidel passes visit. */
+    int *gauss_seidel_joints;
+    int gauss_seidel_count, gauss_seidel_capacity;
 } rb_joint_tree;
 
 struct rb_world {
