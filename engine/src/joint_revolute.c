@@ -232,7 +232,7 @@ void rb_revolute_solve(rb_world *world, rb_joint *joint, double h)
     if (!r->enable_spring && !r->enable_motor && !r->enable_lower && !r->enable_upper) {
         /* A plain pin, the joint grid's and a chain's: the point alone,
          * unless its tree solves it. */
-        if (!joint->in_tree) {
+        if (!joint->in_tree && !joint->in_block) {
             rb_point_constraint_solve(world, joint, &r->point_impulse, NULL);
         }
         return;
@@ -257,7 +257,7 @@ void rb_revolute_solve(rb_world *world, rb_joint *joint, double h)
             r->motor_impulse = accumulated;
             rb_joint_apply_angular(joint, a, b, impulse);
         }
-        if (!joint->in_tree) { /* a tree's pins are solved together (joint_tree.h) */
+        if (!joint->in_tree && !joint->in_block) { /* solved together (joint_tree.h, joint_block.h) */
             solve_limits(world, joint, a, b, angle, h);
         }
         return;

@@ -293,8 +293,9 @@ typedef struct rb_cable {
  * the bookkeeping of the pool and the bodies' lists last. */
 typedef struct rb_joint {
     rb_joint_type type;
-    bool in_tree; /* this step, a pin solved with its tree (joint_tree.h) */
-    int body_a;   /* -1 for a mouse joint */
+    bool in_tree;  /* this step, a pin solved with its tree (joint_tree.h) */
+    bool in_block; /* this substep, a pin and its limits solved with its block (joint_block.h) */
+    int body_a;    /* -1 for a mouse joint */
     int body_b;
     rb_joint_frame frame;
     union {
@@ -345,6 +346,37 @@ typedef struct rb_joint_tree {
     double *mass_range; /* per union root: its lightest and heaviest body's mass, kg */
     int mass_range_capacity;
 } rb_joint_tree;
+
+/* The small limbs solved as one dense system (joint_block.h). */
+#define RB_BLOCK_MAX_BODIES 4
+#define RB_BLOCK_MAX_JOINTS 4
+#define RB_BLOCK_MAX_ROWS (3 * RB_BLOCK_MAX_JOINTS) /* two pin rows and one limit a joint */
+#define RB_MAX_JOINT_BLOCKS 4                       /* further blocks are left to Gauss-Seidel */
+
+/* One row of a block: J·v + bias = 0, its impulse kept in the joint. */
+typedef struct rb_block_row {
+    int slot_a, slot_b;  /* the bodies' places in the block, -1 for a fixed body */
+    double ja[3], jb[3]; /* the Jacobian on A and on B: (vx, vy, ω) */
+    double bias;         /* m/s or rad/s */
+    double *accumulated; /* the joint's impulse of this row, N·s or N·m·s */
+    bool one_sided;      /* a limit: its accumulated impulse stays >= 0 */
+} rb_block_row;
+
+typedef struct rb_joint_block {
+    int body_count, joint_count, row_count;
+    int bodies[RB_BLOCK_MAX_BODIES]; /* body slots */
+    int joints[RB_BLOCK_MAX_JOINTS]; /* joint slots */
+    double inv_mass[RB_BLOCK_MAX_BODIES], inv_inertia[RB_BLOCK_MAX_BODIES];
+    rb_block_row rows[RB_BLOCK_MAX_ROWS];
+    double k[RB_BLOCK_MAX_ROWS * RB_BLOCK_MAX_ROWS];      /* J·M⁻¹·Jᵀ, row_count × row_count */
+    double factor[RB_BLOCK_MAX_ROWS * RB_BLOCK_MAX_ROWS]; /* its L·D·Lᵀ: L below the diagonal, D on it */
+    bool factored;                                        /* false: Gauss-Seidel solves it this substep */
+} rb_joint_block;
+
+typedef struct rb_joint_blocks {
+    int count;
+    rb_joint_block blocks[RB_MAX_JOINT_BLOCKS];
+} rb_joint_blocks;
 
 struct rb_world {
     uint64_t serial;          /* never 0, never reused (id.h) */
@@ -441,6 +473,7 @@ struct rb_world {
     int cable_count;
 
     rb_joint_tree joint_tree;
+    rb_joint_blocks joint_blocks;
 
     double last_substep;              /* s, the substep length of the last step: impulses / it = forces */
     rb_rigid_response joint_response; /* the current pass's, set by the solver */
