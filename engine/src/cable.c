@@ -274,17 +274,24 @@ void rb_cables_prepare(rb_world *world)
             previous = next;
         }
         double k = 0.0;
+        cable->moving_count = 0;
         for (int b = 0; b < cable->body_count; ++b) {
             k += cable->inv_mass[b] * rb_dot(cable->linear[b], cable->linear[b]) +
                  cable->inv_inertia[b] * cable->angular[b] * cable->angular[b];
+            if (cable->inv_mass[b] > 0.0 || cable->inv_inertia[b] > 0.0) {
+                cable->moving[cable->moving_count++] = b;
+            }
         }
         cable->inverse_mass = k;
     }
 }
 
+/* Applies the impulse to the bodies it moves: a muscle's origin is often
+ * on a fixed bone, which it would only add zeros to. */
 static void apply(const rb_cable *cable, rb_world *world, double impulse)
 {
-    for (int b = 0; b < cable->body_count; ++b) {
+    for (int m = 0; m < cable->moving_count; ++m) {
+        int b = cable->moving[m];
         rb_body_state *s = &world->states[cable->solver_bodies[b]];
         s->linear_velocity = rb_mul_add(s->linear_velocity, impulse * cable->inv_mass[b], cable->linear[b]);
         s->angular_velocity += impulse * cable->inv_inertia[b] * cable->angular[b];

@@ -208,68 +208,73 @@ static double through(const double *ji, const double *jj, double inv_mass, doubl
     return inv_mass * (ji[0] * jj[0] + ji[1] * jj[1]) + inv_inertia * ji[2] * jj[2];
 }
 
+/* K_ij: the sum over the bodies the two rows share. */
 static double coupling(const rb_joint_block *block, const rb_block_row *i, const rb_block_row *j)
 {
     double sum = 0.0;
-    const int slots_i[2] = {i->slot_a, i->slot_b};
-    const double *jac_i[2] = {i->ja, i->jb};
-    const int slots_j[2] = {j->slot_a, j->slot_b};
-    const double *jac_j[2] = {j->ja, j->jb};
-    for (int p = 0; p < 2; ++p) {
-        for (int q = 0; q < 2; ++q) {
-            if (slots_i[p] >= 0 && slots_i[p] == slots_j[q]) {
-                int s = slots_i[p];
-                sum += through(jac_i[p], jac_j[q], block->inv_mass[s], block->inv_inertia[s]);
-            }
-        }
+    if (i->slot_a >= 0) {
+        double im = block->inv_mass[i->slot_a], ii = block->inv_inertia[i->slot_a];
+        sum += i->slot_a == j->slot_a ? through(i->ja, j->ja, im, ii) : 0.0;
+        sum += i->slot_a == j->slot_b ? through(i->ja, j->jb, im, ii) : 0.0;
+    }
+    if (i->slot_b >= 0) {
+        double im = block->inv_mass[i->slot_b], ii = block->inv_inertia[i->slot_b];
+        sum += i->slot_b == j->slot_a ? through(i->jb, j->ja, im, ii) : 0.0;
+        sum += i->slot_b == j->slot_b ? through(i->jb, j->jb, im, ii) : 0.0;
     }
     return sum;
 }
 
-/* L·D·Lᵀ of the n × n symmetric `a` (row-major, stride `stride`) into
- * `f`, outer-product form; false when a pivot is not positive beyond
- * rounding (dependent rows). */
-static bool factor(const double *a, int n, int stride, double *f)
+/* L·D·Lᵀ of the n × n symmetric `a` (row-major, RB_BLOCK_MAX_ROWS to a
+ * row; its lower triangle is read) into `f`: L below the diagonal, 1/D
+ * on it, so that a solve only multiplies. Column by column, each entry
+ * less its products with the columns before, through v_k = L_jk·D_k.
+ * False when a pivot is not positive beyond rounding (dependent rows). */
+static bool factor(const double *a, int n, double *f)
 {
-    for (int i = 0; i < n; ++i) {
-        for (int j = 0; j <= i; ++j) {
-            f[i * stride + j] = a[i * stride + j];
-        }
-    }
+    double v[RB_BLOCK_MAX_ROWS], d[RB_BLOCK_MAX_ROWS];
     for (int j = 0; j < n; ++j) {
-        double pivot = f[j * stride + j];
+        double *row_j = f + j * RB_BLOCK_MAX_ROWS;
+        double pivot = a[j * RB_BLOCK_MAX_ROWS + j];
         for (int k = 0; k < j; ++k) {
-            pivot -= f[j * stride + k] * f[j * stride + k] * f[k * stride + k];
+            v[k] = row_j[k] * d[k];
+            pivot -= row_j[k] * v[k];
         }
-        if (!(pivot > 1e-12 * a[j * stride + j])) {
+        if (!(pivot > 1e-12 * a[j * RB_BLOCK_MAX_ROWS + j])) {
             return false;
         }
-        f[j * stride + j] = pivot;
+        d[j] = pivot;
+        row_j[j] = 1.0 / pivot;
         for (int i = j + 1; i < n; ++i) {
-            double sum = f[i * stride + j];
+            double *row_i = f + i * RB_BLOCK_MAX_ROWS;
+            double sum = a[i * RB_BLOCK_MAX_ROWS + j];
             for (int k = 0; k < j; ++k) {
-                sum -= f[i * stride + k] * f[j * stride + k] * f[k * stride + k];
+                sum -= row_i[k] * v[k];
             }
-            f[i * stride + j] = sum / pivot;
+            row_i[j] = sum / pivot;
         }
     }
     return true;
 }
 
 /* Solves L·D·Lᵀ·x = x in place. */
-static void solve_factored(const double *f, int n, int stride, double *x)
+static void solve_factored(const double *f, int n, double *x)
 {
     for (int i = 0; i < n; ++i) {
+        const double *row = f + i * RB_BLOCK_MAX_ROWS;
+        double sum = x[i];
         for (int k = 0; k < i; ++k) {
-            x[i] -= f[i * stride + k] * x[k];
+            sum -= row[k] * x[k];
         }
+        x[i] = sum;
     }
     for (int i = 0; i < n; ++i) {
-        x[i] /= f[i * stride + i];
+        x[i] *= f[i * RB_BLOCK_MAX_ROWS + i];
     }
     for (int i = n - 1; i >= 0; --i) {
-        for (int k = i + 1; k < n; ++k) {
-            x[i] -= f[k * stride + i] * x[k];
+        const double *row = f + i * RB_BLOCK_MAX_ROWS;
+        for (int k = 0; k < i; ++k) {
+            x[k] -= row[k] * x[i];
         }
     }
 }
@@ -315,8 +320,7 @@ void rb_joint_blocks_factor(rb_world *world, double h)
         }
         fill_k(block);
         block->factored = false;
-        while (!(block->factored = factor(block->k, block->row_count, RB_BLOCK_MAX_ROWS, block->factor)) &&
-               block->row_count > pins) {
+        while (!(block->factored = factor(block->k, block->row_count, block->factor)) && block->row_count > pins) {
             --block->row_count;
         }
         for (int j = 0; j < block->joint_count; ++j) {
@@ -390,8 +394,8 @@ static void solve_subset(const rb_joint_block *block, const bool *free, const do
         }
     }
     /* A principal submatrix of a positive definite K is positive definite. */
-    (void)factor(sub, m, RB_BLOCK_MAX_ROWS, f);
-    solve_factored(f, m, RB_BLOCK_MAX_ROWS, y);
+    (void)factor(sub, m, f);
+    solve_factored(f, m, y);
     for (int p = 0; p < m; ++p) {
         x[index[p]] = y[p];
     }
@@ -413,7 +417,7 @@ void rb_joint_blocks_solve_velocities(rb_world *world)
             x[i] = rhs[i];
             free[i] = true;
         }
-        solve_factored(block->factor, rows, RB_BLOCK_MAX_ROWS, x);
+        solve_factored(block->factor, rows, x);
         /* Release the limit that would pull hardest, then solve the rest
          * again, until none pulls. */
         for (;;) {

@@ -204,7 +204,10 @@ typedef struct rb_joint_frame {
     double point_inverse11, point_inverse12, point_inverse22;
     rb_vec2 point_drift;        /* m/s, the anchors' centripetal drift over the substep (joint_point.c) */
     rb_block_matrix point_mass; /* the point constraint's K at ra, rb (joint_point.c) */
-    rb_vec2 local_a, local_b;   /* m, the anchors relative to each centre of mass, in the body frames */
+    /* The cofactors of point_mass and its determinant, for a pin solved
+     * with an angular row (a limit, a rigid weld's angle), made with it. */
+    double point_c11, point_c12, point_c13, point_c22, point_c23, point_c33, point_det;
+    rb_vec2 local_a, local_b; /* m, the anchors relative to each centre of mass, in the body frames */
 } rb_joint_frame;
 
 typedef struct rb_revolute_data {
@@ -285,7 +288,9 @@ typedef struct rb_cable {
     rb_vec2 linear[RB_MAX_CABLE_POINTS]; /* Σ (u_i - u_{i-1}) over the body's points */
     double angular[RB_MAX_CABLE_POINTS]; /* m, Σ r_i × (u_i - u_{i-1}) */
     double inv_mass[RB_MAX_CABLE_POINTS], inv_inertia[RB_MAX_CABLE_POINTS];
-    double inverse_mass; /* 1/kg: how fast a unit impulse shortens the path */
+    int moving_count;                /* of those bodies, the ones an impulse moves, */
+    int moving[RB_MAX_CABLE_POINTS]; /* by their place in the arrays above */
+    double inverse_mass;             /* 1/kg: how fast a unit impulse shortens the path */
 } rb_cable;
 
 /* Ordered by use: what every velocity pass reads (the type, the bodies,
@@ -369,7 +374,7 @@ typedef struct rb_joint_block {
     double inv_mass[RB_BLOCK_MAX_BODIES], inv_inertia[RB_BLOCK_MAX_BODIES];
     rb_block_row rows[RB_BLOCK_MAX_ROWS];
     double k[RB_BLOCK_MAX_ROWS * RB_BLOCK_MAX_ROWS];      /* J·M⁻¹·Jᵀ, row_count × row_count */
-    double factor[RB_BLOCK_MAX_ROWS * RB_BLOCK_MAX_ROWS]; /* its L·D·Lᵀ: L below the diagonal, D on it */
+    double factor[RB_BLOCK_MAX_ROWS * RB_BLOCK_MAX_ROWS]; /* its L·D·Lᵀ: L below the diagonal, 1/D on it */
     bool factored;                                        /* false: Gauss-Seidel solves it this substep */
 } rb_joint_block;
 
