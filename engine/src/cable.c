@@ -159,9 +159,10 @@ static void measure(const rb_world *world, const rb_cable *cable, double *length
 {
     *length = 0.0;
     *speed = 0.0;
-    rb_vec2 p = world_point(world, cable, 0);
+    bool located = world->in_substep_callback && world->cable_points_fresh; /* nothing moves in it */
+    rb_vec2 p = located ? cable->points[0] : world_point(world, cable, 0);
     for (int i = 0; i + 1 < cable->point_count; ++i) {
-        rb_vec2 q = world_point(world, cable, i + 1);
+        rb_vec2 q = located ? cable->points[i + 1] : world_point(world, cable, i + 1);
         const rb_body_state *sp = &world->states[cable->bodies[i]];
         const rb_body_state *sq = &world->states[cable->bodies[i + 1]];
         rb_vec2 vp = rb_add(sp->linear_velocity, rb_cross_sv(sp->angular_velocity, rb_sub(p, sp->center)));
@@ -254,17 +255,29 @@ static void add_pull(rb_cable *cable, const rb_world *world, int body, rb_vec2 p
     cable->angular[k] += rb_cross(rb_sub(point, world->states[body].center), pull);
 }
 
+void rb_cables_locate(rb_world *world)
+{
+    for (int c = 0; c < world->cable_slots; ++c) {
+        rb_cable *cable = &world->cables[c];
+        for (int i = 0; cable->in_use && i < cable->point_count; ++i) {
+            cable->points[i] = world_point(world, cable, i);
+        }
+    }
+    world->cable_points_fresh = true;
+}
+
 void rb_cables_prepare(rb_world *world)
 {
+    if (!world->cable_points_fresh) {
+        rb_cables_locate(world);
+    }
+    world->cable_points_fresh = false;
     for (int c = 0; c < world->cable_slots; ++c) {
         rb_cable *cable = &world->cables[c];
         if (!cable->in_use) {
             continue;
         }
-        rb_vec2 points[RB_MAX_CABLE_POINTS];
-        for (int i = 0; i < cable->point_count; ++i) {
-            points[i] = world_point(world, cable, i);
-        }
+        const rb_vec2 *points = cable->points;
         cable->body_count = 0;
         rb_vec2 previous = rb_v2(0.0, 0.0); /* u_{i-1}; none before the origin */
         for (int i = 0; i < cable->point_count; ++i) {

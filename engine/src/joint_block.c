@@ -138,13 +138,19 @@ void rb_joint_blocks_build(rb_world *world)
 
 /* ---- the rows ---------------------------------------------------------- */
 
-static rb_block_row *add_row(rb_joint_block *block, const rb_joint *joint)
+/* Appends the row J·v + bias = 0 of `joint`, J = (ja on A, jb on B). */
+static void add_row(rb_joint_block *block, const rb_joint *joint, const double ja[3], const double jb[3], double bias,
+                    double *accumulated, bool one_sided)
 {
-    rb_block_row *row = &block->rows[block->row_count++];
-    row->slot_a = find(block->bodies, block->body_count, joint->body_a);
-    row->slot_b = find(block->bodies, block->body_count, joint->body_b);
-    row->one_sided = false;
-    return row;
+    block->rows[block->row_count++] = (rb_block_row){
+        .slot_a = find(block->bodies, block->body_count, joint->body_a),
+        .slot_b = find(block->bodies, block->body_count, joint->body_b),
+        .ja = {ja[0], ja[1], ja[2]},
+        .jb = {jb[0], jb[1], jb[2]},
+        .bias = bias,
+        .accumulated = accumulated,
+        .one_sided = one_sided,
+    };
 }
 
 /* The pin's two rows, Cdot = vB + ωB × rB - vA - ωA × rA less the drift:
@@ -153,12 +159,10 @@ static void add_pin(rb_joint_block *block, rb_joint *joint)
 {
     const rb_joint_frame *f = &joint->frame;
     rb_revolute_data *r = &joint->as.revolute;
-    rb_block_row *x = add_row(block, joint);
-    *x = (rb_block_row){x->slot_a,           x->slot_b, {-1.0, 0.0, f->ra.y}, {1.0, 0.0, -f->rb.y}, -f->point_drift.x,
-                        &r->point_impulse.x, false};
-    rb_block_row *y = add_row(block, joint);
-    *y = (rb_block_row){y->slot_a,           y->slot_b, {0.0, -1.0, -f->ra.x}, {0.0, 1.0, f->rb.x}, -f->point_drift.y,
-                        &r->point_impulse.y, false};
+    add_row(block, joint, (const double[3]){-1.0, 0.0, f->ra.y}, (const double[3]){1.0, 0.0, -f->rb.y},
+            -f->point_drift.x, &r->point_impulse.x, false);
+    add_row(block, joint, (const double[3]){0.0, -1.0, -f->ra.x}, (const double[3]){0.0, 1.0, f->rb.x},
+            -f->point_drift.y, &r->point_impulse.y, false);
 }
 
 /* Releases a limit's accumulated impulse (sign +1 lower, -1 upper). */
@@ -193,34 +197,45 @@ static double add_limit(rb_world *world, rb_joint_block *block, rb_joint *joint,
     if (margin > reach && *accumulated == 0.0) {
         return INFINITY;
     }
-    rb_block_row *row = add_row(block, joint);
-    *row = (rb_block_row){
-        row->slot_a, row->slot_b, {0.0, 0.0, -sign}, {0.0, 0.0, sign}, rb_one_sided_bias(world, margin, h),
-        accumulated, true};
+    add_row(block, joint, (const double[3]){0.0, 0.0, -sign}, (const double[3]){0.0, 0.0, sign},
+            rb_one_sided_bias(world, margin, h), accumulated, true);
     return margin;
 }
 
 /* ---- the factors --------------------------------------------------------- */
 
-/* Row i's effect on row j through one body: J_i·M⁻¹·J_jᵀ. */
-static double through(const double *ji, const double *jj, double inv_mass, double inv_inertia)
+/* The row's M⁻¹·Jᵀ on each body. */
+static void weigh(const rb_joint_block *block, rb_block_row *row)
 {
-    return inv_mass * (ji[0] * jj[0] + ji[1] * jj[1]) + inv_inertia * ji[2] * jj[2];
+    for (int k = 0; k < 3; ++k) {
+        row->wa[k] = 0.0;
+        row->wb[k] = 0.0;
+    }
+    if (row->slot_a >= 0) {
+        row->wa[0] = block->inv_mass[row->slot_a] * row->ja[0];
+        row->wa[1] = block->inv_mass[row->slot_a] * row->ja[1];
+        row->wa[2] = block->inv_inertia[row->slot_a] * row->ja[2];
+    }
+    if (row->slot_b >= 0) {
+        row->wb[0] = block->inv_mass[row->slot_b] * row->jb[0];
+        row->wb[1] = block->inv_mass[row->slot_b] * row->jb[1];
+        row->wb[2] = block->inv_inertia[row->slot_b] * row->jb[2];
+    }
 }
 
-/* K_ij: the sum over the bodies the two rows share. */
-static double coupling(const rb_joint_block *block, const rb_block_row *i, const rb_block_row *j)
+static double dot3(const double *x, const double *y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
+
+/* K_ij = J_i·M⁻¹·J_jᵀ: the sum over the bodies the two rows share. */
+static double coupling(const rb_block_row *i, const rb_block_row *j)
 {
     double sum = 0.0;
     if (i->slot_a >= 0) {
-        double im = block->inv_mass[i->slot_a], ii = block->inv_inertia[i->slot_a];
-        sum += i->slot_a == j->slot_a ? through(i->ja, j->ja, im, ii) : 0.0;
-        sum += i->slot_a == j->slot_b ? through(i->ja, j->jb, im, ii) : 0.0;
+        sum += i->slot_a == j->slot_a ? dot3(i->ja, j->wa) : 0.0;
+        sum += i->slot_a == j->slot_b ? dot3(i->ja, j->wb) : 0.0;
     }
     if (i->slot_b >= 0) {
-        double im = block->inv_mass[i->slot_b], ii = block->inv_inertia[i->slot_b];
-        sum += i->slot_b == j->slot_a ? through(i->jb, j->ja, im, ii) : 0.0;
-        sum += i->slot_b == j->slot_b ? through(i->jb, j->jb, im, ii) : 0.0;
+        sum += i->slot_b == j->slot_a ? dot3(i->jb, j->wa) : 0.0;
+        sum += i->slot_b == j->slot_b ? dot3(i->jb, j->wb) : 0.0;
     }
     return sum;
 }
@@ -283,8 +298,11 @@ static void fill_k(rb_joint_block *block)
 {
     int n = block->row_count;
     for (int i = 0; i < n; ++i) {
+        weigh(block, &block->rows[i]);
+    }
+    for (int i = 0; i < n; ++i) {
         for (int j = 0; j <= i; ++j) {
-            double value = coupling(block, &block->rows[i], &block->rows[j]);
+            double value = coupling(&block->rows[i], &block->rows[j]);
             block->k[i * RB_BLOCK_MAX_ROWS + j] = value;
             block->k[j * RB_BLOCK_MAX_ROWS + i] = value;
         }
@@ -331,40 +349,17 @@ void rb_joint_blocks_factor(rb_world *world, double h)
 
 /* ---- the passes ---------------------------------------------------------- */
 
-static rb_body_state *state_of(rb_world *world, const rb_joint_block *block, int slot)
-{
-    return &world->states[block->bodies[slot]];
-}
-
-static double row_rate(rb_world *world, const rb_joint_block *block, const rb_block_row *row)
+/* J·v + bias of a row, v the block's velocities (vx, vy, ω a body). */
+static double row_rate(const rb_block_row *row, const double *v)
 {
     double rate = row->bias;
     if (row->slot_a >= 0) {
-        const rb_body_state *a = state_of(world, block, row->slot_a);
-        rate +=
-            row->ja[0] * a->linear_velocity.x + row->ja[1] * a->linear_velocity.y + row->ja[2] * a->angular_velocity;
+        rate += dot3(row->ja, v + 3 * row->slot_a);
     }
     if (row->slot_b >= 0) {
-        const rb_body_state *b = state_of(world, block, row->slot_b);
-        rate +=
-            row->jb[0] * b->linear_velocity.x + row->jb[1] * b->linear_velocity.y + row->jb[2] * b->angular_velocity;
+        rate += dot3(row->jb, v + 3 * row->slot_b);
     }
     return rate;
-}
-
-static void apply_row(rb_world *world, const rb_joint_block *block, const rb_block_row *row, double impulse)
-{
-    const int slots[2] = {row->slot_a, row->slot_b};
-    const double *jac[2] = {row->ja, row->jb};
-    for (int p = 0; p < 2; ++p) {
-        if (slots[p] < 0) {
-            continue;
-        }
-        rb_body_state *s = state_of(world, block, slots[p]);
-        double im = block->inv_mass[slots[p]];
-        s->linear_velocity = rb_add(s->linear_velocity, rb_v2(im * jac[p][0] * impulse, im * jac[p][1] * impulse));
-        s->angular_velocity += block->inv_inertia[slots[p]] * jac[p][2] * impulse;
-    }
 }
 
 /* Solves K_SS·x_S = rhs_S - K_SF·x_F for the rows in S (free[i]), the
@@ -409,11 +404,18 @@ void rb_joint_blocks_solve_velocities(rb_world *world)
         if (!block->factored) {
             continue;
         }
+        double v[3 * RB_BLOCK_MAX_BODIES];
+        for (int b = 0; b < block->body_count; ++b) {
+            const rb_body_state *s = &world->states[block->bodies[b]];
+            v[3 * b] = s->linear_velocity.x;
+            v[3 * b + 1] = s->linear_velocity.y;
+            v[3 * b + 2] = s->angular_velocity;
+        }
         int rows = block->row_count;
         double rhs[RB_BLOCK_MAX_ROWS], x[RB_BLOCK_MAX_ROWS];
         bool free[RB_BLOCK_MAX_ROWS];
         for (int i = 0; i < rows; ++i) {
-            rhs[i] = -row_rate(world, block, &block->rows[i]);
+            rhs[i] = -row_rate(&block->rows[i], v);
             x[i] = rhs[i];
             free[i] = true;
         }
@@ -439,8 +441,19 @@ void rb_joint_blocks_solve_velocities(rb_world *world)
             solve_subset(block, free, rhs, x);
         }
         for (int i = 0; i < rows; ++i) {
-            *block->rows[i].accumulated += x[i];
-            apply_row(world, block, &block->rows[i], x[i]);
+            const rb_block_row *row = &block->rows[i];
+            *row->accumulated += x[i];
+            for (int k = 0; row->slot_a >= 0 && k < 3; ++k) {
+                v[3 * row->slot_a + k] += row->wa[k] * x[i];
+            }
+            for (int k = 0; row->slot_b >= 0 && k < 3; ++k) {
+                v[3 * row->slot_b + k] += row->wb[k] * x[i];
+            }
+        }
+        for (int b = 0; b < block->body_count; ++b) {
+            rb_body_state *s = &world->states[block->bodies[b]];
+            s->linear_velocity = rb_v2(v[3 * b], v[3 * b + 1]);
+            s->angular_velocity = v[3 * b + 2];
         }
     }
 }

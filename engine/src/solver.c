@@ -64,6 +64,7 @@ void rb_solver_damp_and_integrate_positions(rb_world *world, double h)
 
 void rb_solver_call_substep_callback(rb_world *world, int substep, double h)
 {
+    rb_cables_locate(world); /* the paths the callback reads and the cables' preparation share */
     if (world->substep_callback != NULL) {
         world->in_substep_callback = true;
         world->substep_callback(world, substep, h, world->substep_context);

@@ -280,10 +280,11 @@ typedef struct rb_cable {
     int bodies[RB_MAX_CABLE_POINTS];
     rb_vec2 local_points[RB_MAX_CABLE_POINTS]; /* m, from each body's origin */
     void *user_data;
-    double base_tension; /* N */
-    double damping;      /* N·s/m */
-    double impulse;      /* N·s, accumulated in the current substep */
-    int body_count;      /* distinct bodies of the path, this substep */
+    double base_tension;                 /* N */
+    double damping;                      /* N·s/m */
+    double impulse;                      /* N·s, accumulated in the current substep */
+    rb_vec2 points[RB_MAX_CABLE_POINTS]; /* m, the path in the world at the substep's start (rb_cables_locate) */
+    int body_count;                      /* distinct bodies of the path, this substep */
     int solver_bodies[RB_MAX_CABLE_POINTS];
     rb_vec2 linear[RB_MAX_CABLE_POINTS]; /* Σ (u_i - u_{i-1}) over the body's points */
     double angular[RB_MAX_CABLE_POINTS]; /* m, Σ r_i × (u_i - u_{i-1}) */
@@ -362,6 +363,7 @@ typedef struct rb_joint_tree {
 typedef struct rb_block_row {
     int slot_a, slot_b;  /* the bodies' places in the block, -1 for a fixed body */
     double ja[3], jb[3]; /* the Jacobian on A and on B: (vx, vy, ω) */
+    double wa[3], wb[3]; /* M⁻¹·Jᵀ: the velocity change of a unit impulse on A and on B */
     double bias;         /* m/s or rad/s */
     double *accumulated; /* the joint's impulse of this row, N·s or N·m·s */
     bool one_sided;      /* a limit: its accumulated impulse stays >= 0 */
@@ -476,6 +478,7 @@ struct rb_world {
     int cable_slots;
     int cable_free;
     int cable_count;
+    bool cable_points_fresh; /* the cables' points are at the poses now (rb_cables_locate) */
 
     rb_joint_tree joint_tree;
     rb_joint_blocks joint_blocks;
