@@ -13,10 +13,9 @@ static bool moves_freely(const rb_body *body)
 {
     return body->type == RB_BODY_DYNAMIC && body->awake && body->inv_mass > 0.0 && body->inv_inertia > 0.0;
 }
-static bool is_fixed(const rb_body *body)
-{
-    return body->type == RB_BODY_STATIC || (body->inv_mass == 0.0 && body->inv_inertia == 0.0);
-}
+/* A static body: the block gives fixed bodies no velocity (a kinematic
+ * one has its own). */
+static bool is_fixed(const rb_body *body) { return body->type == RB_BODY_STATIC; }
 
 static bool has_limit(const rb_joint *joint)
 {
@@ -124,10 +123,10 @@ void rb_joint_blocks_build(rb_world *world)
         if (!gather(world, seed, block) || block->body_count == 0 || !needs_a_block(world, block)) {
             continue;
         }
-        for (int b = 0; b < block->body_count; ++b) {
-            const rb_body *body = &world->bodies[block->bodies[b]];
-            block->inv_mass[b] = body->inv_mass;
-            block->inv_inertia[b] = body->inv_inertia;
+        for (int b = 0; b <= RB_BLOCK_MAX_BODIES; ++b) {
+            const rb_body *body = b < block->body_count ? &world->bodies[block->bodies[b]] : NULL;
+            block->inv_mass[b] = body != NULL ? body->inv_mass : 0.0;
+            block->inv_inertia[b] = body != NULL ? body->inv_inertia : 0.0;
         }
         for (int j = 0; j < block->joint_count; ++j) {
             world->joints[block->joints[j]].in_block = true;
@@ -138,13 +137,21 @@ void rb_joint_blocks_build(rb_world *world)
 
 /* ---- the rows ---------------------------------------------------------- */
 
+/* A body's place in the block, RB_BLOCK_MAX_BODIES (no velocity, no
+ * inverse mass) for a fixed one. */
+static int slot_of(const rb_joint_block *block, int body)
+{
+    int slot = find(block->bodies, block->body_count, body);
+    return slot >= 0 ? slot : RB_BLOCK_MAX_BODIES;
+}
+
 /* Appends the row J·v + bias = 0 of `joint`, J = (ja on A, jb on B). */
 static void add_row(rb_joint_block *block, const rb_joint *joint, const double ja[3], const double jb[3], double bias,
                     double *accumulated, bool one_sided)
 {
     block->rows[block->row_count++] = (rb_block_row){
-        .slot_a = find(block->bodies, block->body_count, joint->body_a),
-        .slot_b = find(block->bodies, block->body_count, joint->body_b),
+        .slot_a = slot_of(block, joint->body_a),
+        .slot_b = slot_of(block, joint->body_b),
         .ja = {ja[0], ja[1], ja[2]},
         .jb = {jb[0], jb[1], jb[2]},
         .bias = bias,
@@ -204,39 +211,28 @@ static double add_limit(rb_world *world, rb_joint_block *block, rb_joint *joint,
 
 /* ---- the factors --------------------------------------------------------- */
 
-/* The row's M⁻¹·Jᵀ on each body. */
+/* The row's M⁻¹·Jᵀ on each body (0 on a fixed one). */
 static void weigh(const rb_joint_block *block, rb_block_row *row)
 {
-    for (int k = 0; k < 3; ++k) {
-        row->wa[k] = 0.0;
-        row->wb[k] = 0.0;
-    }
-    if (row->slot_a >= 0) {
-        row->wa[0] = block->inv_mass[row->slot_a] * row->ja[0];
-        row->wa[1] = block->inv_mass[row->slot_a] * row->ja[1];
-        row->wa[2] = block->inv_inertia[row->slot_a] * row->ja[2];
-    }
-    if (row->slot_b >= 0) {
-        row->wb[0] = block->inv_mass[row->slot_b] * row->jb[0];
-        row->wb[1] = block->inv_mass[row->slot_b] * row->jb[1];
-        row->wb[2] = block->inv_inertia[row->slot_b] * row->jb[2];
-    }
+    row->wa[0] = block->inv_mass[row->slot_a] * row->ja[0];
+    row->wa[1] = block->inv_mass[row->slot_a] * row->ja[1];
+    row->wa[2] = block->inv_inertia[row->slot_a] * row->ja[2];
+    row->wb[0] = block->inv_mass[row->slot_b] * row->jb[0];
+    row->wb[1] = block->inv_mass[row->slot_b] * row->jb[1];
+    row->wb[2] = block->inv_inertia[row->slot_b] * row->jb[2];
 }
 
 static double dot3(const double *x, const double *y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
 
-/* K_ij = J_i·M⁻¹·J_jᵀ: the sum over the bodies the two rows share. */
+/* K_ij = J_i·M⁻¹·J_jᵀ: the sum over the bodies the two rows share (a
+ * fixed body's weights are 0). */
 static double coupling(const rb_block_row *i, const rb_block_row *j)
 {
     double sum = 0.0;
-    if (i->slot_a >= 0) {
-        sum += i->slot_a == j->slot_a ? dot3(i->ja, j->wa) : 0.0;
-        sum += i->slot_a == j->slot_b ? dot3(i->ja, j->wb) : 0.0;
-    }
-    if (i->slot_b >= 0) {
-        sum += i->slot_b == j->slot_a ? dot3(i->jb, j->wa) : 0.0;
-        sum += i->slot_b == j->slot_b ? dot3(i->jb, j->wb) : 0.0;
-    }
+    sum += i->slot_a == j->slot_a ? dot3(i->ja, j->wa) : 0.0;
+    sum += i->slot_a == j->slot_b ? dot3(i->ja, j->wb) : 0.0;
+    sum += i->slot_b == j->slot_a ? dot3(i->jb, j->wa) : 0.0;
+    sum += i->slot_b == j->slot_b ? dot3(i->jb, j->wb) : 0.0;
     return sum;
 }
 
@@ -349,17 +345,11 @@ void rb_joint_blocks_factor(rb_world *world, double h)
 
 /* ---- the passes ---------------------------------------------------------- */
 
-/* J·v + bias of a row, v the block's velocities (vx, vy, ω a body). */
+/* J·v + bias of a row, v the block's velocities (vx, vy, ω a body, the
+ * fixed bodies' 0 last). */
 static double row_rate(const rb_block_row *row, const double *v)
 {
-    double rate = row->bias;
-    if (row->slot_a >= 0) {
-        rate += dot3(row->ja, v + 3 * row->slot_a);
-    }
-    if (row->slot_b >= 0) {
-        rate += dot3(row->jb, v + 3 * row->slot_b);
-    }
-    return rate;
+    return row->bias + dot3(row->ja, v + 3 * row->slot_a) + dot3(row->jb, v + 3 * row->slot_b);
 }
 
 /* Solves K_SS·x_S = rhs_S - K_SF·x_F for the rows in S (free[i]), the
@@ -404,7 +394,7 @@ void rb_joint_blocks_solve_velocities(rb_world *world)
         if (!block->factored) {
             continue;
         }
-        double v[3 * RB_BLOCK_MAX_BODIES];
+        double v[3 * (RB_BLOCK_MAX_BODIES + 1)] = {0};
         for (int b = 0; b < block->body_count; ++b) {
             const rb_body_state *s = &world->states[block->bodies[b]];
             v[3 * b] = s->linear_velocity.x;
@@ -443,11 +433,10 @@ void rb_joint_blocks_solve_velocities(rb_world *world)
         for (int i = 0; i < rows; ++i) {
             const rb_block_row *row = &block->rows[i];
             *row->accumulated += x[i];
-            for (int k = 0; row->slot_a >= 0 && k < 3; ++k) {
-                v[3 * row->slot_a + k] += row->wa[k] * x[i];
-            }
-            for (int k = 0; row->slot_b >= 0 && k < 3; ++k) {
-                v[3 * row->slot_b + k] += row->wb[k] * x[i];
+            double *va = v + 3 * row->slot_a, *vb = v + 3 * row->slot_b; /* a fixed body's wa, wb are 0 */
+            for (int k = 0; k < 3; ++k) {
+                va[k] += row->wa[k] * x[i];
+                vb[k] += row->wb[k] * x[i];
             }
         }
         for (int b = 0; b < block->body_count; ++b) {

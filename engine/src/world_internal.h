@@ -361,7 +361,7 @@ typedef struct rb_joint_tree {
 
 /* One row of a block: J·v + bias = 0, its impulse kept in the joint. */
 typedef struct rb_block_row {
-    int slot_a, slot_b;  /* the bodies' places in the block, -1 for a fixed body */
+    int slot_a, slot_b;  /* the bodies' places in the block; RB_BLOCK_MAX_BODIES for a fixed body */
     double ja[3], jb[3]; /* the Jacobian on A and on B: (vx, vy, ω) */
     double wa[3], wb[3]; /* M⁻¹·Jᵀ: the velocity change of a unit impulse on A and on B */
     double bias;         /* m/s or rad/s */
@@ -373,7 +373,8 @@ typedef struct rb_joint_block {
     int body_count, joint_count, row_count;
     int bodies[RB_BLOCK_MAX_BODIES]; /* body slots */
     int joints[RB_BLOCK_MAX_JOINTS]; /* joint slots */
-    double inv_mass[RB_BLOCK_MAX_BODIES], inv_inertia[RB_BLOCK_MAX_BODIES];
+    /* 1/kg, 1/(kg·m²); the last place stands for every fixed body, 0. */
+    double inv_mass[RB_BLOCK_MAX_BODIES + 1], inv_inertia[RB_BLOCK_MAX_BODIES + 1];
     rb_block_row rows[RB_BLOCK_MAX_ROWS];
     double k[RB_BLOCK_MAX_ROWS * RB_BLOCK_MAX_ROWS];      /* J·M⁻¹·Jᵀ, row_count × row_count */
     double factor[RB_BLOCK_MAX_ROWS * RB_BLOCK_MAX_ROWS]; /* its L·D·Lᵀ: L below the diagonal, 1/D on it */
