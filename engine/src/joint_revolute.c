@@ -237,6 +237,9 @@ void rb_revolute_solve(rb_world *world, rb_joint *joint, double h)
         }
         return;
     }
+    if (joint->in_block && !r->enable_spring && !r->enable_motor) {
+        return; /* the pin and its limits are its block's (joint_block.h) */
+    }
     rb_body_state *a = rb_joint_state_a(world, joint);
     rb_body_state *b = rb_joint_state_b(world, joint);
     if (r->axial_mass > 0.0) {
