@@ -5,8 +5,9 @@
  * every pin's anchors move together (up to the centripetal drift the pin
  * asks for), a held limit closes no faster than its speculative bias, no
  * limit pulls, and the bodies' momentum changed by exactly the rows'
- * impulses, M·Δv = Jᵀ·λ. Then the whole step: a heavy link dropping onto
- * a stop held through a light one, as in the built-in leg.
+ * impulses, M·Δv = Jᵀ·λ; two limits reached in a loop, more rows than
+ * freedoms, leave one out. Then the whole step: a heavy link dropping
+ * onto a stop held through a light one, as in the built-in leg.
  *
  * The limb is a four-bar through the ground, the leg's shape: a heavy
  * horizontal "femur" pinned to the ground, a "tibia" hanging from its
@@ -234,4 +235,31 @@ Test(joint_block, a_heavy_link_dropping_onto_a_stop_is_held_through_a_light_one)
                 gauss_seidel / DEG, block / DEG);
     cr_expect_gt(gauss_seidel, 1.0 * DEG, "Gauss-Seidel passed the stop by %.3f degrees", gauss_seidel / DEG);
     cr_expect_lt(block, 0.01 * DEG, "the block passed the stop by %.4f degrees", block / DEG);
+}
+
+Test(joint_block, two_limits_reached_in_a_loop_leave_one_out_and_release_it)
+{
+    /* The toe's range narrowed to the ankle's: turning the foot 2.9° down
+     * brings the ankle within 0.1° of its lower stop and the toe within
+     * 0.1° of its upper one. Four pins and two limits are ten rows on the
+     * bodies' nine freedoms: K is singular, and one limit is left out of
+     * the substep, its warm-started impulse taken back. */
+    limb l = make_limb(20000.0);
+    rb_world *world = l.world;
+    cr_assert_eq(rb_revolute_joint_set_limits(world, l.hinges[3], true, -ANKLE_RANGE, true, ANKLE_RANGE), RB_OK, "%s",
+                 rb_last_error());
+    cr_assert_eq(rb_body_set_angular_velocity(world, l.bodies[2], 4.0), RB_OK);
+    rb_body_state_turn(&world->states[l.bodies[2].index], -(ANKLE_RANGE - 0.1 * DEG));
+    rb_revolute_data *ankle = &joint_of(world, l.hinges[2])->as.revolute;
+    rb_revolute_data *toe = &joint_of(world, l.hinges[3])->as.revolute;
+    ankle->lower_impulse = 1.0;
+    toe->upper_impulse = 1.0;
+    prepare(world, 1.0 / 600.0);
+    cr_assert_eq(world->joint_blocks.count, 1);
+    const rb_joint_block *block = &world->joint_blocks.blocks[0];
+    cr_expect(block->factored);
+    cr_expect_eq(block->row_count, 9, "%d rows", block->row_count);
+    cr_expect((ankle->lower_impulse == 0.0) != (toe->upper_impulse == 0.0),
+              "one limit released: ankle %g, toe %g N·m·s", ankle->lower_impulse, toe->upper_impulse);
+    destroy_world_and_expect_no_leak(world);
 }

@@ -305,6 +305,22 @@ static void fill_k(rb_joint_block *block)
     }
 }
 
+/* Takes a limit's accumulated impulse, warm started, back from its
+ * bodies: a limit left out of the substep must not go on pushing. */
+static void release_row(rb_world *world, const rb_joint_block *block, const rb_block_row *row)
+{
+    const int slots[2] = {row->slot_a, row->slot_b};
+    const double *weights[2] = {row->wa, row->wb};
+    for (int p = 0; p < 2; ++p) {
+        if (slots[p] < block->body_count) {
+            rb_body_state *s = &world->states[block->bodies[slots[p]]];
+            s->linear_velocity = rb_mul_sub(s->linear_velocity, *row->accumulated, rb_v2(weights[p][0], weights[p][1]));
+            s->angular_velocity -= *row->accumulated * weights[p][2];
+        }
+    }
+    *row->accumulated = 0.0;
+}
+
 void rb_joint_blocks_factor(rb_world *world, double h)
 {
     rb_joint_blocks *blocks = &world->joint_blocks;
@@ -333,9 +349,8 @@ void rb_joint_blocks_factor(rb_world *world, double h)
             block->rows[pins + i] = row;
         }
         fill_k(block);
-        block->factored = false;
         while (!(block->factored = factor(block->k, block->row_count, block->factor)) && block->row_count > pins) {
-            --block->row_count;
+            release_row(world, block, &block->rows[--block->row_count]);
         }
         for (int j = 0; j < block->joint_count; ++j) {
             world->joints[block->joints[j]].in_block = block->factored;

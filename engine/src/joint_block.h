@@ -10,7 +10,7 @@
  * through the ground, and a mass ratio of 400. Gauss-Seidel passes carry
  * such a load a little at a time: at 10 substeps of 4 passes the ankle
  * went 20° past its stop, and even 100 passes left 2°. Solved exactly
- * the same substeps hold it within a fraction of a degree. Joint trees
+ * the same substeps hold it within 0.001°. Joint trees
  * (joint_tree.h) solve chains exactly but neither limits nor loops.
  *
  * Which joints. A connected group of at most RB_BLOCK_MAX_BODIES bodies
@@ -41,8 +41,9 @@
  * (an active-set method, Nocedal and Wright, "Numerical Optimization",
  * 2006, §16.5). More rows than the bodies' freedoms (two limits reached
  * in a loop) make K singular: the farthest limit is then left out of the
- * substep; a K singular without limits (a loop at a dead centre) leaves
- * the joints to Gauss-Seidel for the substep.
+ * substep and its warm-started impulse taken back; a K singular without
+ * limits (a loop at a dead centre) leaves the joints to Gauss-Seidel for
+ * the substep.
  *
  * The position passes stay Gauss-Seidel (rb_revolute_correct): what the
  * velocity solve leaves is a substep's drift, not a load.
