@@ -269,9 +269,9 @@ static bool factor(const double *a, int n, double *f)
 }
 
 /* Solves L·D·Lᵀ·x = x in place. */
-static void solve_factored(const double *f, int n, double *x)
+static void solve_factored(const double *restrict f, int n, double *restrict x)
 {
-    for (int i = 0; i < n; ++i) {
+    for (int i = 1; i < n; ++i) {
         const double *row = f + i * RB_BLOCK_MAX_ROWS;
         double sum = x[i];
         for (int k = 0; k < i; ++k) {
@@ -282,10 +282,11 @@ static void solve_factored(const double *f, int n, double *x)
     for (int i = 0; i < n; ++i) {
         x[i] *= f[i * RB_BLOCK_MAX_ROWS + i];
     }
-    for (int i = n - 1; i >= 0; --i) {
+    for (int i = n - 1; i > 0; --i) {
         const double *row = f + i * RB_BLOCK_MAX_ROWS;
+        double xi = x[i];
         for (int k = 0; k < i; ++k) {
-            x[k] -= row[k] * x[i];
+            x[k] -= row[k] * xi;
         }
     }
 }
