@@ -21,14 +21,17 @@
 #include "mu/model_desc.h"
 #include "simulation.h"
 
-/* Builds `desc` at `variant` and `weight`, holds every muscle at
- * `activation` (and every torque muscle at full recruitment when
- * activation is 1) for `seconds`, and returns the model for inspection. */
-static mu_model *run(const mu_model_desc *desc, int variant, int weight, double activation, double seconds)
+/* Builds `desc` at `variant` and `weight` (its glues kept as welds when
+ * `welded`), holds every muscle at `activation` (and every torque muscle
+ * at full recruitment when activation is 1) for `seconds`, and returns
+ * the model for inspection. */
+static mu_model *run_glued(const mu_model_desc *desc, int variant, int weight, double activation, double seconds,
+                           bool welded)
 {
     mu_model_options options = mu_default_model_options();
     options.variant = variant;
     options.weight_index = weight;
+    options.weld_glues = welded;
     mu_model *model = NULL;
     cr_assert_eq(mu_model_create(desc, &options, &model), RB_OK, "%s", rb_last_error());
     for (int m = 0; m < mu_model_muscle_count(model); ++m) {
@@ -44,6 +47,11 @@ static mu_model *run(const mu_model_desc *desc, int variant, int weight, double 
         cr_assert_eq(mu_model_step(model), RB_OK, "%s", rb_last_error());
     }
     return model;
+}
+
+static mu_model *run(const mu_model_desc *desc, int variant, int weight, double activation, double seconds)
+{
+    return run_glued(desc, variant, weight, activation, seconds, false);
 }
 
 Test(model_failure, built_in_models_stay_inside_the_limits)
@@ -75,12 +83,17 @@ static int find_index(const mu_model_desc *desc, const char *name)
     return ref.index;
 }
 
-Test(model_failure, a_million_kilograms_on_the_arm_tears_a_hinge_open)
+/* The arm's bones merged, its two limited hinges and a weight 20 or more
+ * times its forearm are one block the engine solves exactly
+ * (engine/src/joint_block.h), which holds any weight. With its glues
+ * kept as welds the limb is Gauss-Seidel's, one joint at a time, whose
+ * passes cannot carry a million kilograms within a frame. */
+Test(model_failure, a_million_kilograms_on_the_welded_arm_tears_a_hinge_open)
 {
     mu_model_desc *desc = NULL;
     cr_assert_eq(mu_model_desc_load_builtin("arm", &desc), RB_OK, "%s", rb_last_error());
     desc->weight.masses[1] = 1e6;
-    mu_model *model = run(desc, 0, 1, 0.0, 1.0);
+    mu_model *model = run_glued(desc, 0, 1, 0.0, 1.0, true);
     const char *failure = mu_model_failure(model);
     cr_assert_not_null(failure, "a 1e6 kg weight on the arm raised no failure");
     cr_expect(strstr(failure, "hinge \"") != NULL || strstr(failure, "moves at") != NULL ||
@@ -127,7 +140,8 @@ static int run_sinew(const char *args, char *output, size_t size)
 }
 
 /* Writes DIR/heavy_arm.json, the arm with its 1 kg weight choice (index 1)
- * made a million kilograms, and puts its path in `path`. */
+ * made a million kilograms, and puts its path in `path`; the tests run it
+ * with its glues welded (see above). */
 static void write_heavy_arm(const char *dir, char *path, size_t size)
 {
     snprintf(path, size, "%s/heavy_arm.json", dir);
@@ -155,7 +169,7 @@ Test(model_failure, sinew_run_warns_once_and_strict_makes_it_an_error)
 
     char args[512];
     char output[16384];
-    snprintf(args, sizeof args, "run '%s' --weight-index 1 --duration 1 --out '%s'", model, dir);
+    snprintf(args, sizeof args, "run '%s' --weight-index 1 --weld-glues --duration 1 --out '%s'", model, dir);
     cr_expect_eq(run_sinew(args, output, sizeof output), 0, "%s", output);
     const char *warning = strstr(output, "sinew: warning: the run failed: t = ");
     cr_expect_not_null(warning, "%s", output);
@@ -170,7 +184,7 @@ Test(model_failure, sinew_run_warns_once_and_strict_makes_it_an_error)
     snprintf(sidecar, sizeof sidecar, "%s-metadata.json", csv);
     remove(sidecar);
 
-    snprintf(args, sizeof args, "run '%s' --weight-index 1 --duration 1 --out '%s' --strict", model, dir);
+    snprintf(args, sizeof args, "run '%s' --weight-index 1 --weld-glues --duration 1 --out '%s' --strict", model, dir);
     cr_expect_eq(run_sinew(args, output, sizeof output), 1, "%s", output);
     cr_expect_not_null(strstr(output, "sinew: the run failed (--strict): t = "), "%s", output);
     cr_expect_neq(access(csv, F_OK), 0, "--strict leaves no CSV");
@@ -197,6 +211,7 @@ Test(model_failure, the_viewer_is_told_once_per_built_model)
     simulation_init(&sim);
     mu_model_options options = mu_default_model_options();
     options.weight_index = 1;
+    options.weld_glues = true; /* Gauss-Seidel's limb (see above) */
     char error[SIMULATION_ERROR_SIZE];
     for (int load = 0; load < 2; ++load) {
         cr_assert(load == 0 ? simulation_load_model(&sim, model, &options, error, sizeof error)

@@ -159,9 +159,10 @@ static void measure(const rb_world *world, const rb_cable *cable, double *length
 {
     *length = 0.0;
     *speed = 0.0;
-    rb_vec2 p = world_point(world, cable, 0);
+    bool located = world->in_substep_callback && world->cable_points_fresh; /* nothing moves in it */
+    rb_vec2 p = located ? cable->points[0] : world_point(world, cable, 0);
     for (int i = 0; i + 1 < cable->point_count; ++i) {
-        rb_vec2 q = world_point(world, cable, i + 1);
+        rb_vec2 q = located ? cable->points[i + 1] : world_point(world, cable, i + 1);
         const rb_body_state *sp = &world->states[cable->bodies[i]];
         const rb_body_state *sq = &world->states[cable->bodies[i + 1]];
         rb_vec2 vp = rb_add(sp->linear_velocity, rb_cross_sv(sp->angular_velocity, rb_sub(p, sp->center)));
@@ -254,17 +255,29 @@ static void add_pull(rb_cable *cable, const rb_world *world, int body, rb_vec2 p
     cable->angular[k] += rb_cross(rb_sub(point, world->states[body].center), pull);
 }
 
+void rb_cables_locate(rb_world *world)
+{
+    for (int c = 0; c < world->cable_slots; ++c) {
+        rb_cable *cable = &world->cables[c];
+        for (int i = 0; cable->in_use && i < cable->point_count; ++i) {
+            cable->points[i] = world_point(world, cable, i);
+        }
+    }
+    world->cable_points_fresh = true;
+}
+
 void rb_cables_prepare(rb_world *world)
 {
+    if (!world->cable_points_fresh) {
+        rb_cables_locate(world);
+    }
+    world->cable_points_fresh = false;
     for (int c = 0; c < world->cable_slots; ++c) {
         rb_cable *cable = &world->cables[c];
         if (!cable->in_use) {
             continue;
         }
-        rb_vec2 points[RB_MAX_CABLE_POINTS];
-        for (int i = 0; i < cable->point_count; ++i) {
-            points[i] = world_point(world, cable, i);
-        }
+        const rb_vec2 *points = cable->points;
         cable->body_count = 0;
         rb_vec2 previous = rb_v2(0.0, 0.0); /* u_{i-1}; none before the origin */
         for (int i = 0; i < cable->point_count; ++i) {
@@ -274,17 +287,24 @@ void rb_cables_prepare(rb_world *world)
             previous = next;
         }
         double k = 0.0;
+        cable->moving_count = 0;
         for (int b = 0; b < cable->body_count; ++b) {
             k += cable->inv_mass[b] * rb_dot(cable->linear[b], cable->linear[b]) +
                  cable->inv_inertia[b] * cable->angular[b] * cable->angular[b];
+            if (cable->inv_mass[b] > 0.0 || cable->inv_inertia[b] > 0.0) {
+                cable->moving[cable->moving_count++] = b;
+            }
         }
         cable->inverse_mass = k;
     }
 }
 
+/* Applies the impulse to the bodies it moves: a muscle's origin is often
+ * on a fixed bone, which it would only add zeros to. */
 static void apply(const rb_cable *cable, rb_world *world, double impulse)
 {
-    for (int b = 0; b < cable->body_count; ++b) {
+    for (int m = 0; m < cable->moving_count; ++m) {
+        int b = cable->moving[m];
         rb_body_state *s = &world->states[cable->solver_bodies[b]];
         s->linear_velocity = rb_mul_add(s->linear_velocity, impulse * cable->inv_mass[b], cable->linear[b]);
         s->angular_velocity += impulse * cable->inv_inertia[b] * cable->angular[b];

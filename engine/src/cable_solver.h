@@ -5,7 +5,16 @@
 
 #include "world_internal.h"
 
-/* The path at the poses now: each body's share of a unit tension. */
+/* At the start of a substep, before the substep callback: every cable's
+ * points in the world at the poses now. The callback cannot move a body
+ * (the world is locked) and integrating the velocities moves none, so
+ * the muscles' reading of their paths in the callback and
+ * rb_cables_prepare then use these points instead of turning each
+ * anchor into the world again. */
+void rb_cables_locate(rb_world *world);
+/* The path at the poses now: each body's share of a unit tension. Uses
+ * the located points, and says they are no longer fresh: the positions
+ * move next. */
 void rb_cables_prepare(rb_world *world);
 void rb_cables_warm_start(rb_world *world);
 /* One pass of the implicit tension law over the cables. */

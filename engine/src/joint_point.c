@@ -38,6 +38,31 @@ static void apply(const rb_joint *joint, rb_body_state *a, rb_body_state *b, rb_
     rb_joint_apply_angular(joint, a, b, angular);
 }
 
+/* The cofactors of K with its angular row, once a substep: K is fixed
+ * within it, and every pass solves K·(x, z) = (v, w) by Cramer's rule
+ * with them (what rb_block_solve3 does from scratch in every pass). */
+static void make_cofactors(rb_joint_frame *f)
+{
+    const rb_block_matrix *k = &f->point_mass;
+    f->point_c11 = k->k22 * k->k33 - k->k23 * k->k23;
+    f->point_c12 = k->k13 * k->k23 - k->k12 * k->k33;
+    f->point_c13 = k->k12 * k->k23 - k->k13 * k->k22;
+    f->point_det = k->k11 * f->point_c11 + k->k12 * f->point_c12 + k->k13 * f->point_c13;
+    f->point_c22 = k->k11 * k->k33 - k->k13 * k->k13;
+    f->point_c23 = k->k13 * k->k12 - k->k11 * k->k23;
+    f->point_c33 = k->k11 * k->k22 - k->k12 * k->k12;
+}
+
+/* Whether the pin is solved with an angular row in its passes: a
+ * revolute joint's nearer limit, a rigid weld's angle. */
+static bool solves_with_a_row(const rb_joint *joint)
+{
+    if (joint->type == RB_JOINT_REVOLUTE) {
+        return joint->as.revolute.enable_lower || joint->as.revolute.enable_upper;
+    }
+    return joint->type == RB_JOINT_WELD && joint->as.weld.linear_hertz == 0.0 && joint->as.weld.angular_hertz == 0.0;
+}
+
 /* The inverse of K's upper-left 2x2, the pin alone, or all 0 when that
  * is singular. */
 static void set_point_inverse(rb_joint_frame *f, const rb_block_matrix *k)
@@ -54,6 +79,9 @@ void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double 
     rb_joint_frame *f = &joint->frame;
     f->point_mass = make_mass_matrix(f, f->ra, f->rb);
     set_point_inverse(f, &f->point_mass);
+    if (solves_with_a_row(joint)) {
+        make_cofactors(f);
+    }
     rb_point_constraint_prepare_drift(world, joint, h);
 }
 
@@ -95,6 +123,26 @@ void rb_point_constraint_prepare_drift(const rb_world *world, rb_joint *joint, d
     f->point_drift = drift;
 }
 
+/* Solves K_s·(x, z) = (v, w) with K_s = K whose coupling terms k13, k23
+ * take the row's sign s = ±1. Flipping them flips the cofactors c13 and
+ * c23 and leaves the others and the determinant as they are (each keeps
+ * its terms' products of two flipped factors), so K's cofactors serve
+ * both signs, to the bit: negation is exact. False when K is singular
+ * (a body that cannot turn makes an angle row redundant). */
+static bool solve_with_row(const rb_joint_frame *f, double sign, rb_vec2 v, double w, rb_vec2 *x, double *z)
+{
+    double det = f->point_det;
+    if (!(fabs(det) > 1e-300)) {
+        return false;
+    }
+    double c13 = sign * f->point_c13;
+    double c23 = sign * f->point_c23;
+    *x = rb_v2((f->point_c11 * v.x + f->point_c12 * v.y + c13 * w) / det,
+               (f->point_c12 * v.x + f->point_c22 * v.y + c23 * w) / det);
+    *z = (c13 * v.x + c23 * v.y + f->point_c33 * w) / det;
+    return true;
+}
+
 void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumulated, const rb_angular_row *row)
 {
     rb_body_state *a = rb_joint_state_a(world, joint);
@@ -107,20 +155,17 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
     if (row != NULL) {
         /* The row is s·(ωB - ωA) + bias = 0 with s = ±1; in K its coupling
          * terms take the sign s. */
-        const rb_block_matrix k = f->point_mass;
-        rb_block_matrix ks = k;
-        ks.k13 *= row->sign;
-        ks.k23 *= row->sign;
         double wdot = row->sign * (b->angular_velocity - a->angular_velocity) + row->bias;
         double angular;
-        if (rb_block_solve3(&ks, rb_neg(cdot), -wdot, &impulse, &angular)) {
+        if (solve_with_row(f, row->sign, rb_neg(cdot), -wdot, &impulse, &angular)) {
             impulse = rb_soften(response, impulse, *accumulated);
             angular = response->mass_scale * angular - response->impulse_scale * *row->accumulated;
             if (row->one_sided && *row->accumulated + angular < 0.0) {
                 /* The limit would pull: release it and hold the pin alone,
                  * net of the release's effect on the point. */
                 angular = -*row->accumulated;
-                rb_vec2 rhs = rb_neg(rb_add(cdot, rb_scale(angular, rb_v2(ks.k13, ks.k23))));
+                const rb_block_matrix k = f->point_mass;
+                rb_vec2 rhs = rb_neg(rb_add(cdot, rb_scale(angular, rb_v2(row->sign * k.k13, row->sign * k.k23))));
                 impulse =
                     rb_block_solve2(&k, rhs, &impulse) ? rb_soften(response, impulse, *accumulated) : rb_v2(0.0, 0.0);
             }

@@ -251,6 +251,9 @@ void rb_revolute_solve(rb_world *world, rb_joint *joint, double h)
         rb_point_alone_solve(world, joint, a, b, rb_point_velocity_error(world, joint, a, b), &r->point_impulse);
         return;
     }
+    if (joint->in_block && !r->enable_spring && !r->enable_motor) {
+        return; /* the pin and its limits are its block's (joint_block.h) */
+    }
     rb_body_state *a = rb_joint_state_a(world, joint);
     rb_body_state *b = rb_joint_state_b(world, joint);
     if (r->axial_mass > 0.0) {
@@ -271,7 +274,7 @@ void rb_revolute_solve(rb_world *world, rb_joint *joint, double h)
             r->motor_impulse = accumulated;
             rb_joint_apply_angular(joint, a, b, impulse);
         }
-        if (!joint->in_tree) { /* a tree's pins are solved together (joint_tree.h) */
+        if (!joint->in_tree && !joint->in_block) { /* solved together (joint_tree.h, joint_block.h) */
             solve_limits(world, joint, a, b, angle, h);
         }
         return;

@@ -29,7 +29,7 @@ static bool is_fixed(double inv_mass, double inv_inertia) { return inv_mass == 0
 
 static bool is_candidate(const rb_joint *joint)
 {
-    if (joint->type != RB_JOINT_REVOLUTE || joint->body_a < 0) {
+    if (joint->type != RB_JOINT_REVOLUTE || joint->body_a < 0 || joint->in_block) {
         return false;
     }
     const rb_revolute_data *r = &joint->as.revolute;

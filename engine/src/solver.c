@@ -14,6 +14,7 @@
 #include "cable_solver.h"
 #include "contact_solver.h"
 #include "error.h"
+#include "joint_block.h"
 #include "joint_solver.h"
 #include "joint_tree.h"
 #include "solver.h"
@@ -63,6 +64,7 @@ void rb_solver_damp_and_integrate_positions(rb_world *world, double h)
 
 void rb_solver_call_substep_callback(rb_world *world, int substep, double h)
 {
+    rb_cables_locate(world); /* the paths the callback reads and the cables' preparation share */
     if (world->substep_callback != NULL) {
         world->in_substep_callback = true;
         world->substep_callback(world, substep, h, world->substep_context);
@@ -95,6 +97,7 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
     rb_cables_warm_start(world);
     rb_joints_warm_start(world, h);
     rb_joint_tree_factor_velocities(world);
+    rb_joint_blocks_factor(world, h);
     rb_contact_solver_warm_start(world);
     profile->warm_start += rb_world_clock(world) - t;
 
@@ -104,6 +107,7 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
         bool backwards = iteration % 2 == 1;
         rb_joints_solve_velocities(world, h, backwards);
         rb_joint_tree_solve_velocities(world);
+        rb_joint_blocks_solve_velocities(world);
         rb_contact_solver_solve_velocities(world, backwards && !contact_bias);
     }
     profile->solve_velocities += rb_world_clock(world) - t;
@@ -121,6 +125,7 @@ rb_status rb_solver_step(rb_world *world, double dt)
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for contact constraints");
     }
     RB_TRY(rb_joints_collect_active(world));
+    rb_joint_blocks_build(world); /* before the trees, which leave its pins to it */
     profile->prepare = rb_world_clock(world) - t;
 
     if (!world->settings.warm_starting) {

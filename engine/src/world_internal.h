@@ -204,7 +204,10 @@ typedef struct rb_joint_frame {
     double point_inverse11, point_inverse12, point_inverse22;
     rb_vec2 point_drift;        /* m/s, the anchors' centripetal drift over the substep (joint_point.c) */
     rb_block_matrix point_mass; /* the point constraint's K at ra, rb (joint_point.c) */
-    rb_vec2 local_a, local_b;   /* m, the anchors relative to each centre of mass, in the body frames */
+    /* The cofactors of point_mass and its determinant, for a pin solved
+     * with an angular row (a limit, a rigid weld's angle), made with it. */
+    double point_c11, point_c12, point_c13, point_c22, point_c23, point_c33, point_det;
+    rb_vec2 local_a, local_b; /* m, the anchors relative to each centre of mass, in the body frames */
 } rb_joint_frame;
 
 typedef struct rb_revolute_data {
@@ -277,15 +280,18 @@ typedef struct rb_cable {
     int bodies[RB_MAX_CABLE_POINTS];
     rb_vec2 local_points[RB_MAX_CABLE_POINTS]; /* m, from each body's origin */
     void *user_data;
-    double base_tension; /* N */
-    double damping;      /* N·s/m */
-    double impulse;      /* N·s, accumulated in the current substep */
-    int body_count;      /* distinct bodies of the path, this substep */
+    double base_tension;                 /* N */
+    double damping;                      /* N·s/m */
+    double impulse;                      /* N·s, accumulated in the current substep */
+    rb_vec2 points[RB_MAX_CABLE_POINTS]; /* m, the path in the world at the substep's start (rb_cables_locate) */
+    int body_count;                      /* distinct bodies of the path, this substep */
     int solver_bodies[RB_MAX_CABLE_POINTS];
     rb_vec2 linear[RB_MAX_CABLE_POINTS]; /* Σ (u_i - u_{i-1}) over the body's points */
     double angular[RB_MAX_CABLE_POINTS]; /* m, Σ r_i × (u_i - u_{i-1}) */
     double inv_mass[RB_MAX_CABLE_POINTS], inv_inertia[RB_MAX_CABLE_POINTS];
-    double inverse_mass; /* 1/kg: how fast a unit impulse shortens the path */
+    int moving_count;                /* of those bodies, the ones an impulse moves, */
+    int moving[RB_MAX_CABLE_POINTS]; /* by their place in the arrays above */
+    double inverse_mass;             /* 1/kg: how fast a unit impulse shortens the path */
 } rb_cable;
 
 /* Ordered by use: what every velocity pass reads (the type, the bodies,
@@ -294,6 +300,7 @@ typedef struct rb_cable {
 typedef struct rb_joint {
     rb_joint_type type;
     bool in_tree;   /* this step, a pin solved with its tree (joint_tree.h) */
+    bool in_block;  /* this substep, a pin and its limits solved with its block (joint_block.h) */
     bool plain_pin; /* this step, a revolute joint with no limit, motor or spring: the point constraint alone */
     int body_a;     /* -1 for a mouse joint */
     int body_b;
@@ -353,6 +360,39 @@ typedef struct rb_joint_tree {
     int *gauss_seidel_joints;
     int gauss_seidel_count, gauss_seidel_capacity;
 } rb_joint_tree;
+
+/* The small limbs solved as one dense system (joint_block.h). */
+#define RB_BLOCK_MAX_BODIES 4
+#define RB_BLOCK_MAX_JOINTS 4
+#define RB_BLOCK_MAX_ROWS (3 * RB_BLOCK_MAX_JOINTS) /* two pin rows and one limit a joint */
+#define RB_MAX_JOINT_BLOCKS 4                       /* further blocks are left to Gauss-Seidel */
+
+/* One row of a block: J·v + bias = 0, its impulse kept in the joint. */
+typedef struct rb_block_row {
+    int slot_a, slot_b;  /* the bodies' places in the block; RB_BLOCK_MAX_BODIES for a fixed body */
+    double ja[3], jb[3]; /* the Jacobian on A and on B: (vx, vy, ω) */
+    double wa[3], wb[3]; /* M⁻¹·Jᵀ: the velocity change of a unit impulse on A and on B */
+    double bias;         /* m/s or rad/s */
+    double *accumulated; /* the joint's impulse of this row, N·s or N·m·s */
+    bool one_sided;      /* a limit: its accumulated impulse stays >= 0 */
+} rb_block_row;
+
+typedef struct rb_joint_block {
+    int body_count, joint_count, row_count;
+    int bodies[RB_BLOCK_MAX_BODIES]; /* body slots */
+    int joints[RB_BLOCK_MAX_JOINTS]; /* joint slots */
+    /* 1/kg, 1/(kg·m²); the last place stands for every fixed body, 0. */
+    double inv_mass[RB_BLOCK_MAX_BODIES + 1], inv_inertia[RB_BLOCK_MAX_BODIES + 1];
+    rb_block_row rows[RB_BLOCK_MAX_ROWS];
+    double k[RB_BLOCK_MAX_ROWS * RB_BLOCK_MAX_ROWS];      /* J·M⁻¹·Jᵀ, row_count × row_count */
+    double factor[RB_BLOCK_MAX_ROWS * RB_BLOCK_MAX_ROWS]; /* its L·D·Lᵀ: L below the diagonal, 1/D on it */
+    bool factored;                                        /* false: Gauss-Seidel solves it this substep */
+} rb_joint_block;
+
+typedef struct rb_joint_blocks {
+    int count;
+    rb_joint_block blocks[RB_MAX_JOINT_BLOCKS];
+} rb_joint_blocks;
 
 struct rb_world {
     uint64_t serial;          /* never 0, never reused (id.h) */
@@ -447,8 +487,10 @@ struct rb_world {
     int cable_slots;
     int cable_free;
     int cable_count;
+    bool cable_points_fresh; /* the cables' points are at the poses now (rb_cables_locate) */
 
     rb_joint_tree joint_tree;
+    rb_joint_blocks joint_blocks;
 
     double last_substep;              /* s, the substep length of the last step: impulses / it = forces */
     rb_rigid_response joint_response; /* the current pass's, set by the solver */

@@ -61,8 +61,11 @@ typedef struct rb_solver_settings {
     bool block_solver;       /**< default true: solve two-point manifolds as one 2x2 LCP (Baumgarte, NGS) */
     /** default true (NGS and soft step): solve the pins of joint trees whose heaviest
      * body is at least 100 times their lightest together, exactly, in every
-     * pass (a rope with a heavy end stays a rope); false leaves every pin to
-     * Gauss-Seidel, one joint at a time, to study how mass ratios defeat it */
+     * pass (a rope with a heavy end stays a rope), and under NGS a small limb
+     * of limited hinges whose heaviest body is at least 20 times its lightest
+     * as one block (a stop holds a heavy load through a light bone); false
+     * leaves every pin to Gauss-Seidel, one joint at a time, to study how mass
+     * ratios defeat it */
     bool tree_pins;
     double baumgarte;   /**< 0 .. 1, fraction of the error removed per (sub)step, default 0.2 */
     double linear_slop; /**< m, 0 .. 0.1: penetration allowed without correction, default 0.005 */

@@ -1,0 +1,464 @@
+/* SPDX-License-Identifier: MIT */
+/* Small limbs solved as one dense system (joint_block.h says why and
+ * how): the search for them once a step, the rows and factors once a
+ * substep, the solve in every velocity pass. */
+#include <math.h>
+
+#include "joint_block.h"
+#include "joint_solver.h"
+
+/* ---- which joints ------------------------------------------------------- */
+
+static bool moves_freely(const rb_body *body)
+{
+    return body->type == RB_BODY_DYNAMIC && body->awake && body->inv_mass > 0.0 && body->inv_inertia > 0.0;
+}
+/* A static body: the block gives fixed bodies no velocity (a kinematic
+ * one has its own). */
+static bool is_fixed(const rb_body *body) { return body->type == RB_BODY_STATIC; }
+
+static bool has_limit(const rb_joint *joint)
+{
+    return joint->type == RB_JOINT_REVOLUTE && (joint->as.revolute.enable_lower || joint->as.revolute.enable_upper);
+}
+
+/* A revolute joint between bodies that each move freely or not at all. */
+static bool fits_a_block(const rb_world *world, const rb_joint *joint)
+{
+    if (joint->type != RB_JOINT_REVOLUTE || joint->body_a < 0) {
+        return false;
+    }
+    const rb_body *a = &world->bodies[joint->body_a];
+    const rb_body *b = &world->bodies[joint->body_b];
+    return (moves_freely(a) || is_fixed(a)) && (moves_freely(b) || is_fixed(b));
+}
+
+static int find(const int *list, int count, int value)
+{
+    for (int i = 0; i < count; ++i) {
+        if (list[i] == value) {
+            return i;
+        }
+    }
+    return -1;
+}
+
+/* Gathers, breadth first from `seed`, the bodies and joints linked to it
+ * into `block`; false when the group is too large or has a joint that
+ * does not fit. */
+static bool gather(const rb_world *world, int seed, rb_joint_block *block)
+{
+    block->body_count = 0;
+    block->joint_count = 0;
+    const rb_joint *first = &world->joints[seed];
+    const int ends[2] = {first->body_a, first->body_b};
+    for (int e = 0; e < 2; ++e) {
+        if (moves_freely(&world->bodies[ends[e]]) && find(block->bodies, block->body_count, ends[e]) < 0) {
+            block->bodies[block->body_count++] = ends[e];
+        }
+    }
+    for (int n = 0; n < block->body_count; ++n) {
+        int body = block->bodies[n];
+        for (int j = world->bodies[body].first_joint; j >= 0;) {
+            const rb_joint *joint = &world->joints[j];
+            if (!fits_a_block(world, joint)) {
+                return false;
+            }
+            if (find(block->joints, block->joint_count, j) < 0) {
+                if (block->joint_count == RB_BLOCK_MAX_JOINTS) {
+                    return false;
+                }
+                block->joints[block->joint_count++] = j;
+                int other = joint->body_a == body ? joint->body_b : joint->body_a;
+                if (moves_freely(&world->bodies[other]) && find(block->bodies, block->body_count, other) < 0) {
+                    if (block->body_count == RB_BLOCK_MAX_BODIES) {
+                        return false;
+                    }
+                    block->bodies[block->body_count++] = other;
+                }
+            }
+            j = joint->body_a == body ? joint->next_on_a : joint->next_on_b;
+        }
+    }
+    return true;
+}
+
+/* Whether a gathered group is a block: every joint limited (the trees
+ * take unlimited pins) and masses uneven enough to defeat Gauss-Seidel. */
+static bool needs_a_block(const rb_world *world, const rb_joint_block *block)
+{
+    for (int j = 0; j < block->joint_count; ++j) {
+        if (!has_limit(&world->joints[block->joints[j]])) {
+            return false;
+        }
+    }
+    double lightest = INFINITY, heaviest = 0.0;
+    for (int b = 0; b < block->body_count; ++b) {
+        double mass = 1.0 / world->bodies[block->bodies[b]].inv_mass;
+        lightest = rb_min(lightest, mass);
+        heaviest = rb_max(heaviest, mass);
+    }
+    return heaviest >= RB_BLOCK_MASS_RATIO * lightest;
+}
+
+void rb_joint_blocks_build(rb_world *world)
+{
+    rb_joint_blocks *blocks = &world->joint_blocks;
+    blocks->count = 0;
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        world->joints[world->active_joints[k]].in_block = false;
+    }
+    if (world->settings.type != RB_SOLVER_NGS || !world->settings.tree_pins) {
+        return;
+    }
+    /* Each group is seeded by its first limited joint; a joint already
+     * in a block seeds nothing more. */
+    for (int k = 0; k < world->active_joint_count && blocks->count < RB_MAX_JOINT_BLOCKS; ++k) {
+        int seed = world->active_joints[k];
+        if (world->joints[seed].in_block || !has_limit(&world->joints[seed]) ||
+            !fits_a_block(world, &world->joints[seed])) {
+            continue;
+        }
+        rb_joint_block *block = &blocks->blocks[blocks->count];
+        if (!gather(world, seed, block) || block->body_count == 0 || !needs_a_block(world, block)) {
+            continue;
+        }
+        for (int b = 0; b <= RB_BLOCK_MAX_BODIES; ++b) {
+            const rb_body *body = b < block->body_count ? &world->bodies[block->bodies[b]] : NULL;
+            block->inv_mass[b] = body != NULL ? body->inv_mass : 0.0;
+            block->inv_inertia[b] = body != NULL ? body->inv_inertia : 0.0;
+        }
+        for (int j = 0; j < block->joint_count; ++j) {
+            world->joints[block->joints[j]].in_block = true;
+        }
+        ++blocks->count;
+    }
+}
+
+/* ---- the rows ---------------------------------------------------------- */
+
+/* A body's place in the block, RB_BLOCK_MAX_BODIES (no velocity, no
+ * inverse mass) for a fixed one. */
+static int slot_of(const rb_joint_block *block, int body)
+{
+    int slot = find(block->bodies, block->body_count, body);
+    return slot >= 0 ? slot : RB_BLOCK_MAX_BODIES;
+}
+
+/* Appends the row J·v + bias = 0 of `joint`, J = (ja on A, jb on B). */
+static void add_row(rb_joint_block *block, const rb_joint *joint, const double ja[3], const double jb[3], double bias,
+                    double *accumulated, bool one_sided)
+{
+    block->rows[block->row_count++] = (rb_block_row){
+        .slot_a = slot_of(block, joint->body_a),
+        .slot_b = slot_of(block, joint->body_b),
+        .ja = {ja[0], ja[1], ja[2]},
+        .jb = {jb[0], jb[1], jb[2]},
+        .bias = bias,
+        .accumulated = accumulated,
+        .one_sided = one_sided,
+    };
+}
+
+/* The pin's two rows, Cdot = vB + ωB × rB - vA - ωA × rA less the drift:
+ * x: (1, 0, -rB.y) on B, (-1, 0, rA.y) on A; y: (0, 1, rB.x), (0, -1, -rA.x). */
+static void add_pin(rb_joint_block *block, rb_joint *joint)
+{
+    const rb_joint_frame *f = &joint->frame;
+    rb_revolute_data *r = &joint->as.revolute;
+    add_row(block, joint, (const double[3]){-1.0, 0.0, f->ra.y}, (const double[3]){1.0, 0.0, -f->rb.y},
+            -f->point_drift.x, &r->point_impulse.x, false);
+    add_row(block, joint, (const double[3]){0.0, -1.0, -f->ra.x}, (const double[3]){0.0, 1.0, f->rb.x},
+            -f->point_drift.y, &r->point_impulse.y, false);
+}
+
+/* Releases a limit's accumulated impulse (sign +1 lower, -1 upper). */
+static void release(rb_world *world, rb_joint *joint, double sign, double *accumulated)
+{
+    rb_joint_apply_angular(joint, rb_joint_state_a(world, joint), rb_joint_state_b(world, joint), -sign * *accumulated);
+    *accumulated = 0.0;
+}
+
+/* The nearer enabled limit's row, when the joint could reach it within
+ * the substep or held it; the farther limit, a swing away, is released.
+ * Returns the row's margin (rad), or INFINITY for no row. */
+static double add_limit(rb_world *world, rb_joint_block *block, rb_joint *joint, double h)
+{
+    rb_revolute_data *r = &joint->as.revolute;
+    if (!r->enable_lower && !r->enable_upper) {
+        return INFINITY;
+    }
+    double angle = rb_joint_relative_angle(world, joint, r->reference_angle);
+    bool lower = r->enable_lower && (!r->enable_upper || angle - r->lower <= r->upper - angle);
+    if (lower && r->upper_impulse != 0.0) {
+        release(world, joint, -1.0, &r->upper_impulse);
+    } else if (!lower && r->lower_impulse != 0.0) {
+        release(world, joint, 1.0, &r->lower_impulse);
+    }
+    double sign = lower ? 1.0 : -1.0;
+    double margin = lower ? angle - r->lower : r->upper - angle;
+    double *accumulated = lower ? &r->lower_impulse : &r->upper_impulse;
+    const rb_body_state *a = rb_joint_state_a(world, joint);
+    const rb_body_state *b = rb_joint_state_b(world, joint);
+    double reach = 2.0 * fabs(b->angular_velocity - a->angular_velocity) * h + RB_ANGULAR_SLOP;
+    if (margin > reach && *accumulated == 0.0) {
+        return INFINITY;
+    }
+    add_row(block, joint, (const double[3]){0.0, 0.0, -sign}, (const double[3]){0.0, 0.0, sign},
+            rb_one_sided_bias(world, margin, h), accumulated, true);
+    return margin;
+}
+
+/* ---- the factors --------------------------------------------------------- */
+
+/* The row's M⁻¹·Jᵀ on each body (0 on a fixed one). */
+static void weigh(const rb_joint_block *block, rb_block_row *row)
+{
+    row->wa[0] = block->inv_mass[row->slot_a] * row->ja[0];
+    row->wa[1] = block->inv_mass[row->slot_a] * row->ja[1];
+    row->wa[2] = block->inv_inertia[row->slot_a] * row->ja[2];
+    row->wb[0] = block->inv_mass[row->slot_b] * row->jb[0];
+    row->wb[1] = block->inv_mass[row->slot_b] * row->jb[1];
+    row->wb[2] = block->inv_inertia[row->slot_b] * row->jb[2];
+}
+
+static double dot3(const double *x, const double *y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
+
+/* K_ij = J_i·M⁻¹·J_jᵀ: the sum over the bodies the two rows share (a
+ * fixed body's weights are 0). */
+static double coupling(const rb_block_row *i, const rb_block_row *j)
+{
+    double sum = 0.0;
+    sum += i->slot_a == j->slot_a ? dot3(i->ja, j->wa) : 0.0;
+    sum += i->slot_a == j->slot_b ? dot3(i->ja, j->wb) : 0.0;
+    sum += i->slot_b == j->slot_a ? dot3(i->jb, j->wa) : 0.0;
+    sum += i->slot_b == j->slot_b ? dot3(i->jb, j->wb) : 0.0;
+    return sum;
+}
+
+/* L·D·Lᵀ of the n × n symmetric `a` (row-major, RB_BLOCK_MAX_ROWS to a
+ * row; its lower triangle is read) into `f`: L below the diagonal, 1/D
+ * on it, so that a solve only multiplies. Column by column, each entry
+ * less its products with the columns before, through v_k = L_jk·D_k.
+ * False when a pivot is not positive beyond rounding (dependent rows). */
+static bool factor(const double *a, int n, double *f)
+{
+    double v[RB_BLOCK_MAX_ROWS], d[RB_BLOCK_MAX_ROWS];
+    for (int j = 0; j < n; ++j) {
+        double *row_j = f + j * RB_BLOCK_MAX_ROWS;
+        double pivot = a[j * RB_BLOCK_MAX_ROWS + j];
+        for (int k = 0; k < j; ++k) {
+            v[k] = row_j[k] * d[k];
+            pivot -= row_j[k] * v[k];
+        }
+        if (!(pivot > 1e-12 * a[j * RB_BLOCK_MAX_ROWS + j])) {
+            return false;
+        }
+        d[j] = pivot;
+        row_j[j] = 1.0 / pivot;
+        for (int i = j + 1; i < n; ++i) {
+            double *row_i = f + i * RB_BLOCK_MAX_ROWS;
+            double sum = a[i * RB_BLOCK_MAX_ROWS + j];
+            for (int k = 0; k < j; ++k) {
+                sum -= row_i[k] * v[k];
+            }
+            row_i[j] = sum / pivot;
+        }
+    }
+    return true;
+}
+
+/* Solves L·D·Lᵀ·x = x in place. */
+static void solve_factored(const double *restrict f, int n, double *restrict x)
+{
+    for (int i = 1; i < n; ++i) {
+        const double *row = f + i * RB_BLOCK_MAX_ROWS;
+        double sum = x[i];
+        for (int k = 0; k < i; ++k) {
+            sum -= row[k] * x[k];
+        }
+        x[i] = sum;
+    }
+    for (int i = 0; i < n; ++i) {
+        x[i] *= f[i * RB_BLOCK_MAX_ROWS + i];
+    }
+    for (int i = n - 1; i > 0; --i) {
+        const double *row = f + i * RB_BLOCK_MAX_ROWS;
+        double xi = x[i];
+        for (int k = 0; k < i; ++k) {
+            x[k] -= row[k] * xi;
+        }
+    }
+}
+
+static void fill_k(rb_joint_block *block)
+{
+    int n = block->row_count;
+    for (int i = 0; i < n; ++i) {
+        weigh(block, &block->rows[i]);
+    }
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j <= i; ++j) {
+            double value = coupling(&block->rows[i], &block->rows[j]);
+            block->k[i * RB_BLOCK_MAX_ROWS + j] = value;
+            block->k[j * RB_BLOCK_MAX_ROWS + i] = value;
+        }
+    }
+}
+
+/* Takes a limit's accumulated impulse, warm started, back from its
+ * bodies: a limit left out of the substep must not go on pushing. */
+static void release_row(rb_world *world, const rb_joint_block *block, const rb_block_row *row)
+{
+    const int slots[2] = {row->slot_a, row->slot_b};
+    const double *weights[2] = {row->wa, row->wb};
+    for (int p = 0; p < 2; ++p) {
+        if (slots[p] < block->body_count) {
+            rb_body_state *s = &world->states[block->bodies[slots[p]]];
+            s->linear_velocity = rb_mul_sub(s->linear_velocity, *row->accumulated, rb_v2(weights[p][0], weights[p][1]));
+            s->angular_velocity -= *row->accumulated * weights[p][2];
+        }
+    }
+    *row->accumulated = 0.0;
+}
+
+void rb_joint_blocks_factor(rb_world *world, double h)
+{
+    rb_joint_blocks *blocks = &world->joint_blocks;
+    for (int n = 0; n < blocks->count; ++n) {
+        rb_joint_block *block = &blocks->blocks[n];
+        block->row_count = 0;
+        for (int j = 0; j < block->joint_count; ++j) {
+            add_pin(block, &world->joints[block->joints[j]]);
+        }
+        int pins = block->row_count;
+        /* The limits after the pins, nearest first: a singular K drops
+         * the last. */
+        double margins[RB_BLOCK_MAX_JOINTS];
+        for (int j = 0; j < block->joint_count; ++j) {
+            double margin = add_limit(world, block, &world->joints[block->joints[j]], h);
+            if (margin == INFINITY) {
+                continue;
+            }
+            int i = block->row_count - 1 - pins;
+            rb_block_row row = block->rows[block->row_count - 1];
+            for (; i > 0 && margins[i - 1] > margin; --i) {
+                margins[i] = margins[i - 1];
+                block->rows[pins + i] = block->rows[pins + i - 1];
+            }
+            margins[i] = margin;
+            block->rows[pins + i] = row;
+        }
+        fill_k(block);
+        while (!(block->factored = factor(block->k, block->row_count, block->factor)) && block->row_count > pins) {
+            release_row(world, block, &block->rows[--block->row_count]);
+        }
+        for (int j = 0; j < block->joint_count; ++j) {
+            world->joints[block->joints[j]].in_block = block->factored;
+        }
+    }
+}
+
+/* ---- the passes ---------------------------------------------------------- */
+
+/* J·v + bias of a row, v the block's velocities (vx, vy, ω a body, the
+ * fixed bodies' 0 last). */
+static double row_rate(const rb_block_row *row, const double *v)
+{
+    return row->bias + dot3(row->ja, v + 3 * row->slot_a) + dot3(row->jb, v + 3 * row->slot_b);
+}
+
+/* Solves K_SS·x_S = rhs_S - K_SF·x_F for the rows in S (free[i]), the
+ * others' x fixed, with a factorisation of K_SS made here: only a pass
+ * that releases a limit needs it. */
+static void solve_subset(const rb_joint_block *block, const bool *free, const double *rhs, double *x)
+{
+    int n = block->row_count;
+    int index[RB_BLOCK_MAX_ROWS];
+    int m = 0;
+    for (int i = 0; i < n; ++i) {
+        if (free[i]) {
+            index[m++] = i;
+        }
+    }
+    double sub[RB_BLOCK_MAX_ROWS * RB_BLOCK_MAX_ROWS] = {0}, f[RB_BLOCK_MAX_ROWS * RB_BLOCK_MAX_ROWS],
+                                   y[RB_BLOCK_MAX_ROWS];
+    for (int p = 0; p < m; ++p) {
+        y[p] = rhs[index[p]];
+        for (int j = 0; j < n; ++j) {
+            if (!free[j]) {
+                y[p] -= block->k[index[p] * RB_BLOCK_MAX_ROWS + j] * x[j];
+            }
+        }
+        for (int q = 0; q < m; ++q) {
+            sub[p * RB_BLOCK_MAX_ROWS + q] = block->k[index[p] * RB_BLOCK_MAX_ROWS + index[q]];
+        }
+    }
+    /* A principal submatrix of a positive definite K is positive definite. */
+    (void)factor(sub, m, f);
+    solve_factored(f, m, y);
+    for (int p = 0; p < m; ++p) {
+        x[index[p]] = y[p];
+    }
+}
+
+void rb_joint_blocks_solve_velocities(rb_world *world)
+{
+    rb_joint_blocks *blocks = &world->joint_blocks;
+    for (int n = 0; n < blocks->count; ++n) {
+        const rb_joint_block *block = &blocks->blocks[n];
+        if (!block->factored) {
+            continue;
+        }
+        double v[3 * (RB_BLOCK_MAX_BODIES + 1)] = {0};
+        for (int b = 0; b < block->body_count; ++b) {
+            const rb_body_state *s = &world->states[block->bodies[b]];
+            v[3 * b] = s->linear_velocity.x;
+            v[3 * b + 1] = s->linear_velocity.y;
+            v[3 * b + 2] = s->angular_velocity;
+        }
+        int rows = block->row_count;
+        double rhs[RB_BLOCK_MAX_ROWS], x[RB_BLOCK_MAX_ROWS];
+        bool free[RB_BLOCK_MAX_ROWS];
+        for (int i = 0; i < rows; ++i) {
+            rhs[i] = -row_rate(&block->rows[i], v);
+            x[i] = rhs[i];
+            free[i] = true;
+        }
+        solve_factored(block->factor, rows, x);
+        /* Release the limit that would pull hardest, then solve the rest
+         * again, until none pulls. */
+        for (;;) {
+            int worst = -1;
+            double most = 0.0;
+            for (int i = 0; i < rows; ++i) {
+                const rb_block_row *row = &block->rows[i];
+                double total = *row->accumulated + x[i];
+                if (row->one_sided && free[i] && total < most) {
+                    most = total;
+                    worst = i;
+                }
+            }
+            if (worst < 0) {
+                break;
+            }
+            free[worst] = false;
+            x[worst] = -*block->rows[worst].accumulated;
+            solve_subset(block, free, rhs, x);
+        }
+        for (int i = 0; i < rows; ++i) {
+            const rb_block_row *row = &block->rows[i];
+            *row->accumulated += x[i];
+            double *va = v + 3 * row->slot_a, *vb = v + 3 * row->slot_b; /* a fixed body's wa, wb are 0 */
+            for (int k = 0; k < 3; ++k) {
+                va[k] += row->wa[k] * x[i];
+                vb[k] += row->wb[k] * x[i];
+            }
+        }
+        for (int b = 0; b < block->body_count; ++b) {
+            rb_body_state *s = &world->states[block->bodies[b]];
+            s->linear_velocity = rb_v2(v[3 * b], v[3 * b + 1]);
+            s->angular_velocity = v[3 * b + 2];
+        }
+    }
+}

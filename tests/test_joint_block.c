@@ -1,0 +1,265 @@
+/* SPDX-License-Identifier: MIT */
+/* Small limbs of limited pins solved as one dense block
+ * (engine/src/joint_block.c), checked against the equations the block
+ * solves rather than against a second solver: after one velocity pass
+ * every pin's anchors move together (up to the centripetal drift the pin
+ * asks for), a held limit closes no faster than its speculative bias, no
+ * limit pulls, and the bodies' momentum changed by exactly the rows'
+ * impulses, M·Δv = Jᵀ·λ; two limits reached in a loop, more rows than
+ * freedoms, leave one out. Then the whole step: a heavy link dropping
+ * onto a stop held through a light one, as in the built-in leg.
+ *
+ * The limb is a four-bar through the ground, the leg's shape: a heavy
+ * horizontal "femur" pinned to the ground, a "tibia" hanging from its
+ * end, a light "foot" from the tibia's end, pinned to the ground again at
+ * its toe. Every hinge is limited; the ankle's range is ±3°.
+ */
+#include <criterion/criterion.h>
+#include <math.h>
+
+#include "joint_block.h"
+#include "joint_solver.h"
+#include "rb/rb.h"
+#include "test_support.h"
+#include "world_internal.h"
+
+#define DEG (RB_PI / 180.0)
+#define ANKLE_RANGE (3.0 * DEG)
+
+typedef struct limb {
+    rb_world *world;
+    rb_body_id bodies[3];  /* femur, tibia, foot */
+    rb_joint_id hinges[4]; /* hip, knee, ankle, toe */
+} limb;
+
+static rb_body_id add_bone(rb_world *world, rb_vec2 centre, double width, double height, double density)
+{
+    rb_body_id body = make_body(world, RB_BODY_DYNAMIC, centre, 0.0);
+    rb_polygon box;
+    cr_assert_eq(rb_make_box(0.5 * width, 0.5 * height, &box), RB_OK);
+    rb_shape_def shape = rb_default_shape_def();
+    shape.density = density;
+    shape.filter.group_index = -1;
+    rb_shape_id id;
+    cr_assert_eq(rb_shape_create_polygon(world, body, &shape, &box, &id), RB_OK, "%s", rb_last_error());
+    return body;
+}
+
+static rb_joint_id hinge(rb_world *world, rb_body_id a, rb_body_id b, rb_vec2 anchor, double range)
+{
+    rb_revolute_joint_def def = rb_default_revolute_joint_def();
+    cr_assert_eq(rb_revolute_joint_def_at(&def, world, a, b, anchor), RB_OK, "%s", rb_last_error());
+    def.enable_lower_limit = def.enable_upper_limit = true;
+    def.lower_angle = -range;
+    def.upper_angle = range;
+    rb_joint_id id;
+    cr_assert_eq(rb_revolute_joint_create(world, &def, &id), RB_OK, "%s", rb_last_error());
+    return id;
+}
+
+/* The femur's density `heavy` (kg/m²): at 20,000 kg/m² its 0.48 × 0.05 m
+ * weigh 480 kg, against the tibia's 10.8 kg and the foot's 0.84 kg. */
+static limb make_limb(double heavy)
+{
+    limb l = {.world = make_world(rb_v2(0.0, -9.8))};
+    rb_body_id ground = make_body(l.world, RB_BODY_STATIC, rb_v2(0.0, 0.0), 0.0);
+    l.bodies[0] = add_bone(l.world, rb_v2(0.24, 0.0), 0.48, 0.05, heavy);
+    l.bodies[1] = add_bone(l.world, rb_v2(0.48, -0.18), 0.03, 0.36, 1000.0);
+    l.bodies[2] = add_bone(l.world, rb_v2(0.55, -0.36), 0.14, 0.02, 300.0);
+    l.hinges[0] = hinge(l.world, ground, l.bodies[0], rb_v2(0.0, 0.0), 90.0 * DEG);
+    l.hinges[1] = hinge(l.world, l.bodies[0], l.bodies[1], rb_v2(0.48, 0.0), 90.0 * DEG);
+    l.hinges[2] = hinge(l.world, l.bodies[1], l.bodies[2], rb_v2(0.48, -0.36), ANKLE_RANGE);
+    l.hinges[3] = hinge(l.world, l.bodies[2], ground, rb_v2(0.62, -0.36), 90.0 * DEG);
+    return l;
+}
+
+static rb_joint *joint_of(rb_world *world, rb_joint_id id) { return &world->joints[id.index]; }
+
+/* The solver's set-up of one substep of h, as rb_solver_step and
+ * rb_solver_sequential_substep do it under NGS. */
+static void prepare(rb_world *world, double h)
+{
+    cr_assert_eq(rb_joints_collect_active(world), RB_OK);
+    rb_joint_blocks_build(world);
+    world->joint_response = (rb_rigid_response){.mass_scale = 1.0};
+    rb_joints_prepare(world);
+    rb_joints_warm_start(world, h); /* the frames; the impulses are still 0 */
+    rb_joint_blocks_factor(world, h);
+}
+
+Test(joint_block, a_limited_loop_of_uneven_masses_is_one_block_and_even_masses_are_not)
+{
+    limb heavy = make_limb(20000.0);
+    prepare(heavy.world, 1.0 / 600.0);
+    cr_expect_eq(heavy.world->joint_blocks.count, 1);
+    for (int k = 0; k < 4; ++k) {
+        cr_expect(joint_of(heavy.world, heavy.hinges[k])->in_block, "hinge %d in the block", k);
+    }
+    destroy_world_and_expect_no_leak(heavy.world);
+
+    /* At 200 kg/m² the femur weighs 4.8 kg, and the heaviest bone, the
+     * tibia, 13 times the foot: below RB_BLOCK_MASS_RATIO, Gauss-Seidel's. */
+    limb even = make_limb(200.0);
+    prepare(even.world, 1.0 / 600.0);
+    cr_expect_eq(even.world->joint_blocks.count, 0);
+    cr_expect_not(joint_of(even.world, even.hinges[2])->in_block);
+    destroy_world_and_expect_no_leak(even.world);
+}
+
+Test(joint_block, a_weld_in_the_group_or_the_trees_turned_off_leave_it_to_gauss_seidel)
+{
+    limb welded = make_limb(20000.0);
+    rb_body_id extra = add_bone(welded.world, rb_v2(0.3, 0.1), 0.05, 0.05, 1000.0);
+    rb_weld_joint_def weld = rb_default_weld_joint_def();
+    cr_assert_eq(rb_weld_joint_def_at(&weld, welded.world, welded.bodies[0], extra, rb_v2(0.3, 0.05)), RB_OK, "%s",
+                 rb_last_error());
+    rb_joint_id id;
+    cr_assert_eq(rb_weld_joint_create(welded.world, &weld, &id), RB_OK, "%s", rb_last_error());
+    prepare(welded.world, 1.0 / 600.0);
+    cr_expect_eq(welded.world->joint_blocks.count, 0);
+    destroy_world_and_expect_no_leak(welded.world);
+
+    limb off = make_limb(20000.0);
+    rb_solver_settings settings = rb_world_solver_settings(off.world);
+    settings.tree_pins = false;
+    cr_assert_eq(rb_world_set_solver_settings(off.world, &settings), RB_OK, "%s", rb_last_error());
+    prepare(off.world, 1.0 / 600.0);
+    cr_expect_eq(off.world->joint_blocks.count, 0);
+    destroy_world_and_expect_no_leak(off.world);
+}
+
+Test(joint_block, one_velocity_pass_meets_every_row_with_the_rows_impulses)
+{
+    limb l = make_limb(20000.0);
+    rb_world *world = l.world;
+    /* Turn the ankle to 0.1° from its lower stop, then give every body
+     * velocities the joints do not allow; those the pins leave turn the
+     * ankle down at about 10 rad/s, onto the stop. */
+    for (int i = 0; i < 3; ++i) {
+        cr_assert_eq(rb_body_set_linear_velocity(world, l.bodies[i], rb_v2(sin(1.7 * i + 0.3), cos(2.3 * i))), RB_OK);
+    }
+    cr_assert_eq(rb_body_set_angular_velocity(world, l.bodies[0], 0.5), RB_OK);
+    cr_assert_eq(rb_body_set_angular_velocity(world, l.bodies[1], -1.0), RB_OK);
+    cr_assert_eq(rb_body_set_angular_velocity(world, l.bodies[2], 4.0), RB_OK);
+    rb_body_state *foot = &world->states[l.bodies[2].index];
+    rb_body_state_turn(foot, -(ANKLE_RANGE - 0.1 * DEG));
+    double h = 1.0 / 600.0;
+    prepare(world, h);
+    cr_assert_eq(world->joint_blocks.count, 1);
+    const rb_joint_block *block = &world->joint_blocks.blocks[0];
+    cr_assert(block->factored);
+    cr_expect_eq(block->row_count, 9, "four pins and the ankle's lower limit, %d rows", block->row_count);
+
+    rb_body_state before[3];
+    for (int i = 0; i < 3; ++i) {
+        before[i] = world->states[l.bodies[i].index];
+    }
+    rb_joint_blocks_solve_velocities(world);
+
+    for (int k = 0; k < 4; ++k) {
+        rb_joint *joint = joint_of(world, l.hinges[k]);
+        rb_vec2 cdot =
+            rb_joint_relative_velocity(joint, rb_joint_state_a(world, joint), rb_joint_state_b(world, joint));
+        expect_vec_near(cdot, joint->frame.point_drift, 1e-10, "a pin's anchor velocity after the pass");
+    }
+    /* The ankle's lower limit: it may close its 0.1° margin in the
+     * substep, no faster, and pushes (impulse > 0). */
+    rb_joint *ankle = joint_of(world, l.hinges[2]);
+    const rb_revolute_data *r = &ankle->as.revolute;
+    double opening =
+        rb_joint_state_b(world, ankle)->angular_velocity - rb_joint_state_a(world, ankle)->angular_velocity;
+    double margin = rb_joint_relative_angle(world, ankle, r->reference_angle) - r->lower;
+    cr_expect_gt(r->lower_impulse, 0.0, "the limit holds the ankle");
+    expect_near(opening, -margin / h, 1e-9, "the ankle closes on its stop at margin / h");
+
+    /* M·Δv = Jᵀ·λ: every body's momentum and angular momentum about its
+     * centre changed by the rows' impulses (each pin's at its anchors,
+     * each limit's about the centres). */
+    for (int i = 0; i < 3; ++i) {
+        int index = l.bodies[i].index;
+        const rb_body *body = &world->bodies[index];
+        rb_vec2 force = rb_v2(0.0, 0.0);
+        double torque = 0.0;
+        for (int k = 0; k < 4; ++k) {
+            rb_joint *joint = joint_of(world, l.hinges[k]);
+            const rb_revolute_data *d = &joint->as.revolute;
+            double angular = d->lower_impulse - d->upper_impulse;
+            if (joint->body_b == index) {
+                force = rb_add(force, d->point_impulse);
+                torque += rb_cross(joint->frame.rb, d->point_impulse) + angular;
+            } else if (joint->body_a == index) {
+                force = rb_sub(force, d->point_impulse);
+                torque -= rb_cross(joint->frame.ra, d->point_impulse) + angular;
+            }
+        }
+        const rb_body_state *after = &world->states[index];
+        rb_vec2 momentum = rb_scale(1.0 / body->inv_mass, rb_sub(after->linear_velocity, before[i].linear_velocity));
+        double angular = (after->angular_velocity - before[i].angular_velocity) / body->inv_inertia;
+        expect_vec_near(momentum, force, 1e-9 * (1.0 + rb_length(force)), "a body's momentum change");
+        expect_near(angular, torque, 1e-9 * (1.0 + fabs(torque)), "a body's angular momentum change");
+    }
+    destroy_world_and_expect_no_leak(world);
+}
+
+/* The farthest the ankle went past its stops over `seconds` of 60 Hz
+ * steps of 10 substeps of 4 velocity and 1 position pass, the leg's
+ * budget (rad). */
+static double ankle_overshoot(bool blocks, double seconds)
+{
+    limb l = make_limb(20000.0);
+    rb_solver_settings settings = rb_world_solver_settings(l.world);
+    settings.substeps = 10;
+    settings.velocity_iterations = 4;
+    settings.position_iterations = 1;
+    settings.tree_pins = blocks;
+    cr_assert_eq(rb_world_set_solver_settings(l.world, &settings), RB_OK, "%s", rb_last_error());
+    double worst = 0.0;
+    for (int s = 0; s < lround(seconds * 60.0); ++s) {
+        cr_assert_eq(rb_world_step(l.world, TEST_DT), RB_OK, "%s", rb_last_error());
+        double angle = rb_revolute_joint_angle(l.world, l.hinges[2]);
+        worst = fmax(worst, fabs(angle) - ANKLE_RANGE);
+    }
+    destroy_world_and_expect_no_leak(l.world);
+    return worst;
+}
+
+Test(joint_block, a_heavy_link_dropping_onto_a_stop_is_held_through_a_light_one)
+{
+    /* The femur is 570 times the foot: one joint at a time, 4 passes carry
+     * its weight to the foot's pin a little at a time and the ankle passes
+     * its stop by degrees; as one block it holds within a hundredth of a
+     * degree. */
+    double gauss_seidel = ankle_overshoot(false, 2.0);
+    double block = ankle_overshoot(true, 2.0);
+    cr_log_info("the ankle passed its stop by %.4f degrees one joint at a time, %.5f degrees as a block",
+                gauss_seidel / DEG, block / DEG);
+    cr_expect_gt(gauss_seidel, 1.0 * DEG, "Gauss-Seidel passed the stop by %.3f degrees", gauss_seidel / DEG);
+    cr_expect_lt(block, 0.01 * DEG, "the block passed the stop by %.4f degrees", block / DEG);
+}
+
+Test(joint_block, two_limits_reached_in_a_loop_leave_one_out_and_release_it)
+{
+    /* The toe's range narrowed to the ankle's: turning the foot 2.9° down
+     * brings the ankle within 0.1° of its lower stop and the toe within
+     * 0.1° of its upper one. Four pins and two limits are ten rows on the
+     * bodies' nine freedoms: K is singular, and one limit is left out of
+     * the substep, its warm-started impulse taken back. */
+    limb l = make_limb(20000.0);
+    rb_world *world = l.world;
+    cr_assert_eq(rb_revolute_joint_set_limits(world, l.hinges[3], true, -ANKLE_RANGE, true, ANKLE_RANGE), RB_OK, "%s",
+                 rb_last_error());
+    cr_assert_eq(rb_body_set_angular_velocity(world, l.bodies[2], 4.0), RB_OK);
+    rb_body_state_turn(&world->states[l.bodies[2].index], -(ANKLE_RANGE - 0.1 * DEG));
+    rb_revolute_data *ankle = &joint_of(world, l.hinges[2])->as.revolute;
+    rb_revolute_data *toe = &joint_of(world, l.hinges[3])->as.revolute;
+    ankle->lower_impulse = 1.0;
+    toe->upper_impulse = 1.0;
+    prepare(world, 1.0 / 600.0);
+    cr_assert_eq(world->joint_blocks.count, 1);
+    const rb_joint_block *block = &world->joint_blocks.blocks[0];
+    cr_expect(block->factored);
+    cr_expect_eq(block->row_count, 9, "%d rows", block->row_count);
+    cr_expect((ankle->lower_impulse == 0.0) != (toe->upper_impulse == 0.0),
+              "one limit released: ankle %g, toe %g N·m·s", ankle->lower_impulse, toe->upper_impulse);
+    destroy_world_and_expect_no_leak(world);
+}
