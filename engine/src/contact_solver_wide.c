@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* The soft contact pass and the preparation of the contact points, two
- * contacts at a time.
+/* The soft step's contact passes and the preparation of the contact
+ * points, two contacts at a time.
  *
  * Within a colour no two constraints move the same body
  * (constraint_colouring.h), so two of them can be solved at once, each in
@@ -14,32 +14,46 @@
  * friction here, with an impulse of zero. tests/test_contact_lanes.c
  * checks that both leave equal velocities and impulses.
  *
- * The constraints stay where rb_contact_solver_prepare put them, one
- * struct each: a lane's values are loaded from its own constraint, one
- * half-register at a time, which costs what the reference's loads cost.
- * Pairs of two-point contacts go two at a time; a contact with one
- * point, the last of an odd colour and the overflow colour (whose
- * constraints may share bodies) go through the reference. Without SSE2
- * the whole pass does.
+ * Once a step, after the points are prepared, the two-point constraints
+ * of each colour are paired and copied side by side into
+ * rb_contact_pair (rb_contact_solver_gather_pairs): each value of the two
+ * contacts sits in 16 aligned bytes, which one load brings into a
+ * register, or which an instruction reads directly, with no register
+ * spent on it. The pairs then hold the impulses through the step's
+ * passes (warm start, solve, relax), and rb_contact_solver_scatter_pairs
+ * writes them back to the constraints for restitution and the next step.
+ * A contact with one point, the last of an odd colour and the overflow
+ * colour (whose constraints may share bodies) go through the reference;
+ * colour by colour, the pairs of a colour first and then its others,
+ * which gives each body the reference's sums in the reference's order
+ * (a body is in at most one constraint of a colour). Without SSE2 the
+ * whole pass is the reference's.
+ *
+ * The bodies' velocities and poses are still gathered one value at a
+ * time from world->states (64 bytes a body) and their velocities stored
+ * back the same way: four bodies to a pair, at scattered places.
  *
  * The points' preparation at each substep (anchors, lever arms, masses,
- * bounds: rb_contact_solver_prepare_points_range) goes two at a time the
- * same way, for every solver: each constraint's points depend on its own
+ * bounds: rb_contact_solver_prepare_points_range) goes two at a time
+ * too, for every solver: each constraint's points depend on its own
  * bodies only, so any two neighbours with two points each pair up, and
- * the constraints come out byte for byte as the reference leaves them.
- *
- * What it saves is the arithmetic: on the base-20 pyramid at Box2D v3's
- * budget the soft pass two at a time took the step from 3.72 M to 3.37 M
- * instructions (callgrind), and with constraint_rows (contact_solver.c)
- * before it from 0.256 to 0.228 ms (medians of 7 runs, interleaved).
- * The loads stay one per value, and each lane's results are taken apart
- * to be stored. Two things were measured and left out: the warm start
- * two at a time (four impulses applied per contact and little else)
- * saved nothing; building these functions a second time with AVX's
- * three-operand encoding, chosen as the program loads, cut the step to
- * 3.16 M instructions but not its time (0.229 ms): the register copies
- * it saves cost the processor next to nothing. */
+ * the constraints come out byte for byte as the reference leaves them. */
+#include <string.h>
+
+#include "allocator.h"
 #include "contact_solver.h"
+
+void rb_contact_batches_free(rb_contact_batches *batches)
+{
+    rb_free_array((void **)&batches->pairs, &batches->pair_capacity, sizeof *batches->pairs);
+    rb_free_array((void **)&batches->singles, &batches->single_capacity, sizeof *batches->singles);
+}
+
+size_t rb_contact_batches_bytes(const rb_contact_batches *batches)
+{
+    return (size_t)batches->pair_capacity * sizeof *batches->pairs +
+           (size_t)batches->single_capacity * sizeof *batches->singles;
+}
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -51,6 +65,8 @@ typedef __m128d lanes;
 
 static inline lanes pair(double first, double second) { return _mm_set_pd(second, first); }
 static inline lanes both(double value) { return _mm_set1_pd(value); }
+static inline lanes load(const rb_double2 *x) { return _mm_load_pd(x->v); }
+static inline void store(rb_double2 *x, lanes a) { _mm_store_pd(x->v, a); }
 static inline lanes add(lanes a, lanes b) { return _mm_add_pd(a, b); }
 static inline lanes sub(lanes a, lanes b) { return _mm_sub_pd(a, b); }
 static inline lanes mul(lanes a, lanes b) { return _mm_mul_pd(a, b); }
@@ -71,61 +87,166 @@ static inline lanes mask_of(bool first, bool second)
 static inline double first_of(lanes a) { return _mm_cvtsd_f64(a); }
 static inline double second_of(lanes a) { return _mm_cvtsd_f64(_mm_unpackhi_pd(a, a)); }
 
+/* ---- gathering the pairs, and writing their impulses back --------------- */
+
+/* Copies constraint c's values into lane `lane` of pair q. */
+static void copy_into_lane(rb_contact_pair *q, int lane, int index, const rb_contact_constraint *c)
+{
+    q->constraints[lane] = index;
+    q->body_a[lane] = c->body_a;
+    q->body_b[lane] = c->body_b;
+    q->normal_x.v[lane] = c->normal.x;
+    q->normal_y.v[lane] = c->normal.y;
+    q->inv_mass_a.v[lane] = c->inv_mass_a;
+    q->inv_inertia_a.v[lane] = c->inv_inertia_a;
+    q->inv_mass_b.v[lane] = c->inv_mass_b;
+    q->inv_inertia_b.v[lane] = c->inv_inertia_b;
+    q->friction.v[lane] = c->friction;
+    q->radius_a.v[lane] = c->radius_a;
+    q->radius_b.v[lane] = c->radius_b;
+    q->against_fixed[lane] = c->against_fixed;
+    for (int j = 0; j < 2; ++j) {
+        const rb_constraint_point *p = &c->points[j];
+        rb_pair_point *w = &q->points[j];
+        w->local_surface_ax.v[lane] = p->local_surface_a.x;
+        w->local_surface_ay.v[lane] = p->local_surface_a.y;
+        w->local_surface_bx.v[lane] = p->local_surface_b.x;
+        w->local_surface_by.v[lane] = p->local_surface_b.y;
+        w->normal_arm_a.v[lane] = p->normal_arm_a;
+        w->normal_arm_b.v[lane] = p->normal_arm_b;
+        w->tangent_arm_a.v[lane] = p->tangent_arm_a;
+        w->tangent_arm_b.v[lane] = p->tangent_arm_b;
+        w->normal_mass.v[lane] = p->normal_mass;
+        w->tangent_mass.v[lane] = p->tangent_mass;
+        w->normal_impulse.v[lane] = p->normal_impulse;
+        w->tangent_impulse.v[lane] = p->tangent_impulse;
+        w->max_normal_impulse.v[lane] = p->max_normal_impulse;
+    }
+}
+
+/* Within each colour, the first two-point constraint with the second,
+ * the third with the fourth and so on; a two-point constraint left
+ * without a partner and every other constraint of the colour become
+ * singles. The arrays grow only when the contacts outgrow them. */
+void rb_contact_solver_gather_pairs(rb_world *world)
+{
+    rb_contact_batches *batches = &world->contact_batches;
+    int count = world->constraint_count;
+    batches->pair_count = 0;
+    batches->single_count = 0;
+    if (rb_grow_array((void **)&batches->pairs, &batches->pair_capacity, count / 2, sizeof *batches->pairs) != 0 ||
+        rb_grow_array((void **)&batches->singles, &batches->single_capacity, count, sizeof *batches->singles) != 0) {
+        /* Out of memory: every constraint one at a time, as the reference
+         * solves them, which needs nothing more. */
+        memset(batches->pair_start, 0, sizeof batches->pair_start);
+        memset(batches->single_start, 0, sizeof batches->single_start);
+        batches->overflow_start = 0;
+        return;
+    }
+    const rb_contact_constraint *constraints = world->constraints;
+    int start[RB_COLOUR_COUNT + 1];
+    rb_colouring_offsets(&world->contact_colouring, start);
+    for (int colour = 0; colour < RB_COLOUR_COUNT; ++colour) {
+        batches->pair_start[colour] = batches->pair_count;
+        batches->single_start[colour] = batches->single_count;
+        int end = start[colour] + world->contact_colouring.sizes[colour];
+        int waiting = -1; /* a two-point constraint without a partner yet */
+        for (int i = start[colour]; i < end; ++i) {
+            if (constraints[i].point_count != 2) {
+                batches->singles[batches->single_count++] = i;
+            } else if (waiting < 0) {
+                waiting = i;
+            } else {
+                rb_contact_pair *q = &batches->pairs[batches->pair_count++];
+                copy_into_lane(q, 0, waiting, &constraints[waiting]);
+                copy_into_lane(q, 1, i, &constraints[i]);
+                waiting = -1;
+            }
+        }
+        if (waiting >= 0) {
+            batches->singles[batches->single_count++] = waiting;
+        }
+    }
+    batches->pair_start[RB_COLOUR_COUNT] = batches->pair_count;
+    batches->single_start[RB_COLOUR_COUNT] = batches->single_count;
+    batches->overflow_start = start[RB_OVERFLOW_COLOUR];
+}
+
+void rb_contact_solver_scatter_pairs(rb_world *world)
+{
+    const rb_contact_batches *batches = &world->contact_batches;
+    for (int k = 0; k < batches->pair_count; ++k) {
+        const rb_contact_pair *q = &batches->pairs[k];
+        for (int lane = 0; lane < 2; ++lane) {
+            rb_contact_constraint *c = &world->constraints[q->constraints[lane]];
+            for (int j = 0; j < 2; ++j) {
+                c->points[j].normal_impulse = q->points[j].normal_impulse.v[lane];
+                c->points[j].tangent_impulse = q->points[j].tangent_impulse.v[lane];
+                c->points[j].max_normal_impulse = q->points[j].max_normal_impulse.v[lane];
+            }
+        }
+    }
+}
+
+/* ---- the passes over the pairs -------------------------------------------- */
+
 /* The two bodies' velocities of each contact, as body_velocities is for one. */
 typedef struct wide_velocities {
     lanes vax, vay, wa, vbx, vby, wb;
 } wide_velocities;
 
-/* What the pass reads from the two constraints but never writes. */
-typedef struct wide_rows {
-    lanes nx, ny;         /* the normal; the tangent is (ny, -nx) */
-    lanes ma, ia, mb, ib; /* inverse masses and inertias */
-    lanes friction;       /* Coulomb coefficient */
-    lanes bias_rate;      /* 1/s, the spring of each contact (against a fixed body or not) */
-    lanes mass_scale, impulse_scale;
-} wide_rows;
+/* The four bodies of a pair. */
+typedef struct pair_bodies {
+    rb_body_state *a0, *b0, *a1, *b1;
+} pair_bodies;
 
-static inline wide_velocities load_velocities(const rb_body_state *a0, const rb_body_state *b0, const rb_body_state *a1,
-                                              const rb_body_state *b1)
+static inline pair_bodies bodies_of(const rb_contact_pair *q, rb_body_state *states)
+{
+    return (pair_bodies){&states[q->body_a[0]], &states[q->body_b[0]], &states[q->body_a[1]], &states[q->body_b[1]]};
+}
+
+static inline wide_velocities load_velocities(const pair_bodies *s)
 {
     return (wide_velocities){
-        pair(a0->linear_velocity.x, a1->linear_velocity.x), pair(a0->linear_velocity.y, a1->linear_velocity.y),
-        pair(a0->angular_velocity, a1->angular_velocity),   pair(b0->linear_velocity.x, b1->linear_velocity.x),
-        pair(b0->linear_velocity.y, b1->linear_velocity.y), pair(b0->angular_velocity, b1->angular_velocity),
+        pair(s->a0->linear_velocity.x, s->a1->linear_velocity.x),
+        pair(s->a0->linear_velocity.y, s->a1->linear_velocity.y),
+        pair(s->a0->angular_velocity, s->a1->angular_velocity),
+        pair(s->b0->linear_velocity.x, s->b1->linear_velocity.x),
+        pair(s->b0->linear_velocity.y, s->b1->linear_velocity.y),
+        pair(s->b0->angular_velocity, s->b1->angular_velocity),
     };
 }
 
-static inline void store_lane(rb_body_state *a, rb_body_state *b, double vax, double vay, double wa, double vbx,
-                              double vby, double wb)
+static inline void store_velocities(const wide_velocities *v, const pair_bodies *s)
 {
-    a->linear_velocity = rb_v2(vax, vay);
-    a->angular_velocity = wa;
-    b->linear_velocity = rb_v2(vbx, vby);
-    b->angular_velocity = wb;
+    s->a0->linear_velocity = rb_v2(first_of(v->vax), first_of(v->vay));
+    s->a0->angular_velocity = first_of(v->wa);
+    s->b0->linear_velocity = rb_v2(first_of(v->vbx), first_of(v->vby));
+    s->b0->angular_velocity = first_of(v->wb);
+    s->a1->linear_velocity = rb_v2(second_of(v->vax), second_of(v->vay));
+    s->a1->angular_velocity = second_of(v->wa);
+    s->b1->linear_velocity = rb_v2(second_of(v->vbx), second_of(v->vby));
+    s->b1->angular_velocity = second_of(v->wb);
 }
 
 /* The separation of point j of both contacts at the poses now, as
  * separation_now computes it. */
-static inline lanes separation(const rb_contact_constraint *c0, const rb_contact_constraint *c1, int j,
-                               const rb_body_state *a0, const rb_body_state *b0, const rb_body_state *a1,
-                               const rb_body_state *b1, const wide_rows *m)
+static inline lanes separation(const rb_contact_pair *q, const rb_pair_point *p, const pair_bodies *s)
 {
-    const rb_constraint_point *p0 = &c0->points[j];
-    const rb_constraint_point *p1 = &c1->points[j];
-    lanes lax = pair(p0->local_surface_a.x, p1->local_surface_a.x);
-    lanes lay = pair(p0->local_surface_a.y, p1->local_surface_a.y);
-    lanes lbx = pair(p0->local_surface_b.x, p1->local_surface_b.x);
-    lanes lby = pair(p0->local_surface_b.y, p1->local_surface_b.y);
-    lanes qac = pair(a0->rotation.c, a1->rotation.c);
-    lanes qas = pair(a0->rotation.s, a1->rotation.s);
-    lanes qbc = pair(b0->rotation.c, b1->rotation.c);
-    lanes qbs = pair(b0->rotation.s, b1->rotation.s);
-    lanes qax = add(pair(a0->center.x, a1->center.x), sub(mul(qac, lax), mul(qas, lay)));
-    lanes qay = add(pair(a0->center.y, a1->center.y), add(mul(qas, lax), mul(qac, lay)));
-    lanes qbx = add(pair(b0->center.x, b1->center.x), sub(mul(qbc, lbx), mul(qbs, lby)));
-    lanes qby = add(pair(b0->center.y, b1->center.y), add(mul(qbs, lbx), mul(qbc, lby)));
-    lanes gap = add(mul(m->nx, sub(qbx, qax)), mul(m->ny, sub(qby, qay)));
-    return sub(sub(gap, pair(c0->radius_a, c1->radius_a)), pair(c0->radius_b, c1->radius_b));
+    lanes lax = load(&p->local_surface_ax);
+    lanes lay = load(&p->local_surface_ay);
+    lanes lbx = load(&p->local_surface_bx);
+    lanes lby = load(&p->local_surface_by);
+    lanes qac = pair(s->a0->rotation.c, s->a1->rotation.c);
+    lanes qas = pair(s->a0->rotation.s, s->a1->rotation.s);
+    lanes qbc = pair(s->b0->rotation.c, s->b1->rotation.c);
+    lanes qbs = pair(s->b0->rotation.s, s->b1->rotation.s);
+    lanes qax = add(pair(s->a0->center.x, s->a1->center.x), sub(mul(qac, lax), mul(qas, lay)));
+    lanes qay = add(pair(s->a0->center.y, s->a1->center.y), add(mul(qas, lax), mul(qac, lay)));
+    lanes qbx = add(pair(s->b0->center.x, s->b1->center.x), sub(mul(qbc, lbx), mul(qbs, lby)));
+    lanes qby = add(pair(s->b0->center.y, s->b1->center.y), add(mul(qbs, lbx), mul(qbc, lby)));
+    lanes gap = add(mul(load(&q->normal_x), sub(qbx, qax)), mul(load(&q->normal_y), sub(qby, qay)));
+    return sub(sub(gap, load(&q->radius_a)), load(&q->radius_b));
 }
 
 /* The velocity of point B relative to A along (dx, dy), as row_velocity. */
@@ -136,24 +257,68 @@ static inline lanes row_velocity(lanes dx, lanes dy, lanes arm_a, lanes arm_b, c
 }
 
 /* An impulse lambda along (dx, dy), as apply_row_impulse. */
-static inline void apply_row_impulse(const wide_rows *m, lanes dx, lanes dy, lanes arm_a, lanes arm_b, lanes lambda,
-                                     wide_velocities *v)
+static inline void apply_row_impulse(const rb_contact_pair *q, lanes dx, lanes dy, lanes arm_a, lanes arm_b,
+                                     lanes lambda, wide_velocities *v)
 {
     lanes px = mul(lambda, dx);
     lanes py = mul(lambda, dy);
-    v->vax = sub(v->vax, mul(m->ma, px));
-    v->vay = sub(v->vay, mul(m->ma, py));
-    v->wa = sub(v->wa, mul(mul(m->ia, lambda), arm_a));
-    v->vbx = add(v->vbx, mul(m->mb, px));
-    v->vby = add(v->vby, mul(m->mb, py));
-    v->wb = add(v->wb, mul(mul(m->ib, lambda), arm_b));
+    lanes ma = load(&q->inv_mass_a);
+    lanes mb = load(&q->inv_mass_b);
+    v->vax = sub(v->vax, mul(ma, px));
+    v->vay = sub(v->vay, mul(ma, py));
+    v->wa = sub(v->wa, mul(mul(load(&q->inv_inertia_a), lambda), arm_a));
+    v->vbx = add(v->vbx, mul(mb, px));
+    v->vby = add(v->vby, mul(mb, py));
+    v->wb = add(v->wb, mul(mul(load(&q->inv_inertia_b), lambda), arm_b));
 }
+
+/* Both points' normal and friction impulses again, as the reference's
+ * warm start applies them: point by point, the normal first. */
+static void warm_start_pair(const rb_contact_pair *q, rb_body_state *states)
+{
+    pair_bodies s = bodies_of(q, states);
+    wide_velocities v = load_velocities(&s);
+    lanes nx = load(&q->normal_x);
+    lanes ny = load(&q->normal_y);
+    lanes tx = ny;
+    lanes ty = negate(nx);
+    for (int j = 0; j < 2; ++j) {
+        const rb_pair_point *p = &q->points[j];
+        apply_row_impulse(q, nx, ny, load(&p->normal_arm_a), load(&p->normal_arm_b), load(&p->normal_impulse), &v);
+        apply_row_impulse(q, tx, ty, load(&p->tangent_arm_a), load(&p->tangent_arm_b), load(&p->tangent_impulse), &v);
+    }
+    store_velocities(&v, &s);
+}
+
+/* Colour by colour, as the reference goes through them: the colour's
+ * pairs, then its singles; the overflow colour last. */
+void rb_contact_solver_warm_start_pairs(rb_world *world)
+{
+    const rb_contact_batches *batches = &world->contact_batches;
+    for (int colour = 0; colour < RB_COLOUR_COUNT; ++colour) {
+        for (int k = batches->pair_start[colour]; k < batches->pair_start[colour + 1]; ++k) {
+            warm_start_pair(&batches->pairs[k], world->states);
+        }
+        for (int k = batches->single_start[colour]; k < batches->single_start[colour + 1]; ++k) {
+            int i = batches->singles[k];
+            rb_contact_solver_warm_start_range(world, i, i + 1);
+        }
+    }
+    rb_contact_solver_warm_start_range(world, batches->overflow_start, world->constraint_count);
+}
+
+/* The springs of both contacts of a pair: each lane's, against a fixed
+ * body or between moving ones. */
+typedef struct wide_springs {
+    lanes bias_rate; /* 1/s */
+    lanes mass_scale, impulse_scale;
+} wide_springs;
 
 /* Point j's normal row, as solve_soft_point: where the gap is open, close
  * it within the substep; where it is not, the spring (with bias) or no
  * approach (relax). */
-static inline void solve_normal(rb_constraint_point *p0, rb_constraint_point *p1, lanes s, const rb_contact_softness *k,
-                                const wide_rows *m, wide_velocities *v)
+static inline void solve_normal(const rb_contact_pair *q, rb_pair_point *p, lanes s, const rb_contact_softness *k,
+                                const wide_springs *spring, wide_velocities *v)
 {
     lanes open = _mm_cmpgt_pd(s, _mm_setzero_pd());
     lanes closing = mul(s, both(k->inv_h));
@@ -161,106 +326,78 @@ static inline void solve_normal(rb_constraint_point *p0, rb_constraint_point *p1
     lanes mass_scale = both(1.0);
     lanes impulse_scale = _mm_setzero_pd();
     if (k->use_bias) {
-        lanes push = max(mul(m->bias_rate, s), both(-k->max_push_speed));
+        lanes push = max(mul(spring->bias_rate, s), both(-k->max_push_speed));
         bias = select(open, closing, push);
-        mass_scale = select(open, mass_scale, m->mass_scale);
-        impulse_scale = select(open, impulse_scale, m->impulse_scale);
+        mass_scale = select(open, mass_scale, spring->mass_scale);
+        impulse_scale = select(open, impulse_scale, spring->impulse_scale);
     }
-    lanes arm_a = pair(p0->normal_arm_a, p1->normal_arm_a);
-    lanes arm_b = pair(p0->normal_arm_b, p1->normal_arm_b);
-    lanes old = pair(p0->normal_impulse, p1->normal_impulse);
-    lanes vn = row_velocity(m->nx, m->ny, arm_a, arm_b, v);
-    lanes normal_mass = pair(p0->normal_mass, p1->normal_mass);
-    lanes impulse = sub(mul(mul(negate(normal_mass), mass_scale), add(vn, bias)), mul(impulse_scale, old));
+    lanes arm_a = load(&p->normal_arm_a);
+    lanes arm_b = load(&p->normal_arm_b);
+    lanes old = load(&p->normal_impulse);
+    lanes nx = load(&q->normal_x);
+    lanes ny = load(&q->normal_y);
+    lanes vn = row_velocity(nx, ny, arm_a, arm_b, v);
+    lanes impulse = sub(mul(mul(negate(load(&p->normal_mass)), mass_scale), add(vn, bias)), mul(impulse_scale, old));
     lanes accumulated = max(add(old, impulse), _mm_setzero_pd());
-    lanes most = max(pair(p0->max_normal_impulse, p1->max_normal_impulse), accumulated);
-    _mm_storel_pd(&p0->normal_impulse, accumulated);
-    _mm_storeh_pd(&p1->normal_impulse, accumulated);
-    _mm_storel_pd(&p0->max_normal_impulse, most);
-    _mm_storeh_pd(&p1->max_normal_impulse, most);
-    apply_row_impulse(m, m->nx, m->ny, arm_a, arm_b, sub(accumulated, old), v);
+    store(&p->normal_impulse, accumulated);
+    store(&p->max_normal_impulse, max(load(&p->max_normal_impulse), accumulated));
+    apply_row_impulse(q, nx, ny, arm_a, arm_b, sub(accumulated, old), v);
 }
 
 /* Point j's friction, as solve_point_friction; a lane whose point has
  * neither push nor friction keeps its impulse and applies none. */
-static inline void solve_friction(rb_constraint_point *p0, rb_constraint_point *p1, const wide_rows *m,
-                                  wide_velocities *v)
+static inline void solve_friction(const rb_contact_pair *q, rb_pair_point *p, wide_velocities *v)
 {
-    lanes normal_impulse = pair(p0->normal_impulse, p1->normal_impulse);
-    lanes old = pair(p0->tangent_impulse, p1->tangent_impulse);
+    lanes normal_impulse = load(&p->normal_impulse);
+    lanes old = load(&p->tangent_impulse);
     lanes idle = _mm_and_pd(_mm_cmpeq_pd(normal_impulse, _mm_setzero_pd()), _mm_cmpeq_pd(old, _mm_setzero_pd()));
-    lanes tx = m->ny;
-    lanes ty = negate(m->nx);
-    lanes arm_a = pair(p0->tangent_arm_a, p1->tangent_arm_a);
-    lanes arm_b = pair(p0->tangent_arm_b, p1->tangent_arm_b);
+    lanes tx = load(&q->normal_y);
+    lanes ty = negate(load(&q->normal_x));
+    lanes arm_a = load(&p->tangent_arm_a);
+    lanes arm_b = load(&p->tangent_arm_b);
     lanes vt = row_velocity(tx, ty, arm_a, arm_b, v);
-    lanes limit = mul(m->friction, normal_impulse);
-    lanes tangent_mass = pair(p0->tangent_mass, p1->tangent_mass);
-    lanes accumulated = min(max(sub(old, mul(tangent_mass, vt)), negate(limit)), limit);
+    lanes limit = mul(load(&q->friction), normal_impulse);
+    lanes accumulated = min(max(sub(old, mul(load(&p->tangent_mass), vt)), negate(limit)), limit);
     accumulated = select(idle, old, accumulated);
-    _mm_storel_pd(&p0->tangent_impulse, accumulated);
-    _mm_storeh_pd(&p1->tangent_impulse, accumulated);
-    apply_row_impulse(m, tx, ty, arm_a, arm_b, sub(accumulated, old), v);
+    store(&p->tangent_impulse, accumulated);
+    apply_row_impulse(q, tx, ty, arm_a, arm_b, sub(accumulated, old), v);
 }
 
-/* Two two-point contacts of one colour, each as the reference solves it. */
-static void solve_two(rb_contact_constraint *c0, rb_contact_constraint *c1, rb_body_state *states,
-                      const rb_contact_softness *k)
+/* The two contacts of a pair, each as the reference solves it. */
+static void solve_pair(rb_contact_pair *q, rb_body_state *states, const rb_contact_softness *k)
 {
-    rb_body_state *a0 = &states[c0->body_a];
-    rb_body_state *b0 = &states[c0->body_b];
-    rb_body_state *a1 = &states[c1->body_a];
-    rb_body_state *b1 = &states[c1->body_b];
-    lanes fixed = mask_of(c0->against_fixed, c1->against_fixed);
-    wide_rows m = {
-        .nx = pair(c0->normal.x, c1->normal.x),
-        .ny = pair(c0->normal.y, c1->normal.y),
-        .ma = pair(c0->inv_mass_a, c1->inv_mass_a),
-        .ia = pair(c0->inv_inertia_a, c1->inv_inertia_a),
-        .mb = pair(c0->inv_mass_b, c1->inv_mass_b),
-        .ib = pair(c0->inv_inertia_b, c1->inv_inertia_b),
-        .friction = pair(c0->friction, c1->friction),
+    pair_bodies s = bodies_of(q, states);
+    lanes fixed = mask_of(q->against_fixed[0], q->against_fixed[1]);
+    wide_springs spring = {
         .bias_rate = select(fixed, both(k->against_fixed.bias_rate), both(k->between_moving.bias_rate)),
         .mass_scale = select(fixed, both(k->against_fixed.mass_scale), both(k->between_moving.mass_scale)),
         .impulse_scale = select(fixed, both(k->against_fixed.impulse_scale), both(k->between_moving.impulse_scale)),
     };
-    lanes s0 = separation(c0, c1, 0, a0, b0, a1, b1, &m);
-    lanes s1 = separation(c0, c1, 1, a0, b0, a1, b1, &m);
-    wide_velocities v = load_velocities(a0, b0, a1, b1);
-    solve_normal(&c0->points[0], &c1->points[0], s0, k, &m, &v);
-    solve_normal(&c0->points[1], &c1->points[1], s1, k, &m, &v);
-    solve_friction(&c0->points[0], &c1->points[0], &m, &v);
-    solve_friction(&c0->points[1], &c1->points[1], &m, &v);
-    store_lane(a0, b0, first_of(v.vax), first_of(v.vay), first_of(v.wa), first_of(v.vbx), first_of(v.vby),
-               first_of(v.wb));
-    store_lane(a1, b1, second_of(v.vax), second_of(v.vay), second_of(v.wa), second_of(v.vbx), second_of(v.vby),
-               second_of(v.wb));
+    lanes s0 = separation(q, &q->points[0], &s);
+    lanes s1 = separation(q, &q->points[1], &s);
+    wide_velocities v = load_velocities(&s);
+    solve_normal(q, &q->points[0], s0, k, &spring, &v);
+    solve_normal(q, &q->points[1], s1, k, &spring, &v);
+    solve_friction(q, &q->points[0], &v);
+    solve_friction(q, &q->points[1], &v);
+    store_velocities(&v, &s);
 }
 
 void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *softness)
 {
     rb_contact_softness k = *softness;
-    rb_contact_constraint *constraints = world->constraints;
-    int start[RB_COLOUR_COUNT + 1];
-    rb_colouring_offsets(&world->contact_colouring, start);
+    const rb_contact_batches *batches = &world->contact_batches;
     for (int colour = 0; colour < RB_COLOUR_COUNT; ++colour) {
-        int end = start[colour] + world->contact_colouring.sizes[colour];
-        int i = start[colour];
-        while (i + 1 < end) {
-            rb_contact_constraint *c0 = &constraints[i];
-            rb_contact_constraint *c1 = &constraints[i + 1];
-            if (c0->point_count == 2 && c1->point_count == 2) {
-                solve_two(c0, c1, world->states, &k);
-                i += 2;
-            } else {
-                rb_contact_solver_solve_soft_range(world, &k, i, i + 1);
-                i += 1;
-            }
+        for (int p = batches->pair_start[colour]; p < batches->pair_start[colour + 1]; ++p) {
+            solve_pair(&batches->pairs[p], world->states, &k);
         }
-        rb_contact_solver_solve_soft_range(world, &k, i, end);
+        for (int p = batches->single_start[colour]; p < batches->single_start[colour + 1]; ++p) {
+            int i = batches->singles[p];
+            rb_contact_solver_solve_soft_range(world, &k, i, i + 1);
+        }
     }
     /* The overflow colour's constraints may share a body: one at a time. */
-    rb_contact_solver_solve_soft_range(world, &k, start[RB_OVERFLOW_COLOUR], world->constraint_count);
+    rb_contact_solver_solve_soft_range(world, &k, batches->overflow_start, world->constraint_count);
 }
 
 /* ---- preparing the points, two contacts at a time ----------------------- */
@@ -435,6 +572,14 @@ void rb_contact_solver_prepare_points(rb_world *world, double h, rb_substep_rows
 }
 
 #else
+
+/* Without SSE2 every constraint is solved one at a time, in the order
+ * rb_contact_solver_prepare laid them out: no pairs. */
+void rb_contact_solver_gather_pairs(rb_world *world) { (void)world; }
+
+void rb_contact_solver_scatter_pairs(rb_world *world) { (void)world; }
+
+void rb_contact_solver_warm_start_pairs(rb_world *world) { rb_contact_solver_warm_start(world); }
 
 void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *softness)
 {

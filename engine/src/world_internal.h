@@ -167,6 +167,21 @@ typedef struct rb_event_arrays {
 } rb_event_arrays;
 
 typedef struct rb_contact_constraint rb_contact_constraint;
+typedef struct rb_contact_pair rb_contact_pair; /* contact_solver.h */
+
+/* The soft step's contacts as its passes take them, colour by colour:
+ * pairs of two-point constraints solved two at a time, and the
+ * constraints of the colour left over, one at a time
+ * (rb_contact_solver_gather_pairs). */
+typedef struct rb_contact_batches {
+    rb_contact_pair *pairs;
+    int pair_count, pair_capacity;
+    int *singles; /* indices in world->constraints */
+    int single_count, single_capacity;
+    int pair_start[RB_COLOUR_COUNT + 1];   /* colour k's pairs start here; the last entry is pair_count */
+    int single_start[RB_COLOUR_COUNT + 1]; /* and its singles here */
+    int overflow_start;                    /* the overflow colour's constraints, in world->constraints */
+} rb_contact_batches;
 
 /* A symmetric 3x3 block K = J·M⁻¹·Jᵀ of three of a joint's rows, whose
  * upper-left 2x2 is solved alone when the third row is not active
@@ -423,6 +438,7 @@ struct rb_world {
     int constraint_count, constraint_capacity;
     int bouncing_constraint_count; /* constraints with restitution > 0 this step */
     rb_colouring contact_colouring;
+    rb_contact_batches contact_batches;
 
     rb_joint *joints;
     int joint_capacity;
