@@ -92,7 +92,7 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
 
     double t = rb_world_clock(world);
     rb_contact_solver_prepare_substep(world, h, (rb_substep_rows){.first_substep = true});
-    rb_contact_solver_gather_pairs(world);
+    rb_contact_solver_gather_blocks(world);
     profile->prepare += rb_world_clock(world) - t;
 
     for (int substep = 0; substep < substeps; ++substep) {
@@ -113,7 +113,7 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
         }
         rb_cables_warm_start(world);
         rb_joints_warm_start(world, h);
-        rb_contact_solver_warm_start_pairs(world);
+        rb_contact_solver_warm_start_blocks(world);
         profile->warm_start += rb_world_clock(world) - t;
 
         t = rb_world_clock(world);
@@ -143,7 +143,7 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
     }
 
     t = rb_world_clock(world);
-    rb_contact_solver_scatter_pairs(world);
+    rb_contact_solver_scatter_blocks(world);
     rb_contact_solver_apply_restitution(world, h);
     profile->restitution = rb_world_clock(world) - t;
     return (rb_solver_counts){
