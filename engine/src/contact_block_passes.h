@@ -131,7 +131,8 @@ LANE_INLINE void store_velocities(const block_velocities *v, const block_lanes *
 }
 
 /* The separation of point p of the lanes' contacts at the poses now, as
- * separation_now computes it. */
+ * separation_now computes it; a block's contacts have no circle side, so
+ * no radius to take off (x - 0 is x, to the bit). */
 LANE_INLINE lanes separation(const block_lanes *s, const rb_block_point *p)
 {
     lanes lax = POINT_VALUE(s, p, local_surface_ax);
@@ -146,8 +147,7 @@ LANE_INLINE lanes separation(const block_lanes *s, const rb_block_point *p)
     lanes qay = GATHER(s, a, center.y) + (qas * lax + qac * lay);
     lanes qbx = GATHER(s, b, center.x) + (qbc * lbx - qbs * lby);
     lanes qby = GATHER(s, b, center.y) + (qbs * lbx + qbc * lby);
-    lanes gap = VALUE(s, normal_x) * (qbx - qax) + VALUE(s, normal_y) * (qby - qay);
-    return gap - VALUE(s, radius_a) - VALUE(s, radius_b);
+    return VALUE(s, normal_x) * (qbx - qax) + VALUE(s, normal_y) * (qby - qay);
 }
 
 /* The velocity of point B relative to A along (dx, dy), as row_velocity. */

@@ -97,8 +97,6 @@ static void copy_into_lane(rb_contact_block *q, int lane, int index, const rb_co
     q->inv_mass_b.v[lane] = c->inv_mass_b;
     q->inv_inertia_b.v[lane] = c->inv_inertia_b;
     q->friction.v[lane] = c->friction;
-    q->radius_a.v[lane] = c->radius_a;
-    q->radius_b.v[lane] = c->radius_b;
     for (int j = 0; j < 2; ++j) {
         const rb_constraint_point *p = &c->points[j];
         rb_block_point *w = &q->points[j];
@@ -116,6 +114,14 @@ static void copy_into_lane(rb_contact_block *q, int lane, int index, const rb_co
         w->tangent_impulse.v[lane] = p->tangent_impulse;
         w->max_normal_impulse.v[lane] = p->max_normal_impulse;
     }
+}
+
+/* Whether a constraint can take a lane of a block: two points, and no
+ * circle side (whose radius the blocks do not hold; a circle's contacts
+ * have one point anyway). */
+static bool fits_a_block(const rb_contact_constraint *c)
+{
+    return c->point_count == 2 && c->radius_a == 0.0 && c->radius_b == 0.0;
 }
 
 /* Within each colour, the two-point constraints in order, four to a
@@ -151,7 +157,7 @@ void rb_contact_solver_gather_blocks(rb_world *world)
         int end = start[colour] + world->contact_colouring.sizes[colour];
         int lane = RB_BLOCK_LANES; /* the next free lane of the colour's last block: none yet */
         for (int i = start[colour]; i < end; ++i) {
-            if (constraints[i].point_count != 2) {
+            if (!fits_a_block(&constraints[i])) {
                 batches->singles[batches->single_count++] = i;
                 continue;
             }

@@ -73,10 +73,10 @@ typedef struct rb_block_point {
     rb_lanes4 normal_impulse, tangent_impulse, max_normal_impulse;
 } rb_block_point;
 
-/* Up to four two-point contacts of one colour laid side by side for the
- * passes that solve them together (contact_blocks.c): a copy of their
- * constraints made once a step, which then holds their impulses until
- * they are written back. A lane without a contact holds one that cannot
+/* Up to four two-point contacts of one colour, with no circle side, laid
+ * side by side for the passes that solve them together
+ * (contact_blocks.c): a copy of their constraints made once a step, which
+ * then holds their impulses until they are written back. A lane without a contact holds one that cannot
  * act (no mass, no impulse) between the batches' two idle bodies. */
 struct rb_contact_block {
     /* the lanes' bodies in world->states (or the idle ones), found once
@@ -89,7 +89,6 @@ struct rb_contact_block {
     rb_lanes4 normal_x, normal_y;
     rb_lanes4 inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
     rb_lanes4 friction;
-    rb_lanes4 radius_a, radius_b;
     rb_block_point points[2];
 };
 
