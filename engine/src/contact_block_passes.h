@@ -12,9 +12,10 @@
  * compiler's own (GCC's vector extensions), so one text serves both
  * widths. A lane so gives the reference's bits, but for the sign of a
  * zero: a point with no push is still passed through friction here, with
- * an impulse of zero. At WIDTH 2 a block is taken as two halves, one
- * after the other; within a colour the order does not matter, as no two
- * of its contacts move the same body. */
+ * an impulse of zero. The soft pass solves two sets of lanes together (a
+ * block's two halves at WIDTH 2, two blocks at WIDTH 4), their rows
+ * interleaved: within a colour the order does not matter, as no two of
+ * its contacts move the same body. */
 #include <string.h>
 
 #include "contact_blocks.h"
@@ -268,16 +269,22 @@ LANE_INLINE void solve_friction(const block_lanes *s, rb_block_point *p, block_v
     apply_row_impulse(s, tx, ty, arm_a, arm_b, accumulated - old, v);
 }
 
-/* The lanes' contacts, each as the reference solves it. */
-LANE_INLINE void solve_lanes(const block_lanes *s, const rb_contact_softness *k)
+/* Each lane's springs, as the reference chooses them. */
+LANE_INLINE block_springs springs_of(const block_lanes *s, const rb_contact_softness *k)
 {
     mask fixed;
     memcpy(&fixed, &s->q->against_fixed[s->first], sizeof fixed);
-    block_springs spring = {
+    return (block_springs){
         .bias_rate = select(fixed, both(k->against_fixed.bias_rate), both(k->between_moving.bias_rate)),
         .mass_scale = select(fixed, both(k->against_fixed.mass_scale), both(k->between_moving.mass_scale)),
         .impulse_scale = select(fixed, both(k->against_fixed.impulse_scale), both(k->between_moving.impulse_scale)),
     };
+}
+
+/* The lanes' contacts, each as the reference solves it. */
+LANE_INLINE void solve_lanes(const block_lanes *s, const rb_contact_softness *k)
+{
+    block_springs spring = springs_of(s, k);
     rb_block_point *p0 = &s->q->points[0];
     rb_block_point *p1 = &s->q->points[1];
     lanes s0 = separation(s, p0);
@@ -290,17 +297,62 @@ LANE_INLINE void solve_lanes(const block_lanes *s, const rb_contact_softness *k)
     store_velocities(&v, s);
 }
 
+/* Two sets of lanes of one colour, as solve_lanes solves each: they
+ * touch different bodies, so their rows are interleaved (the first set's
+ * first normal row, the second's, and so on), which gives the processor
+ * two independent chains to work on at once (contact_blocks.c). */
+LANE_INLINE void solve_two_sets(const block_lanes *s, const block_lanes *t, const rb_contact_softness *k)
+{
+    block_springs spring_s = springs_of(s, k);
+    block_springs spring_t = springs_of(t, k);
+    rb_block_point *p0 = &s->q->points[0];
+    rb_block_point *p1 = &s->q->points[1];
+    rb_block_point *r0 = &t->q->points[0];
+    rb_block_point *r1 = &t->q->points[1];
+    lanes s0 = separation(s, p0);
+    lanes s1 = separation(s, p1);
+    lanes t0 = separation(t, r0);
+    lanes t1 = separation(t, r1);
+    block_velocities v = load_velocities(s);
+    block_velocities w = load_velocities(t);
+    solve_normal(s, p0, s0, k, &spring_s, &v);
+    solve_normal(t, r0, t0, k, &spring_t, &w);
+    solve_normal(s, p1, s1, k, &spring_s, &v);
+    solve_normal(t, r1, t1, k, &spring_t, &w);
+    solve_friction(s, p0, &v);
+    solve_friction(t, r0, &w);
+    solve_friction(s, p1, &v);
+    solve_friction(t, r1, &w);
+    store_velocities(&v, s);
+    store_velocities(&w, t);
+}
+
 void WITH_WIDTH(rb_contact_blocks_solve_soft_, WIDTH)(rb_world *world, const rb_contact_softness *softness)
 {
     rb_contact_softness k = *softness;
     const rb_contact_batches *batches = &world->contact_batches;
     for (int colour = 0; colour < RB_COLOUR_COUNT; ++colour) {
-        for (int b = batches->block_start[colour]; b < batches->block_start[colour + 1]; ++b) {
-            for (int first = 0; first < RB_BLOCK_LANES; first += WIDTH) {
-                block_lanes s = lanes_of(&batches->blocks[b], first);
-                solve_lanes(&s, &k);
-            }
+        /* Two sets of lanes at a time: at WIDTH 2 a block's two halves, at
+         * WIDTH 4 two blocks, and the colour's last alone if it is odd. */
+        int end = batches->block_start[colour + 1];
+        int b = batches->block_start[colour];
+#if WIDTH == 2
+        for (; b < end; ++b) {
+            block_lanes s = lanes_of(&batches->blocks[b], 0);
+            block_lanes t = lanes_of(&batches->blocks[b], 2);
+            solve_two_sets(&s, &t, &k);
         }
+#else
+        for (; b + 1 < end; b += 2) {
+            block_lanes s = lanes_of(&batches->blocks[b], 0);
+            block_lanes t = lanes_of(&batches->blocks[b + 1], 0);
+            solve_two_sets(&s, &t, &k);
+        }
+        if (b < end) {
+            block_lanes s = lanes_of(&batches->blocks[b], 0);
+            solve_lanes(&s, &k);
+        }
+#endif
         for (int p = batches->single_start[colour]; p < batches->single_start[colour + 1]; ++p) {
             int i = batches->singles[p];
             rb_contact_solver_solve_soft_range(world, &k, i, i + 1);
