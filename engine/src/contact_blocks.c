@@ -139,7 +139,11 @@ void rb_contact_solver_gather_blocks(rb_world *world)
     batches->width = rb_contact_blocks_widest();
     batches->idle_a = (rb_body_state){.rotation = {1.0, 0.0}};
     batches->idle_b = batches->idle_a;
-    int most_blocks = count / RB_BLOCK_LANES + RB_COLOUR_COUNT; /* one block of a colour may be short */
+    /* Each colour's blocks but its last are full, and no block is empty. */
+    int most_blocks = count / RB_BLOCK_LANES + RB_COLOUR_COUNT;
+    if (most_blocks > count) {
+        most_blocks = count;
+    }
     if (rb_grow_array((void **)&batches->blocks, &batches->block_capacity, most_blocks, sizeof *batches->blocks) != 0 ||
         rb_grow_array((void **)&batches->singles, &batches->single_capacity, count, sizeof *batches->singles) != 0) {
         /* Out of memory: no blocks and no singles; every constraint is
