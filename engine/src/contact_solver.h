@@ -76,8 +76,9 @@ typedef struct rb_block_point {
 /* Up to four two-point contacts of one colour, with no circle side, laid
  * side by side for the passes that solve them together
  * (contact_blocks.c): a copy of their constraints made once a step, which
- * then holds their impulses until they are written back. A lane without a contact holds one that cannot
- * act (no mass, no impulse) between the batches' two idle bodies. */
+ * then holds their impulses until they are written back. A lane without
+ * a contact holds one that cannot act (no mass, no impulse) between the
+ * batches' two idle bodies. */
 struct rb_contact_block {
     /* the lanes' bodies in world->states (or the idle ones), found once
      * a step: no body is made or destroyed within a step, so the array

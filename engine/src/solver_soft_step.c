@@ -7,7 +7,8 @@
  * positions move removes the velocity the push left behind.
  *
  *   prepare the step       contact anchors, normal and masses, fixed for
- *                          the step, paired two by two within a colour;
+ *                          the step, laid four by four into blocks
+ *                          within a colour (contact_blocks.c);
  *                          each point's separation is measured anew from
  *                          the poses whenever it is solved;
  *                          the joints' masses and anchors in the body
@@ -26,7 +27,7 @@
  *       correct the trees      position_iterations NGS passes over the
  *                              pins of uneven trees (joint_tree.h)
  *       relax                  relax_iterations passes without bias
- *   write the contacts' impulses back from the pairs, apply restitution
+ *   write the contacts' impulses back from the blocks, apply restitution
  *
  * The springs are stiff (contact_hertz, joint_hertz) but not beyond a
  * quarter of the substep rate: an implicit spring much stiffer than its
