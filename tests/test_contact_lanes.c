@@ -165,6 +165,17 @@ static int expect_passes_agree(rb_world *world, double speed, bool use_bias, boo
         }
         cr_expect_eq(in_blocks, two_point, "every two-point constraint is solved in a block (%d of %d were)", in_blocks,
                      two_point);
+        cr_expect(in_blocks == 0 || RB_BLOCK_LANES * world->contact_batches.block_count > in_blocks,
+                  "some block has an empty lane, so that empty lanes are tested (%d blocks for %d contacts)",
+                  world->contact_batches.block_count, in_blocks);
+        /* The empty lanes act on nothing: their bodies stay at rest. */
+        const rb_body_state *idle[2] = {&world->contact_batches.idle_a, &world->contact_batches.idle_b};
+        for (int k = 0; k < 2; ++k) {
+            cr_expect(idle[k]->linear_velocity.x == 0.0 && idle[k]->linear_velocity.y == 0.0 &&
+                          idle[k]->angular_velocity == 0.0,
+                      "an empty lane moved its idle body: (%g, %g, %g) at width %d", idle[k]->linear_velocity.x,
+                      idle[k]->linear_velocity.y, idle[k]->angular_velocity, width);
+        }
     }
     free(start_states);
     free(start_constraints);
