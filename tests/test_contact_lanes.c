@@ -1,9 +1,11 @@
 /* SPDX-License-Identifier: MIT */
-/* The soft contact pass and the points' preparation two contacts at a
- * time (contact_solver_wide.c) against the references that take one at a
- * time (rb_contact_solver_solve_soft_range,
+/* The soft step's contact passes (warm start and soft pass) over blocks
+ * of contacts, two and four at a time (contact_blocks.c), and the points'
+ * preparation two at a time (contact_solver_wide.c), against the
+ * references that take one at a time
+ * (rb_contact_solver_warm_start_range, rb_contact_solver_solve_soft_range,
  * rb_contact_solver_prepare_points_range): from the same constraints and
- * velocities, both passes must leave the same velocities and impulses,
+ * velocities, both ways must leave the same velocities and impulses,
  * and both preparations the same constraints, byte for byte.
  * The stated tolerance is none: the values compare equal as numbers
  * (only the sign of a zero may differ, which == does not see), because
@@ -21,6 +23,7 @@
  * spring would go untested. */
 #include <string.h>
 
+#include "contact_blocks.h"
 #include "contact_solver.h"
 #include "joint_solver.h"
 #include "scenes/scenes.h"
@@ -67,10 +70,40 @@ static rb_contact_softness softness_of(const rb_world *world, bool use_bias)
     };
 }
 
+/* The velocities and impulses the blocks' passes at `width` left against
+ * the reference's. */
+static void expect_same_results(const rb_world *world, const rb_body_state *reference_states,
+                                const rb_contact_constraint *reference_constraints, int width)
+{
+    for (int i = 0; i < world->body_slots; ++i) {
+        const rb_body_state *r = &reference_states[i];
+        const rb_body_state *w = &world->states[i];
+        cr_expect(r->linear_velocity.x == w->linear_velocity.x && r->linear_velocity.y == w->linear_velocity.y &&
+                      r->angular_velocity == w->angular_velocity,
+                  "body %d: velocity (%.17g, %.17g, %.17g) one at a time, (%.17g, %.17g, %.17g) %d at a time", i,
+                  r->linear_velocity.x, r->linear_velocity.y, r->angular_velocity, w->linear_velocity.x,
+                  w->linear_velocity.y, w->angular_velocity, width);
+    }
+    for (int i = 0; i < world->constraint_count; ++i) {
+        const rb_contact_constraint *r = &reference_constraints[i];
+        const rb_contact_constraint *w = &world->constraints[i];
+        for (int j = 0; j < r->point_count; ++j) {
+            cr_expect(r->points[j].normal_impulse == w->points[j].normal_impulse &&
+                          r->points[j].tangent_impulse == w->points[j].tangent_impulse &&
+                          r->points[j].max_normal_impulse == w->points[j].max_normal_impulse,
+                      "constraint %d point %d: impulses (%.17g, %.17g) one at a time, (%.17g, %.17g) %d at a time", i,
+                      j, r->points[j].normal_impulse, r->points[j].tangent_impulse, w->points[j].normal_impulse,
+                      w->points[j].tangent_impulse, width);
+        }
+    }
+}
+
 /* Prepares the world's contacts as a step does, disturbs every dynamic
- * body's velocity by up to `speed` m/s and `speed` rad/s, runs one pass
- * each way from the same start and compares. Returns how many
- * constraints had two points. */
+ * body's velocity by up to `speed` m/s and `speed` rad/s, then from the
+ * same start warm starts and runs two passes one at a time over the
+ * constraints, and the same over the blocks gathered from them (whose
+ * impulses are then written back) at each width the processor runs,
+ * and compares. Returns how many constraints had two points. */
 static int expect_passes_agree(rb_world *world, double speed, bool use_bias, bool mix_springs, uint64_t seed)
 {
     cr_assert_geq(rb_contact_solver_prepare(world), 0, "out of memory");
@@ -99,39 +132,51 @@ static int expect_passes_agree(rb_world *world, double speed, bool use_bias, boo
     memcpy(start_states, world->states, state_bytes);
     memcpy(start_constraints, world->constraints, constraint_bytes);
 
+    rb_contact_solver_warm_start_range(world, 0, count);
+    rb_contact_solver_solve_soft_range(world, &softness, 0, count);
     rb_contact_solver_solve_soft_range(world, &softness, 0, count);
     memcpy(reference_states, world->states, state_bytes);
     memcpy(reference_constraints, world->constraints, constraint_bytes);
-    memcpy(world->states, start_states, state_bytes);
-    memcpy(world->constraints, start_constraints, constraint_bytes);
-    rb_contact_solver_solve_soft(world, &softness);
-
     int moved = 0;
-    for (int i = 0; i < world->body_slots; ++i) {
-        const rb_body_state *r = &reference_states[i];
-        const rb_body_state *w = &world->states[i];
-        cr_expect(r->linear_velocity.x == w->linear_velocity.x && r->linear_velocity.y == w->linear_velocity.y &&
-                      r->angular_velocity == w->angular_velocity,
-                  "body %d: velocity (%.17g, %.17g, %.17g) one at a time, (%.17g, %.17g, %.17g) two at a time", i,
-                  r->linear_velocity.x, r->linear_velocity.y, r->angular_velocity, w->linear_velocity.x,
-                  w->linear_velocity.y, w->angular_velocity);
-        moved += r->linear_velocity.x != start_states[i].linear_velocity.x;
-    }
     int two_point = 0;
+    for (int i = 0; i < world->body_slots; ++i) {
+        moved += reference_states[i].linear_velocity.x != start_states[i].linear_velocity.x;
+    }
     for (int i = 0; i < count; ++i) {
-        const rb_contact_constraint *r = &reference_constraints[i];
-        const rb_contact_constraint *w = &world->constraints[i];
-        two_point += r->point_count == 2;
-        for (int j = 0; j < r->point_count; ++j) {
-            cr_expect(r->points[j].normal_impulse == w->points[j].normal_impulse &&
-                          r->points[j].tangent_impulse == w->points[j].tangent_impulse &&
-                          r->points[j].max_normal_impulse == w->points[j].max_normal_impulse,
-                      "constraint %d point %d: impulses (%.17g, %.17g) one at a time, (%.17g, %.17g) two at a time", i,
-                      j, r->points[j].normal_impulse, r->points[j].tangent_impulse, w->points[j].normal_impulse,
-                      w->points[j].tangent_impulse);
-        }
+        two_point += reference_constraints[i].point_count == 2;
     }
     cr_expect_gt(moved, count / 4, "the pass changed velocities (%d bodies of %d constraints)", moved, count);
+
+    for (int width = 2; width <= rb_contact_blocks_widest(); width += 2) {
+        memcpy(world->states, start_states, state_bytes);
+        memcpy(world->constraints, start_constraints, constraint_bytes);
+        rb_contact_solver_gather_blocks(world);
+        world->contact_batches.width = width;
+        rb_contact_solver_warm_start_blocks(world);
+        rb_contact_solver_solve_soft(world, &softness);
+        rb_contact_solver_solve_soft(world, &softness);
+        rb_contact_solver_scatter_blocks(world);
+        expect_same_results(world, reference_states, reference_constraints, width);
+        int in_blocks = 0;
+        for (int k = 0; k < world->contact_batches.block_count; ++k) {
+            for (int lane = 0; lane < RB_BLOCK_LANES; ++lane) {
+                in_blocks += world->contact_batches.blocks[k].constraints[lane] >= 0;
+            }
+        }
+        cr_expect_eq(in_blocks, two_point, "every two-point constraint is solved in a block (%d of %d were)", in_blocks,
+                     two_point);
+        cr_expect(in_blocks == 0 || RB_BLOCK_LANES * world->contact_batches.block_count > in_blocks,
+                  "some block has an empty lane, so that empty lanes are tested (%d blocks for %d contacts)",
+                  world->contact_batches.block_count, in_blocks);
+        /* The empty lanes act on nothing: their bodies stay at rest. */
+        const rb_body_state *idle[2] = {&world->contact_batches.idle_a, &world->contact_batches.idle_b};
+        for (int k = 0; k < 2; ++k) {
+            cr_expect(idle[k]->linear_velocity.x == 0.0 && idle[k]->linear_velocity.y == 0.0 &&
+                          idle[k]->angular_velocity == 0.0,
+                      "an empty lane moved its idle body: (%g, %g, %g) at width %d", idle[k]->linear_velocity.x,
+                      idle[k]->linear_velocity.y, idle[k]->angular_velocity, width);
+        }
+    }
     free(start_states);
     free(start_constraints);
     free(reference_states);

@@ -432,9 +432,9 @@ static inline void apply_impulse_at(const rb_contact_constraint *c, rb_vec2 ra, 
     v->angular_b += c->inv_inertia_b * rb_cross(rb, impulse);
 }
 
-void rb_contact_solver_warm_start(rb_world *world)
+void rb_contact_solver_warm_start_range(rb_world *world, int begin, int end)
 {
-    for (int i = 0; i < world->constraint_count; ++i) {
+    for (int i = begin; i < end; ++i) {
         const rb_contact_constraint *c = &world->constraints[i];
         rb_body_state *a = &world->states[c->body_a];
         rb_body_state *b = &world->states[c->body_b];
@@ -447,6 +447,11 @@ void rb_contact_solver_warm_start(rb_world *world)
         }
         store_velocities(&v, a, b);
     }
+}
+
+void rb_contact_solver_warm_start(rb_world *world)
+{
+    rb_contact_solver_warm_start_range(world, 0, world->constraint_count);
 }
 
 static inline void solve_point_friction(const constraint_rows *m, double friction, rb_constraint_point *p,

@@ -5,6 +5,8 @@
 #ifndef RB_CONTACT_SOLVER_H
 #define RB_CONTACT_SOLVER_H
 
+#include <stddef.h>
+
 #include "world_internal.h"
 
 /* The block solver is used while cond(K) stays below this (Box2D uses the
@@ -54,6 +56,43 @@ struct rb_contact_constraint {
     double inv_k11, inv_k12, inv_k22; /* its inverse (kg) */
 };
 
+/* Contacts a block holds side by side (contact_blocks.c). */
+#define RB_BLOCK_LANES 4
+
+/* One value of each of a block's contacts, lane k for its k-th. */
+typedef struct rb_lanes4 {
+    double v[RB_BLOCK_LANES];
+} rb_lanes4;
+
+/* A point of a block of contacts (rb_contact_block): the fields of
+ * rb_constraint_point the soft step's passes read, lane by lane. */
+typedef struct rb_block_point {
+    rb_lanes4 local_surface_ax, local_surface_ay, local_surface_bx, local_surface_by;
+    rb_lanes4 normal_arm_a, normal_arm_b, tangent_arm_a, tangent_arm_b;
+    rb_lanes4 normal_mass, tangent_mass;
+    rb_lanes4 normal_impulse, tangent_impulse, max_normal_impulse;
+} rb_block_point;
+
+/* Up to four two-point contacts of one colour, with no circle side, laid
+ * side by side for the passes that solve them together
+ * (contact_blocks.c): a copy of their constraints made once a step, which
+ * then holds their impulses until they are written back. A lane without
+ * a contact holds one that cannot act (no mass, no impulse) between the
+ * batches' two idle bodies. */
+struct rb_contact_block {
+    /* the lanes' bodies in world->states (or the idle ones), found once
+     * a step: no body is made or destroyed within a step, so the array
+     * stays where it is */
+    rb_body_state *body_a[RB_BLOCK_LANES];
+    rb_body_state *body_b[RB_BLOCK_LANES];
+    int constraints[RB_BLOCK_LANES];       /* indices in world->constraints; -1 for an empty lane */
+    int64_t against_fixed[RB_BLOCK_LANES]; /* all ones where the contact is against a body that cannot move */
+    rb_lanes4 normal_x, normal_y;
+    rb_lanes4 inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
+    rb_lanes4 friction;
+    rb_block_point points[2];
+};
+
 /* Builds one constraint per touching, non-sensor contact that has a
  * dynamic body, fixing each point's surface points in the bodies' frames;
  * carries the impulses of the last step if warm starting. */
@@ -84,6 +123,9 @@ void rb_contact_solver_prepare_substep(rb_world *world, double h, rb_substep_row
 void rb_contact_solver_prepare_points(rb_world *world, double h, rb_substep_rows rows);
 void rb_contact_solver_prepare_points_range(rb_world *world, double h, rb_substep_rows rows, int begin, int end);
 void rb_contact_solver_warm_start(rb_world *world);
+/* What rb_contact_solver_warm_start does, over the constraints begin ..
+ * end - 1: the reference the blocks' warm start agrees with. */
+void rb_contact_solver_warm_start_range(rb_world *world, int begin, int end);
 /* One pass of sequential impulses at the substep's bounds (Baumgarte,
  * NGS), over the colours in order or, `backwards`, in reverse. NGS
  * alternates: its velocity passes carry no bias, and without the
@@ -103,15 +145,31 @@ typedef struct rb_contact_softness {
     double inv_h;                     /* 1/s, of the substep */
     bool use_bias;                    /* false in the relax pass: stop approach, push nothing */
 } rb_contact_softness;
-/* One pass of soft contacts. The anchors, normal and masses stay as
+/* The soft step's contacts several at a time (contact_blocks.c). After
+ * rb_contact_solver_prepare_substep at the step's start, gather_blocks
+ * lays the two-point constraints of each colour four by four into
+ * blocks (world->contact_batches); from then until scatter_blocks writes
+ * their impulses back to the constraints, the blocks hold those impulses,
+ * and only the passes below may be run on the contacts. The constraints
+ * with one point, and those of the overflow colour, stay where they are
+ * and are solved one at a time. */
+void rb_contact_solver_gather_blocks(rb_world *world);
+void rb_contact_solver_scatter_blocks(rb_world *world);
+/* The warm start over the batches: rb_contact_solver_warm_start's result. */
+void rb_contact_solver_warm_start_blocks(rb_world *world);
+void rb_contact_batches_free(rb_contact_batches *batches);
+size_t rb_contact_batches_bytes(const rb_contact_batches *batches);
+
+/* One pass of soft contacts, over the batches gathered by
+ * rb_contact_solver_gather_blocks. The anchors, normal and masses stay as
  * rb_contact_solver_prepare_substep set them at the start of the step;
  * each point's separation is measured anew from the poses now, so a pass
- * after the positions moved sees the gap they left. Two contacts of a
- * colour at a time where the processor allows (contact_solver_wide.c),
- * the others one at a time by rb_contact_solver_solve_soft_range. */
+ * after the positions moved sees the gap they left. The two-point
+ * contacts of a colour four or two at a time (contact_blocks.c), the
+ * others one at a time by rb_contact_solver_solve_soft_range. */
 void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *softness);
 /* The same pass, one contact at a time, over constraints begin .. end - 1
- * (contact_solver.c): the reference the two-at-a-time pass agrees with. */
+ * (contact_solver.c): the reference the blocks' pass agrees with. */
 void rb_contact_solver_solve_soft_range(rb_world *world, const rb_contact_softness *softness, int begin, int end);
 /* One non-linear Gauss-Seidel pass over the contacts; returns whether no
  * point was deeper than the tolerance before it. */

@@ -7,8 +7,10 @@
  * positions move removes the velocity the push left behind.
  *
  *   prepare the step       contact anchors, normal and masses, fixed for
- *                          the step; each point's separation is measured
- *                          anew from the poses whenever it is solved;
+ *                          the step, laid four by four into blocks
+ *                          within a colour (contact_blocks.c);
+ *                          each point's separation is measured anew from
+ *                          the poses whenever it is solved;
  *                          the joints' masses and anchors in the body
  *                          frames (rb_joints_collect_active)
  *   for each substep of length h = dt / substeps:
@@ -25,7 +27,7 @@
  *       correct the trees      position_iterations NGS passes over the
  *                              pins of uneven trees (joint_tree.h)
  *       relax                  relax_iterations passes without bias
- *   apply restitution
+ *   write the contacts' impulses back from the blocks, apply restitution
  *
  * The springs are stiff (contact_hertz, joint_hertz) but not beyond a
  * quarter of the substep rate: an implicit spring much stiffer than its
@@ -91,6 +93,7 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
 
     double t = rb_world_clock(world);
     rb_contact_solver_prepare_substep(world, h, (rb_substep_rows){.first_substep = true});
+    rb_contact_solver_gather_blocks(world);
     profile->prepare += rb_world_clock(world) - t;
 
     for (int substep = 0; substep < substeps; ++substep) {
@@ -111,7 +114,7 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
         }
         rb_cables_warm_start(world);
         rb_joints_warm_start(world, h);
-        rb_contact_solver_warm_start(world);
+        rb_contact_solver_warm_start_blocks(world);
         profile->warm_start += rb_world_clock(world) - t;
 
         t = rb_world_clock(world);
@@ -141,6 +144,7 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
     }
 
     t = rb_world_clock(world);
+    rb_contact_solver_scatter_blocks(world);
     rb_contact_solver_apply_restitution(world, h);
     profile->restitution = rb_world_clock(world) - t;
     return (rb_solver_counts){

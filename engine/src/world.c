@@ -160,6 +160,7 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->island_rest, &world->island_rest_capacity, sizeof *world->island_rest);
     rb_free_array((void **)&world->constraints, &world->constraint_capacity, sizeof *world->constraints);
     rb_colouring_free(&world->contact_colouring);
+    rb_contact_batches_free(&world->contact_batches);
     rb_joint_tree_free(world);
     rb_free_array((void **)&world->joints, &world->joint_capacity, sizeof *world->joints);
     rb_free_array((void **)&world->cables, &world->cable_capacity, sizeof *world->cables);
@@ -261,7 +262,7 @@ size_t rb_world_bytes_in_use(const rb_world *world)
            (size_t)world->band_end_capacity * sizeof *world->band_end +
            (size_t)world->constraint_capacity * sizeof *world->constraints +
            (size_t)world->contact_colouring.body_capacity * sizeof *world->contact_colouring.body_colours +
-           (size_t)world->joint_capacity * sizeof *world->joints +
+           rb_contact_batches_bytes(&world->contact_batches) + (size_t)world->joint_capacity * sizeof *world->joints +
            (size_t)world->cable_capacity * sizeof *world->cables + rb_contact_events_bytes(world);
 }
 

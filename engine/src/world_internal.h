@@ -167,6 +167,23 @@ typedef struct rb_event_arrays {
 } rb_event_arrays;
 
 typedef struct rb_contact_constraint rb_contact_constraint;
+typedef struct rb_contact_block rb_contact_block; /* contact_solver.h */
+
+/* The soft step's contacts as its passes take them, colour by colour:
+ * blocks of two-point constraints solved several at a time, and the
+ * constraints of the colour with one point, one at a time
+ * (rb_contact_solver_gather_blocks). */
+typedef struct rb_contact_batches {
+    rb_contact_block *blocks;
+    int block_count, block_capacity;
+    int *singles; /* indices in world->constraints */
+    int single_count, single_capacity;
+    int block_start[RB_COLOUR_COUNT + 1];  /* colour k's blocks start here; the last entry is block_count */
+    int single_start[RB_COLOUR_COUNT + 1]; /* and its singles here */
+    int overflow_start;                    /* the overflow colour's constraints, in world->constraints */
+    rb_body_state idle_a, idle_b;          /* the bodies of a block's empty lanes: at rest, at the origin */
+    int width;                             /* contacts solved by one vector operation: 4 or 2 (contact_blocks.h) */
+} rb_contact_batches;
 
 /* A symmetric 3x3 block K = J·M⁻¹·Jᵀ of three of a joint's rows, whose
  * upper-left 2x2 is solved alone when the third row is not active
@@ -471,6 +488,7 @@ struct rb_world {
     int constraint_count, constraint_capacity;
     int bouncing_constraint_count; /* constraints with restitution > 0 this step */
     rb_colouring contact_colouring;
+    rb_contact_batches contact_batches;
 
     rb_joint *joints;
     int joint_capacity;
