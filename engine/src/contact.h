@@ -6,11 +6,13 @@
 
 #include "world_internal.h"
 
-/* Makes world->contacts match world->pairs: keeps contacts whose pair
- * remains (with their impulses), adds the new pairs, drops the rest. */
+/* Makes world->contacts follow the broad phase's pairs: keeps contacts
+ * whose pair remains (with their impulses), adds the pairs that began,
+ * drops those that ended (broad_phase.h). */
 rb_status rb_contacts_update(rb_world *world);
 
-/* Computes every contact's manifold for a step of dt seconds, carries the
+/* Computes the manifold of every contact whose shapes' swept boxes
+ * overlap (the others get none) for a step of dt seconds, carries the
  * last step's impulses to points with the same feature id, and wakes a
  * sleeping body touched by a moving one. */
 void rb_contacts_collide(rb_world *world, double dt);

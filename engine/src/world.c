@@ -146,7 +146,8 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->spare_contacts, &world->spare_capacity, sizeof *world->spare_contacts);
     rb_free_array((void **)&world->pairs, &world->pair_capacity, sizeof *world->pairs);
     rb_free_array((void **)&world->sorted_pairs, &world->sorted_pair_capacity, sizeof *world->sorted_pairs);
-    rb_free_array((void **)&world->candidates, &world->candidate_capacity, sizeof *world->candidates);
+    rb_free_array((void **)&world->new_pairs, &world->new_pair_capacity, sizeof *world->new_pairs);
+    rb_free_array((void **)&world->ended_pairs, &world->ended_pair_capacity, sizeof *world->ended_pairs);
     rb_free_array((void **)&world->pair_bucket, &world->pair_bucket_capacity, sizeof *world->pair_bucket);
     rb_free_array((void **)&world->active_joints, &world->active_joint_capacity, sizeof *world->active_joints);
     rb_free_array((void **)&world->substep_omega, &world->substep_omega_capacity, sizeof *world->substep_omega);
@@ -252,7 +253,8 @@ size_t rb_world_bytes_in_use(const rb_world *world)
            (size_t)world->spare_capacity * sizeof *world->spare_contacts +
            (size_t)world->pair_capacity * sizeof *world->pairs +
            (size_t)world->sorted_pair_capacity * sizeof *world->sorted_pairs +
-           (size_t)world->candidate_capacity * sizeof *world->candidates +
+           (size_t)world->new_pair_capacity * sizeof *world->new_pairs +
+           (size_t)world->ended_pair_capacity * sizeof *world->ended_pairs +
            (size_t)world->pair_bucket_capacity * sizeof *world->pair_bucket +
            (size_t)world->sweep_capacity * sizeof *world->sweep +
            (size_t)world->refit_capacity * sizeof *world->refits +
@@ -385,7 +387,7 @@ static void finalize_step(rb_world *world)
     rb_statistics *stats = &world->statistics;
     stats->body_count = world->body_count;
     stats->shape_count = world->shape_count;
-    stats->pair_count = world->pair_count;
+    stats->pair_count = world->contact_count;
     stats->contact_count = 0;
     stats->manifold_point_count = 0;
     for (int i = 0; i < world->contact_count; ++i) {
