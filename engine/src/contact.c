@@ -259,12 +259,14 @@ void rb_contacts_collide(rb_world *world, double dt)
     bool warm = world->settings.warm_starting;
     for (int i = 0; i < world->contact_count; ++i) {
         rb_contact *contact = &world->contacts[i];
-        rb_manifold fresh = {0};
+        rb_manifold fresh;
         if (may_meet_in_step(world, contact)) {
             fresh = compute_manifold(world, contact, contact_speculative_distance(world, contact, dt));
             if (warm) {
                 carry_impulses(&contact->manifold, &fresh);
             }
+        } else {
+            fresh = (rb_manifold){0};
         }
         contact->manifold = fresh;
         const rb_shape *a = &world->shapes[contact->pair.shape_a];
