@@ -247,9 +247,7 @@ static void carry_impulses(const rb_manifold *old, rb_manifold *fresh)
     }
 }
 
-/* Whether the two shapes' swept boxes overlap: if not, they cannot meet
- * within the step, and their contact has no point. */
-static bool may_meet_in_step(const rb_world *world, const rb_contact *contact)
+bool rb_contact_may_meet_in_step(const rb_world *world, const rb_contact *contact)
 {
     return rb_aabb_overlaps(world->shapes[contact->pair.shape_a].aabb, world->shapes[contact->pair.shape_b].aabb);
 }
@@ -260,7 +258,7 @@ void rb_contacts_collide(rb_world *world, double dt)
     for (int i = 0; i < world->contact_count; ++i) {
         rb_contact *contact = &world->contacts[i];
         rb_manifold fresh;
-        if (may_meet_in_step(world, contact)) {
+        if (rb_contact_may_meet_in_step(world, contact)) {
             fresh = compute_manifold(world, contact, contact_speculative_distance(world, contact, dt));
             if (warm) {
                 carry_impulses(&contact->manifold, &fresh);
@@ -301,7 +299,7 @@ void rb_contacts_update_sensors(rb_world *world)
         rb_contact *contact = &world->contacts[i];
         if (contact->sensor) {
             contact->manifold =
-                may_meet_in_step(world, contact) ? compute_manifold(world, contact, 0.0) : (rb_manifold){0};
+                rb_contact_may_meet_in_step(world, contact) ? compute_manifold(world, contact, 0.0) : (rb_manifold){0};
             contact->touching = manifold_touches(&contact->manifold);
             rb_contact_events_update_sensor(world, contact);
         }

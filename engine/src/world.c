@@ -559,7 +559,18 @@ uint64_t rb_world_state_hash(const rb_world *world)
     return hash;
 }
 
-int rb_world_contact_count(const rb_world *world) { return world != NULL ? world->contact_count : 0; }
+/* The contacts reported are those the narrow phase looked at in the last
+ * step: the broad phase's pairs whose swept boxes overlapped. A pair whose
+ * fat boxes overlap but whose shapes could not meet within the step is
+ * kept by the engine, with no point, and not reported. */
+int rb_world_contact_count(const rb_world *world)
+{
+    int count = 0;
+    for (int i = 0; world != NULL && i < world->contact_count; ++i) {
+        count += rb_contact_may_meet_in_step(world, &world->contacts[i]) ? 1 : 0;
+    }
+    return count;
+}
 
 int rb_world_contacts(const rb_world *world, rb_contact_data *out, int capacity)
 {
@@ -568,10 +579,13 @@ int rb_world_contacts(const rb_world *world, rb_contact_data *out, int capacity)
         rb_report_error(RB_ERR_INVALID_ARGUMENT, "rb_world_contacts: world or out is NULL");
         return 0;
     }
-    int count = world->contact_count < capacity ? world->contact_count : capacity;
-    for (int i = 0; i < count; ++i) {
+    int count = 0;
+    for (int i = 0; i < world->contact_count && count < capacity; ++i) {
         const rb_contact *c = &world->contacts[i];
-        out[i] = (rb_contact_data){
+        if (!rb_contact_may_meet_in_step(world, c)) {
+            continue;
+        }
+        out[count++] = (rb_contact_data){
             .shape_a = rb_make_shape_id(world, c->pair.shape_a),
             .shape_b = rb_make_shape_id(world, c->pair.shape_b),
             .body_a = rb_make_body_id(world, c->body_a),
