@@ -422,8 +422,9 @@ struct rb_world {
     int island_rest_capacity;
     int sweep_count;  /* shapes in the sweep: all of them, or none while no shape is solid */
     bool sweep_stale; /* shapes were created or destroyed: rebuild the sweep */
-    /* a body's type changed, or a joint came or went: which shapes may
-     * collide changed, so the broad phase finds its candidates anew */
+    /* a body's type or a shape's filter changed, or a joint came or went:
+     * which shapes may collide changed, so the broad phase finds every
+     * pair anew */
     bool candidates_stale;
     int solid_shape_count; /* shapes that are not sensors */
 
