@@ -257,14 +257,18 @@ void rb_contacts_collide(rb_world *world, double dt)
     bool warm = world->settings.warm_starting;
     for (int i = 0; i < world->contact_count; ++i) {
         rb_contact *contact = &world->contacts[i];
-        rb_manifold fresh;
-        if (rb_contact_may_meet_in_step(world, contact)) {
-            fresh = compute_manifold(world, contact, contact_speculative_distance(world, contact, dt));
-            if (warm) {
-                carry_impulses(&contact->manifold, &fresh);
+        if (!rb_contact_may_meet_in_step(world, contact)) {
+            /* No point, and an end event if it was touching. */
+            contact->manifold.point_count = 0;
+            contact->touching = false;
+            if (!contact->sensor) {
+                rb_contact_events_update(world, contact);
             }
-        } else {
-            fresh = (rb_manifold){0};
+            continue;
+        }
+        rb_manifold fresh = compute_manifold(world, contact, contact_speculative_distance(world, contact, dt));
+        if (warm) {
+            carry_impulses(&contact->manifold, &fresh);
         }
         contact->manifold = fresh;
         const rb_shape *a = &world->shapes[contact->pair.shape_a];
