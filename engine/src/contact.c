@@ -2,7 +2,6 @@
 /* Contacts: created and dropped as broad-phase pairs come and go, given
  * a manifold each step, carrying solver impulses between steps, and
  * reporting when they begin and end touching. */
-#include <assert.h>
 
 #include "allocator.h"
 #include "contact.h"
@@ -96,7 +95,9 @@ static rb_status follow_pair_changes(rb_world *world)
         for (; b < world->new_pair_count && compare_pair_keys(&begun[b], &contact->pair) < 0; ++b, ++made) {
             world->spare_contacts[count++] = new_contact(world, &begun[b]);
         }
-        b += b < world->new_pair_count && compare_pair_keys(&begun[b], &contact->pair) == 0 ? 1 : 0;
+        if (b < world->new_pair_count && compare_pair_keys(&begun[b], &contact->pair) == 0) {
+            ++b; /* already a contact */
+        }
         while (e < world->ended_pair_count && compare_pair_keys(&ended[e], &contact->pair) < 0) {
             ++e;
         }
