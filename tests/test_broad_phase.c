@@ -399,6 +399,60 @@ Test(broad_phase, a_pyramid_at_rest_costs_the_broad_phase_nothing)
     destroy_world_and_expect_no_leak(world);
 }
 
+/* Expects every shape of a sleeping or static body to have the swept box
+ * a body at rest gets: its tight box grown by the speculative margin alone, exactly
+ * as if it had been made in the last step. */
+static void expect_sleeping_boxes_fresh(const rb_world *world, const char *when)
+{
+    double margin = RB_SPECULATIVE_SLOPS * world->settings.linear_slop;
+    for (int i = 0; i < world->shape_slots; ++i) {
+        const rb_shape *shape = &world->shapes[i];
+        const rb_body *body = &world->bodies[shape->body];
+        if (!shape->in_use || (body->awake && body->type != RB_BODY_STATIC)) {
+            continue;
+        }
+        rb_aabb tight = rb_shape_tight_aabb(world, i);
+        bool fresh = shape->aabb.lower.x == tight.lower.x - margin && shape->aabb.lower.y == tight.lower.y - margin &&
+                     shape->aabb.upper.x == tight.upper.x + margin && shape->aabb.upper.y == tight.upper.y + margin;
+        cr_assert(fresh, "%s: shape %d of a body at rest has a stale swept box", when, i);
+    }
+}
+
+/* A pyramid asleep costs the broad phase nothing at all: the swept boxes
+ * of bodies that stand still are not made again, yet stay exactly what
+ * they would be. A box moved in its sleep (placed, not woken) gets its
+ * boxes and contacts anew. */
+Test(broad_phase, a_pyramid_asleep_makes_no_box)
+{
+    scene_pyramid pyramid;
+    rb_world *world = make_resting_pyramid(&pyramid);
+    int steps = 0;
+    for (; steps < 600 && rb_world_statistics(world).awake_body_count > 0; ++steps) {
+        step_world(world, TEST_DT, 1);
+    }
+    cr_assert_eq(rb_world_statistics(world).awake_body_count, 0, "the pyramid is still awake after %d steps", steps);
+    step_world(world, TEST_DT, 1); /* the boxes made once more at rest */
+    for (int step = 0; step < 30; ++step) {
+        step_and_check(world, step);
+        rb_statistics statistics = rb_world_statistics(world);
+        cr_expect_eq(statistics.broad_phase_boxes, 0, "step %d: %d swept boxes made for a pyramid asleep", step,
+                     statistics.broad_phase_boxes);
+        cr_expect_eq(statistics.broad_phase_box_tests, 0, "step %d: %d box tests for a pyramid asleep", step,
+                     statistics.broad_phase_box_tests);
+        expect_sleeping_boxes_fresh(world, "asleep");
+    }
+
+    /* The top box placed half a box to the side, asleep. */
+    rb_vec2 top = rb_body_position(world, pyramid.top);
+    cr_assert_eq(rb_body_set_transform(world, pyramid.top, rb_add(top, rb_v2(0.5, 0.0)), 0.0), RB_OK, "%s",
+                 rb_last_error());
+    cr_assert(!rb_body_is_awake(world, pyramid.top), "placing the box woke it");
+    step_and_check(world, 100);
+    cr_expect_gt(rb_world_statistics(world).broad_phase_boxes, 0, "no box made after the top box was placed");
+    expect_sleeping_boxes_fresh(world, "placed");
+    destroy_world_and_expect_no_leak(world);
+}
+
 /* Balls bouncing without gravity in a closed box, with no friction and
  * full restitution, meet and part for ever: pairs begin and end in every
  * second. Once the arrays have grown to what such a scene needs, a step

@@ -626,24 +626,41 @@ static rb_status requery_moved(rb_world *world, bool *done)
     return RB_OK;
 }
 
+/* Whether a body stands still until something wakes it or places it:
+ * static, or asleep, and without velocity (a body can be made asleep and
+ * moving). Its shapes' swept boxes then stay what they were, whatever dt. */
+static bool stands_still(const rb_world *world, int body)
+{
+    const rb_body_state *state = &world->states[body];
+    bool still = world->bodies[body].type == RB_BODY_STATIC || !world->bodies[body].awake;
+    return still && state->linear_velocity.x == 0.0 && state->linear_velocity.y == 0.0 &&
+           state->angular_velocity == 0.0;
+}
+
 /* Each shape's swept box for this step, and the tallest and widest of
- * a dynamic body's; the shapes whose swept box left their fat box get a
- * new fat box and are listed in world->refits with their old one. */
-static void sweep_boxes_forward(rb_world *world, double dt)
+ * those of dynamic bodies (they only shape the bands of a full search);
+ * the shapes whose swept box left their fat box get a new fat box and are
+ * listed in world->refits with their old one. Unless `every_shape`, the
+ * shapes of bodies that stand still are passed over: their boxes were
+ * made at rest (a body put to sleep, or placed, makes world->boxes_stale)
+ * and would come out the same, so a pile asleep costs nothing here. */
+static void sweep_boxes_forward(rb_world *world, double dt, bool every_shape)
 {
     double speculative_distance = RB_SPECULATIVE_SLOPS * world->settings.linear_slop;
     struct rb_refit *refits = world->refits;
     int refit_count = 0;
+    int boxes = 0;
     double tallest = 0.0;
     double widest = 0.0;
     /* In index order rather than the sweep's: the shapes and their bodies
      * are then read one after another from memory instead of at random. */
     for (int index = 0; index < world->shape_slots; ++index) {
         rb_shape *shape = &world->shapes[index];
-        if (!shape->in_use) {
+        if (!shape->in_use || (!every_shape && stands_still(world, shape->body))) {
             continue;
         }
         shape->aabb = swept_aabb(world, index, dt, speculative_distance);
+        ++boxes;
         if (world->bodies[shape->body].type == RB_BODY_DYNAMIC) {
             tallest = rb_max(tallest, shape->aabb.upper.y - shape->aabb.lower.y);
             widest = rb_max(widest, box_width(&shape->aabb));
@@ -654,6 +671,7 @@ static void sweep_boxes_forward(rb_world *world, double dt)
         }
     }
     world->refit_count = refit_count;
+    world->statistics.broad_phase_boxes = boxes;
     world->tallest_dynamic_box = tallest;
     world->widest_dynamic_box = widest;
 }
@@ -667,6 +685,7 @@ rb_status rb_broad_phase_update_pairs(rb_world *world, double dt)
     rb_statistics *statistics = &world->statistics;
     statistics->broad_phase_moved = 0;
     statistics->broad_phase_box_tests = 0;
+    statistics->broad_phase_boxes = 0;
     world->pairs_rebuilt = false;
     world->new_pair_count = 0;
     world->ended_pair_count = 0;
@@ -682,7 +701,8 @@ rb_status rb_broad_phase_update_pairs(rb_world *world, double dt)
             0) {
             return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for the broad phase");
         }
-        sweep_boxes_forward(world, dt);
+        sweep_boxes_forward(world, dt, search_all || world->boxes_stale);
+        world->boxes_stale = false;
         search_all = search_all || world->refit_count > world->sweep_count / REQUERY_LIMIT;
     }
     if (!search_all && world->refit_count > 0) {

@@ -189,6 +189,7 @@ rb_status rb_world_set_solver_settings(rb_world *world, const rb_solver_settings
     RB_TRY(rb_world_check_unlocked(world, "rb_world_set_solver_settings"));
     RB_TRY(check_settings(settings, "rb_world_set_solver_settings"));
     world->settings = *settings;
+    world->boxes_stale = true; /* the speculative margin may have changed */
     return RB_OK;
 }
 

@@ -422,6 +422,10 @@ struct rb_world {
     int island_rest_capacity;
     int sweep_count;  /* shapes in the sweep: all of them, or none while no shape is solid */
     bool sweep_stale; /* shapes were created or destroyed: rebuild the sweep */
+    /* a body was placed (it may be asleep) or the settings changed since
+     * the last step: every shape's swept box is made anew, not only those
+     * of the bodies that may have moved */
+    bool boxes_stale;
     /* a body's type or a shape's filter changed, or a joint came or went:
      * which shapes may collide changed, so the broad phase finds every
      * pair anew */

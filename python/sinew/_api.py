@@ -173,6 +173,7 @@ class Statistics(Structure):
         ("broad_phase_requeries", c_int),
         ("broad_phase_moved", c_int),
         ("broad_phase_box_tests", c_int),
+        ("broad_phase_boxes", c_int),
         ("broad_phase_new_pairs", c_int),
         ("broad_phase_ended_pairs", c_int),
         ("contact_count", c_int),

@@ -137,6 +137,10 @@ typedef struct rb_statistics {
     /** fat-box overlap tests the broad phase made in the last step around
      * the moved shapes (0 in a step with a full search, or with nothing moved) */
     int broad_phase_box_tests;
+    /** shapes whose swept box was made in the last step: those of the
+     * bodies awake or moving (every shape after shapes came or went, a
+     * body was placed or the settings changed); 0 for a pile asleep */
+    int broad_phase_boxes;
     /** pairs of shapes whose fat boxes began or stopped overlapping in the
      * last step: the contacts made and ended */
     int broad_phase_new_pairs;
