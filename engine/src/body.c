@@ -335,6 +335,7 @@ rb_status rb_body_set_transform(rb_world *world, rb_body_id id, rb_vec2 position
     state->angle = angle;
     state->rotation = rb_rot_from_angle(angle);
     state->center = rb_add(position, rb_rotate(state->rotation, world->bodies[index].local_center));
+    world->boxes_stale = true; /* the broad phase's boxes of a sleeping body no longer fit it */
     return RB_OK;
 }
 
@@ -573,6 +574,7 @@ rb_status rb_body_set_awake(rb_world *world, rb_body_id id, bool awake)
         /* A body put to sleep stops where it is. */
         world->states[index].linear_velocity = rb_v2(0.0, 0.0);
         world->states[index].angular_velocity = 0.0;
+        world->boxes_stale = true; /* its swept boxes, made moving, are made once more at rest */
         body->force = rb_v2(0.0, 0.0);
         body->torque = 0.0;
     }

@@ -2,33 +2,34 @@
 /* Broad phase by sort and sweep (Baraff 1992) over fat boxes.
  *
  * Each step, every shape's box is enlarged by how far the shape may
- * travel relative to its neighbours during the step, so every pair that
- * could touch by the end of the step reaches the narrow phase and gets a
- * speculative contact. Those swept boxes are compared only for the
- * candidate pairs: the pairs whose fat boxes overlap, a fat box being a
- * swept box grown by RB_FAT_MARGIN and kept while the swept box stays
- * inside it (the fat boxes of Box2D's dynamic tree, Catto 2019), of
- * shapes that may collide (rb_should_collide). Since a candidate is kept
- * exactly when its swept boxes overlap, the pairs are the same as a sweep
- * of the swept boxes would find, whichever fat boxes are current.
+ * travel relative to its neighbours during the step (its swept box), so
+ * every pair that could touch by the end of the step reaches the narrow
+ * phase and gets a speculative contact. A fat box is a swept box grown by
+ * RB_FAT_MARGIN and kept while the swept box stays inside it (the fat
+ * boxes of Box2D's dynamic tree, Catto 2019). The pairs are the shapes
+ * that may collide (rb_should_collide) and whose fat boxes overlap; each
+ * is a contact, whose narrow phase runs while the swept boxes overlap
+ * (contact.c).
  *
- * The candidates change only where fat boxes change:
- *   - nothing left its fat box: they are kept (a pile at rest sweeps once;
- *     the base-100 pyramid, 100 boxes tall, spent an eighth of its step
- *     sweeping every step);
- *   - a few shapes left theirs (a ball falling past a resting pile, a
- *     box knocked off a stack): each of those gets a new fat box,
- *     its old candidates are dropped and its new ones are found by a range
- *     search in the sorted sweep, O(log n + neighbours in x) per shape;
+ * The pairs change only where fat boxes change:
+ *   - nothing left its fat box (a pile at rest): nothing is searched and
+ *     the contacts stay as they are;
+ *   - a few shapes left theirs (a ball falling past a resting pile, a box
+ *     knocked off a stack): only they are searched around, by a range in
+ *     the sorted sweep, O(log n + neighbours in x) each. A pair begins
+ *     where the new fat boxes overlap and the old ones did not, and ends
+ *     the other way round: the list of pairs that begin and the list of
+ *     those that end are all the contacts are told (v3's move buffer, where
+ *     the old boxes stand in for Box2D's set of pairs);
  *   - shapes came or went, which shapes may collide changed
  *     (candidates_stale), or more than one shape in REQUERY_LIMIT left its
- *     box: every fat box is made anew and all candidates are found by
- *     sweeps, one per band in y, each box meeting only the boxes of its
- *     band that start before it ends: O(n + overlaps in x within a band),
- *     the shapes kept sorted by the lower x of their fat boxes from one
- *     step to the next.
- * The candidates are put in body order (a counting sort), so the
- * contacts, and every run, meet the pairs in the same order. */
+ *     box: every fat box is made anew and all pairs are found by sweeps,
+ *     one per band in y, each box meeting only the boxes of its band that
+ *     start before it ends: O(n + overlaps in x within a band), the shapes
+ *     kept sorted by the lower x of their fat boxes from one step to the
+ *     next.
+ * Every list of pairs is put in (body, shape) order, so the contacts, and
+ * every run, meet the pairs in the same order. */
 #include <stdlib.h>
 
 #include "allocator.h"
@@ -89,12 +90,9 @@ static rb_aabb swept_aabb(const rb_world *world, int index, double dt, double sp
     return box;
 }
 
-static rb_status add_candidate(rb_world *world, int shape_a, int shape_b)
+/* The pair of two shapes, the one of the lower body first. */
+static rb_pair make_pair(const rb_world *world, int shape_a, int shape_b)
 {
-    if (rb_grow_array((void **)&world->candidates, &world->candidate_capacity, world->candidate_count + 1,
-                      sizeof *world->candidates) != 0) {
-        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for shape pairs");
-    }
     int body_a = world->shapes[shape_a].body;
     int body_b = world->shapes[shape_b].body;
     if (body_a > body_b || (body_a == body_b && shape_a > shape_b)) {
@@ -105,13 +103,64 @@ static rb_status add_candidate(rb_world *world, int shape_a, int shape_b)
         body_a = body_b;
         body_b = t;
     }
-    world->candidates[world->candidate_count++] = (rb_pair){
+    return (rb_pair){
         .body_key = ((uint64_t)(uint32_t)body_a << 32) | (uint32_t)body_b,
         .shape_key = ((uint64_t)(uint32_t)shape_a << 32) | (uint32_t)shape_b,
         .shape_a = shape_a,
         .shape_b = shape_b,
     };
+}
+
+/* Appends the pair of two shapes to a list of pairs. */
+static rb_status push_pair(const rb_world *world, rb_pair **list, int *count, int *capacity, int shape_a, int shape_b)
+{
+    if (rb_grow_array((void **)list, capacity, *count + 1, sizeof **list) != 0) {
+        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for shape pairs");
+    }
+    (*list)[(*count)++] = make_pair(world, shape_a, shape_b);
     return RB_OK;
+}
+
+static void swap_bytes(unsigned char *a, unsigned char *b, size_t size)
+{
+    for (size_t i = 0; i < size; ++i) {
+        unsigned char t = a[i];
+        a[i] = b[i];
+        b[i] = t;
+    }
+}
+
+typedef int compare_fn(const void *, const void *);
+
+/* Sifts element `root` down the max-heap of the first `end` elements. */
+static void sift_down(unsigned char *a, int root, int end, size_t size, compare_fn *compare)
+{
+    for (int child = 2 * root + 1; child < end; child = 2 * root + 1) {
+        if (child + 1 < end && compare(a + (size_t)child * size, a + (size_t)(child + 1) * size) < 0) {
+            ++child;
+        }
+        if (compare(a + (size_t)root * size, a + (size_t)child * size) >= 0) {
+            return;
+        }
+        swap_bytes(a + (size_t)root * size, a + (size_t)child * size, size);
+        root = child;
+    }
+}
+
+/* Heapsort (Williams 1964) of `count` elements of `size` bytes whose
+ * keys all differ, so the order is the same on every run. Where qsort
+ * may take memory from the C library (glibc's merge sort does past a
+ * kilobyte), this takes none: a step allocates nothing. O(n log n). */
+static void heap_sort(void *base, int count, size_t size, compare_fn *compare)
+{
+    unsigned char *a = base;
+    for (int i = count / 2 - 1; i >= 0; --i) {
+        sift_down(a, i, count, size, compare);
+    }
+    for (int end = count - 1; end > 0; --end) {
+        swap_bytes(a, a + (size_t)end * size, size); /* the largest goes behind the heap */
+        sift_down(a, 0, end, size, compare);
+    }
 }
 
 /* Insertion sort by (lower x, shape index): from one refresh to the next
@@ -119,7 +168,7 @@ static rb_status add_candidate(rb_world *world, int shape_a, int shape_b)
  * takes O(n) (a full sort would take O(n log n) every time). When the
  * order has changed a lot (a scene blowing apart, many teleports) the
  * insertions would cost up to O(n²): past SORT_SHIFTS_PER_ENTRY shifts
- * an entry on average, qsort finishes the job. Either way the order is
+ * an entry on average, a heapsort finishes the job. Either way the order is
  * the same, as no two entries compare equal. */
 #define SORT_SHIFTS_PER_ENTRY 8
 
@@ -136,19 +185,18 @@ static void sort_sweep(struct rb_sweep_entry *sweep, int count)
         }
         sweep[j] = entry;
         if (shifts_left < 0) {
-            qsort(sweep, (size_t)count, sizeof *sweep, compare_sweep_entries);
+            heap_sort(sweep, count, sizeof *sweep, compare_sweep_entries);
             return;
         }
     }
 }
 
-/* Sorts the candidates by (body_key, shape_key) in O(candidates +
- * bodies): a counting sort by the lower body, whose runs (a body's pairs
- * with the bodies above it, a handful) are then put in order by
- * insertion. A comparison sort took a sixth of a pyramid's step. */
-static rb_status sort_candidates(rb_world *world)
+/* Sorts world->pairs by (body_key, shape_key) in O(pairs + bodies): a counting sort by the lower body, whose runs (a
+ * body's pairs with the bodies above it, a handful) are then put in order by insertion. A comparison sort took a sixth
+ * of a pyramid's step. */
+static rb_status sort_pairs(rb_world *world)
 {
-    int count = world->candidate_count;
+    int count = world->pair_count;
     int bodies = world->body_slots;
     if (count < 2) {
         return RB_OK;
@@ -164,14 +212,14 @@ static rb_status sort_candidates(rb_world *world)
         start[b] = 0;
     }
     for (int i = 0; i < count; ++i) {
-        start[(world->candidates[i].body_key >> 32) + 1] += 1;
+        start[(world->pairs[i].body_key >> 32) + 1] += 1;
     }
     for (int b = 0; b < bodies; ++b) {
         start[b + 1] += start[b];
     }
     rb_pair *sorted = world->sorted_pairs;
     for (int i = 0; i < count; ++i) {
-        sorted[start[world->candidates[i].body_key >> 32]++] = world->candidates[i];
+        sorted[start[world->pairs[i].body_key >> 32]++] = world->pairs[i];
     }
     /* start[b] is now the end of body b's run: sort each run. */
     int run_begin = 0;
@@ -187,11 +235,11 @@ static rb_status sort_candidates(rb_world *world)
         }
         run_begin = start[b];
     }
-    world->sorted_pairs = world->candidates;
-    world->candidates = sorted;
+    world->sorted_pairs = world->pairs;
+    world->pairs = sorted;
     int capacity = world->sorted_pair_capacity;
-    world->sorted_pair_capacity = world->candidate_capacity;
-    world->candidate_capacity = capacity;
+    world->sorted_pair_capacity = world->pair_capacity;
+    world->pair_capacity = capacity;
     return RB_OK;
 }
 
@@ -305,7 +353,7 @@ static rb_status fill_bands(rb_world *world, const band_layout *bands)
     return RB_OK; /* cursor[b] has moved to the end of band b */
 }
 
-/* The candidates within band b: a sweep in x over its entries. */
+/* The pairs within band b: a sweep in x over its entries. */
 static rb_status sweep_band(rb_world *world, const band_layout *bands, int b, const struct rb_sweep_entry *entries,
                             int count)
 {
@@ -317,7 +365,8 @@ static rb_status sweep_band(rb_world *world, const band_layout *bands, int b, co
                 continue;
             }
             if (rb_should_collide(world, entries[i].shape, entries[j].shape)) {
-                RB_TRY(add_candidate(world, entries[i].shape, entries[j].shape));
+                RB_TRY(push_pair(world, &world->pairs, &world->pair_count, &world->pair_capacity, entries[i].shape,
+                                 entries[j].shape));
             }
         }
     }
@@ -368,9 +417,9 @@ static rb_status list_wide_shapes(rb_world *world)
     return RB_OK;
 }
 
-/* New fat boxes around the swept ones, sorted, and the candidates: every
- * pair of shapes that may collide and whose fat boxes overlap. */
-static rb_status find_candidates(rb_world *world)
+/* New fat boxes around the swept ones, sorted, and every pair of shapes
+ * that may collide and whose fat boxes overlap. */
+static rb_status find_all_pairs(rb_world *world)
 {
     int count = world->sweep_count;
     double bottom = INFINITY;
@@ -387,7 +436,7 @@ static rb_status find_candidates(rb_world *world)
 
     band_layout bands = layout_bands(bottom, top, world->tallest_dynamic_box + 2.0 * RB_FAT_MARGIN, count);
     RB_TRY(fill_bands(world, &bands));
-    world->candidate_count = 0;
+    world->pair_count = 0;
     int begin = 0;
     for (int b = 0; b < bands.count; ++b) {
         int end = world->band_end[b];
@@ -399,7 +448,7 @@ static rb_status find_candidates(rb_world *world)
         }
         begin = end;
     }
-    return sort_candidates(world);
+    return sort_pairs(world);
 }
 
 /* The first entry of the sorted sweep that is not before (lower_x,
@@ -421,111 +470,208 @@ static int first_entry_not_before(const struct rb_sweep_entry *sweep, int count,
     return first;
 }
 
-/* Gives each refitted shape's sweep entry its new fat box and puts the
- * sweep back in order; false if an entry is not where its old key says
- * (the sweep no longer mirrors the fat boxes: sweep them all instead).
- * Every entry is found before any is changed: a changed entry would
- * leave the sweep out of order for the bisections after it. */
-static bool refit_entries(rb_world *world)
+/* Finds a moved shape's entry in the sweep by its old key and gives it
+ * the new fat box, carrying the entry along to where its new key
+ * belongs; false if the entry is not where its old key says (the sweep no
+ * longer mirrors the fat boxes: sweep them all instead). The sweep stays
+ * sorted by its entries' keys throughout, so the next moved shape's entry
+ * is found by bisection too. O(log n + entries passed). */
+static bool move_entry(rb_world *world, const struct rb_refit *refit)
 {
     struct rb_sweep_entry *sweep = world->sweep;
     int count = world->sweep_count;
-    for (int r = 0; r < world->refit_count; ++r) {
-        struct rb_refit *refit = &world->refits[r];
-        refit->entry = first_entry_not_before(sweep, count, refit->old_lower_x, refit->shape);
-        if (refit->entry == count || sweep[refit->entry].shape != refit->shape) {
-            return false;
-        }
-        /* A wide box that moved, or a box grown wide: the list of wide
-         * shapes would change, so all are searched for. */
-        if (box_width(&sweep[refit->entry].box) > world->wide_box_limit ||
-            box_width(&world->shapes[refit->shape].fat_aabb) > world->wide_box_limit) {
-            return false;
-        }
+    int k = first_entry_not_before(sweep, count, refit->old_box.lower.x, refit->shape);
+    if (k == count || sweep[k].shape != refit->shape) {
+        return false;
     }
-    for (int r = 0; r < world->refit_count; ++r) {
-        const struct rb_refit *refit = &world->refits[r];
-        rb_aabb box = world->shapes[refit->shape].fat_aabb;
-        sweep[refit->entry].box = box;
-        world->sweep_max_width = rb_max(world->sweep_max_width, box_width(&box));
+    struct rb_sweep_entry entry = {.box = world->shapes[refit->shape].fat_aabb, .shape = refit->shape};
+    while (k > 0 && compare_sweep_entries(&sweep[k - 1], &entry) > 0) {
+        sweep[k] = sweep[k - 1];
+        --k;
     }
-    sort_sweep(sweep, count);
+    while (k + 1 < count && compare_sweep_entries(&sweep[k + 1], &entry) < 0) {
+        sweep[k] = sweep[k + 1];
+        ++k;
+    }
+    sweep[k] = entry;
+    world->sweep_max_width = rb_max(world->sweep_max_width, box_width(&entry.box));
     return true;
 }
 
-/* The candidates of the refitted shapes, found anew: the old ones are
- * dropped, then each refitted shape meets the entries whose lower x lies
- * within the widest box before its own box's upper x: every box that can
- * overlap it in x. A pair of two refitted shapes is added once, by the
- * shape of lower index. */
-static rb_status requery_refitted(rb_world *world)
+/* Whether the pair of `shape` and `other` begins or ends as `shape`'s
+ * fat box goes from `old_box` to `box` and `other`'s from `other_old` to
+ * `other_box`: listed in new_pairs or ended_pairs if so. */
+static rb_status compare_boxes(rb_world *world, int shape, rb_aabb old_box, rb_aabb box, int other, rb_aabb other_old,
+                               rb_aabb other_box)
 {
-    rb_shape *shapes = world->shapes;
-    int kept = 0;
-    for (int i = 0; i < world->candidate_count; ++i) {
-        const rb_pair *candidate = &world->candidates[i];
-        if (!shapes[candidate->shape_a].refitted && !shapes[candidate->shape_b].refitted) {
-            world->candidates[kept++] = *candidate;
-        }
+    ++world->statistics.broad_phase_box_tests;
+    bool before = rb_aabb_overlaps(old_box, other_old);
+    bool now = rb_aabb_overlaps(box, other_box);
+    if (before == now || !rb_should_collide(world, shape, other)) {
+        return RB_OK;
     }
-    world->candidate_count = kept;
+    return now ? push_pair(world, &world->new_pairs, &world->new_pair_count, &world->new_pair_capacity, shape, other)
+               : push_pair(world, &world->ended_pairs, &world->ended_pair_count, &world->ended_pair_capacity, shape,
+                           other);
+}
 
+/* The pairs of the moved shapes that begin or end: each moved shape
+ * meets the entries whose lower x lies within the widest box before the
+ * span of its old and new boxes, every box that overlaps either in x, and
+ * the wide shapes. A pair whose other shape moved too is looked at from
+ * the shape of lower index, and only for a beginning: two shapes that
+ * both moved may end far apart, out of each other's span (see
+ * find_pairs_ended_between_moved). */
+static rb_status find_pairs_around_moved(rb_world *world)
+{
+    const rb_shape *shapes = world->shapes;
     const struct rb_sweep_entry *sweep = world->sweep;
     int count = world->sweep_count;
     for (int r = 0; r < world->refit_count; ++r) {
         int shape = world->refits[r].shape;
+        rb_aabb old_box = world->refits[r].old_box;
         rb_aabb box = shapes[shape].fat_aabb;
-        int k = first_entry_not_before(sweep, count, box.lower.x - world->sweep_max_width, -1);
-        for (; k < count && sweep[k].box.lower.x <= box.upper.x; ++k) {
-            const rb_aabb *other = &sweep[k].box;
-            int other_shape = sweep[k].shape;
-            if (other_shape == shape || other->upper.x < box.lower.x || !overlaps_in_y(&box, other) ||
-                box_width(other) > world->wide_box_limit) {
+        rb_aabb span = {rb_v2(rb_min(old_box.lower.x, box.lower.x), rb_min(old_box.lower.y, box.lower.y)),
+                        rb_v2(rb_max(old_box.upper.x, box.upper.x), rb_max(old_box.upper.y, box.upper.y))};
+        int k = first_entry_not_before(sweep, count, span.lower.x - world->sweep_max_width, -1);
+        for (; k < count && sweep[k].box.lower.x <= span.upper.x; ++k) {
+            const rb_aabb other_box = sweep[k].box;
+            if (!rb_aabb_overlaps(span, other_box)) { /* a whole column of a pile overlaps in x */
                 continue;
             }
-            bool queried_before = shapes[other_shape].refitted && other_shape < shape;
-            if (!queried_before && rb_should_collide(world, shape, other_shape)) {
-                RB_TRY(add_candidate(world, shape, other_shape));
+            int other = sweep[k].shape;
+            int other_slot = shapes[other].refit_slot;
+            if (other == shape || box_width(&other_box) > world->wide_box_limit || (other_slot > 0 && other < shape)) {
+                continue;
+            }
+            if (other_slot == 0) {
+                RB_TRY(compare_boxes(world, shape, old_box, box, other, other_box, other_box));
+            } else if (rb_aabb_overlaps(box, other_box)) {
+                RB_TRY(
+                    compare_boxes(world, shape, old_box, box, other, world->refits[other_slot - 1].old_box, other_box));
             }
         }
         for (int w = 0; w < world->wide_shape_count; ++w) {
-            int wide_shape = world->wide_shapes[w];
-            if (rb_aabb_overlaps(box, shapes[wide_shape].fat_aabb) && rb_should_collide(world, shape, wide_shape)) {
-                RB_TRY(add_candidate(world, shape, wide_shape));
-            }
+            int wide = world->wide_shapes[w];
+            RB_TRY(compare_boxes(world, shape, old_box, box, wide, shapes[wide].fat_aabb, shapes[wide].fat_aabb));
         }
     }
-    return sort_candidates(world);
+    return RB_OK;
+}
+
+static int compare_old_lower_x(const void *a, const void *b)
+{
+    const struct rb_refit *p = a;
+    const struct rb_refit *q = b;
+    if (p->old_box.lower.x != q->old_box.lower.x) {
+        return p->old_box.lower.x < q->old_box.lower.x ? -1 : 1;
+    }
+    return (p->shape > q->shape) - (p->shape < q->shape);
+}
+
+/* The pairs of two moved shapes whose old fat boxes overlapped and whose
+ * new ones do not: a sweep in x over the old boxes of the moved shapes
+ * alone. Reorders world->refits. */
+static rb_status find_pairs_ended_between_moved(rb_world *world)
+{
+    struct rb_refit *refits = world->refits;
+    int count = world->refit_count;
+    heap_sort(refits, count, sizeof *refits, compare_old_lower_x);
+    for (int i = 0; i < count; ++i) {
+        for (int j = i + 1; j < count && refits[j].old_box.lower.x <= refits[i].old_box.upper.x; ++j) {
+            if (!overlaps_in_y(&refits[i].old_box, &refits[j].old_box)) {
+                continue;
+            }
+            int a = refits[i].shape;
+            int b = refits[j].shape;
+            RB_TRY(compare_boxes(world, a, refits[i].old_box, world->shapes[a].fat_aabb, b, refits[j].old_box,
+                                 world->shapes[b].fat_aabb));
+        }
+    }
+    return RB_OK;
+}
+
+/* Tells the pairs that begin and end as the moved shapes' fat boxes
+ * change, each list sorted as the contacts are; *done is false if the
+ * sweep must be searched whole instead (a wide box moved, or a box grew
+ * wide: the list of wide shapes would change). */
+static rb_status requery_moved(rb_world *world, bool *done)
+{
+    *done = false;
+    rb_shape *shapes = world->shapes;
+    for (int r = 0; r < world->refit_count; ++r) {
+        const struct rb_refit *refit = &world->refits[r];
+        if (box_width(&refit->old_box) > world->wide_box_limit ||
+            box_width(&shapes[refit->shape].fat_aabb) > world->wide_box_limit) {
+            return RB_OK;
+        }
+    }
+    for (int r = 0; r < world->refit_count; ++r) {
+        if (!move_entry(world, &world->refits[r])) {
+            return RB_OK;
+        }
+    }
+    for (int r = 0; r < world->refit_count; ++r) {
+        shapes[world->refits[r].shape].refit_slot = r + 1;
+    }
+    rb_status status = find_pairs_around_moved(world);
+    for (int r = 0; r < world->refit_count; ++r) {
+        shapes[world->refits[r].shape].refit_slot = 0;
+    }
+    RB_TRY(status);
+    RB_TRY(find_pairs_ended_between_moved(world));
+    heap_sort(world->new_pairs, world->new_pair_count, sizeof *world->new_pairs, compare_pairs);
+    heap_sort(world->ended_pairs, world->ended_pair_count, sizeof *world->ended_pairs, compare_pairs);
+    *done = true;
+    return RB_OK;
+}
+
+/* Whether a body stands still until something wakes it or places it:
+ * static, or asleep, and without velocity (a body can be made asleep and
+ * moving). Its shapes' swept boxes then stay what they were, whatever dt. */
+static bool stands_still(const rb_world *world, int body)
+{
+    const rb_body_state *state = &world->states[body];
+    bool still = world->bodies[body].type == RB_BODY_STATIC || !world->bodies[body].awake;
+    return still && state->linear_velocity.x == 0.0 && state->linear_velocity.y == 0.0 &&
+           state->angular_velocity == 0.0;
 }
 
 /* Each shape's swept box for this step, and the tallest and widest of
- * a dynamic body's; the shapes whose swept box left their fat box get a new fat box
- * and are listed in world->refits. */
-static void sweep_boxes_forward(rb_world *world, double dt)
+ * those of dynamic bodies (they only shape the bands of a full search);
+ * the shapes whose swept box left their fat box get a new fat box and are
+ * listed in world->refits with their old one. Unless `every_shape`, the
+ * shapes of bodies that stand still are passed over: their boxes were
+ * made at rest (a body put to sleep, or placed, makes world->boxes_stale)
+ * and would come out the same, so a pile asleep costs nothing here. */
+static void sweep_boxes_forward(rb_world *world, double dt, bool every_shape)
 {
     double speculative_distance = RB_SPECULATIVE_SLOPS * world->settings.linear_slop;
     struct rb_refit *refits = world->refits;
     int refit_count = 0;
+    int boxes = 0;
     double tallest = 0.0;
     double widest = 0.0;
     /* In index order rather than the sweep's: the shapes and their bodies
      * are then read one after another from memory instead of at random. */
     for (int index = 0; index < world->shape_slots; ++index) {
         rb_shape *shape = &world->shapes[index];
-        if (!shape->in_use) {
+        if (!shape->in_use || (!every_shape && stands_still(world, shape->body))) {
             continue;
         }
         shape->aabb = swept_aabb(world, index, dt, speculative_distance);
+        ++boxes;
         if (world->bodies[shape->body].type == RB_BODY_DYNAMIC) {
             tallest = rb_max(tallest, shape->aabb.upper.y - shape->aabb.lower.y);
             widest = rb_max(widest, box_width(&shape->aabb));
         }
         if (!contains(shape->fat_aabb, shape->aabb)) {
-            refits[refit_count++] = (struct rb_refit){.shape = index, .old_lower_x = shape->fat_aabb.lower.x};
+            refits[refit_count++] = (struct rb_refit){.shape = index, .old_box = shape->fat_aabb};
             shape->fat_aabb = fat_box_around(shape->aabb);
         }
     }
     world->refit_count = refit_count;
+    world->statistics.broad_phase_boxes = boxes;
     world->tallest_dynamic_box = tallest;
     world->widest_dynamic_box = widest;
 }
@@ -534,40 +680,16 @@ static void sweep_boxes_forward(rb_world *world, double dt)
  * sweep over all the shapes is cheaper than a search for each. */
 #define REQUERY_LIMIT 8
 
-/* Finds the candidates anew, all of them or those of the refitted shapes. */
-static rb_status update_candidates(rb_world *world, bool sweep_all)
-{
-    if (!sweep_all && world->refit_count == 0) {
-        return RB_OK;
-    }
-    world->candidates_stale = true; /* until the candidates are complete (out of memory midway) */
-    rb_status status = RB_OK;
-    if (!sweep_all) {
-        for (int r = 0; r < world->refit_count; ++r) {
-            world->shapes[world->refits[r].shape].refitted = true;
-        }
-        sweep_all = !refit_entries(world);
-        if (!sweep_all) {
-            status = requery_refitted(world);
-            ++world->statistics.broad_phase_requeries;
-        }
-        for (int r = 0; r < world->refit_count; ++r) {
-            world->shapes[world->refits[r].shape].refitted = false;
-        }
-    }
-    if (sweep_all) {
-        status = find_candidates(world);
-        ++world->statistics.broad_phase_sweeps;
-    }
-    if (status == RB_OK) {
-        world->candidates_stale = false;
-    }
-    return status;
-}
-
 rb_status rb_broad_phase_update_pairs(rb_world *world, double dt)
 {
-    bool sweep_all = world->sweep_stale || world->candidates_stale;
+    rb_statistics *statistics = &world->statistics;
+    statistics->broad_phase_moved = 0;
+    statistics->broad_phase_box_tests = 0;
+    statistics->broad_phase_boxes = 0;
+    world->pairs_rebuilt = false;
+    world->new_pair_count = 0;
+    world->ended_pair_count = 0;
+    bool search_all = world->sweep_stale || world->candidates_stale;
     if (world->sweep_stale) {
         RB_TRY(rebuild_sweep(world));
     }
@@ -579,34 +701,33 @@ rb_status rb_broad_phase_update_pairs(rb_world *world, double dt)
             0) {
             return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for the broad phase");
         }
-        sweep_boxes_forward(world, dt);
-        sweep_all = sweep_all || world->refit_count > world->sweep_count / REQUERY_LIMIT;
-        RB_TRY(update_candidates(world, sweep_all));
-    } else if (sweep_all) {
-        RB_TRY(update_candidates(world, true));
+        sweep_boxes_forward(world, dt, search_all || world->boxes_stale);
+        world->boxes_stale = false;
+        search_all = search_all || world->refit_count > world->sweep_count / REQUERY_LIMIT;
     }
-
-    /* The candidates, already in order, whose swept boxes overlap. */
-    if (rb_grow_array((void **)&world->pairs, &world->pair_capacity, world->candidate_count, sizeof *world->pairs) !=
-        0) {
-        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for shape pairs");
-    }
-    /* Written over the last step's, which they are compared with as they
-     * go: in a pile at rest they are the same, and the contacts then stay
-     * as they are (rb_contacts_update). */
-    int last_count = world->pair_count;
-    bool changed = false;
-    world->pair_count = 0;
-    for (int i = 0; i < world->candidate_count; ++i) {
-        const rb_pair *candidate = &world->candidates[i];
-        if (rb_aabb_overlaps(world->shapes[candidate->shape_a].aabb, world->shapes[candidate->shape_b].aabb)) {
-            rb_pair *pair = &world->pairs[world->pair_count++];
-            changed = changed || world->pair_count > last_count || pair->body_key != candidate->body_key ||
-                      pair->shape_key != candidate->shape_key;
-            *pair = *candidate;
+    if (!search_all && world->refit_count > 0) {
+        world->candidates_stale = true; /* until the lists are complete (out of memory midway) */
+        bool done = false;
+        RB_TRY(requery_moved(world, &done));
+        if (done) {
+            world->candidates_stale = false;
+            statistics->broad_phase_moved = world->refit_count;
+            ++statistics->broad_phase_requeries;
+        } else {
+            search_all = true;
+            world->new_pair_count = 0;
+            world->ended_pair_count = 0;
+            statistics->broad_phase_box_tests = 0;
         }
     }
-    world->pairs_changed = changed || world->pair_count != last_count;
+    if (search_all) {
+        world->candidates_stale = true;
+        RB_TRY(find_all_pairs(world));
+        world->candidates_stale = false;
+        world->pairs_rebuilt = true;
+        statistics->broad_phase_moved = world->sweep_count;
+        ++statistics->broad_phase_sweeps;
+    }
     return RB_OK;
 }
 

@@ -5,8 +5,12 @@
 
 #include "world_internal.h"
 
-/* Refreshes every shape's box for a step of dt seconds and fills
- * world->pairs, sorted by (body_key, shape_key). */
+/* Refreshes every shape's swept box for a step of dt seconds and tells
+ * how the pairs (shapes that may collide, fat boxes overlapping) change:
+ * after a full search, world->pairs holds them all (pairs_rebuilt);
+ * otherwise world->new_pairs and world->ended_pairs list those that begin
+ * and end, both empty when no shape left its fat box. Every list is
+ * sorted by (body_key, shape_key). */
 rb_status rb_broad_phase_update_pairs(rb_world *world, double dt);
 
 /* Called for each shape found; return false to stop. */

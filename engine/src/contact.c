@@ -2,7 +2,6 @@
 /* Contacts: created and dropped as broad-phase pairs come and go, given
  * a manifold each step, carrying solver impulses between steps, and
  * reporting when they begin and end touching. */
-#include <assert.h>
 
 #include "allocator.h"
 #include "contact.h"
@@ -29,43 +28,108 @@ static rb_contact new_contact(const rb_world *world, const rb_pair *pair)
     };
 }
 
-/* Both lists are sorted by key, so one merge pass matches them; an old
- * contact the merge passes over has lost its pair and ends. When the
- * pairs are the last step's and no contact has been removed since (a
- * shape destroyed, rb_contacts_remove_shape), the merge would keep every
- * contact where it is: the contacts are left as they are, and a pile at
- * rest costs no copy of its contacts. */
-rb_status rb_contacts_update(rb_world *world)
+/* Swaps the contacts with the spare array the merges wrote. */
+static void take_merged_contacts(rb_world *world, int count)
 {
-    RB_TRY(rb_contact_events_start_step(world));
-    if (!world->pairs_changed && world->contact_count == world->pair_count) {
-        return rb_contact_events_reserve_begins(world);
-    }
-    if (rb_grow_array((void **)&world->spare_contacts, &world->spare_capacity, world->pair_count,
-                      sizeof *world->spare_contacts) != 0) {
-        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for contacts");
-    }
-    int old = 0;
-    for (int i = 0; i < world->pair_count; ++i) {
-        const rb_pair *pair = &world->pairs[i];
-        while (old < world->contact_count && compare_pair_keys(&world->contacts[old].pair, pair) < 0) {
-            rb_contact_events_drop(world, &world->contacts[old]);
-            ++old;
-        }
-        bool kept = old < world->contact_count && compare_pair_keys(&world->contacts[old].pair, pair) == 0;
-        world->spare_contacts[i] = kept ? world->contacts[old++] : new_contact(world, pair);
-    }
-    for (; old < world->contact_count; ++old) {
-        rb_contact_events_drop(world, &world->contacts[old]);
-    }
-    assert(world->pair_count <= world->spare_capacity);
     rb_contact *swap = world->contacts;
     int swap_capacity = world->contact_capacity;
     world->contacts = world->spare_contacts;
     world->contact_capacity = world->spare_capacity;
     world->spare_contacts = swap;
     world->spare_capacity = swap_capacity;
-    world->contact_count = world->pair_count;
+    world->contact_count = count;
+}
+
+static rb_status reserve_spare_contacts(rb_world *world, int count)
+{
+    if (rb_grow_array((void **)&world->spare_contacts, &world->spare_capacity, count, sizeof *world->spare_contacts) !=
+        0) {
+        return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for contacts");
+    }
+    return RB_OK;
+}
+
+/* After a full search: the contacts become world->pairs. Both lists are
+ * sorted by key, so one merge pass matches them; an old contact the
+ * merge passes over has lost its pair and ends. */
+static rb_status follow_all_pairs(rb_world *world)
+{
+    RB_TRY(reserve_spare_contacts(world, world->pair_count));
+    int old = 0;
+    int made = 0;
+    int ended = 0;
+    for (int i = 0; i < world->pair_count; ++i) {
+        const rb_pair *pair = &world->pairs[i];
+        for (; old < world->contact_count && compare_pair_keys(&world->contacts[old].pair, pair) < 0; ++old, ++ended) {
+            rb_contact_events_drop(world, &world->contacts[old]);
+        }
+        bool kept = old < world->contact_count && compare_pair_keys(&world->contacts[old].pair, pair) == 0;
+        made += kept ? 0 : 1;
+        world->spare_contacts[i] = kept ? world->contacts[old++] : new_contact(world, pair);
+    }
+    for (; old < world->contact_count; ++old, ++ended) {
+        rb_contact_events_drop(world, &world->contacts[old]);
+    }
+    take_merged_contacts(world, world->pair_count);
+    world->statistics.broad_phase_new_pairs = made;
+    world->statistics.broad_phase_ended_pairs = ended;
+    return RB_OK;
+}
+
+/* Otherwise: the pairs that began are merged in, those that ended are
+ * dropped, in one pass, since all three lists are sorted by key. A pair
+ * listed as begun that is already a contact, or as ended that is none,
+ * leaves the contacts as they are. */
+static rb_status follow_pair_changes(rb_world *world)
+{
+    RB_TRY(reserve_spare_contacts(world, world->contact_count + world->new_pair_count));
+    const rb_pair *begun = world->new_pairs;
+    const rb_pair *ended = world->ended_pairs;
+    int b = 0;
+    int e = 0;
+    int count = 0;
+    int made = 0;
+    int dropped = 0;
+    for (int old = 0; old < world->contact_count; ++old) {
+        const rb_contact *contact = &world->contacts[old];
+        for (; b < world->new_pair_count && compare_pair_keys(&begun[b], &contact->pair) < 0; ++b, ++made) {
+            world->spare_contacts[count++] = new_contact(world, &begun[b]);
+        }
+        if (b < world->new_pair_count && compare_pair_keys(&begun[b], &contact->pair) == 0) {
+            ++b; /* already a contact */
+        }
+        while (e < world->ended_pair_count && compare_pair_keys(&ended[e], &contact->pair) < 0) {
+            ++e;
+        }
+        if (e < world->ended_pair_count && compare_pair_keys(&ended[e], &contact->pair) == 0) {
+            rb_contact_events_drop(world, contact);
+            ++dropped;
+            ++e;
+            continue;
+        }
+        world->spare_contacts[count++] = *contact;
+    }
+    for (; b < world->new_pair_count; ++b, ++made) {
+        world->spare_contacts[count++] = new_contact(world, &begun[b]);
+    }
+    take_merged_contacts(world, count);
+    world->statistics.broad_phase_new_pairs = made;
+    world->statistics.broad_phase_ended_pairs = dropped;
+    return RB_OK;
+}
+
+/* Each contact is a pair of the broad phase. When no pair began or
+ * ended (a pile at rest) the contacts are left as they are: no copy. */
+rb_status rb_contacts_update(rb_world *world)
+{
+    RB_TRY(rb_contact_events_start_step(world));
+    world->statistics.broad_phase_new_pairs = 0;
+    world->statistics.broad_phase_ended_pairs = 0;
+    if (world->pairs_rebuilt) {
+        RB_TRY(follow_all_pairs(world));
+    } else if (world->new_pair_count > 0 || world->ended_pair_count > 0) {
+        RB_TRY(follow_pair_changes(world));
+    }
     return rb_contact_events_reserve_begins(world);
 }
 
@@ -184,11 +248,25 @@ static void carry_impulses(const rb_manifold *old, rb_manifold *fresh)
     }
 }
 
+bool rb_contact_may_meet_in_step(const rb_world *world, const rb_contact *contact)
+{
+    return rb_aabb_overlaps(world->shapes[contact->pair.shape_a].aabb, world->shapes[contact->pair.shape_b].aabb);
+}
+
 void rb_contacts_collide(rb_world *world, double dt)
 {
     bool warm = world->settings.warm_starting;
     for (int i = 0; i < world->contact_count; ++i) {
         rb_contact *contact = &world->contacts[i];
+        if (!rb_contact_may_meet_in_step(world, contact)) {
+            /* No point, and an end event if it was touching. */
+            contact->manifold.point_count = 0;
+            contact->touching = false;
+            if (!contact->sensor) {
+                rb_contact_events_update(world, contact);
+            }
+            continue;
+        }
         rb_manifold fresh = compute_manifold(world, contact, contact_speculative_distance(world, contact, dt));
         if (warm) {
             carry_impulses(&contact->manifold, &fresh);
@@ -225,7 +303,8 @@ void rb_contacts_update_sensors(rb_world *world)
     for (int i = 0; i < world->contact_count; ++i) {
         rb_contact *contact = &world->contacts[i];
         if (contact->sensor) {
-            contact->manifold = compute_manifold(world, contact, 0.0);
+            contact->manifold =
+                rb_contact_may_meet_in_step(world, contact) ? compute_manifold(world, contact, 0.0) : (rb_manifold){0};
             contact->touching = manifold_touches(&contact->manifold);
             rb_contact_events_update_sensor(world, contact);
         }

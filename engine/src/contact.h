@@ -6,11 +6,18 @@
 
 #include "world_internal.h"
 
-/* Makes world->contacts match world->pairs: keeps contacts whose pair
- * remains (with their impulses), adds the new pairs, drops the rest. */
+/* Makes world->contacts follow the broad phase's pairs: keeps contacts
+ * whose pair remains (with their impulses), adds the pairs that began,
+ * drops those that ended (broad_phase.h). */
 rb_status rb_contacts_update(rb_world *world);
 
-/* Computes every contact's manifold for a step of dt seconds, carries the
+/* Whether the contact's two shapes' swept boxes overlap in this step (or
+ * did in the last one, between steps): if not, they cannot meet within
+ * the step, and the contact has no point. */
+bool rb_contact_may_meet_in_step(const rb_world *world, const rb_contact *contact);
+
+/* Computes the manifold of every contact whose shapes' swept boxes
+ * overlap (the others get none) for a step of dt seconds, carries the
  * last step's impulses to points with the same feature id, and wakes a
  * sleeping body touched by a moving one. */
 void rb_contacts_collide(rb_world *world, double dt);

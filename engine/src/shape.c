@@ -428,8 +428,16 @@ SHAPE_FIELD_SETTER(rb_shape_set_friction, double, friction, friction,
                    rb_check_range(function, "friction", friction, 0.0, RB_MAX_FRICTION))
 SHAPE_FIELD_SETTER(rb_shape_set_restitution, double, restitution, restitution,
                    rb_check_range(function, "restitution", restitution, 0.0, 1.0))
-SHAPE_FIELD_SETTER(rb_shape_set_filter, rb_filter, filter, filter, RB_OK)
 SHAPE_FIELD_SETTER(rb_shape_set_user_data, void *, user_data, user_data, RB_OK)
+
+rb_status rb_shape_set_filter(rb_world *world, rb_shape_id id, rb_filter filter)
+{
+    int index;
+    RB_TRY(find_shape_for_change(world, id, "rb_shape_set_filter", &index));
+    world->shapes[index].filter = filter;
+    world->candidates_stale = true; /* which shapes may collide changed: the broad phase searches anew */
+    return RB_OK;
+}
 
 rb_status rb_shape_set_density(rb_world *world, rb_shape_id id, double density)
 {

@@ -202,6 +202,7 @@ void rb_islands_sleep(rb_world *world, double dt)
             body->sleep_time = 0.0;
             world->states[i].linear_velocity = rb_v2(0.0, 0.0);
             world->states[i].angular_velocity = 0.0;
+            world->boxes_stale = true; /* its swept boxes, made moving, are made once more at rest */
         } else {
             ++awake;
         }

@@ -146,7 +146,8 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->spare_contacts, &world->spare_capacity, sizeof *world->spare_contacts);
     rb_free_array((void **)&world->pairs, &world->pair_capacity, sizeof *world->pairs);
     rb_free_array((void **)&world->sorted_pairs, &world->sorted_pair_capacity, sizeof *world->sorted_pairs);
-    rb_free_array((void **)&world->candidates, &world->candidate_capacity, sizeof *world->candidates);
+    rb_free_array((void **)&world->new_pairs, &world->new_pair_capacity, sizeof *world->new_pairs);
+    rb_free_array((void **)&world->ended_pairs, &world->ended_pair_capacity, sizeof *world->ended_pairs);
     rb_free_array((void **)&world->pair_bucket, &world->pair_bucket_capacity, sizeof *world->pair_bucket);
     rb_free_array((void **)&world->active_joints, &world->active_joint_capacity, sizeof *world->active_joints);
     rb_free_array((void **)&world->substep_omega, &world->substep_omega_capacity, sizeof *world->substep_omega);
@@ -189,6 +190,7 @@ rb_status rb_world_set_solver_settings(rb_world *world, const rb_solver_settings
     RB_TRY(rb_world_check_unlocked(world, "rb_world_set_solver_settings"));
     RB_TRY(check_settings(settings, "rb_world_set_solver_settings"));
     world->settings = *settings;
+    world->boxes_stale = true; /* the speculative margin may have changed */
     return RB_OK;
 }
 
@@ -253,7 +255,8 @@ size_t rb_world_bytes_in_use(const rb_world *world)
            (size_t)world->spare_capacity * sizeof *world->spare_contacts +
            (size_t)world->pair_capacity * sizeof *world->pairs +
            (size_t)world->sorted_pair_capacity * sizeof *world->sorted_pairs +
-           (size_t)world->candidate_capacity * sizeof *world->candidates +
+           (size_t)world->new_pair_capacity * sizeof *world->new_pairs +
+           (size_t)world->ended_pair_capacity * sizeof *world->ended_pairs +
            (size_t)world->pair_bucket_capacity * sizeof *world->pair_bucket +
            (size_t)world->sweep_capacity * sizeof *world->sweep +
            (size_t)world->refit_capacity * sizeof *world->refits +
@@ -386,7 +389,7 @@ static void finalize_step(rb_world *world)
     rb_statistics *stats = &world->statistics;
     stats->body_count = world->body_count;
     stats->shape_count = world->shape_count;
-    stats->pair_count = world->pair_count;
+    stats->pair_count = world->contact_count;
     stats->contact_count = 0;
     stats->manifold_point_count = 0;
     for (int i = 0; i < world->contact_count; ++i) {
@@ -558,7 +561,18 @@ uint64_t rb_world_state_hash(const rb_world *world)
     return hash;
 }
 
-int rb_world_contact_count(const rb_world *world) { return world != NULL ? world->contact_count : 0; }
+/* The contacts reported are those the narrow phase looked at in the last
+ * step: the broad phase's pairs whose swept boxes overlapped. A pair whose
+ * fat boxes overlap but whose shapes could not meet within the step is
+ * kept by the engine, with no point, and not reported. */
+int rb_world_contact_count(const rb_world *world)
+{
+    int count = 0;
+    for (int i = 0; world != NULL && i < world->contact_count; ++i) {
+        count += rb_contact_may_meet_in_step(world, &world->contacts[i]) ? 1 : 0;
+    }
+    return count;
+}
 
 int rb_world_contacts(const rb_world *world, rb_contact_data *out, int capacity)
 {
@@ -567,10 +581,13 @@ int rb_world_contacts(const rb_world *world, rb_contact_data *out, int capacity)
         rb_report_error(RB_ERR_INVALID_ARGUMENT, "rb_world_contacts: world or out is NULL");
         return 0;
     }
-    int count = world->contact_count < capacity ? world->contact_count : capacity;
-    for (int i = 0; i < count; ++i) {
+    int count = 0;
+    for (int i = 0; i < world->contact_count && count < capacity; ++i) {
         const rb_contact *c = &world->contacts[i];
-        out[i] = (rb_contact_data){
+        if (!rb_contact_may_meet_in_step(world, c)) {
+            continue;
+        }
+        out[count++] = (rb_contact_data){
             .shape_a = rb_make_shape_id(world, c->pair.shape_a),
             .shape_b = rb_make_shape_id(world, c->pair.shape_b),
             .body_a = rb_make_body_id(world, c->body_a),

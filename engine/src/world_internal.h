@@ -108,10 +108,12 @@ typedef struct rb_shape {
     double extent;    /* m, farthest point of the shape from the body's centre of mass */
     rb_aabb aabb;     /* m, broad phase: the box swept over the step and grown by the speculative margin */
     rb_aabb fat_aabb; /* m, broad phase: a box around `aabb`, kept while `aabb` stays inside it */
-    bool refitted;    /* broad phase, within a step: `fat_aabb` was made anew and the shape is queried alone */
+    /* broad phase, within a step: 0, or 1 + the index in world->refits of
+     * the record of its old fat box once `fat_aabb` was made anew */
+    int refit_slot;
 } rb_shape;
 
-/* A pair of shapes whose boxes overlap. Contacts are kept sorted by
+/* A pair of shapes whose fat boxes overlap. Contacts are kept sorted by
  * (body_key, shape_key): the lower body index first, so the solver meets
  * them in the same order on every run. */
 typedef struct rb_pair {
@@ -129,12 +131,12 @@ struct rb_sweep_entry {
     int shape;
 };
 
-/* A shape whose swept box left its fat box, and where its entry is in
- * the sweep: the entry is found by its old key (lower x, shape). */
+/* A shape whose swept box left its fat box in this step: its new fat box
+ * is the shape's, the old one is kept here to tell which of its pairs
+ * begin and which end. */
 struct rb_refit {
     int shape;
-    double old_lower_x; /* m, the old fat box's lower x */
-    int entry;          /* its index in the sweep, found before any entry changes */
+    rb_aabb old_box; /* m, the fat box it had before */
 };
 
 typedef struct rb_contact {
@@ -445,11 +447,17 @@ struct rb_world {
     int contact_count, contact_capacity;
     rb_contact *spare_contacts; /* the merge in the collide phase writes here, then swaps */
     int spare_capacity;
+    /* broad phase, after a full search: every pair of shapes that may
+     * collide and whose fat boxes overlap, sorted as the contacts are */
     rb_pair *pairs;
     int pair_count, pair_capacity;
-    bool pairs_changed;  /* the broad phase's pairs differ from the last step's */
-    rb_pair *candidates; /* broad phase: the pairs whose fat boxes overlap, sorted as pairs are */
-    int candidate_count, candidate_capacity;
+    bool pairs_rebuilt; /* `pairs` was found anew in this step: the contacts follow it */
+    /* broad phase, otherwise: the pairs that begin and end in this step,
+     * each list sorted as the contacts are; both empty for a pile at rest */
+    rb_pair *new_pairs;
+    int new_pair_count, new_pair_capacity;
+    rb_pair *ended_pairs;
+    int ended_pair_count, ended_pair_capacity;
     rb_pair *sorted_pairs; /* the broad phase's counting sort writes here, then swaps */
     int sorted_pair_capacity;
     int *pair_bucket; /* the counting sort's start of each body's run of pairs */
@@ -479,8 +487,13 @@ struct rb_world {
     int island_rest_capacity;
     int sweep_count;  /* shapes in the sweep: all of them, or none while no shape is solid */
     bool sweep_stale; /* shapes were created or destroyed: rebuild the sweep */
-    /* a body's type changed, or a joint came or went: which shapes may
-     * collide changed, so the broad phase finds its candidates anew */
+    /* a body was placed (it may be asleep) or the settings changed since
+     * the last step: every shape's swept box is made anew, not only those
+     * of the bodies that may have moved */
+    bool boxes_stale;
+    /* a body's type or a shape's filter changed, or a joint came or went:
+     * which shapes may collide changed, so the broad phase finds every
+     * pair anew */
     bool candidates_stale;
     int solid_shape_count; /* shapes that are not sensors */
 

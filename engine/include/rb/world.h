@@ -126,7 +126,7 @@ typedef struct rb_statistics {
     int awake_body_count; /**< dynamic bodies awake after the step */
     int island_count;     /**< groups of dynamic bodies linked by touching contacts, joints and cables */
     int shape_count;
-    int pair_count; /**< shape pairs whose bounding boxes overlap */
+    int pair_count; /**< shape pairs that may collide and whose fat bounding boxes overlap: the contacts */
     /** steps so far in which the broad phase found all its candidate
      * pairs anew (shapes came or went, which shapes may collide changed,
      * or many shapes had left their fat boxes) */
@@ -134,6 +134,20 @@ typedef struct rb_statistics {
     /** steps so far in which a few shapes had left their fat boxes and
      * only their candidate pairs were found anew */
     int broad_phase_requeries;
+    /** shapes whose fat box was made anew in the last step, having left
+     * it (every shape in a step with a full search); 0 for a pile at rest */
+    int broad_phase_moved;
+    /** fat-box overlap tests the broad phase made in the last step around
+     * the moved shapes (0 in a step with a full search, or with nothing moved) */
+    int broad_phase_box_tests;
+    /** shapes whose swept box was made in the last step: those of the
+     * bodies awake or moving (every shape after shapes came or went, a
+     * body was placed or the settings changed); 0 for a pile asleep */
+    int broad_phase_boxes;
+    /** pairs of shapes whose fat boxes began or stopped overlapping in the
+     * last step: the contacts made and ended */
+    int broad_phase_new_pairs;
+    int broad_phase_ended_pairs;
     int contact_count; /**< pairs with at least one manifold point */
     int manifold_point_count;
     /** colours the contact constraints were solved in (a colour's
