@@ -39,6 +39,7 @@
  */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 
+#include <inttypes.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
@@ -351,6 +352,7 @@ typedef struct bench_result {
     bool holds;                  /* what the scene must keep, kept (see the top of the file) */
     double allocations_per_step; /* heap allocations per timed step, worst run */
     bool deterministic;          /* every run ended in the same state */
+    uint64_t state_hash;         /* rb_world_state_hash at the end of the first run */
 } bench_result;
 
 /* The state of one scene in one run. */
@@ -576,6 +578,7 @@ static bool bench_scene_run(int scene_index, rb_solver_type solver, const bench_
             first_hash = hash;
         }
         result->deterministic = result->deterministic && hash == first_hash;
+        result->state_hash = first_hash;
         measure_scene(scene, &bw, result);
         bench_world_destroy(&bw);
 
@@ -615,8 +618,8 @@ static void print_result(const bench_options *opts, const bench_result *r)
     if (scene->kind == KIND_BALLS) {
         printf(" escaped=%d", r->escaped);
     }
-    printf(" holds=%s bytes=%zu allocations_per_step=%.3g deterministic=%s\n", r->holds ? "yes" : "no", r->bytes,
-           r->allocations_per_step, r->deterministic ? "yes" : "no");
+    printf(" holds=%s bytes=%zu allocations_per_step=%.3g deterministic=%s state_hash=%016" PRIx64 "\n",
+           r->holds ? "yes" : "no", r->bytes, r->allocations_per_step, r->deterministic ? "yes" : "no", r->state_hash);
 }
 
 /* The log-log slope of time per step against bodies, least squares over
