@@ -342,6 +342,28 @@ Test(contacts, friction_mixes_as_the_geometric_mean)
     expect_slide(0.5, 1.0, 0.0, 0.0);
 }
 
+Test(contacts, friction_changed_while_touching_takes_effect)
+{
+    /* A contact mixes its shapes' frictions when it begins: a change while
+     * it lasts must mix them again. The box rests for 1 s at tan 0.5 =
+     * 0.55 < μ = 0.6, then its friction drops to 1/15, mixed with the
+     * plank's 0.6 to sqrt(0.6/15) = 0.2: a = g·(sin θ - 0.2·cos θ). */
+    scene_incline incline;
+    rb_world *world = make_incline(0.5, 0.6, 0.6, &incline);
+    cr_assert_eq(rb_body_enable_sleep(world, incline.box, false), RB_OK, "%s", rb_last_error());
+    step_world(world, TEST_DT, 60);
+    cr_assert_eq(rb_world_contact_count(world), 1, "the box should touch the plank after 1 s");
+    const double held = rb_length(rb_body_linear_velocity(world, incline.box));
+    cr_assert(held < 1e-3, "the box slid at %g m/s at μ = 0.6 above tan θ = 0.55", held);
+    cr_assert_eq(rb_shape_set_friction(world, first_shape(world, incline.box), 1.0 / 15.0), RB_OK, "%s",
+                 rb_last_error());
+    const double expected = gravity_magnitude(world) * (sin(0.5) - 0.2 * cos(0.5));
+    const double a = slope_acceleration(world, &incline);
+    cr_expect(fabs(a - expected) <= 0.03 * expected,
+              "friction changed in contact: a = %.5f m/s², expected g·(sin θ - 0.2·cos θ) = %.5f", a, expected);
+    destroy_world_and_expect_no_leak(world);
+}
+
 /* ---- Resting contact --------------------------------------------------- */
 
 /* A unit box resting on the ground, with the given linear and angular

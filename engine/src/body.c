@@ -227,13 +227,6 @@ void rb_body_update_mass(rb_world *world, int index)
         return expression;                                                                                             \
     }
 
-rb_transform rb_body_origin_transform(const rb_world *world, int index)
-{
-    const rb_body_state *state = &world->states[index];
-    rb_vec2 origin = rb_sub(state->center, rb_rotate(state->rotation, world->bodies[index].local_center));
-    return (rb_transform){origin, state->rotation};
-}
-
 static const rb_vec2 zero_vec2 = {0.0, 0.0};
 static const rb_transform identity_transform = {{0.0, 0.0}, {1.0, 0.0}};
 static const rb_rot identity_rot = {1.0, 0.0};

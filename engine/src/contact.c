@@ -16,16 +16,41 @@ static int compare_pair_keys(const rb_pair *p, const rb_pair *q)
     return (p->shape_key > q->shape_key) - (p->shape_key < q->shape_key);
 }
 
+/* The mixing rules: the geometric mean of the two frictions, so that a
+ * frictionless shape slides on anything, and the larger restitution, so
+ * that a bouncy ball bounces on a dead floor. They depend on the shapes'
+ * materials alone, so a contact mixes them when it begins and again when
+ * a shape's material changes (rb_contacts_mix_materials), not each step. */
+static void mix_materials(const rb_world *world, rb_contact *contact)
+{
+    const rb_shape *a = &world->shapes[contact->pair.shape_a];
+    const rb_shape *b = &world->shapes[contact->pair.shape_b];
+    contact->friction = sqrt(a->friction * b->friction);
+    contact->restitution = fmax(a->restitution, b->restitution);
+}
+
 static rb_contact new_contact(const rb_world *world, const rb_pair *pair)
 {
     const rb_shape *a = &world->shapes[pair->shape_a];
     const rb_shape *b = &world->shapes[pair->shape_b];
-    return (rb_contact){
+    rb_contact contact = {
         .pair = *pair,
         .body_a = a->body,
         .body_b = b->body,
         .sensor = a->sensor || b->sensor,
     };
+    mix_materials(world, &contact);
+    return contact;
+}
+
+void rb_contacts_mix_materials(rb_world *world, int shape)
+{
+    for (int i = 0; i < world->contact_count; ++i) {
+        rb_contact *contact = &world->contacts[i];
+        if (contact->pair.shape_a == shape || contact->pair.shape_b == shape) {
+            mix_materials(world, contact);
+        }
+    }
 }
 
 /* Swaps the contacts with the spare array the merges wrote. */
@@ -272,11 +297,6 @@ void rb_contacts_collide(rb_world *world, double dt)
             carry_impulses(&contact->manifold, &fresh);
         }
         contact->manifold = fresh;
-        const rb_shape *a = &world->shapes[contact->pair.shape_a];
-        const rb_shape *b = &world->shapes[contact->pair.shape_b];
-        /* Mixing rules: geometric mean of frictions, larger restitution. */
-        contact->friction = sqrt(a->friction * b->friction);
-        contact->restitution = fmax(a->restitution, b->restitution);
         contact->touching = manifold_touches(&fresh);
         if (!contact->sensor) {
             rb_contact_events_update(world, contact);

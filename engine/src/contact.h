@@ -11,6 +11,10 @@
  * drops those that ended (broad_phase.h). */
 rb_status rb_contacts_update(rb_world *world);
 
+/* Mixes again the friction and restitution of every contact of `shape`
+ * (an index in world->shapes), after its material changed. */
+void rb_contacts_mix_materials(rb_world *world, int shape);
+
 /* Whether the contact's two shapes' swept boxes overlap in this step (or
  * did in the last one, between steps): if not, they cannot meet within
  * the step, and the contact has no point. */

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "allocator.h"
+#include "contact.h"
 #include "error.h"
 #include "world_internal.h"
 
@@ -424,11 +425,29 @@ static rb_status find_shape_for_change(rb_world *world, rb_shape_id id, const ch
         return RB_OK;                                                                                                  \
     }
 
-SHAPE_FIELD_SETTER(rb_shape_set_friction, double, friction, friction,
-                   rb_check_range(function, "friction", friction, 0.0, RB_MAX_FRICTION))
-SHAPE_FIELD_SETTER(rb_shape_set_restitution, double, restitution, restitution,
-                   rb_check_range(function, "restitution", restitution, 0.0, 1.0))
 SHAPE_FIELD_SETTER(rb_shape_set_user_data, void *, user_data, user_data, RB_OK)
+
+/* A contact mixes its shapes' materials when it begins; a change of
+ * material mixes those of the shape's contacts again. */
+rb_status rb_shape_set_friction(rb_world *world, rb_shape_id id, double friction)
+{
+    int index;
+    RB_TRY(find_shape_for_change(world, id, "rb_shape_set_friction", &index));
+    RB_TRY(rb_check_range("rb_shape_set_friction", "friction", friction, 0.0, RB_MAX_FRICTION));
+    world->shapes[index].friction = friction;
+    rb_contacts_mix_materials(world, index);
+    return RB_OK;
+}
+
+rb_status rb_shape_set_restitution(rb_world *world, rb_shape_id id, double restitution)
+{
+    int index;
+    RB_TRY(find_shape_for_change(world, id, "rb_shape_set_restitution", &index));
+    RB_TRY(rb_check_range("rb_shape_set_restitution", "restitution", restitution, 0.0, 1.0));
+    world->shapes[index].restitution = restitution;
+    rb_contacts_mix_materials(world, index);
+    return RB_OK;
+}
 
 rb_status rb_shape_set_filter(rb_world *world, rb_shape_id id, rb_filter filter)
 {
