@@ -742,6 +742,13 @@ void rb_contact_solver_apply_restitution(rb_world *world, double h)
  * overlap, where their first-order error is far smaller than the slop. */
 #define TRUSTED_OVERLAP_SLOPS 4.0
 
+/* The larger of the deepest overlap found so far (a number, >= 0) and
+ * `overlap`, which is kept only when it is larger: a NaN or a -0 leaves
+ * the deepest as it is. A comparison rather than libm's fmax, whose call
+ * makes the compiler save and restore every register of the sweep around
+ * it, twice for each contact of the step. */
+static inline double deeper(double deepest, double overlap) { return overlap > deepest ? overlap : deepest; }
+
 /* The overlap at a constraint's points as the solver carries them. */
 static double carried_overlap(const rb_world *world, const rb_contact_constraint *c)
 {
@@ -750,7 +757,7 @@ static double carried_overlap(const rb_world *world, const rb_contact_constraint
     double deepest = 0.0;
     for (int j = 0; j < c->point_count; ++j) {
         rb_vec2 normal;
-        deepest = fmax(deepest, -current_separation(c, &c->points[j], a, b, &normal));
+        deepest = deeper(deepest, -current_separation(c, &c->points[j], a, b, &normal));
     }
     return deepest;
 }
@@ -772,7 +779,7 @@ double rb_contact_solver_store_impulses(rb_world *world)
             m->points[j].normal_impulse = c->points[j].normal_impulse;
             m->points[j].tangent_impulse = c->points[j].tangent_impulse;
         }
-        deepest = fmax(deepest, carried_overlap(world, c));
+        deepest = deeper(deepest, carried_overlap(world, c));
     }
     if (deepest <= trusted) {
         return deepest;
@@ -784,7 +791,7 @@ double rb_contact_solver_store_impulses(rb_world *world)
         if (overlap > trusted) {
             overlap = rb_contact_deepest_overlap_now(world, &world->contacts[c->contact]);
         }
-        deepest = fmax(deepest, overlap);
+        deepest = deeper(deepest, overlap);
     }
     return deepest;
 }
