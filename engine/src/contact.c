@@ -273,11 +273,6 @@ static void carry_impulses(const rb_manifold *old, rb_manifold *fresh)
     }
 }
 
-bool rb_contact_may_meet_in_step(const rb_world *world, const rb_contact *contact)
-{
-    return rb_aabb_overlaps(world->shapes[contact->pair.shape_a].aabb, world->shapes[contact->pair.shape_b].aabb);
-}
-
 void rb_contacts_collide(rb_world *world, double dt)
 {
     bool warm = world->settings.warm_starting;

@@ -18,7 +18,10 @@ void rb_contacts_mix_materials(rb_world *world, int shape);
 /* Whether the contact's two shapes' swept boxes overlap in this step (or
  * did in the last one, between steps): if not, they cannot meet within
  * the step, and the contact has no point. */
-bool rb_contact_may_meet_in_step(const rb_world *world, const rb_contact *contact);
+static inline bool rb_contact_may_meet_in_step(const rb_world *world, const rb_contact *contact)
+{
+    return rb_aabb_overlaps(world->shapes[contact->pair.shape_a].aabb, world->shapes[contact->pair.shape_b].aabb);
+}
 
 /* Computes the manifold of every contact whose shapes' swept boxes
  * overlap (the others get none) for a step of dt seconds, carries the
