@@ -177,6 +177,13 @@ int rb_contact_solver_prepare(rb_world *world)
     return count;
 }
 
+/* The normal of a contact whose normal is a face's, turned with the
+ * body of that face as it is now. */
+static inline rb_vec2 turned_normal(const rb_contact_constraint *c, const rb_body_state *sa, const rb_body_state *sb)
+{
+    return rb_rotate(c->normal_follows == RB_NORMAL_TURNS_WITH_A ? sa->rotation : sb->rotation, c->local_normal);
+}
+
 /* The contact as the bodies are now: the normal, turned with the body
  * whose face it is (or along the two centres for circles), and the two
  * surface points, each carried by its body (a polygon's material point,
@@ -189,19 +196,11 @@ static inline void current_geometry(const rb_contact_constraint *c, const rb_con
 {
     rb_vec2 qa = rb_add(sa->center, rb_rotate(sa->rotation, p->local_surface_a));
     rb_vec2 qb = rb_add(sb->center, rb_rotate(sb->rotation, p->local_surface_b));
-    switch (c->normal_follows) {
-    case RB_NORMAL_FROM_CENTERS: {
+    if (c->normal_follows == RB_NORMAL_FROM_CENTERS) {
         rb_vec2 line = rb_sub(qb, qa);
         *normal = rb_length_squared(line) > 0.0 ? rb_normalize(line) : c->normal;
-        break;
-    }
-    case RB_NORMAL_TURNS_WITH_A:
-        *normal = rb_rotate(sa->rotation, c->local_normal);
-        break;
-    case RB_NORMAL_TURNS_WITH_B:
-    default: /* no other value; said so that no path leaves *normal unset */
-        *normal = rb_rotate(sb->rotation, c->local_normal);
-        break;
+    } else {
+        *normal = turned_normal(c, sa, sb);
     }
     *pa = rb_mul_add(qa, c->radius_a, *normal);
     *pb = rb_mul_sub(qb, c->radius_b, *normal);
@@ -749,15 +748,27 @@ void rb_contact_solver_apply_restitution(rb_world *world, double h)
  * it, twice for each contact of the step. */
 static inline double deeper(double deepest, double overlap) { return overlap > deepest ? overlap : deepest; }
 
-/* The overlap at a constraint's points as the solver carries them. */
+/* The overlap at a constraint's points as the solver carries them:
+ * -current_separation at each, to the bit. A face's normal is the same
+ * for all the points, so it is turned once. */
 static double carried_overlap(const rb_world *world, const rb_contact_constraint *c)
 {
     const rb_body_state *a = &world->states[c->body_a];
     const rb_body_state *b = &world->states[c->body_b];
     double deepest = 0.0;
+    if (c->normal_follows == RB_NORMAL_FROM_CENTERS) {
+        for (int j = 0; j < c->point_count; ++j) {
+            rb_vec2 normal;
+            deepest = deeper(deepest, -current_separation(c, &c->points[j], a, b, &normal));
+        }
+        return deepest;
+    }
+    rb_vec2 normal = turned_normal(c, a, b);
     for (int j = 0; j < c->point_count; ++j) {
-        rb_vec2 normal;
-        deepest = deeper(deepest, -current_separation(c, &c->points[j], a, b, &normal));
+        const rb_constraint_point *p = &c->points[j];
+        rb_vec2 pa = rb_mul_add(rb_add(a->center, rb_rotate(a->rotation, p->local_surface_a)), c->radius_a, normal);
+        rb_vec2 pb = rb_mul_sub(rb_add(b->center, rb_rotate(b->rotation, p->local_surface_b)), c->radius_b, normal);
+        deepest = deeper(deepest, -rb_dot(normal, rb_sub(pb, pa)));
     }
     return deepest;
 }
