@@ -71,25 +71,14 @@ int rb_contact_blocks_widest(void)
     return 2;
 }
 
-/* A block whose every lane is empty: a contact that cannot act, along
- * (1, 0), between the idle bodies. */
-static void clear_block(rb_contact_block *q, rb_contact_batches *batches)
+/* Copies constraint `index`, between the bodies whose states are at a
+ * and b, into lane `lane` of block q: every field of the lane, so a block
+ * needs no clearing before its lanes are filled. */
+static void copy_into_lane(rb_contact_block *q, int lane, int index, const rb_contact_constraint *c, rb_body_state *a,
+                           rb_body_state *b)
 {
-    memset(q, 0, sizeof *q);
-    for (int lane = 0; lane < RB_BLOCK_LANES; ++lane) {
-        q->body_a[lane] = &batches->idle_a;
-        q->body_b[lane] = &batches->idle_b;
-        q->constraints[lane] = -1;
-        q->normal_x.v[lane] = 1.0;
-    }
-}
-
-/* Copies constraint `index` into lane `lane` of block q. */
-static void copy_into_lane(rb_contact_block *q, int lane, int index, const rb_contact_constraint *c,
-                           rb_body_state *states)
-{
-    q->body_a[lane] = &states[c->body_a];
-    q->body_b[lane] = &states[c->body_b];
+    q->body_a[lane] = a;
+    q->body_b[lane] = b;
     q->constraints[lane] = index;
     q->against_fixed[lane] = c->against_fixed ? -1 : 0;
     q->normal_x.v[lane] = c->normal.x;
@@ -116,6 +105,15 @@ static void copy_into_lane(rb_contact_block *q, int lane, int index, const rb_co
         w->tangent_impulse.v[lane] = p->tangent_impulse;
         w->max_normal_impulse.v[lane] = p->max_normal_impulse;
     }
+}
+
+/* Empties lane `lane` of block q, as copy_into_lane would copy a contact
+ * that cannot act: along (1, 0) between the idle bodies, with no mass, no
+ * lever arm and no impulse. */
+static void empty_lane(rb_contact_block *q, int lane, rb_contact_batches *batches)
+{
+    static const rb_contact_constraint idle = {.normal = {1.0, 0.0}};
+    copy_into_lane(q, lane, -1, &idle, &batches->idle_a, &batches->idle_b);
 }
 
 /* Whether a constraint can take a lane of a block: two points, and no
@@ -168,10 +166,15 @@ void rb_contact_solver_gather_blocks(rb_world *world)
                 continue;
             }
             if (lane == RB_BLOCK_LANES) {
-                clear_block(&batches->blocks[batches->block_count++], batches);
+                ++batches->block_count;
                 lane = 0;
             }
-            copy_into_lane(&batches->blocks[batches->block_count - 1], lane++, i, &constraints[i], world->states);
+            const rb_contact_constraint *c = &constraints[i];
+            copy_into_lane(&batches->blocks[batches->block_count - 1], lane++, i, c, &world->states[c->body_a],
+                           &world->states[c->body_b]);
+        }
+        for (; lane < RB_BLOCK_LANES; ++lane) {
+            empty_lane(&batches->blocks[batches->block_count - 1], lane, batches);
         }
     }
     batches->block_start[RB_COLOUR_COUNT] = batches->block_count;
