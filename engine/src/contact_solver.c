@@ -181,7 +181,10 @@ int rb_contact_solver_prepare(rb_world *world)
  * body of that face as it is now. */
 static inline rb_vec2 turned_normal(const rb_contact_constraint *c, const rb_body_state *sa, const rb_body_state *sb)
 {
-    return rb_rotate(c->normal_follows == RB_NORMAL_TURNS_WITH_A ? sa->rotation : sb->rotation, c->local_normal);
+    if (c->normal_follows == RB_NORMAL_TURNS_WITH_A) {
+        return rb_rotate(sa->rotation, c->local_normal);
+    }
+    return rb_rotate(sb->rotation, c->local_normal);
 }
 
 /* The contact as the bodies are now: the normal, turned with the body
