@@ -418,7 +418,9 @@ rb_status rb_joints_collect_active(rb_world *world)
     if (rb_grow_array((void **)&world->active_joints, &world->active_joint_capacity, world->joint_count,
                       sizeof *world->active_joints) != 0 ||
         rb_grow_array((void **)&world->substep_omega, &world->substep_omega_capacity, world->body_slots,
-                      sizeof *world->substep_omega) != 0) {
+                      sizeof *world->substep_omega) != 0 ||
+        rb_grow_array((void **)&world->point_blocks, &world->point_block_capacity, world->joint_slots,
+                      sizeof *world->point_blocks) != 0) {
         world->active_joint_count = 0;
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for the joint list");
     }

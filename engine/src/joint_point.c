@@ -41,16 +41,22 @@ static void apply(const rb_joint *joint, rb_body_state *a, rb_body_state *b, rb_
 /* The cofactors of K with its angular row, once a substep: K is fixed
  * within it, and every pass solves K·(x, z) = (v, w) by Cramer's rule
  * with them (what rb_block_solve3 does from scratch in every pass). */
-static void make_cofactors(rb_joint_frame *f)
+static void make_cofactors(rb_point_block *p)
 {
-    const rb_block_matrix *k = &f->point_mass;
-    f->point_c11 = k->k22 * k->k33 - k->k23 * k->k23;
-    f->point_c12 = k->k13 * k->k23 - k->k12 * k->k33;
-    f->point_c13 = k->k12 * k->k23 - k->k13 * k->k22;
-    f->point_det = k->k11 * f->point_c11 + k->k12 * f->point_c12 + k->k13 * f->point_c13;
-    f->point_c22 = k->k11 * k->k33 - k->k13 * k->k13;
-    f->point_c23 = k->k13 * k->k12 - k->k11 * k->k23;
-    f->point_c33 = k->k11 * k->k22 - k->k12 * k->k12;
+    const rb_block_matrix *k = &p->mass;
+    p->c11 = k->k22 * k->k33 - k->k23 * k->k23;
+    p->c12 = k->k13 * k->k23 - k->k12 * k->k33;
+    p->c13 = k->k12 * k->k23 - k->k13 * k->k22;
+    p->det = k->k11 * p->c11 + k->k12 * p->c12 + k->k13 * p->c13;
+    p->c22 = k->k11 * k->k33 - k->k13 * k->k13;
+    p->c23 = k->k13 * k->k12 - k->k11 * k->k23;
+    p->c33 = k->k11 * k->k22 - k->k12 * k->k12;
+}
+
+/* The joint's point block, kept by the world beside the joints. */
+static rb_point_block *point_block(const rb_world *world, const rb_joint *joint)
+{
+    return &world->point_blocks[joint - world->joints];
 }
 
 /* Whether the pin is solved with an angular row in its passes: a
@@ -77,10 +83,11 @@ static void set_point_inverse(rb_joint_frame *f, const rb_block_matrix *k)
 void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h)
 {
     rb_joint_frame *f = &joint->frame;
-    f->point_mass = make_mass_matrix(f, f->ra, f->rb);
-    set_point_inverse(f, &f->point_mass);
+    rb_point_block *p = point_block(world, joint);
+    p->mass = make_mass_matrix(f, f->ra, f->rb);
+    set_point_inverse(f, &p->mass);
     if (solves_with_a_row(joint)) {
-        make_cofactors(f);
+        make_cofactors(p);
     }
     rb_point_constraint_prepare_drift(world, joint, h);
 }
@@ -129,17 +136,16 @@ void rb_point_constraint_prepare_drift(const rb_world *world, rb_joint *joint, d
  * its terms' products of two flipped factors), so K's cofactors serve
  * both signs, to the bit: negation is exact. False when K is singular
  * (a body that cannot turn makes an angle row redundant). */
-static bool solve_with_row(const rb_joint_frame *f, double sign, rb_vec2 v, double w, rb_vec2 *x, double *z)
+static bool solve_with_row(const rb_point_block *p, double sign, rb_vec2 v, double w, rb_vec2 *x, double *z)
 {
-    double det = f->point_det;
+    double det = p->det;
     if (!(fabs(det) > 1e-300)) {
         return false;
     }
-    double c13 = sign * f->point_c13;
-    double c23 = sign * f->point_c23;
-    *x = rb_v2((f->point_c11 * v.x + f->point_c12 * v.y + c13 * w) / det,
-               (f->point_c12 * v.x + f->point_c22 * v.y + c23 * w) / det);
-    *z = (c13 * v.x + c23 * v.y + f->point_c33 * w) / det;
+    double c13 = sign * p->c13;
+    double c23 = sign * p->c23;
+    *x = rb_v2((p->c11 * v.x + p->c12 * v.y + c13 * w) / det, (p->c12 * v.x + p->c22 * v.y + c23 * w) / det);
+    *z = (c13 * v.x + c23 * v.y + p->c33 * w) / det;
     return true;
 }
 
@@ -147,7 +153,6 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
 {
     rb_body_state *a = rb_joint_state_a(world, joint);
     rb_body_state *b = rb_joint_state_b(world, joint);
-    const rb_joint_frame *f = &joint->frame;
     const rb_rigid_response *response = &world->joint_response;
     rb_vec2 cdot = rb_point_velocity_error(world, joint, a, b);
 
@@ -157,14 +162,15 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
          * terms take the sign s. */
         double wdot = row->sign * (b->angular_velocity - a->angular_velocity) + row->bias;
         double angular;
-        if (solve_with_row(f, row->sign, rb_neg(cdot), -wdot, &impulse, &angular)) {
+        const rb_point_block *p = point_block(world, joint);
+        if (solve_with_row(p, row->sign, rb_neg(cdot), -wdot, &impulse, &angular)) {
             impulse = rb_soften(response, impulse, *accumulated);
             angular = response->mass_scale * angular - response->impulse_scale * *row->accumulated;
             if (row->one_sided && *row->accumulated + angular < 0.0) {
                 /* The limit would pull: release it and hold the pin alone,
                  * net of the release's effect on the point. */
                 angular = -*row->accumulated;
-                const rb_block_matrix k = f->point_mass;
+                const rb_block_matrix k = p->mass;
                 rb_vec2 rhs = rb_neg(rb_add(cdot, rb_scale(angular, rb_v2(row->sign * k.k13, row->sign * k.k23))));
                 impulse =
                     rb_block_solve2(&k, rhs, &impulse) ? rb_soften(response, impulse, *accumulated) : rb_v2(0.0, 0.0);

@@ -231,10 +231,11 @@ static inline void rb_point_alone_solve(const rb_world *world, const rb_joint *j
     rb_joint_apply_linear(joint, a, b, impulse);
 }
 
-/* Sets the frame's point_mass and point_drift for the substep; after
+/* Sets the joint's point block (K, and its cofactors for a pin with an
+ * angular row) and the frame's point_drift for the substep; after
  * the frame is prepared, before any solve. */
 void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h);
-/* Sets the frame's point inverse and point_drift, not point_mass: what
+/* Sets the frame's point inverse and point_drift, not the point block: what
  * a pin without an angular row reads (rb_point_alone_solve), with one
  * cache line less written a pin a substep. */
 void rb_point_alone_prepare(const rb_world *world, rb_joint *joint, double h);

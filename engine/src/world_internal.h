@@ -217,17 +217,24 @@ typedef struct rb_joint_frame {
     double inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b; /* 0 for a body that cannot move */
     rb_vec2 ra, rb; /* m, anchors relative to each centre of mass, turned into the world now */
     /* Pins and welds only, fixed for the substep: the inverse of the
-     * upper-left 2x2 of point_mass (the pin alone), or all 0 when that is
+     * upper-left 2x2 of K (rb_point_block; the pin alone), or all 0 when that is
      * singular: every pass of a pin multiplies by it, where solving the
      * 2x2 anew took two divisions each time. */
     double point_inverse11, point_inverse12, point_inverse22;
-    rb_vec2 point_drift;        /* m/s, the anchors' centripetal drift over the substep (joint_point.c) */
-    rb_block_matrix point_mass; /* the point constraint's K at ra, rb (joint_point.c) */
-    /* The cofactors of point_mass and its determinant, for a pin solved
-     * with an angular row (a limit, a rigid weld's angle), made with it. */
-    double point_c11, point_c12, point_c13, point_c22, point_c23, point_c33, point_det;
+    rb_vec2 point_drift;      /* m/s, the anchors' centripetal drift over the substep (joint_point.c) */
     rb_vec2 local_a, local_b; /* m, the anchors relative to each centre of mass, in the body frames */
 } rb_joint_frame;
+
+/* What a pin solved with an angular row (a limit, a rigid weld's angle)
+ * holds fixed for the substep (joint_point.c): the point constraint's K
+ * at ra, rb, and K's cofactors and determinant. The world keeps one per
+ * joint slot beside the joints (rb_world.point_blocks), not in them: the
+ * plain pins of a large grid never read it, and a pass streams every
+ * byte of a joint through the caches. */
+typedef struct rb_point_block {
+    rb_block_matrix mass;
+    double c11, c12, c13, c22, c23, c33, det;
+} rb_point_block;
 
 typedef struct rb_revolute_data {
     /* What every pass of a plain pin reads, first: */
@@ -505,7 +512,9 @@ struct rb_world {
 
     rb_joint *joints;
     int joint_capacity;
-    int *active_joints; /* this step's solved joints (rb_joints_collect_active) */
+    int *active_joints;           /* this step's solved joints (rb_joints_collect_active) */
+    rb_point_block *point_blocks; /* per joint slot, for the pins with an angular row (joint_point.c) */
+    int point_block_capacity;
     int active_joint_count, active_joint_capacity;
     double *substep_omega; /* per body slot: rad/s at the substep's start, before any warm start (rb_joints_prepare) */
     int substep_omega_capacity;
