@@ -705,6 +705,9 @@ bool rb_contact_solver_correct_positions(rb_world *world)
  * integrator's error, wherever in the step the impact fell. */
 void rb_contact_solver_apply_restitution(rb_world *world, double h)
 {
+    if (world->bouncing_constraint_count == 0) {
+        return; /* nothing bounces: a resting pile need not read its constraints again */
+    }
     double threshold = world->settings.restitution_threshold;
     for (int i = 0; i < world->constraint_count; ++i) {
         rb_contact_constraint *c = &world->constraints[i];
