@@ -268,6 +268,30 @@ Test(contacts, restitution_mixes_as_the_larger_of_the_two)
     expect_rebound(0.0, 0.0, 0.8, 0.8);
 }
 
+Test(contacts, restitution_changed_while_the_contact_lasts_takes_effect)
+{
+    /* A contact mixes its shapes' restitutions when it begins, which is as
+     * soon as their fattened boxes overlap, before the shapes touch: a
+     * change while it lasts must mix them again. The ball falls with e = 0
+     * on ground with e = 0; 2 cm above the ground, its contact long begun,
+     * its restitution becomes 0.5, mixed with 0 to 0.5: it rebounds to
+     * e²·h = 0.25 m (±5 %), where the stale mix of 0 would not rebound. */
+    rb_world *world = make_world(rb_default_world_def().gravity);
+    scene_drop drop;
+    cr_assert_eq(scene_drop_create(world, DROP_HEIGHT, 0.0, &drop), RB_OK, "%s", rb_last_error());
+    while (rb_body_position(world, drop.ball).y - drop.radius > 0.02) {
+        step_world(world, DROP_DT, 1);
+    }
+    cr_assert(rb_body_linear_velocity(world, drop.ball).y < -1.0, "the ball should still be falling");
+    cr_assert_eq(rb_shape_set_restitution(world, first_shape(world, drop.ball), 0.5), RB_OK, "%s", rb_last_error());
+    const double expected = 0.25 * DROP_HEIGHT;
+    const double apex = rebound_apex(world, &drop);
+    cr_expect(fabs(apex - expected) <= DROP_TOLERANCE * expected,
+              "restitution changed to 0.5 while the contact lasted: rebound to %.4f m, expected %.4f m (±5 %%)", apex,
+              expected);
+    destroy_world_and_expect_no_leak(world);
+}
+
 /* ---- A box on an incline --------------------------------------------------
  *
  * Coulomb friction: the box stays while tan θ <= μ, and otherwise slides
