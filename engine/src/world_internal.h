@@ -410,6 +410,9 @@ typedef struct rb_joint_block {
     /* 1/kg, 1/(kg·m²); the last place stands for every fixed body, 0. */
     double inv_mass[RB_BLOCK_MAX_BODIES + 1], inv_inertia[RB_BLOCK_MAX_BODIES + 1];
     rb_block_row rows[RB_BLOCK_MAX_ROWS];
+    /* Row i's envelope in K: the first row it shares a moving body with
+     * (i when none before it); L·D·Lᵀ fills in nothing before it. */
+    int first[RB_BLOCK_MAX_ROWS];
     double k[RB_BLOCK_MAX_ROWS * RB_BLOCK_MAX_ROWS];      /* J·M⁻¹·Jᵀ, row_count × row_count */
     double factor[RB_BLOCK_MAX_ROWS * RB_BLOCK_MAX_ROWS]; /* its L·D·Lᵀ: L below the diagonal, 1/D on it */
     bool factored;                                        /* false: Gauss-Seidel solves it this substep */
