@@ -296,6 +296,16 @@ typedef struct rb_pulley_data {
     double impulse, stop_a_impulse, stop_b_impulse; /* N·s, >= 0 */
 } rb_pulley_data;
 
+/* A body's share of a cable's unit tension this substep: the direction
+ * of the impulse on it and, when the impulse moves it, its inverse mass. */
+typedef struct rb_cable_share {
+    int body;
+    rb_vec2 linear;  /* Σ (u_i - u_{i-1}) over the body's points */
+    double angular;  /* m, Σ r_i × (u_i - u_{i-1}) */
+    double inv_mass; /* 1/kg, 0 when the impulse does not move the body (kinematic, asleep) */
+    double inv_inertia;
+} rb_cable_share;
+
 /* A cable and, per substep, the direction of a unit tension's impulse on
  * each distinct body of its path. */
 typedef struct rb_cable {
@@ -310,13 +320,17 @@ typedef struct rb_cable {
     double damping;                      /* N·s/m */
     double impulse;                      /* N·s, accumulated in the current substep */
     rb_vec2 points[RB_MAX_CABLE_POINTS]; /* m, the path in the world at the substep's start (rb_cables_locate) */
-    int body_count;                      /* distinct bodies of the path, this substep */
-    int solver_bodies[RB_MAX_CABLE_POINTS];
-    rb_vec2 linear[RB_MAX_CABLE_POINTS]; /* Σ (u_i - u_{i-1}) over the body's points */
-    double angular[RB_MAX_CABLE_POINTS]; /* m, Σ r_i × (u_i - u_{i-1}) */
-    double inv_mass[RB_MAX_CABLE_POINTS], inv_inertia[RB_MAX_CABLE_POINTS];
-    int moving_count;                /* of those bodies, the ones an impulse moves, */
-    int moving[RB_MAX_CABLE_POINTS]; /* by their place in the arrays above */
+    double segment_lengths[RB_MAX_CABLE_POINTS - 1]; /* m, from point i to i + 1, located with the points */
+    int body_count;                                  /* distinct bodies of the path, in order of first point, */
+    int path_bodies[RB_MAX_CABLE_POINTS];            /* by slot, fixed at creation */
+    int point_places[RB_MAX_CABLE_POINTS];           /* each point's body's place in path_bodies */
+    /* This substep: the shares of the path's bodies that are not static
+     * (a static body's velocity is 0 and an impulse moves nothing), in
+     * path order, and of those, the ones an impulse moves. */
+    int share_count;
+    rb_cable_share shares[RB_MAX_CABLE_POINTS];
+    int moving_count;
+    int moving[RB_MAX_CABLE_POINTS]; /* places in shares */
     double inverse_mass;             /* 1/kg: how fast a unit impulse shortens the path */
 } rb_cable;
 
