@@ -162,6 +162,13 @@ rb_status rb_cable_set_tension_law(rb_world *world, rb_cable_id id, double base_
 
 /* ---- read-outs ---------------------------------------------------------------- */
 
+/* A point's velocity v + ω × r from its body. */
+static rb_vec2 point_velocity(const rb_world *world, int body, rb_vec2 point)
+{
+    const rb_body_state *s = &world->states[body];
+    return rb_add(s->linear_velocity, rb_cross_sv(s->angular_velocity, rb_sub(point, s->center)));
+}
+
 /* Length and lengthening speed in one pass over the path: L is the sum
  * of the segments, L' = Σ u·(v_{i+1} - v_i) with each point's velocity
  * v + ω × r from its body. */
@@ -171,12 +178,10 @@ static void measure(const rb_world *world, const rb_cable *cable, double *length
     *speed = 0.0;
     bool located = world->in_substep_callback && world->cable_points_fresh; /* nothing moves in it */
     rb_vec2 p = located ? cable->points[0] : world_point(world, cable, 0);
+    rb_vec2 vp = point_velocity(world, cable->bodies[0], p);
     for (int i = 0; i + 1 < cable->point_count; ++i) {
         rb_vec2 q = located ? cable->points[i + 1] : world_point(world, cable, i + 1);
-        const rb_body_state *sp = &world->states[cable->bodies[i]];
-        const rb_body_state *sq = &world->states[cable->bodies[i + 1]];
-        rb_vec2 vp = rb_add(sp->linear_velocity, rb_cross_sv(sp->angular_velocity, rb_sub(p, sp->center)));
-        rb_vec2 vq = rb_add(sq->linear_velocity, rb_cross_sv(sq->angular_velocity, rb_sub(q, sq->center)));
+        rb_vec2 vq = point_velocity(world, cable->bodies[i + 1], q);
         rb_vec2 segment = rb_sub(q, p);
         double segment_length = located ? cable->segment_lengths[i] : rb_length(segment);
         *length += segment_length;
@@ -184,6 +189,7 @@ static void measure(const rb_world *world, const rb_cable *cable, double *length
             *speed += rb_dot(segment, rb_sub(vq, vp)) / segment_length;
         }
         p = q;
+        vp = vq; /* each point's velocity is made once */
     }
 }
 
