@@ -376,6 +376,7 @@ void rb_joint_blocks_factor(rb_world *world, double h)
             add_pin(block, &world->joints[block->joints[j]]);
         }
         int pins = block->row_count;
+        block->pin_rows = pins;
         /* The limits after the pins, nearest first: a singular K drops
          * the last. */
         double margins[RB_BLOCK_MAX_JOINTS];
@@ -473,11 +474,11 @@ void rb_joint_blocks_solve_velocities(rb_world *world)
         }
         solve_factored(block->factor, rows, block->first, x);
         /* Release the limit that would pull hardest, then solve the rest
-         * again, until none pulls. */
+         * again, until none pulls (the limits' rows follow the pins'). */
         for (;;) {
             int worst = -1;
             double most = 0.0;
-            for (int i = 0; i < rows; ++i) {
+            for (int i = block->pin_rows; i < rows; ++i) {
                 const rb_block_row *row = &block->rows[i];
                 double total = *row->accumulated + x[i];
                 if (row->one_sided && free[i] && total < most) {

@@ -419,6 +419,7 @@ typedef struct rb_block_row {
 
 typedef struct rb_joint_block {
     int body_count, joint_count, row_count;
+    int pin_rows; /* the rows before the limits' */
     int bodies[RB_BLOCK_MAX_BODIES]; /* body slots */
     int joints[RB_BLOCK_MAX_JOINTS]; /* joint slots */
     /* 1/kg, 1/(kg·m²); the last place stands for every fixed body, 0. */
