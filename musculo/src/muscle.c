@@ -513,8 +513,11 @@ static void measure_at(mu_muscle *muscle, const path_reading *reading)
         return;
     }
     const double passive = reading->passive;
-    fill_readout(muscle, path, reading->fibre_length, speed * reading->cosine, fmax(total - passive, 0.0), passive,
-                 total);
+    /* The active part, never below 0: fmax(total - passive, 0) as a
+     * comparison (the same value, NaN and -0 included), without libm's call
+     * once a substep. */
+    const double active = total - passive > 0.0 ? total - passive : 0.0;
+    fill_readout(muscle, path, reading->fibre_length, speed * reading->cosine, active, passive, total);
 }
 
 static rb_status check_prepare(const mu_muscle *muscle, const rb_world *world, double h, const char *function)
