@@ -321,9 +321,9 @@ typedef struct rb_cable {
     double impulse;                      /* N·s, accumulated in the current substep */
     rb_vec2 points[RB_MAX_CABLE_POINTS]; /* m, the path in the world at the substep's start (rb_cables_locate) */
     double segment_lengths[RB_MAX_CABLE_POINTS - 1]; /* m, from point i to i + 1, located with the points */
-    int body_count;                                  /* distinct bodies of the path, in order of first point, */
-    int path_bodies[RB_MAX_CABLE_POINTS];            /* by slot, fixed at creation */
-    int point_places[RB_MAX_CABLE_POINTS];           /* each point's body's place in path_bodies */
+    int body_count;                        /* the path's distinct bodies, in the order of their first points: */
+    int path_bodies[RB_MAX_CABLE_POINTS];  /* their slots, fixed at creation */
+    int point_places[RB_MAX_CABLE_POINTS]; /* each point's body's place in path_bodies */
     /* This substep: the shares of the path's bodies that are not static
      * (a static body's velocity is 0 and an impulse moves nothing), in
      * path order, and of those, the ones an impulse moves. */
@@ -419,7 +419,7 @@ typedef struct rb_block_row {
 
 typedef struct rb_joint_block {
     int body_count, joint_count, row_count;
-    int pin_rows; /* the rows before the limits' */
+    int pin_rows;                    /* the rows before the limits' */
     int bodies[RB_BLOCK_MAX_BODIES]; /* body slots */
     int joints[RB_BLOCK_MAX_JOINTS]; /* joint slots */
     /* 1/kg, 1/(kg·m²); the last place stands for every fixed body, 0. */
