@@ -182,3 +182,92 @@ Test(cable, bad_input_is_refused_and_bodies_take_their_cables_with_them)
     step_world(world, TEST_DT, 1);
     destroy_world_and_expect_no_leak(world);
 }
+
+/* What the substep callback of the next test compares. */
+typedef struct read_check {
+    rb_cable_id cable;
+    int readings;   /* callbacks that compared */
+    int mismatches; /* readings that differed from rb_cable_state and rb_cable_tension */
+    double tension; /* the law's base tension, N */
+} read_check;
+
+static bool same_bits(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
+
+/* In the substep callback, where the cable reads the points the solver
+ * located: rb_cable_read against the separate calls, then the next law. */
+static void compare_readings(rb_world *world, int substep, double h, void *context)
+{
+    (void)substep;
+    (void)h;
+    read_check *check = context;
+    rb_cable_reading reading;
+    double length = 0.0, speed = 0.0;
+    bool ok = rb_cable_read(world, check->cable, &reading) == RB_OK &&
+              rb_cable_state(world, check->cable, &length, &speed) == RB_OK;
+    double tension = rb_cable_tension(world, check->cable);
+    if (!ok || !same_bits(reading.length, length) || !same_bits(reading.lengthening_speed, speed) ||
+        !same_bits(reading.tension, tension)) {
+        check->mismatches += 1;
+    }
+    check->readings += 1;
+    (void)rb_cable_set_tension_law(world, check->cable, check->tension, 50.0);
+}
+
+Test(cable, one_read_gives_the_length_speed_and_tension_of_the_separate_calls)
+{
+    /* A path from a fixed point over two via points on one swinging disc
+     * to a second disc: 4 points on 3 bodies, one of them static. Before
+     * any step, the geometry gives the length by hand: (0, 0) -> (1, 0)
+     * -> (1, -1) -> (2, -1), 3 m. */
+    rb_world *world = make_world(rb_v2(0.0, -9.8));
+    rb_body_id ground = make_body(world, RB_BODY_STATIC, rb_v2(0.0, 0.0), 0.0);
+    rb_body_id disc = make_body(world, RB_BODY_DYNAMIC, rb_v2(1.0, -0.5), 0.0);
+    rb_body_id weight = make_body(world, RB_BODY_DYNAMIC, rb_v2(2.0, -1.0), 0.0);
+    add_circle(world, disc, rb_v2(0.0, 0.0), 0.3, 1000.0);
+    add_circle(world, weight, rb_v2(0.0, 0.0), 0.1, 1000.0);
+    cr_assert_eq(rb_body_set_angular_velocity(world, disc, 2.0), RB_OK);
+    const rb_body_id bodies[4] = {ground, disc, disc, weight};
+    const rb_vec2 points[4] = {{0.0, 0.0}, {0.0, 0.5}, {0.0, -0.5}, {0.0, 0.0}};
+    read_check check = {.cable = make_cable(world, 4, bodies, points), .tension = 100.0};
+    rb_cable_reading reading;
+    cr_assert_eq(rb_cable_read(world, check.cable, &reading), RB_OK, "%s", rb_last_error());
+    expect_near(reading.length, 3.0, 1e-15, "length before any step");
+    /* The disc turns at 2 rad/s: its via points move at 1 m/s, the upper
+     * one along -x (shortening the first segment by 1 m/s), the lower
+     * along +x (shortening the last by 1 m/s); the middle segment turns
+     * without changing length. */
+    expect_near(reading.lengthening_speed, -2.0, 1e-15, "lengthening speed before any step");
+    cr_assert_eq(rb_world_set_substep_callback(world, compare_readings, &check), RB_OK);
+    step_world(world, TEST_DT, 30);
+    cr_expect_eq(check.readings, 30 * rb_world_solver_settings(world).substeps, "a reading every substep");
+    cr_expect_eq(check.mismatches, 0, "rb_cable_read differs from rb_cable_state and rb_cable_tension");
+    /* After the step, outside the callback, the path is measured from the bodies. */
+    double length = 0.0, speed = 0.0;
+    cr_assert_eq(rb_cable_read(world, check.cable, &reading), RB_OK);
+    cr_assert_eq(rb_cable_state(world, check.cable, &length, &speed), RB_OK);
+    cr_expect(same_bits(reading.length, length) && same_bits(reading.lengthening_speed, speed));
+    cr_expect(same_bits(reading.tension, rb_cable_tension(world, check.cable)));
+    cr_expect_gt(reading.tension, 0.0, "the cable pulls");
+    destroy_world_and_expect_no_leak(world);
+}
+
+Test(cable, a_read_of_a_bad_cable_or_into_nowhere_is_refused)
+{
+    rb_world *world = make_world(rb_v2(0.0, -9.8));
+    rb_body_id a = make_body(world, RB_BODY_STATIC, rb_v2(0.0, 0.0), 0.0);
+    rb_body_id b = unit_point_mass(world, rb_v2(1.0, 0.0));
+    const rb_body_id bodies[2] = {a, b};
+    const rb_vec2 points[2] = {{0.0, 0.0}, {0.0, 0.0}};
+    rb_cable_id cable = make_cable(world, 2, bodies, points);
+    cr_expect_eq(rb_cable_read(world, cable, NULL), RB_ERR_INVALID_ARGUMENT, "NULL out");
+    cr_expect(strstr(rb_last_error(), "rb_cable_read") != NULL, "message: %s", rb_last_error());
+    rb_cable_reading reading = {1.0, 1.0, 1.0};
+    cr_expect_eq(rb_cable_read(NULL, cable, &reading), RB_ERR_INVALID_ARGUMENT, "NULL world");
+    cr_expect(reading.length == 0.0 && reading.lengthening_speed == 0.0 && reading.tension == 0.0,
+              "a refused read leaves zeros");
+    cr_expect_eq(rb_cable_read(world, (rb_cable_id){0}, &reading), RB_ERR_FOREIGN_ID, "null id");
+    cr_assert_eq(rb_cable_destroy(world, cable), RB_OK);
+    cr_expect_eq(rb_cable_read(world, cable, &reading), RB_ERR_STALE_ID, "destroyed cable");
+    cr_expect(strstr(rb_last_error(), "destroyed") != NULL, "message: %s", rb_last_error());
+    destroy_world_and_expect_no_leak(world);
+}

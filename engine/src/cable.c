@@ -23,7 +23,7 @@ rb_cable_def rb_default_cable_def(void) { return (rb_cable_def){.internal_value 
 
 /* A point of the path in the world: from its body's centre of mass,
  * turned with the body (no origin transform needed). */
-static rb_vec2 world_point(const rb_world *world, const rb_cable *cable, int i)
+static inline rb_vec2 world_point(const rb_world *world, const rb_cable *cable, int i)
 {
     const rb_body_state *s = &world->states[cable->bodies[i]];
     rb_vec2 from_center = rb_sub(cable->local_points[i], world->bodies[cable->bodies[i]].local_center);
@@ -49,6 +49,16 @@ rb_status rb_cable_create(rb_world *world, const rb_cable_def *def, rb_cable_id 
         RB_TRY(rb_world_find_body(world, def->bodies[i], f, &cable.bodies[i]));
         RB_TRY(rb_check_point(f, "local_points[i]", def->local_points[i]));
         cable.local_points[i] = def->local_points[i];
+        /* The path's distinct bodies, in the order of their first point:
+         * the places of their shares of the tension (rb_cables_prepare). */
+        int place = 0;
+        while (place < cable.body_count && cable.path_bodies[place] != cable.bodies[i]) {
+            ++place;
+        }
+        if (place == cable.body_count) {
+            cable.path_bodies[cable.body_count++] = cable.bodies[i];
+        }
+        cable.point_places[i] = place;
     }
     for (int i = 0; i + 1 < def->point_count; ++i) {
         if (rb_distance(world_point(world, &cable, i), world_point(world, &cable, i + 1)) < RB_POLYGON_WELD_DISTANCE) {
@@ -152,6 +162,13 @@ rb_status rb_cable_set_tension_law(rb_world *world, rb_cable_id id, double base_
 
 /* ---- read-outs ---------------------------------------------------------------- */
 
+/* A point's velocity v + ω × r from its body. */
+static rb_vec2 point_velocity(const rb_world *world, int body, rb_vec2 point)
+{
+    const rb_body_state *s = &world->states[body];
+    return rb_add(s->linear_velocity, rb_cross_sv(s->angular_velocity, rb_sub(point, s->center)));
+}
+
 /* Length and lengthening speed in one pass over the path: L is the sum
  * of the segments, L' = Σ u·(v_{i+1} - v_i) with each point's velocity
  * v + ω × r from its body. */
@@ -161,19 +178,18 @@ static void measure(const rb_world *world, const rb_cable *cable, double *length
     *speed = 0.0;
     bool located = world->in_substep_callback && world->cable_points_fresh; /* nothing moves in it */
     rb_vec2 p = located ? cable->points[0] : world_point(world, cable, 0);
+    rb_vec2 vp = point_velocity(world, cable->bodies[0], p);
     for (int i = 0; i + 1 < cable->point_count; ++i) {
         rb_vec2 q = located ? cable->points[i + 1] : world_point(world, cable, i + 1);
-        const rb_body_state *sp = &world->states[cable->bodies[i]];
-        const rb_body_state *sq = &world->states[cable->bodies[i + 1]];
-        rb_vec2 vp = rb_add(sp->linear_velocity, rb_cross_sv(sp->angular_velocity, rb_sub(p, sp->center)));
-        rb_vec2 vq = rb_add(sq->linear_velocity, rb_cross_sv(sq->angular_velocity, rb_sub(q, sq->center)));
+        rb_vec2 vq = point_velocity(world, cable->bodies[i + 1], q);
         rb_vec2 segment = rb_sub(q, p);
-        double segment_length = rb_length(segment);
+        double segment_length = located ? cable->segment_lengths[i] : rb_length(segment);
         *length += segment_length;
         if (segment_length > 0.0) {
             *speed += rb_dot(segment, rb_sub(vq, vp)) / segment_length;
         }
         p = q;
+        vp = vq; /* each point's velocity is made once */
     }
 }
 
@@ -185,6 +201,19 @@ rb_status rb_cable_state(const rb_world *world, rb_cable_id id, double *length, 
     RB_TRY(rb_check_pointer("rb_cable_state", "length", length));
     RB_TRY(rb_check_pointer("rb_cable_state", "lengthening_speed", lengthening_speed));
     measure(world, &world->cables[index], length, lengthening_speed);
+    return RB_OK;
+}
+
+rb_status rb_cable_read(const rb_world *world, rb_cable_id id, rb_cable_reading *out)
+{
+    rb_clear_error();
+    RB_TRY(rb_check_pointer("rb_cable_read", "out", out));
+    *out = (rb_cable_reading){0};
+    int index = -1;
+    RB_TRY(find_cable(world, id, "rb_cable_read", &index));
+    const rb_cable *cable = &world->cables[index];
+    measure(world, cable, &out->length, &out->lengthening_speed);
+    out->tension = cable->impulse / world->last_substep;
     return RB_OK;
 }
 
@@ -233,37 +262,28 @@ int rb_cable_points(const rb_world *world, rb_cable_id id, rb_vec2 *out, int cap
 
 /* ---- solver --------------------------------------------------------------------- */
 
-/* Adds a point's pull direction to its body's share, merging the points
- * of one body. */
-static void add_pull(rb_cable *cable, const rb_world *world, int body, rb_vec2 point, rb_vec2 pull)
-{
-    int k = 0;
-    while (k < cable->body_count && cable->solver_bodies[k] != body) {
-        ++k;
-    }
-    if (k == cable->body_count) {
-        const rb_body *b = &world->bodies[body];
-        bool moves = b->type == RB_BODY_DYNAMIC && b->awake;
-        cable->solver_bodies[k] = body;
-        cable->linear[k] = rb_v2(0.0, 0.0);
-        cable->angular[k] = 0.0;
-        cable->inv_mass[k] = moves ? b->inv_mass : 0.0;
-        cable->inv_inertia[k] = moves ? b->inv_inertia : 0.0;
-        cable->body_count++;
-    }
-    cable->linear[k] = rb_add(cable->linear[k], pull);
-    cable->angular[k] += rb_cross(rb_sub(point, world->states[body].center), pull);
-}
-
 void rb_cables_locate(rb_world *world)
 {
     for (int c = 0; c < world->cable_slots; ++c) {
         rb_cable *cable = &world->cables[c];
-        for (int i = 0; cable->in_use && i < cable->point_count; ++i) {
+        if (!cable->in_use) {
+            continue;
+        }
+        for (int i = 0; i < cable->point_count; ++i) {
             cable->points[i] = world_point(world, cable, i);
+        }
+        for (int i = 0; i + 1 < cable->point_count; ++i) {
+            cable->segment_lengths[i] = rb_length(rb_sub(cable->points[i + 1], cable->points[i]));
         }
     }
     world->cable_points_fresh = true;
+}
+
+/* The unit vector of a segment of the given length: rb_normalize, with
+ * the length the points were located with. */
+static rb_vec2 unit_along(rb_vec2 segment, double length)
+{
+    return length < 1e-300 ? rb_v2(0.0, 0.0) : rb_scale(1.0 / length, segment);
 }
 
 void rb_cables_prepare(rb_world *world)
@@ -277,23 +297,48 @@ void rb_cables_prepare(rb_world *world)
         if (!cable->in_use) {
             continue;
         }
+        /* Each point's pull, u_i - u_{i-1}, added to its body's share. */
+        rb_vec2 linear[RB_MAX_CABLE_POINTS];
+        double angular[RB_MAX_CABLE_POINTS];
+        for (int b = 0; b < cable->body_count; ++b) {
+            linear[b] = rb_v2(0.0, 0.0);
+            angular[b] = 0.0;
+        }
         const rb_vec2 *points = cable->points;
-        cable->body_count = 0;
         rb_vec2 previous = rb_v2(0.0, 0.0); /* u_{i-1}; none before the origin */
         for (int i = 0; i < cable->point_count; ++i) {
-            rb_vec2 next =
-                i + 1 < cable->point_count ? rb_normalize(rb_sub(points[i + 1], points[i])) : rb_v2(0.0, 0.0);
-            add_pull(cable, world, cable->bodies[i], points[i], rb_sub(next, previous));
+            rb_vec2 next = i + 1 < cable->point_count
+                               ? unit_along(rb_sub(points[i + 1], points[i]), cable->segment_lengths[i])
+                               : rb_v2(0.0, 0.0);
+            rb_vec2 pull = rb_sub(next, previous);
+            int b = cable->point_places[i];
+            linear[b] = rb_add(linear[b], pull);
+            angular[b] += rb_cross(rb_sub(points[i], world->states[cable->path_bodies[b]].center), pull);
             previous = next;
         }
+        /* k = Σ J·M⁻¹·Jᵀ over the bodies the impulse moves. */
         double k = 0.0;
+        cable->share_count = 0;
         cable->moving_count = 0;
         for (int b = 0; b < cable->body_count; ++b) {
-            k += cable->inv_mass[b] * rb_dot(cable->linear[b], cable->linear[b]) +
-                 cable->inv_inertia[b] * cable->angular[b] * cable->angular[b];
-            if (cable->inv_mass[b] > 0.0 || cable->inv_inertia[b] > 0.0) {
-                cable->moving[cable->moving_count++] = b;
+            const rb_body *body = &world->bodies[cable->path_bodies[b]];
+            bool moves = body->type == RB_BODY_DYNAMIC && body->awake;
+            double inv_mass = moves ? body->inv_mass : 0.0;
+            double inv_inertia = moves ? body->inv_inertia : 0.0;
+            k += inv_mass * rb_dot(linear[b], linear[b]) + inv_inertia * angular[b] * angular[b];
+            if (body->type == RB_BODY_STATIC) {
+                continue;
             }
+            if (inv_mass > 0.0 || inv_inertia > 0.0) {
+                cable->moving[cable->moving_count++] = cable->share_count;
+            }
+            cable->shares[cable->share_count++] = (rb_cable_share){
+                .body = cable->path_bodies[b],
+                .linear = linear[b],
+                .angular = angular[b],
+                .inv_mass = inv_mass,
+                .inv_inertia = inv_inertia,
+            };
         }
         cable->inverse_mass = k;
     }
@@ -301,13 +346,13 @@ void rb_cables_prepare(rb_world *world)
 
 /* Applies the impulse to the bodies it moves: a muscle's origin is often
  * on a fixed bone, which it would only add zeros to. */
-static void apply(const rb_cable *cable, rb_world *world, double impulse)
+static inline void apply(const rb_cable *cable, rb_world *world, double impulse)
 {
     for (int m = 0; m < cable->moving_count; ++m) {
-        int b = cable->moving[m];
-        rb_body_state *s = &world->states[cable->solver_bodies[b]];
-        s->linear_velocity = rb_mul_add(s->linear_velocity, impulse * cable->inv_mass[b], cable->linear[b]);
-        s->angular_velocity += impulse * cable->inv_inertia[b] * cable->angular[b];
+        const rb_cable_share *share = &cable->shares[cable->moving[m]];
+        rb_body_state *s = &world->states[share->body];
+        s->linear_velocity = rb_mul_add(s->linear_velocity, impulse * share->inv_mass, share->linear);
+        s->angular_velocity += impulse * share->inv_inertia * share->angular;
     }
 }
 
@@ -327,11 +372,14 @@ void rb_cables_solve(rb_world *world, double h)
         if (!cable->in_use) {
             continue;
         }
-        /* L' = -Σ (pull · v + angular · ω): the pulls point inwards. */
+        /* L' = -Σ (pull · v + angular · ω): the pulls point inwards. A
+         * static body's velocity is 0 and would add ±0: a sum from +0
+         * never becomes -0, so leaving it out keeps the bits. */
         double speed = 0.0;
-        for (int b = 0; b < cable->body_count; ++b) {
-            const rb_body_state *s = &world->states[cable->solver_bodies[b]];
-            speed -= rb_dot(cable->linear[b], s->linear_velocity) + cable->angular[b] * s->angular_velocity;
+        for (int b = 0; b < cable->share_count; ++b) {
+            const rb_cable_share *share = &cable->shares[b];
+            const rb_body_state *s = &world->states[share->body];
+            speed -= rb_dot(share->linear, s->linear_velocity) + share->angular * s->angular_velocity;
         }
         if (cable->inverse_mass <= 0.0) {
             /* No tension can move the path's bodies (static, or kinematic

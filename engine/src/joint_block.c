@@ -145,19 +145,22 @@ static int slot_of(const rb_joint_block *block, int body)
     return slot >= 0 ? slot : RB_BLOCK_MAX_BODIES;
 }
 
-/* Appends the row J·v + bias = 0 of `joint`, J = (ja on A, jb on B). */
-static void add_row(rb_joint_block *block, const rb_joint *joint, const double ja[3], const double jb[3], double bias,
+/* Appends the row J·v + bias = 0 of a joint between the bodies in
+ * places slot_a and slot_b, J = (ja on A, jb on B); its weights M⁻¹·Jᵀ
+ * are made with K (fill_k). */
+static void add_row(rb_joint_block *block, int slot_a, int slot_b, const double ja[3], const double jb[3], double bias,
                     double *accumulated, bool one_sided)
 {
-    block->rows[block->row_count++] = (rb_block_row){
-        .slot_a = slot_of(block, joint->body_a),
-        .slot_b = slot_of(block, joint->body_b),
-        .ja = {ja[0], ja[1], ja[2]},
-        .jb = {jb[0], jb[1], jb[2]},
-        .bias = bias,
-        .accumulated = accumulated,
-        .one_sided = one_sided,
-    };
+    rb_block_row *row = &block->rows[block->row_count++];
+    row->slot_a = slot_a;
+    row->slot_b = slot_b;
+    for (int k = 0; k < 3; ++k) {
+        row->ja[k] = ja[k];
+        row->jb[k] = jb[k];
+    }
+    row->bias = bias;
+    row->accumulated = accumulated;
+    row->one_sided = one_sided;
 }
 
 /* The pin's two rows, Cdot = vB + ωB × rB - vA - ωA × rA less the drift:
@@ -166,9 +169,11 @@ static void add_pin(rb_joint_block *block, rb_joint *joint)
 {
     const rb_joint_frame *f = &joint->frame;
     rb_revolute_data *r = &joint->as.revolute;
-    add_row(block, joint, (const double[3]){-1.0, 0.0, f->ra.y}, (const double[3]){1.0, 0.0, -f->rb.y},
+    int a = slot_of(block, joint->body_a);
+    int b = slot_of(block, joint->body_b);
+    add_row(block, a, b, (const double[3]){-1.0, 0.0, f->ra.y}, (const double[3]){1.0, 0.0, -f->rb.y},
             -f->point_drift.x, &r->point_impulse.x, false);
-    add_row(block, joint, (const double[3]){0.0, -1.0, -f->ra.x}, (const double[3]){0.0, 1.0, f->rb.x},
+    add_row(block, a, b, (const double[3]){0.0, -1.0, -f->ra.x}, (const double[3]){0.0, 1.0, f->rb.x},
             -f->point_drift.y, &r->point_impulse.y, false);
 }
 
@@ -204,8 +209,8 @@ static double add_limit(rb_world *world, rb_joint_block *block, rb_joint *joint,
     if (margin > reach && *accumulated == 0.0) {
         return INFINITY;
     }
-    add_row(block, joint, (const double[3]){0.0, 0.0, -sign}, (const double[3]){0.0, 0.0, sign},
-            rb_one_sided_bias(world, margin, h), accumulated, true);
+    add_row(block, slot_of(block, joint->body_a), slot_of(block, joint->body_b), (const double[3]){0.0, 0.0, -sign},
+            (const double[3]){0.0, 0.0, sign}, rb_one_sided_bias(world, margin, h), accumulated, true);
     return margin;
 }
 
@@ -224,15 +229,29 @@ static void weigh(const rb_joint_block *block, rb_block_row *row)
 
 static double dot3(const double *x, const double *y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
 
-/* K_ij = J_i·M⁻¹·J_jᵀ: the sum over the bodies the two rows share (a
- * fixed body's weights are 0). */
-static double coupling(const rb_block_row *i, const rb_block_row *j)
+/* K_ij = J_i·M⁻¹·J_jᵀ: the sum over the moving bodies the two rows
+ * share (a fixed body's weights are 0, and a sum from +0 that adds 0
+ * stays the same bits, so those terms are not added). */
+static double coupling(const rb_joint_block *block, const rb_block_row *i, const rb_block_row *j)
 {
     double sum = 0.0;
-    sum += i->slot_a == j->slot_a ? dot3(i->ja, j->wa) : 0.0;
-    sum += i->slot_a == j->slot_b ? dot3(i->ja, j->wb) : 0.0;
-    sum += i->slot_b == j->slot_a ? dot3(i->jb, j->wa) : 0.0;
-    sum += i->slot_b == j->slot_b ? dot3(i->jb, j->wb) : 0.0;
+    const int moving = block->body_count;
+    if (i->slot_a < moving) {
+        if (i->slot_a == j->slot_a) {
+            sum += dot3(i->ja, j->wa);
+        }
+        if (i->slot_a == j->slot_b) {
+            sum += dot3(i->ja, j->wb);
+        }
+    }
+    if (i->slot_b < moving) {
+        if (i->slot_b == j->slot_a) {
+            sum += dot3(i->jb, j->wa);
+        }
+        if (i->slot_b == j->slot_b) {
+            sum += dot3(i->jb, j->wb);
+        }
+    }
     return sum;
 }
 
@@ -240,14 +259,22 @@ static double coupling(const rb_block_row *i, const rb_block_row *j)
  * row; its lower triangle is read) into `f`: L below the diagonal, 1/D
  * on it, so that a solve only multiplies. Column by column, each entry
  * less its products with the columns before, through v_k = L_jk·D_k.
+ *
+ * Row i of `a` is 0 before column first[i] (its envelope), and so is row
+ * i of L: L_ik = (a_ik - Σ_{m<k} L_im·D_m·L_km) / D_k vanishes for every
+ * k < first[i] in turn (George and Liu, "Computer Solution of Large
+ * Sparse Positive Definite Systems", 1981, §4.2). The sums therefore
+ * start at the envelope, and L's entries before it are neither made nor
+ * read: the leg's pins, a chain through the limb, leave a third of L
+ * empty. All rows dense (first[i] = 0) is the plain factorisation.
  * False when a pivot is not positive beyond rounding (dependent rows). */
-static bool factor(const double *a, int n, double *f)
+static bool factor(const double *a, int n, const int *first, double *f)
 {
     double v[RB_BLOCK_MAX_ROWS], d[RB_BLOCK_MAX_ROWS];
     for (int j = 0; j < n; ++j) {
         double *row_j = f + j * RB_BLOCK_MAX_ROWS;
         double pivot = a[j * RB_BLOCK_MAX_ROWS + j];
-        for (int k = 0; k < j; ++k) {
+        for (int k = first[j]; k < j; ++k) {
             v[k] = row_j[k] * d[k];
             pivot -= row_j[k] * v[k];
         }
@@ -257,9 +284,12 @@ static bool factor(const double *a, int n, double *f)
         d[j] = pivot;
         row_j[j] = 1.0 / pivot;
         for (int i = j + 1; i < n; ++i) {
+            if (first[i] > j) {
+                continue; /* L_ij = 0 */
+            }
             double *row_i = f + i * RB_BLOCK_MAX_ROWS;
             double sum = a[i * RB_BLOCK_MAX_ROWS + j];
-            for (int k = 0; k < j; ++k) {
+            for (int k = first[i] > first[j] ? first[i] : first[j]; k < j; ++k) {
                 sum -= row_i[k] * v[k];
             }
             row_i[j] = sum / pivot;
@@ -268,13 +298,13 @@ static bool factor(const double *a, int n, double *f)
     return true;
 }
 
-/* Solves L·D·Lᵀ·x = x in place. */
-static void solve_factored(const double *restrict f, int n, double *restrict x)
+/* Solves L·D·Lᵀ·x = x in place, L's rows from their envelopes. */
+static void solve_factored(const double *restrict f, int n, const int *restrict first, double *restrict x)
 {
     for (int i = 1; i < n; ++i) {
         const double *row = f + i * RB_BLOCK_MAX_ROWS;
         double sum = x[i];
-        for (int k = 0; k < i; ++k) {
+        for (int k = first[i]; k < i; ++k) {
             sum -= row[k] * x[k];
         }
         x[i] = sum;
@@ -285,12 +315,20 @@ static void solve_factored(const double *restrict f, int n, double *restrict x)
     for (int i = n - 1; i > 0; --i) {
         const double *row = f + i * RB_BLOCK_MAX_ROWS;
         double xi = x[i];
-        for (int k = 0; k < i; ++k) {
+        for (int k = first[i]; k < i; ++k) {
             x[k] -= row[k] * xi;
         }
     }
 }
 
+/* Whether two rows act on a common body that moves (K_ij may be non-zero). */
+static bool share_a_body(const rb_joint_block *block, const rb_block_row *i, const rb_block_row *j)
+{
+    return (i->slot_a < block->body_count && (i->slot_a == j->slot_a || i->slot_a == j->slot_b)) ||
+           (i->slot_b < block->body_count && (i->slot_b == j->slot_a || i->slot_b == j->slot_b));
+}
+
+/* K and each row's envelope; K is 0 outside it. */
 static void fill_k(rb_joint_block *block)
 {
     int n = block->row_count;
@@ -298,8 +336,14 @@ static void fill_k(rb_joint_block *block)
         weigh(block, &block->rows[i]);
     }
     for (int i = 0; i < n; ++i) {
+        const rb_block_row *row = &block->rows[i];
+        int first = 0;
+        while (first < i && !share_a_body(block, row, &block->rows[first])) {
+            ++first;
+        }
+        block->first[i] = first;
         for (int j = 0; j <= i; ++j) {
-            double value = coupling(&block->rows[i], &block->rows[j]);
+            double value = j >= first ? coupling(block, row, &block->rows[j]) : 0.0;
             block->k[i * RB_BLOCK_MAX_ROWS + j] = value;
             block->k[j * RB_BLOCK_MAX_ROWS + i] = value;
         }
@@ -332,6 +376,7 @@ void rb_joint_blocks_factor(rb_world *world, double h)
             add_pin(block, &world->joints[block->joints[j]]);
         }
         int pins = block->row_count;
+        block->pin_rows = pins;
         /* The limits after the pins, nearest first: a singular K drops
          * the last. */
         double margins[RB_BLOCK_MAX_JOINTS];
@@ -350,7 +395,8 @@ void rb_joint_blocks_factor(rb_world *world, double h)
             block->rows[pins + i] = row;
         }
         fill_k(block);
-        while (!(block->factored = factor(block->k, block->row_count, block->factor)) && block->row_count > pins) {
+        while (!(block->factored = factor(block->k, block->row_count, block->first, block->factor)) &&
+               block->row_count > pins) {
             release_row(world, block, &block->rows[--block->row_count]);
         }
         for (int j = 0; j < block->joint_count; ++j) {
@@ -395,8 +441,9 @@ static void solve_subset(const rb_joint_block *block, const bool *free, const do
         }
     }
     /* A principal submatrix of a positive definite K is positive definite. */
-    (void)factor(sub, m, f);
-    solve_factored(f, m, y);
+    static const int dense[RB_BLOCK_MAX_ROWS] = {0};
+    (void)factor(sub, m, dense, f);
+    solve_factored(f, m, dense, y);
     for (int p = 0; p < m; ++p) {
         x[index[p]] = y[p];
     }
@@ -425,13 +472,13 @@ void rb_joint_blocks_solve_velocities(rb_world *world)
             x[i] = rhs[i];
             free[i] = true;
         }
-        solve_factored(block->factor, rows, x);
+        solve_factored(block->factor, rows, block->first, x);
         /* Release the limit that would pull hardest, then solve the rest
-         * again, until none pulls. */
+         * again, until none pulls (the limits' rows follow the pins'). */
         for (;;) {
             int worst = -1;
             double most = 0.0;
-            for (int i = 0; i < rows; ++i) {
+            for (int i = block->pin_rows; i < rows; ++i) {
                 const rb_block_row *row = &block->rows[i];
                 double total = *row->accumulated + x[i];
                 if (row->one_sided && free[i] && total < most) {
@@ -448,12 +495,17 @@ void rb_joint_blocks_solve_velocities(rb_world *world)
         }
         for (int i = 0; i < rows; ++i) {
             const rb_block_row *row = &block->rows[i];
-            *row->accumulated += x[i];
-            double *va = v + 3 * row->slot_a, *vb = v + 3 * row->slot_b; /* a fixed body's wa, wb are 0 */
-            for (int k = 0; k < 3; ++k) {
-                va[k] += row->wa[k] * x[i];
-                vb[k] += row->wb[k] * x[i];
-            }
+            const double xi = x[i];
+            *row->accumulated += xi;
+            /* A and B are two places (a fixed body's wa, wb are 0). */
+            double *restrict va = v + 3 * row->slot_a;
+            double *restrict vb = v + 3 * row->slot_b;
+            va[0] += row->wa[0] * xi;
+            va[1] += row->wa[1] * xi;
+            va[2] += row->wa[2] * xi;
+            vb[0] += row->wb[0] * xi;
+            vb[1] += row->wb[1] * xi;
+            vb[2] += row->wb[2] * xi;
         }
         for (int b = 0; b < block->body_count; ++b) {
             rb_body_state *s = &world->states[block->bodies[b]];

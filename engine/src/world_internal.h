@@ -296,6 +296,16 @@ typedef struct rb_pulley_data {
     double impulse, stop_a_impulse, stop_b_impulse; /* N·s, >= 0 */
 } rb_pulley_data;
 
+/* A body's share of a cable's unit tension this substep: the direction
+ * of the impulse on it and, when the impulse moves it, its inverse mass. */
+typedef struct rb_cable_share {
+    int body;
+    rb_vec2 linear;  /* Σ (u_i - u_{i-1}) over the body's points */
+    double angular;  /* m, Σ r_i × (u_i - u_{i-1}) */
+    double inv_mass; /* 1/kg, 0 when the impulse does not move the body (kinematic, asleep) */
+    double inv_inertia;
+} rb_cable_share;
+
 /* A cable and, per substep, the direction of a unit tension's impulse on
  * each distinct body of its path. */
 typedef struct rb_cable {
@@ -310,13 +320,17 @@ typedef struct rb_cable {
     double damping;                      /* N·s/m */
     double impulse;                      /* N·s, accumulated in the current substep */
     rb_vec2 points[RB_MAX_CABLE_POINTS]; /* m, the path in the world at the substep's start (rb_cables_locate) */
-    int body_count;                      /* distinct bodies of the path, this substep */
-    int solver_bodies[RB_MAX_CABLE_POINTS];
-    rb_vec2 linear[RB_MAX_CABLE_POINTS]; /* Σ (u_i - u_{i-1}) over the body's points */
-    double angular[RB_MAX_CABLE_POINTS]; /* m, Σ r_i × (u_i - u_{i-1}) */
-    double inv_mass[RB_MAX_CABLE_POINTS], inv_inertia[RB_MAX_CABLE_POINTS];
-    int moving_count;                /* of those bodies, the ones an impulse moves, */
-    int moving[RB_MAX_CABLE_POINTS]; /* by their place in the arrays above */
+    double segment_lengths[RB_MAX_CABLE_POINTS - 1]; /* m, from point i to i + 1, located with the points */
+    int body_count;                        /* the path's distinct bodies, in the order of their first points: */
+    int path_bodies[RB_MAX_CABLE_POINTS];  /* their slots, fixed at creation */
+    int point_places[RB_MAX_CABLE_POINTS]; /* each point's body's place in path_bodies */
+    /* This substep: the shares of the path's bodies that are not static
+     * (a static body's velocity is 0 and an impulse moves nothing), in
+     * path order, and of those, the ones an impulse moves. */
+    int share_count;
+    rb_cable_share shares[RB_MAX_CABLE_POINTS];
+    int moving_count;
+    int moving[RB_MAX_CABLE_POINTS]; /* places in shares */
     double inverse_mass;             /* 1/kg: how fast a unit impulse shortens the path */
 } rb_cable;
 
@@ -405,11 +419,15 @@ typedef struct rb_block_row {
 
 typedef struct rb_joint_block {
     int body_count, joint_count, row_count;
+    int pin_rows;                    /* the rows before the limits' */
     int bodies[RB_BLOCK_MAX_BODIES]; /* body slots */
     int joints[RB_BLOCK_MAX_JOINTS]; /* joint slots */
     /* 1/kg, 1/(kg·m²); the last place stands for every fixed body, 0. */
     double inv_mass[RB_BLOCK_MAX_BODIES + 1], inv_inertia[RB_BLOCK_MAX_BODIES + 1];
     rb_block_row rows[RB_BLOCK_MAX_ROWS];
+    /* Row i's envelope in K: the first row it shares a moving body with
+     * (i when none before it); L·D·Lᵀ fills in nothing before it. */
+    int first[RB_BLOCK_MAX_ROWS];
     double k[RB_BLOCK_MAX_ROWS * RB_BLOCK_MAX_ROWS];      /* J·M⁻¹·Jᵀ, row_count × row_count */
     double factor[RB_BLOCK_MAX_ROWS * RB_BLOCK_MAX_ROWS]; /* its L·D·Lᵀ: L below the diagonal, 1/D on it */
     bool factored;                                        /* false: Gauss-Seidel solves it this substep */

@@ -387,8 +387,9 @@ static void control_tension(mu_muscle *muscle)
  * it: the fibre's length, pennation and parallel elastic force depend on
  * the pose alone, not on the activation the law then updates. */
 typedef struct path_reading {
-    double path;  /* m */
-    double speed; /* m/s, < 0 while shortening */
+    double path;    /* m */
+    double speed;   /* m/s, < 0 while shortening */
+    double tension; /* N: what the cable carried in the substep that ended */
     /* Rigid tendon only: */
     double fibre_length; /* m */
     double normalized;   /* l̃ = fibre length / optimal length */
@@ -399,7 +400,11 @@ typedef struct path_reading {
 static rb_status read_path(mu_muscle *muscle, const rb_world *world, path_reading *reading)
 {
     *reading = (path_reading){0};
-    rb_status status = rb_cable_state(world, muscle->cable, &reading->path, &reading->speed);
+    rb_cable_reading cable;
+    rb_status status = rb_cable_read(world, muscle->cable, &cable);
+    reading->path = cable.length;
+    reading->speed = cable.lengthening_speed;
+    reading->tension = cable.tension;
     if (status == RB_OK && !muscle->compliant) {
         reading->fibre_length = rigid_fibre_length(muscle, reading->path);
         reading->cosine = pennation_cosine(reading->fibre_length, muscle->width);
@@ -489,7 +494,7 @@ static void advance_fibre(mu_muscle *muscle, double path, double tension)
 }
 
 /* mu_muscle_measure at the path's length and lengthening speed now. */
-static void measure_at(mu_muscle *muscle, const rb_world *world, const path_reading *reading)
+static void measure_at(mu_muscle *muscle, const path_reading *reading)
 {
     const double path = reading->path;
     const double speed = reading->speed;
@@ -498,7 +503,7 @@ static void measure_at(mu_muscle *muscle, const rb_world *world, const path_read
      * shares its bodies with joints and other muscles. (Evaluating the
      * law at the end velocity instead would amplify a residual of a few
      * mm/s by the 10⁴-10⁵ N·s/m of the force-velocity slope.) */
-    const double total = rb_cable_tension(world, muscle->cable);
+    const double total = reading->tension;
     muscle->path_speed = speed;
     if (muscle->compliant) {
         if (muscle->substep > 0.0) {
@@ -508,8 +513,11 @@ static void measure_at(mu_muscle *muscle, const rb_world *world, const path_read
         return;
     }
     const double passive = reading->passive;
-    fill_readout(muscle, path, reading->fibre_length, speed * reading->cosine, fmax(total - passive, 0.0), passive,
-                 total);
+    /* The active part, never below 0: fmax(total - passive, 0) as a
+     * comparison (the same value, NaN and -0 included), without libm's call
+     * once a substep. */
+    const double active = total - passive > 0.0 ? total - passive : 0.0;
+    fill_readout(muscle, path, reading->fibre_length, speed * reading->cosine, active, passive, total);
 }
 
 static rb_status check_prepare(const mu_muscle *muscle, const rb_world *world, double h, const char *function)
@@ -541,7 +549,7 @@ rb_status mu_muscle_measure(mu_muscle *muscle, const rb_world *world)
     path_reading reading;
     rb_status status = read_path(muscle, world, &reading);
     if (status == RB_OK) {
-        measure_at(muscle, world, &reading);
+        measure_at(muscle, &reading);
     }
     return status;
 }
@@ -556,7 +564,7 @@ rb_status mu_muscle_advance(mu_muscle *muscle, rb_world *world, double h)
     if (status != RB_OK) {
         return status;
     }
-    measure_at(muscle, world, &reading);
+    measure_at(muscle, &reading);
     return prepare_at(muscle, world, h, &reading);
 }
 

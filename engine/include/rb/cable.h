@@ -70,6 +70,18 @@ RB_API double rb_cable_lengthening_speed(const rb_world *world,
 /** The tension (N, >= 0) the cable carried in the last substep: what the
  * solver applied; between bodies that cannot move, the law at rest. */
 RB_API double rb_cable_tension(const rb_world *world, rb_cable_id cable);
+/** What the owner of a cable (a muscle) reads of it once a substep. */
+typedef struct rb_cable_reading {
+    double length;            /**< m, now */
+    double lengthening_speed; /**< m/s, now; < 0 while shortening */
+    double tension;           /**< N, >= 0: what the cable carried in the last substep (rb_cable_tension) */
+} rb_cable_reading;
+
+/** rb_cable_state and rb_cable_tension in one call, with one look-up of
+ * the id: the same numbers, bit for bit. Fails (RB_ERR_INVALID_ARGUMENT,
+ * RB_ERR_FOREIGN_ID, RB_ERR_STALE_ID) on a NULL world or out, or an id
+ * that is not a live cable of the world; *out is then all 0. */
+RB_API rb_status rb_cable_read(const rb_world *world, rb_cable_id cable, rb_cable_reading *out);
 /** The world positions of the path's points now; returns the count. */
 RB_API int rb_cable_points(const rb_world *world, rb_cable_id cable, rb_vec2 *out, int capacity);
 
