@@ -255,21 +255,21 @@ static bool trees_alone(const rb_world *world)
     return true;
 }
 
-void rb_joint_tree_build(rb_world *world)
+/* Finds the trees (sets in_tree and the nodes); returns false when out
+ * of memory, which leaves every pin to Gauss-Seidel. */
+static bool find_trees(rb_world *world)
 {
     rb_joint_tree *tree = &world->joint_tree;
     tree->node_count = 0;
-    tree->pose_factors = false;
-    tree->alone = false;
     if (!clear_and_find_uneven(world) || !tree->enabled) {
-        return;
+        return true;
     }
     int slots = world->body_slots;
     if (rb_grow_array((void **)&tree->body_node, &tree->body_node_capacity, slots, sizeof(int)) != 0 ||
         rb_grow_array((void **)&tree->union_parent, &tree->union_capacity, slots, sizeof(int)) != 0 ||
         rb_grow_array((void **)&tree->grounded, &tree->grounded_capacity, slots, 1) != 0 ||
         rb_grow_array((void **)&tree->mass_range, &tree->mass_range_capacity, 2 * slots, sizeof(double)) != 0) {
-        return; /* out of memory: every pin stays with Gauss-Seidel */
+        return false;
     }
     int pins = choose_pins(world);
     /* A forest of `pins` edges has at most 2·pins bodies. */
@@ -279,7 +279,7 @@ void rb_joint_tree_build(rb_world *world)
         for (int k = 0; k < world->active_joint_count; ++k) {
             world->joints[world->active_joints[k]].in_tree = false;
         }
-        return;
+        return pins == 0;
     }
     /* Trees with a pin to a fixed body are rooted at that pin, so that no
      * pin is a leaf (its pivot would be zero); the others at a body. */
@@ -308,7 +308,99 @@ void rb_joint_tree_build(rb_world *world)
             tree->gauss_seidel_joints[tree->gauss_seidel_count++] = world->active_joints[k];
         }
     }
-    tree->alone = trees_alone(world);
+    return true;
+}
+
+/* ---- kept from step to step ---------------------------------------------- */
+
+/* What finding the trees reads of an active joint. */
+static rb_tree_key key_of(const rb_world *world, int slot)
+{
+    const rb_joint *joint = &world->joints[slot];
+    const rb_joint_frame *f = &joint->frame;
+    bool revolute = joint->type == RB_JOINT_REVOLUTE;
+    return (rb_tree_key){
+        .joint = slot,
+        .generation = joint->generation,
+        .body_a = joint->body_a,
+        .body_b = joint->body_b,
+        .type = joint->type,
+        .in_block = joint->in_block,
+        .plain_pin = joint->plain_pin,
+        .enable_lower = revolute && joint->as.revolute.enable_lower,
+        .enable_upper = revolute && joint->as.revolute.enable_upper,
+        .inv_mass_a = f->inv_mass_a,
+        .inv_inertia_a = f->inv_inertia_a,
+        .inv_mass_b = f->inv_mass_b,
+        .inv_inertia_b = f->inv_inertia_b,
+    };
+}
+
+static bool same_key(const rb_tree_key *a, const rb_tree_key *b)
+{
+    return a->joint == b->joint && a->generation == b->generation && a->body_a == b->body_a && a->body_b == b->body_b &&
+           a->type == b->type && a->in_block == b->in_block && a->plain_pin == b->plain_pin &&
+           a->enable_lower == b->enable_lower && a->enable_upper == b->enable_upper && a->inv_mass_a == b->inv_mass_a &&
+           a->inv_inertia_a == b->inv_inertia_a && a->inv_mass_b == b->inv_mass_b &&
+           a->inv_inertia_b == b->inv_inertia_b;
+}
+
+/* Whether the trees found last would be found again: the same active
+ * joints in the same slots, order and generations, with the same bodies,
+ * types, limits, motors and springs, and bodies of the same masses that
+ * move or not as before (a body asleep, static or of infinite mass does
+ * not move: the frames say so), under the same solver settings. The
+ * search reads nothing else: the bodies' lists of joints change only when
+ * a joint is made or destroyed. One comparison of a few fields a joint,
+ * where finding the trees again took some 500 instructions a joint. */
+static bool found_from_the_same(const rb_world *world)
+{
+    const rb_joint_tree *tree = &world->joint_tree;
+    if (!tree->found || tree->key_count != world->active_joint_count || tree->found_body_slots != world->body_slots ||
+        tree->found_ratio != uneven_ratio(world) || tree->found_enabled != tree->enabled) {
+        return false;
+    }
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        const rb_tree_key key = key_of(world, world->active_joints[k]);
+        if (!same_key(&key, &tree->keys[k])) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/* Records what the trees were found from; on running out of memory
+ * nothing, and they are found again next step. */
+static void record_keys(rb_world *world)
+{
+    rb_joint_tree *tree = &world->joint_tree;
+    tree->found =
+        rb_grow_array((void **)&tree->keys, &tree->key_capacity, world->active_joint_count, sizeof(rb_tree_key)) == 0;
+    if (!tree->found) {
+        return;
+    }
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        tree->keys[k] = key_of(world, world->active_joints[k]);
+    }
+    tree->key_count = world->active_joint_count;
+    tree->found_body_slots = world->body_slots;
+    tree->found_ratio = uneven_ratio(world);
+    tree->found_enabled = tree->enabled;
+}
+
+void rb_joint_tree_build(rb_world *world)
+{
+    rb_joint_tree *tree = &world->joint_tree;
+    tree->pose_factors = false;
+    if (!found_from_the_same(world)) {
+        if (find_trees(world)) {
+            record_keys(world);
+        } else {
+            tree->found = false;
+        }
+    }
+    /* Contacts and cables come and go from step to step. */
+    tree->alone = tree->node_count > 0 && trees_alone(world);
 }
 
 /* ---- factor and solve ----------------------------------------------------- */
@@ -710,5 +802,7 @@ void rb_joint_tree_free(rb_world *world)
     rb_free_array((void **)&tree->grounded, &tree->grounded_capacity, 1);
     rb_free_array((void **)&tree->mass_range, &tree->mass_range_capacity, sizeof(double));
     rb_free_array((void **)&tree->gauss_seidel_joints, &tree->gauss_seidel_capacity, sizeof(int));
+    rb_free_array((void **)&tree->keys, &tree->key_capacity, sizeof(rb_tree_key));
     tree->node_count = 0;
+    tree->found = false;
 }

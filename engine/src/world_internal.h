@@ -363,6 +363,19 @@ typedef struct rb_tree_node {
     rb_vec2 ra, rb;       /* a pin's anchor offsets (m) at the poses the nodes were factored at */
 } rb_tree_node;
 
+/* What the trees were found from, one per active joint (joint_tree.c,
+ * found_from_the_same): the joint's slot and generation (a joint
+ * destroyed and another made in its slot differ), its bodies, and what
+ * makes it a pin of a tree or a row of its own. */
+typedef struct rb_tree_key {
+    int joint;           /* slot */
+    uint32_t generation; /* of the joint in the slot */
+    int body_a, body_b;
+    rb_joint_type type;
+    bool in_block, plain_pin, enable_lower, enable_upper;
+    double inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b; /* the frame's: 0 for a body that cannot move */
+} rb_tree_key;
+
 /* The pins solved together this step, with the arrays the search for
  * them reuses from step to step. */
 typedef struct rb_joint_tree {
@@ -385,6 +398,15 @@ typedef struct rb_joint_tree {
      * pins the trees solve, the joints the Gauss-Seidel passes visit. */
     int *gauss_seidel_joints;
     int gauss_seidel_count, gauss_seidel_capacity;
+    /* The trees are kept from step to step while they would be found
+     * the same: found is set once they are found and keys recorded, with
+     * the world's body slots, the solver's mass ratio and enabled then. */
+    bool found;
+    rb_tree_key *keys;
+    int key_count, key_capacity;
+    int found_body_slots;
+    double found_ratio;
+    bool found_enabled;
 } rb_joint_tree;
 
 /* The small limbs solved as one dense system (joint_block.h). */
