@@ -101,7 +101,7 @@ static void prepare(rb_world *world, double h)
     rb_joints_prepare(world);
     rb_joint_tree_build(world);
     rb_joints_warm_start(world, h); /* the frames; the impulses are still 0 */
-    rb_joint_tree_factor_velocities(world);
+    rb_joint_tree_start_substep(world);
 }
 
 static rb_joint *joint_of(rb_world *world, rb_joint_id id) { return &world->joints[id.index]; }

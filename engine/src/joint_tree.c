@@ -505,81 +505,60 @@ static void eliminate_pin(rb_tree_node *node, rb_tree_node *body, double s, rb_v
     p[8] -= g33;
 }
 
-/* Factors every tree with the offsets its pins hold (node ra, rb).
- * Returns false when a pivot is singular, which leaves the trees unusable
- * for this pass. */
-static bool factor(rb_world *world)
+/* Starts a node's pivot at its own block of H, before its children are
+ * eliminated into it: a body's mass and inertia, a pin's zero. */
+static void start_pivot(rb_tree_node *node)
 {
-    rb_joint_tree *tree = &world->joint_tree;
-    for (int n = 0; n < tree->node_count; ++n) {
-        rb_tree_node *node = &tree->nodes[n];
-        memset(node->pivot, 0, sizeof node->pivot);
-        if (node->body >= 0) {
-            node->pivot[0] = node->pivot[4] = node->mass;
-            node->pivot[8] = node->inertia;
-        }
+    double *p = node->pivot;
+    if (node->body >= 0) {
+        p[0] = p[4] = node->mass;
+        p[8] = node->inertia;
+        p[1] = p[2] = p[3] = p[5] = p[6] = p[7] = 0.0;
+    } else {
+        p[0] = p[1] = p[2] = p[3] = 0.0;
     }
-    for (int n = tree->node_count - 1; n >= 0; --n) {
-        rb_tree_node *node = &tree->nodes[n];
-        if (!invert(node->pivot, node->dinv, node->dim)) {
-            return false;
-        }
-        if (node->parent < 0) {
-            continue;
-        }
-        rb_tree_node *parent = &tree->nodes[node->parent];
-        double s;
-        rb_vec2 r;
-        edge(node, parent, &s, &r);
-        if (node->body >= 0) {
-            eliminate_body(node, parent, s, r);
-        } else {
-            eliminate_pin(node, parent, s, r);
-        }
-    }
-    return true;
 }
 
-/* Solves H·x = b in place over node->value: L·D·Lᵀ from the leaves up,
- * then down from the roots. A body's X is 3 × 2 (its parent a pin), a
- * pin's 2 × 3 (its parent a body); written out for each, as this runs in
- * every pass. */
-static void solve(rb_joint_tree *tree)
+/* The forward substitution at a node whose children are done: its
+ * parent's right-hand side loses X(n)ᵀ·y(n), and y(n) becomes D⁻¹·y(n).
+ * A body's X is 3 × 2 (its parent a pin), a pin's 2 × 3 (its parent a
+ * body); written out for each, as this runs in every pass. */
+static void substitute_forward(rb_tree_node *node, rb_tree_node *parent)
 {
-    for (int n = tree->node_count - 1; n >= 0; --n) {
-        rb_tree_node *node = &tree->nodes[n];
-        double *y = node->value;
-        const double *d = node->dinv;
-        if (node->dim == 3) {
-            if (node->parent >= 0) { /* y(p) -= Xᵀ·y(n) */
-                double *yp = tree->nodes[node->parent].value;
-                const double *x = node->x;
-                yp[0] -= x[0] * y[0] + x[2] * y[1] + x[4] * y[2];
-                yp[1] -= x[1] * y[0] + x[3] * y[1] + x[5] * y[2];
-            }
-            const double y0 = y[0], y1 = y[1], y2 = y[2];
-            y[0] = d[0] * y0 + d[1] * y1 + d[2] * y2;
-            y[1] = d[3] * y0 + d[4] * y1 + d[5] * y2;
-            y[2] = d[6] * y0 + d[7] * y1 + d[8] * y2;
-        } else {
-            if (node->parent >= 0) {
-                double *yp = tree->nodes[node->parent].value;
-                const double *x = node->x;
-                yp[0] -= x[0] * y[0] + x[3] * y[1];
-                yp[1] -= x[1] * y[0] + x[4] * y[1];
-                yp[2] -= x[2] * y[0] + x[5] * y[1];
-            }
-            const double y0 = y[0], y1 = y[1];
-            y[0] = d[0] * y0 + d[1] * y1;
-            y[1] = d[2] * y0 + d[3] * y1;
+    double *y = node->value;
+    const double *d = node->dinv;
+    const double *x = node->x;
+    if (node->dim == 3) {
+        if (parent != NULL) {
+            double *yp = parent->value;
+            yp[0] -= x[0] * y[0] + x[2] * y[1] + x[4] * y[2];
+            yp[1] -= x[1] * y[0] + x[3] * y[1] + x[5] * y[2];
         }
+        const double y0 = y[0], y1 = y[1], y2 = y[2];
+        y[0] = d[0] * y0 + d[1] * y1 + d[2] * y2;
+        y[1] = d[3] * y0 + d[4] * y1 + d[5] * y2;
+        y[2] = d[6] * y0 + d[7] * y1 + d[8] * y2;
+    } else {
+        if (parent != NULL) {
+            double *yp = parent->value;
+            yp[0] -= x[0] * y[0] + x[3] * y[1];
+            yp[1] -= x[1] * y[0] + x[4] * y[1];
+            yp[2] -= x[2] * y[0] + x[5] * y[1];
+        }
+        const double y0 = y[0], y1 = y[1];
+        y[0] = d[0] * y0 + d[1] * y1;
+        y[1] = d[2] * y0 + d[3] * y1;
     }
+}
+
+/* The back substitution, down from the roots: x(n) -= X(n)·x(p). */
+static void substitute_back(rb_joint_tree *tree)
+{
     for (int n = 0; n < tree->node_count; ++n) {
         rb_tree_node *node = &tree->nodes[n];
         if (node->parent < 0) {
             continue;
         }
-        /* x(n) -= X·x(p) */
         const double *xp = tree->nodes[node->parent].value;
         const double *x = node->x;
         double *y = node->value;
@@ -594,26 +573,68 @@ static void solve(rb_joint_tree *tree)
     }
 }
 
-void rb_joint_tree_factor_velocities(rb_world *world)
+static rb_tree_node *parent_of(rb_joint_tree *tree, const rb_tree_node *node)
+{
+    return node->parent >= 0 ? &tree->nodes[node->parent] : NULL;
+}
+
+/* Solves H·x = b in place over node->value with the factors the nodes
+ * hold: L·D·Lᵀ from the leaves up, then down from the roots. */
+static void solve(rb_joint_tree *tree)
+{
+    for (int n = tree->node_count - 1; n >= 0; --n) {
+        rb_tree_node *node = &tree->nodes[n];
+        substitute_forward(node, parent_of(tree, node));
+    }
+    substitute_back(tree);
+}
+
+/* Factors every tree with the offsets its pins hold (node ra, rb) and
+ * solves H·x = b as solve() does, in one sweep from the leaves: a node's
+ * forward substitution needs only its own factors and its children's.
+ * The pivots must be started (start_pivot) and the right-hand side set.
+ * Returns false when a pivot is singular, which leaves the trees unusable
+ * until they are factored again. */
+static bool factor_and_solve(rb_joint_tree *tree)
+{
+    for (int n = tree->node_count - 1; n >= 0; --n) {
+        rb_tree_node *node = &tree->nodes[n];
+        if (!invert(node->pivot, node->dinv, node->dim)) {
+            return false;
+        }
+        rb_tree_node *parent = parent_of(tree, node);
+        if (parent != NULL) {
+            double s;
+            rb_vec2 r;
+            edge(node, parent, &s, &r);
+            if (node->body >= 0) {
+                eliminate_body(node, parent, s, r);
+            } else {
+                eliminate_pin(node, parent, s, r);
+            }
+        }
+        substitute_forward(node, parent);
+    }
+    substitute_back(tree);
+    return true;
+}
+
+void rb_joint_tree_start_substep(rb_world *world)
 {
     rb_joint_tree *tree = &world->joint_tree;
-    for (int n = 0; n < tree->node_count; ++n) {
-        rb_tree_node *node = &tree->nodes[n];
-        if (node->joint >= 0) { /* the substep's offsets, which the pin's frame holds */
-            const rb_joint_frame *f = &world->joints[node->joint].frame;
-            node->ra = f->ra;
-            node->rb = f->rb;
-        }
-    }
     tree->pose_factors = false;
-    tree->velocity_factors = tree->node_count > 0 && factor(world);
+    tree->velocity_factors = false;
     tree->solved = false;
 }
 
+/* The substep's first pass factors the trees at the substep's anchors,
+ * which the pins' frames hold (rb_joints_warm_start), as it solves; the
+ * further passes reuse the factors. */
 void rb_joint_tree_solve_velocities(rb_world *world)
 {
     rb_joint_tree *tree = &world->joint_tree;
-    if (!tree->velocity_factors || (tree->alone && tree->solved)) {
+    const bool factoring = !tree->solved;
+    if (tree->node_count == 0 || (!factoring && (tree->alone || !tree->velocity_factors))) {
         return;
     }
     tree->solved = true;
@@ -621,15 +642,29 @@ void rb_joint_tree_solve_velocities(rb_world *world)
         rb_tree_node *node = &tree->nodes[n];
         if (node->joint < 0) {
             memset(node->value, 0, sizeof node->value);
-            continue;
+        } else {
+            const rb_joint *joint = &world->joints[node->joint];
+            if (factoring) {
+                node->ra = joint->frame.ra;
+                node->rb = joint->frame.rb;
+            }
+            rb_vec2 cdot =
+                rb_point_velocity_error(world, joint, rb_joint_state_a(world, joint), rb_joint_state_b(world, joint));
+            node->value[0] = cdot.x;
+            node->value[1] = cdot.y;
         }
-        const rb_joint *joint = &world->joints[node->joint];
-        rb_vec2 cdot =
-            rb_point_velocity_error(world, joint, rb_joint_state_a(world, joint), rb_joint_state_b(world, joint));
-        node->value[0] = cdot.x;
-        node->value[1] = cdot.y;
+        if (factoring) {
+            start_pivot(node);
+        }
     }
-    solve(tree);
+    if (factoring) {
+        tree->velocity_factors = factor_and_solve(tree);
+        if (!tree->velocity_factors) {
+            return;
+        }
+    } else {
+        solve(tree);
+    }
     for (int n = 0; n < tree->node_count; ++n) {
         const rb_tree_node *node = &tree->nodes[n];
         if (node->body >= 0) {
@@ -681,23 +716,19 @@ void rb_joint_tree_solve_soft(rb_world *world)
     if (tree->node_count == 0) {
         return;
     }
-    if (!tree->pose_factors) {
-        for (int n = 0; n < tree->node_count; ++n) {
-            if (tree->nodes[n].joint >= 0) {
-                measure_offsets(world, &tree->nodes[n]);
-            }
-        }
-        tree->pose_factors = factor(world);
-        if (!tree->pose_factors) {
-            return;
-        }
-    }
+    const bool factoring = !tree->pose_factors;
     const rb_rigid_response *response = &world->joint_response;
     for (int n = 0; n < tree->node_count; ++n) {
         rb_tree_node *node = &tree->nodes[n];
+        if (factoring) {
+            start_pivot(node);
+        }
         if (node->joint < 0) {
             memset(node->value, 0, sizeof node->value);
             continue;
+        }
+        if (factoring) {
+            measure_offsets(world, node);
         }
         const pin_offsets p = offsets_of(world, node);
         rb_vec2 va = rb_add(p.a->linear_velocity, rb_cross_sv(p.a->angular_velocity, p.ra));
@@ -709,7 +740,14 @@ void rb_joint_tree_solve_soft(rb_world *world)
         node->value[0] = cdot.x;
         node->value[1] = cdot.y;
     }
-    solve(tree);
+    if (factoring) {
+        tree->pose_factors = factor_and_solve(tree);
+        if (!tree->pose_factors) {
+            return;
+        }
+    } else {
+        solve(tree);
+    }
     for (int n = 0; n < tree->node_count; ++n) {
         const rb_tree_node *node = &tree->nodes[n];
         if (node->body >= 0) {
@@ -735,7 +773,8 @@ bool rb_joint_tree_correct_positions(rb_world *world)
         return true;
     }
     double cap = world->settings.max_linear_correction;
-    double largest = 0.0;
+    double slop = world->settings.linear_slop;
+    double largest_squared = 0.0; /* m²: squares compared, a square root only to cap a gap */
     for (int n = 0; n < tree->node_count; ++n) {
         rb_tree_node *node = &tree->nodes[n];
         if (node->joint < 0) {
@@ -745,10 +784,10 @@ bool rb_joint_tree_correct_positions(rb_world *world)
         measure_offsets(world, node);
         const pin_offsets p = offsets_of(world, node);
         rb_vec2 gap = pin_gap(&p);
-        double error = rb_length(gap);
-        largest = rb_max(largest, error);
-        if (error > cap) {
-            gap = rb_scale(cap / error, gap);
+        double error_squared = rb_length_squared(gap);
+        largest_squared = rb_max(largest_squared, error_squared);
+        if (error_squared > cap * cap) {
+            gap = rb_scale(cap / sqrt(error_squared), gap);
         }
         node->value[0] = gap.x;
         node->value[1] = gap.y;
@@ -757,10 +796,15 @@ bool rb_joint_tree_correct_positions(rb_world *world)
      * out of date once the bodies move. */
     tree->velocity_factors = false;
     tree->pose_factors = false;
-    if (largest <= world->settings.linear_slop || !factor(world)) {
-        return largest <= world->settings.linear_slop;
+    if (largest_squared <= slop * slop) {
+        return true;
     }
-    solve(tree);
+    for (int n = 0; n < tree->node_count; ++n) {
+        start_pivot(&tree->nodes[n]);
+    }
+    if (!factor_and_solve(tree)) {
+        return false;
+    }
     /* The step is the linearised system's, exact for small gaps. Where a
      * gap is large or a light body spins, it can ask for turns far beyond
      * the linearisation's reach, and the next pass overshoots back: scaled
