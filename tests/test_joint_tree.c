@@ -25,7 +25,7 @@
 typedef struct tree_scene {
     rb_world *world;
     rb_body_id ground, bodies[BODIES];
-    rb_joint_id pins[BODIES + 2];
+    rb_joint_id pins[BODIES + 3]; /* with the one kept_trees_step_as_trees_found_anew_after_every_change makes */
     int pin_count;
 } tree_scene;
 
@@ -229,4 +229,138 @@ Test(joint_tree, one_position_pass_closes_small_gaps_to_second_order)
         cr_expect_lt(rb_length(gap), 2e-4, "pin %d: gap %.3g m after one pass (about 1e-2 before)", k, rb_length(gap));
     }
     destroy_world_and_expect_no_leak(scene.world);
+}
+
+/* ---- the trees kept from step to step ------------------------------------- */
+
+static void step(rb_world *world) { cr_assert_eq(rb_world_step(world, 1.0 / 60.0), RB_OK, "%s", rb_last_error()); }
+
+/* A step that finds nothing changed keeps the trees it found before: a
+ * body's mass altered in its node by hand stays altered (finding the trees
+ * again would read it from the body), until a joint changes. */
+Test(joint_tree, kept_from_step_to_step_while_nothing_changes)
+{
+    tree_scene scene = make_tree();
+    rb_world *world = scene.world;
+    step(world);
+    cr_assert(world->joint_tree.found && world->joint_tree.node_count == 16, "the trees are found");
+    rb_tree_node *node = &world->joint_tree.nodes[world->joint_tree.body_node[scene.bodies[5].index]];
+    const double mass = node->mass;
+    node->mass = 2.0 * mass;
+    step(world);
+    node = &world->joint_tree.nodes[world->joint_tree.body_node[scene.bodies[5].index]];
+    cr_expect_eq(node->mass, 2.0 * mass, "a step with nothing changed keeps the nodes");
+    cr_assert_eq(rb_revolute_joint_set_motor(world, scene.pins[1], true, 1.0, 10.0), RB_OK, "%s", rb_last_error());
+    step(world);
+    node = &world->joint_tree.nodes[world->joint_tree.body_node[scene.bodies[5].index]];
+    cr_expect_eq(node->mass, mass, "a motor turned on: the trees are found again");
+    destroy_world_and_expect_no_leak(world);
+}
+
+/* Two worlds run the same changes, step by step; the second finds its
+ * trees again before every step. Whatever the change (a motor, limits or
+ * a spring turned on and off, a body's mass, type or sleep, a pin
+ * destroyed or made, the settings), the first world's kept trees must
+ * give the second's state, bit for bit. */
+typedef enum tree_change {
+    MOTOR_ON,
+    MOTOR_OFF,
+    LIMITS_ON,
+    LIMITS_OFF,
+    SPRING_ON,
+    SPRING_OFF,
+    MASS_SET,
+    MASS_RESET,
+    MADE_STATIC,
+    MADE_DYNAMIC,
+    ASLEEP,
+    AWAKE,
+    TREES_OFF,
+    TREES_ON,
+    SOFT_STEP,
+    NGS,
+    PIN_DESTROYED,
+    PIN_MADE,
+    CHANGE_COUNT
+} tree_change;
+
+static void apply_change(tree_scene *scene, tree_change change)
+{
+    rb_world *world = scene->world;
+    rb_solver_settings settings = rb_world_solver_settings(world);
+    rb_status status = RB_OK;
+    switch (change) {
+    case MOTOR_ON:
+    case MOTOR_OFF:
+        status = rb_revolute_joint_set_motor(world, scene->pins[1], change == MOTOR_ON, 2.0, 50.0);
+        break;
+    case LIMITS_ON:
+    case LIMITS_OFF:
+        status =
+            rb_revolute_joint_set_limits(world, scene->pins[5], change == LIMITS_ON, -0.1, change == LIMITS_ON, 0.1);
+        break;
+    case SPRING_ON:
+    case SPRING_OFF:
+        status = rb_revolute_joint_set_spring(world, scene->pins[6], change == SPRING_ON, 3.0, 0.5);
+        break;
+    case MASS_SET: {
+        rb_mass_data mass = rb_body_mass_data(world, scene->bodies[1]);
+        mass.mass *= 0.01; /* the heaviest body no longer 1,000 times the lightest */
+        mass.rotational_inertia *= 0.01;
+        status = rb_body_set_mass_data(world, scene->bodies[1], &mass);
+        break;
+    }
+    case MASS_RESET:
+        status = rb_body_reset_mass_data(world, scene->bodies[1]);
+        break;
+    case MADE_STATIC:
+    case MADE_DYNAMIC:
+        status = rb_body_set_type(world, scene->bodies[7], change == MADE_STATIC ? RB_BODY_STATIC : RB_BODY_DYNAMIC);
+        break;
+    case ASLEEP:
+    case AWAKE:
+        status = rb_body_set_awake(world, scene->bodies[4], change == AWAKE);
+        break;
+    case TREES_OFF:
+    case TREES_ON:
+        settings.tree_pins = change == TREES_ON;
+        status = rb_world_set_solver_settings(world, &settings);
+        break;
+    case SOFT_STEP:
+    case NGS:
+        settings.type = change == SOFT_STEP ? RB_SOLVER_SOFT_STEP : RB_SOLVER_NGS;
+        status = rb_world_set_solver_settings(world, &settings);
+        break;
+    case PIN_DESTROYED:
+        status = rb_joint_destroy(world, scene->pins[5]);
+        break;
+    case PIN_MADE:
+        pin(scene, scene->bodies[3], scene->bodies[6], rb_v2(1.8, 0.2));
+        break;
+    case CHANGE_COUNT:
+        break;
+    }
+    cr_assert_eq(status, RB_OK, "change %d: %s", (int)change, rb_last_error());
+}
+
+Test(joint_tree, kept_trees_step_as_trees_found_anew_after_every_change)
+{
+    tree_scene kept = make_tree();
+    tree_scene anew = make_tree();
+    for (int change = -1; change < CHANGE_COUNT; ++change) { /* first a run with nothing changed */
+        if (change >= 0) {
+            apply_change(&kept, (tree_change)change);
+            apply_change(&anew, (tree_change)change);
+        }
+        for (int i = 0; i < 12; ++i) {
+            anew.world->joint_tree.found = false;
+            step(kept.world);
+            step(anew.world);
+            uint64_t a = rb_world_state_hash(kept.world), b = rb_world_state_hash(anew.world);
+            cr_assert_eq(a, b, "after change %d, step %d: kept trees %016llx, found anew %016llx", change, i,
+                         (unsigned long long)a, (unsigned long long)b);
+        }
+    }
+    rb_world_destroy(anew.world);
+    destroy_world_and_expect_no_leak(kept.world);
 }
