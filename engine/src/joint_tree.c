@@ -414,8 +414,8 @@ void rb_joint_tree_build(rb_world *world)
  * so H(pin, body) = -s·G and H(body, pin) = -s·Gᵀ. The products the
  * factorisation needs are then those of the point constraint's mass
  * matrix (joint_point.c): G·E·Gᵀ for a body's 3×3 block E, and Gᵀ·F·G for
- * a pin's 2×2 block F. Symmetric blocks are kept whole (row-major) for
- * plain indexing. */
+ * a pin's 2×2 block F. Symmetric blocks keep their upper triangle alone
+ * (invert), each product written out for its shape. */
 
 /* s and r of the edge between node `n` and its parent, r the pin's
  * offset (measured before factoring) on the edge's body. */
@@ -434,34 +434,38 @@ static void measure_offsets(const rb_world *world, rb_tree_node *pin)
     pin->rb = rb_rotate(world->states[joint->body_b].rotation, joint->frame.local_b);
 }
 
-/* The inverse of a symmetric 2×2 or 3×3 block; false when singular. */
+/* The inverse of a symmetric 2×2 or 3×3 block, each kept as its upper
+ * triangle row by row (a 2×2 as 11 12 22, a 3×3 as 11 12 13 22 23 33);
+ * false when singular. */
 static bool invert(const double *a, double *inverse, int n)
 {
     if (n == 2) {
-        double det = a[0] * a[3] - a[1] * a[1];
+        const double a11 = a[0], a12 = a[1], a22 = a[2];
+        double det = a11 * a22 - a12 * a12;
         if (!(det != 0.0 && isfinite(det))) {
             return false;
         }
         double s = 1.0 / det;
-        inverse[0] = s * a[3];
-        inverse[1] = inverse[2] = -s * a[1];
-        inverse[3] = s * a[0];
+        inverse[0] = s * a22;
+        inverse[1] = -s * a12;
+        inverse[2] = s * a11;
         return true;
     }
-    double c00 = a[4] * a[8] - a[5] * a[5];
-    double c01 = a[5] * a[2] - a[1] * a[8];
-    double c02 = a[1] * a[5] - a[4] * a[2];
-    double det = a[0] * c00 + a[1] * c01 + a[2] * c02;
+    const double a11 = a[0], a12 = a[1], a13 = a[2], a22 = a[3], a23 = a[4], a33 = a[5];
+    double c11 = a22 * a33 - a23 * a23; /* cofactors */
+    double c12 = a23 * a13 - a12 * a33;
+    double c13 = a12 * a23 - a22 * a13;
+    double det = a11 * c11 + a12 * c12 + a13 * c13;
     if (!(det != 0.0 && isfinite(det))) {
         return false;
     }
     double s = 1.0 / det;
-    inverse[0] = s * c00;
-    inverse[1] = inverse[3] = s * c01;
-    inverse[2] = inverse[6] = s * c02;
-    inverse[4] = s * (a[0] * a[8] - a[2] * a[2]);
-    inverse[5] = inverse[7] = s * (a[2] * a[1] - a[0] * a[5]);
-    inverse[8] = s * (a[0] * a[4] - a[1] * a[1]);
+    inverse[0] = s * c11;
+    inverse[1] = s * c12;
+    inverse[2] = s * c13;
+    inverse[3] = s * (a11 * a33 - a13 * a13);
+    inverse[4] = s * (a13 * a12 - a11 * a23);
+    inverse[5] = s * (a11 * a22 - a12 * a12);
     return true;
 }
 
@@ -470,39 +474,45 @@ static bool invert(const double *a, double *inverse, int n)
 static void eliminate_body(rb_tree_node *node, rb_tree_node *pin, double s, rb_vec2 r)
 {
     const double *e = node->dinv;
-    for (int i = 0; i < 3; ++i) {
-        node->x[2 * i] = -s * (e[3 * i] - r.y * e[3 * i + 2]);
-        node->x[2 * i + 1] = -s * (e[3 * i + 1] + r.x * e[3 * i + 2]);
-    }
-    double k11 = e[0] - 2.0 * r.y * e[2] + r.y * r.y * e[8];
-    double k12 = e[1] + r.x * e[2] - r.y * e[5] - r.x * r.y * e[8];
-    double k22 = e[4] + 2.0 * r.x * e[5] + r.x * r.x * e[8];
-    pin->pivot[0] -= k11;
-    pin->pivot[1] -= k12;
-    pin->pivot[2] -= k12;
-    pin->pivot[3] -= k22;
+    const double e11 = e[0], e12 = e[1], e13 = e[2], e22 = e[3], e23 = e[4], e33 = e[5];
+    double *x = node->x;
+    x[0] = -s * (e11 - r.y * e13);
+    x[1] = -s * (e12 + r.x * e13);
+    x[2] = -s * (e12 - r.y * e23);
+    x[3] = -s * (e22 + r.x * e23);
+    x[4] = -s * (e13 - r.y * e33);
+    x[5] = -s * (e23 + r.x * e33);
+    double k11 = e11 - 2.0 * r.y * e13 + r.y * r.y * e33;
+    double k12 = e12 + r.x * e13 - r.y * e23 - r.x * r.y * e33;
+    double k22 = e22 + 2.0 * r.x * e23 + r.x * r.x * e33;
+    double *p = pin->pivot;
+    p[0] -= k11;
+    p[1] -= k12;
+    p[2] -= k22;
 }
 
 /* Eliminates pin node `node` into its parent body: X = D⁻¹·H = -s·F·G
  * (2×3) and the body's pivot loses Gᵀ·F·G. */
 static void eliminate_pin(rb_tree_node *node, rb_tree_node *body, double s, rb_vec2 r)
 {
-    const double f11 = node->dinv[0], f12 = node->dinv[1], f22 = node->dinv[3];
+    const double f11 = node->dinv[0], f12 = node->dinv[1], f22 = node->dinv[2];
     const double f13 = -r.y * f11 + r.x * f12; /* (F·G) third column */
     const double f23 = -r.y * f12 + r.x * f22;
-    const double x[6] = {-s * f11, -s * f12, -s * f13, -s * f12, -s * f22, -s * f23};
-    memcpy(node->x, x, sizeof x);
+    double *x = node->x;
+    x[0] = -s * f11;
+    x[1] = -s * f12;
+    x[2] = -s * f13;
+    x[3] = -s * f12;
+    x[4] = -s * f22;
+    x[5] = -s * f23;
     const double g33 = -r.y * f13 + r.x * f23;
     double *p = body->pivot;
     p[0] -= f11;
     p[1] -= f12;
-    p[3] -= f12;
     p[2] -= f13;
-    p[6] -= f13;
-    p[4] -= f22;
-    p[5] -= f23;
-    p[7] -= f23;
-    p[8] -= g33;
+    p[3] -= f22;
+    p[4] -= f23;
+    p[5] -= g33;
 }
 
 /* Starts a node's pivot at its own block of H, before its children are
@@ -511,11 +521,11 @@ static void start_pivot(rb_tree_node *node)
 {
     double *p = node->pivot;
     if (node->body >= 0) {
-        p[0] = p[4] = node->mass;
-        p[8] = node->inertia;
-        p[1] = p[2] = p[3] = p[5] = p[6] = p[7] = 0.0;
+        p[0] = p[3] = node->mass;
+        p[5] = node->inertia;
+        p[1] = p[2] = p[4] = 0.0;
     } else {
-        p[0] = p[1] = p[2] = p[3] = 0.0;
+        p[0] = p[1] = p[2] = 0.0;
     }
 }
 
@@ -536,8 +546,8 @@ static void substitute_forward(rb_tree_node *node, rb_tree_node *parent)
         }
         const double y0 = y[0], y1 = y[1], y2 = y[2];
         y[0] = d[0] * y0 + d[1] * y1 + d[2] * y2;
-        y[1] = d[3] * y0 + d[4] * y1 + d[5] * y2;
-        y[2] = d[6] * y0 + d[7] * y1 + d[8] * y2;
+        y[1] = d[1] * y0 + d[3] * y1 + d[4] * y2;
+        y[2] = d[2] * y0 + d[4] * y1 + d[5] * y2;
     } else {
         if (parent != NULL) {
             double *yp = parent->value;
@@ -547,7 +557,7 @@ static void substitute_forward(rb_tree_node *node, rb_tree_node *parent)
         }
         const double y0 = y[0], y1 = y[1];
         y[0] = d[0] * y0 + d[1] * y1;
-        y[1] = d[2] * y0 + d[3] * y1;
+        y[1] = d[1] * y0 + d[2] * y1;
     }
 }
 

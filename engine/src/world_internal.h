@@ -355,8 +355,8 @@ typedef struct rb_tree_node {
     int parent;           /* node index, -1 for a root */
     int dim;              /* 3 for a body (vx, vy, ω), 2 for a pin (its impulse) */
     bool edge_on_b;       /* the edge to the parent joins a pin to its body B (else to its body A) */
-    double pivot[9];      /* D(node), dim × dim, summed from its children */
-    double dinv[9];       /* D(node)⁻¹ */
+    double pivot[6];      /* D(node), dim × dim, summed from its children: the upper triangle, row by row */
+    double dinv[6];       /* D(node)⁻¹, likewise */
     double x[6];          /* D(node)⁻¹·H(node, parent) */
     double value[3];      /* the right-hand side, then the solution */
     double mass, inertia; /* a body's, kg and kg·m²: its pivot before its children's */
