@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "allocator.h"
+#include "joint_chain.h"
 #include "joint_solver.h"
 #include "joint_tree.h"
 
@@ -182,8 +183,10 @@ static int add_node(rb_world *world, int body, int joint, int parent)
     }
     if (body >= 0) {
         tree->body_node[body] = index;
-        node->mass = 1.0 / world->bodies[body].inv_mass; /* finite: the body moves freely */
-        node->inertia = 1.0 / world->bodies[body].inv_inertia;
+        node->inv_mass = world->bodies[body].inv_mass;
+        node->inv_inertia = world->bodies[body].inv_inertia;
+        node->mass = 1.0 / node->inv_mass; /* finite: the body moves freely */
+        node->inertia = 1.0 / node->inv_inertia;
     }
     return index;
 }
@@ -301,6 +304,7 @@ static bool find_trees(rb_world *world)
             grow_tree(world, add_node(world, joint->body_a, -1, -1));
         }
     }
+    tree->chains = rb_joint_chain_all_chains(tree);
     tree->gauss_seidel_count = 0;
     for (int k = 0; k < world->active_joint_count; ++k) {
         const rb_joint *joint = &world->joints[world->active_joints[k]];
@@ -592,6 +596,10 @@ static rb_tree_node *parent_of(rb_joint_tree *tree, const rb_tree_node *node)
  * hold: L·D·Lᵀ from the leaves up, then down from the roots. */
 static void solve(rb_joint_tree *tree)
 {
+    if (tree->chains) {
+        rb_joint_chain_solve(tree);
+        return;
+    }
     for (int n = tree->node_count - 1; n >= 0; --n) {
         rb_tree_node *node = &tree->nodes[n];
         substitute_forward(node, parent_of(tree, node));
@@ -607,6 +615,9 @@ static void solve(rb_joint_tree *tree)
  * until they are factored again. */
 static bool factor_and_solve(rb_joint_tree *tree)
 {
+    if (tree->chains) {
+        return rb_joint_chain_factor_and_solve(tree);
+    }
     for (int n = tree->node_count - 1; n >= 0; --n) {
         rb_tree_node *node = &tree->nodes[n];
         if (!invert(node->pivot, node->dinv, node->dim)) {

@@ -350,17 +350,18 @@ typedef struct rb_joint {
 
 /* A node of the pins' trees (joint_tree.h): a body or a pin. */
 typedef struct rb_tree_node {
-    int body;             /* body slot, or -1 for a pin */
-    int joint;            /* joint slot, or -1 for a body */
-    int parent;           /* node index, -1 for a root */
-    int dim;              /* 3 for a body (vx, vy, ω), 2 for a pin (its impulse) */
-    bool edge_on_b;       /* the edge to the parent joins a pin to its body B (else to its body A) */
-    double pivot[6];      /* D(node), dim × dim, summed from its children: the upper triangle, row by row */
-    double dinv[6];       /* D(node)⁻¹, likewise */
-    double x[6];          /* D(node)⁻¹·H(node, parent) */
-    double value[3];      /* the right-hand side, then the solution */
-    double mass, inertia; /* a body's, kg and kg·m²: its pivot before its children's */
-    rb_vec2 ra, rb;       /* a pin's anchor offsets (m) at the poses the nodes were factored at */
+    int body;                     /* body slot, or -1 for a pin */
+    int joint;                    /* joint slot, or -1 for a body */
+    int parent;                   /* node index, -1 for a root */
+    int dim;                      /* 3 for a body (vx, vy, ω), 2 for a pin (its impulse) */
+    bool edge_on_b;               /* the edge to the parent joins a pin to its body B (else to its body A) */
+    double pivot[6];              /* D(node), dim × dim, summed from its children: the upper triangle, row by row */
+    double dinv[6];               /* D(node)⁻¹, likewise */
+    double x[6];                  /* D(node)⁻¹·H(node, parent) */
+    double value[3];              /* the right-hand side, then the solution */
+    double mass, inertia;         /* a body's, kg and kg·m²: its pivot before its children's */
+    double inv_mass, inv_inertia; /* a body's, 1/kg and 1/(kg·m²) */
+    rb_vec2 ra, rb;               /* a pin's anchor offsets (m) at the poses the nodes were factored at */
 } rb_tree_node;
 
 /* What the trees were found from, one per active joint (joint_tree.c,
@@ -384,6 +385,7 @@ typedef struct rb_joint_tree {
     bool pose_factors;     /* the nodes hold factors at the bodies' current poses */
     bool alone;            /* this step, no row outside the trees acts on a body in them */
     bool solved;           /* this substep's velocity pass has solved the trees */
+    bool chains;           /* every tree is a chain from a pin to a fixed body (joint_chain.h) */
     rb_tree_node *nodes;   /* breadth first from each root: a parent before its children */
     int node_count, node_capacity;
     int *body_node; /* per body slot: its node, or -1 */
