@@ -58,10 +58,19 @@ static pin_side side(const rb_tree_node *pin, const rb_tree_node *body, const rb
     return (pin_side){.body = body, .s = edge->edge_on_b ? 1.0 : -1.0, .r = edge->edge_on_b ? pin->rb : pin->ra};
 }
 
-/* s·s'·G(a)·E·G(b)ᵀ on a body, row-major; a = b gives a diagonal block. */
-static void body_block(pin_side a, pin_side b, double k[4])
+/* Adds G(r)·E·G(r)ᵀ, a pin's own block on a body (s² = 1), to k: 11 12 22. */
+static void add_own_block(const rb_tree_node *body, rb_vec2 r, double k[3])
 {
-    const double m = a.body->inv_mass, i = a.body->inv_inertia, ss = a.s * b.s;
+    const double m = body->inv_mass, i = body->inv_inertia;
+    k[0] += m + i * r.y * r.y;
+    k[1] -= i * r.x * r.y;
+    k[2] += m + i * r.x * r.x;
+}
+
+/* s·s'·G(a)·E·G(b)ᵀ on the body two pins share, row-major. */
+static void shared_block(const rb_tree_node *body, pin_side a, pin_side b, double k[4])
+{
+    const double m = body->inv_mass, i = body->inv_inertia, ss = a.s * b.s;
     k[0] = ss * (m + i * a.r.y * b.r.y);
     k[1] = ss * (-i * a.r.y * b.r.x);
     k[2] = ss * (-i * a.r.x * b.r.y);
@@ -90,29 +99,25 @@ static bool sweep_down(rb_joint_tree *tree, bool factoring)
         }
         const rb_tree_node *below = &tree->nodes[n + 1];
         if (factoring) {
-            double d[4];
-            body_block(side(pin, below, below), side(pin, below, below), d);
+            double d[3] = {0.0, 0.0, 0.0};
+            add_own_block(below, side(pin, below, below).r, d);
             if (pin->parent >= 0) {
-                const rb_tree_node *up = &tree->nodes[n - 1];
-                double u[4];
-                body_block(side(pin, up, pin), side(pin, up, pin), u);
-                d[0] += u[0];
-                d[1] += u[1];
-                d[3] += u[3];
+                add_own_block(&tree->nodes[n - 1], side(pin, &tree->nodes[n - 1], pin).r, d);
             }
-            const double d11 = d[0] - schur[0], d12 = d[1] - schur[1], d22 = d[3] - schur[2];
+            const double d11 = d[0] - schur[0], d12 = d[1] - schur[1], d22 = d[2] - schur[2];
             const double det = d11 * d22 - d12 * d12;
             if (!(det != 0.0 && isfinite(det))) {
                 return false;
             }
+            const double inverse_det = 1.0 / det;
             double *f = pin->dinv;
-            f[0] = d22 / det;
-            f[1] = -d12 / det;
-            f[2] = d11 / det;
+            f[0] = inverse_det * d22;
+            f[1] = -inverse_det * d12;
+            f[2] = inverse_det * d11;
             if (has_next(tree, n)) {
                 const rb_tree_node *next = &tree->nodes[n + 2];
                 double c[4]; /* K(k, k+1) */
-                body_block(side(pin, below, below), side(next, below, next), c);
+                shared_block(below, side(pin, below, below), side(next, below, next), c);
                 double *w = pin->x;
                 w[0] = f[0] * c[0] + f[1] * c[2];
                 w[1] = f[0] * c[1] + f[1] * c[3];

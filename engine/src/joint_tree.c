@@ -520,9 +520,13 @@ static void eliminate_pin(rb_tree_node *node, rb_tree_node *body, double s, rb_v
 }
 
 /* Starts a node's pivot at its own block of H, before its children are
- * eliminated into it: a body's mass and inertia, a pin's zero. */
-static void start_pivot(rb_tree_node *node)
+ * eliminated into it: a body's mass and inertia, a pin's zero. Chains
+ * keep no such pivots (joint_chain.c). */
+static void start_pivot(const rb_joint_tree *tree, rb_tree_node *node)
 {
+    if (tree->chains) {
+        return;
+    }
     double *p = node->pivot;
     if (node->body >= 0) {
         p[0] = p[3] = node->mass;
@@ -675,7 +679,7 @@ void rb_joint_tree_solve_velocities(rb_world *world)
             node->value[1] = cdot.y;
         }
         if (factoring) {
-            start_pivot(node);
+            start_pivot(tree, node);
         }
     }
     if (factoring) {
@@ -742,7 +746,7 @@ void rb_joint_tree_solve_soft(rb_world *world)
     for (int n = 0; n < tree->node_count; ++n) {
         rb_tree_node *node = &tree->nodes[n];
         if (factoring) {
-            start_pivot(node);
+            start_pivot(tree, node);
         }
         if (node->joint < 0) {
             memset(node->value, 0, sizeof node->value);
@@ -821,7 +825,7 @@ bool rb_joint_tree_correct_positions(rb_world *world)
         return true;
     }
     for (int n = 0; n < tree->node_count; ++n) {
-        start_pivot(&tree->nodes[n]);
+        start_pivot(tree, &tree->nodes[n]);
     }
     if (!factor_and_solve(tree)) {
         return false;
