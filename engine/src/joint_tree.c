@@ -803,7 +803,6 @@ bool rb_joint_tree_correct_positions(rb_world *world)
     for (int n = 0; n < tree->node_count; ++n) {
         rb_tree_node *node = &tree->nodes[n];
         if (node->joint < 0) {
-            memset(node->value, 0, sizeof node->value);
             continue;
         }
         measure_offsets(world, node);
@@ -825,7 +824,11 @@ bool rb_joint_tree_correct_positions(rb_world *world)
         return true;
     }
     for (int n = 0; n < tree->node_count; ++n) {
-        start_pivot(tree, &tree->nodes[n]);
+        rb_tree_node *node = &tree->nodes[n];
+        start_pivot(tree, node);
+        if (node->joint < 0) {
+            memset(node->value, 0, sizeof node->value);
+        }
     }
     if (!factor_and_solve(tree)) {
         return false;
