@@ -25,7 +25,7 @@
 typedef struct tree_scene {
     rb_world *world;
     rb_body_id ground, bodies[BODIES];
-    rb_joint_id pins[BODIES + 2];
+    rb_joint_id pins[BODIES + 3]; /* with the one kept_trees_step_as_trees_found_anew_after_every_change makes */
     int pin_count;
 } tree_scene;
 
@@ -101,7 +101,7 @@ static void prepare(rb_world *world, double h)
     rb_joints_prepare(world);
     rb_joint_tree_build(world);
     rb_joints_warm_start(world, h); /* the frames; the impulses are still 0 */
-    rb_joint_tree_factor_velocities(world);
+    rb_joint_tree_start_substep(world);
 }
 
 static rb_joint *joint_of(rb_world *world, rb_joint_id id) { return &world->joints[id.index]; }
@@ -119,52 +119,144 @@ Test(joint_tree, the_tree_takes_every_pin_but_those_closing_loops)
     destroy_world_and_expect_no_leak(scene.world);
 }
 
+/* The tree's bodies and pins' impulses before a pass. */
+typedef struct before_pass {
+    rb_body_state states[BODIES];
+    rb_vec2 impulses[BODIES + 3];
+} before_pass;
+
+static before_pass record(rb_world *world, const tree_scene *scene)
+{
+    before_pass before;
+    for (int i = 0; i < BODIES; ++i) {
+        before.states[i] = world->states[scene->bodies[i].index];
+    }
+    for (int k = 0; k < scene->pin_count; ++k) {
+        before.impulses[k] = joint_of(world, scene->pins[k])->as.revolute.point_impulse;
+    }
+    return before;
+}
+
+/* After a velocity pass over the first `tree_pins` pins: J·v' = drift for
+ * every one, and M·Δv = Jᵀ·λ for every body (momentum and angular
+ * momentum about the centre change by the pins' impulses at their
+ * anchors). */
+static void expect_pins_met(rb_world *world, const tree_scene *scene, int tree_pins, const before_pass *before)
+{
+    for (int k = 0; k < tree_pins; ++k) {
+        rb_joint *joint = joint_of(world, scene->pins[k]);
+        rb_vec2 cdot =
+            rb_joint_relative_velocity(joint, rb_joint_state_a(world, joint), rb_joint_state_b(world, joint));
+        expect_vec_near(cdot, joint->frame.point_drift, 1e-10, "a pin's anchor velocity after the pass");
+    }
+    for (int i = 0; i < BODIES; ++i) {
+        const rb_body *body = &world->bodies[scene->bodies[i].index];
+        const rb_body_state *after = &world->states[scene->bodies[i].index];
+        rb_vec2 force = rb_v2(0.0, 0.0);
+        double torque = 0.0;
+        for (int k = 0; k < tree_pins; ++k) {
+            rb_joint *joint = joint_of(world, scene->pins[k]);
+            rb_vec2 impulse = rb_sub(joint->as.revolute.point_impulse, before->impulses[k]);
+            if (joint->body_b == scene->bodies[i].index) {
+                force = rb_add(force, impulse);
+                torque += rb_cross(joint->frame.rb, impulse);
+            } else if (joint->body_a == scene->bodies[i].index) {
+                force = rb_sub(force, impulse);
+                torque -= rb_cross(joint->frame.ra, impulse);
+            }
+        }
+        rb_vec2 momentum =
+            rb_scale(1.0 / body->inv_mass, rb_sub(after->linear_velocity, before->states[i].linear_velocity));
+        double angular = (after->angular_velocity - before->states[i].angular_velocity) / body->inv_inertia;
+        expect_vec_near(momentum, force, 1e-9 * (1.0 + rb_length(force)), "a body's momentum change");
+        expect_near(angular, torque, 1e-9 * (1.0 + fabs(torque)), "a body's angular momentum change");
+    }
+}
+
 Test(joint_tree, one_velocity_pass_meets_every_pin_with_the_pins_impulses)
 {
     tree_scene scene = make_tree();
     rb_world *world = scene.world;
     prepare(world, 1.0 / 360.0);
-    rb_body_state before[BODIES];
-    rb_vec2 impulse_before[BODIES + 2];
-    for (int i = 0; i < BODIES; ++i) {
-        before[i] = world->states[scene.bodies[i].index];
-    }
-    for (int k = 0; k < scene.pin_count; ++k) {
-        impulse_before[k] = joint_of(world, scene.pins[k])->as.revolute.point_impulse;
-    }
+    cr_assert_not(world->joint_tree.chains, "the tree branches");
+    const before_pass before = record(world, &scene);
     rb_joint_tree_solve_velocities(world);
-
-    /* J·v' = drift for every pin of the tree. */
-    for (int k = 0; k < scene.pin_count - 2; ++k) {
-        rb_joint *joint = joint_of(world, scene.pins[k]);
-        rb_vec2 cdot =
-            rb_joint_relative_velocity(joint, rb_joint_state_a(world, joint), rb_joint_state_b(world, joint));
-        expect_vec_near(cdot, joint->frame.point_drift, 1e-10, "a pin's anchor velocity after the pass");
-    }
-    /* M·Δv = Jᵀ·λ for every body: momentum and angular momentum about the
-     * centre change by the pins' impulses at their anchors. */
-    for (int i = 0; i < BODIES; ++i) {
-        const rb_body *body = &world->bodies[scene.bodies[i].index];
-        const rb_body_state *after = &world->states[scene.bodies[i].index];
-        rb_vec2 force = rb_v2(0.0, 0.0);
-        double torque = 0.0;
-        for (int k = 0; k < scene.pin_count - 2; ++k) {
-            rb_joint *joint = joint_of(world, scene.pins[k]);
-            rb_vec2 impulse = rb_sub(joint->as.revolute.point_impulse, impulse_before[k]);
-            if (joint->body_b == scene.bodies[i].index) {
-                force = rb_add(force, impulse);
-                torque += rb_cross(joint->frame.rb, impulse);
-            } else if (joint->body_a == scene.bodies[i].index) {
-                force = rb_sub(force, impulse);
-                torque -= rb_cross(joint->frame.ra, impulse);
-            }
-        }
-        rb_vec2 momentum = rb_scale(1.0 / body->inv_mass, rb_sub(after->linear_velocity, before[i].linear_velocity));
-        double angular = (after->angular_velocity - before[i].angular_velocity) / body->inv_inertia;
-        expect_vec_near(momentum, force, 1e-9 * (1.0 + rb_length(force)), "a body's momentum change");
-        expect_near(angular, torque, 1e-9 * (1.0 + fabs(torque)), "a body's angular momentum change");
-    }
+    expect_pins_met(world, &scene, scene.pin_count - 2, &before);
     destroy_world_and_expect_no_leak(scene.world);
+}
+
+/* Body 0 pinned to the ground, each further body to the one before: a
+ * chain of unequal links (1 to 1,000), the pins' bodies A alternately the
+ * upper and the lower link. */
+static tree_scene make_chain(void)
+{
+    tree_scene scene = {.world = make_world(rb_v2(0.0, -9.8))};
+    rb_body_def ground = rb_default_body_def();
+    cr_assert_eq(rb_body_create(scene.world, &ground, &scene.ground), RB_OK);
+    const double densities[BODIES] = {1.0, 1000.0, 3.0, 10.0, 1.0, 300.0, 2.0, 50.0};
+    for (int i = 0; i < BODIES; ++i) {
+        scene.bodies[i] = add_link(scene.world, rb_v2(0.5 * i, 0.1 * (i % 2)), 0.3 * i, densities[i]);
+    }
+    pin(&scene, scene.ground, scene.bodies[0], rb_v2(-0.2, 0.0));
+    for (int i = 1; i < BODIES; ++i) {
+        rb_vec2 anchor = rb_v2(0.5 * i - 0.25, 0.05);
+        if (i % 2 == 0) {
+            pin(&scene, scene.bodies[i - 1], scene.bodies[i], anchor);
+        } else {
+            pin(&scene, scene.bodies[i], scene.bodies[i - 1], anchor);
+        }
+    }
+    for (int i = 0; i < BODIES; ++i) {
+        cr_assert_eq(rb_body_set_linear_velocity(scene.world, scene.bodies[i], rb_v2(sin(1.7 * i), cos(2.3 * i))),
+                     RB_OK);
+        cr_assert_eq(rb_body_set_angular_velocity(scene.world, scene.bodies[i], 2.0 * sin(0.9 * i + 0.4)), RB_OK);
+    }
+    return scene;
+}
+
+/* A chain's pins solved through themselves alone (joint_chain.c) meet
+ * the same equations, and give the velocities that the elimination of
+ * bodies and pins together gives the same chain. */
+Test(joint_tree, a_chain_solved_through_its_pins_meets_every_pin)
+{
+    tree_scene chain = make_chain();
+    prepare(chain.world, 1.0 / 360.0);
+    cr_assert(chain.world->joint_tree.chains, "a chain from the ground");
+    const before_pass before = record(chain.world, &chain);
+    rb_joint_tree_solve_velocities(chain.world);
+    expect_pins_met(chain.world, &chain, chain.pin_count, &before);
+
+    tree_scene tree = make_chain();
+    prepare(tree.world, 1.0 / 360.0);
+    tree.world->joint_tree.chains = false; /* bodies and pins eliminated together (joint_tree.c) */
+    rb_joint_tree_solve_velocities(tree.world);
+    for (int i = 0; i < BODIES; ++i) {
+        const rb_body_state *a = &chain.world->states[chain.bodies[i].index];
+        const rb_body_state *b = &tree.world->states[tree.bodies[i].index];
+        double speed = rb_length(b->linear_velocity) + fabs(b->angular_velocity);
+        expect_vec_near(a->linear_velocity, b->linear_velocity, 1e-12 * (1.0 + speed), "a body's velocity");
+        expect_near(a->angular_velocity, b->angular_velocity, 1e-12 * (1.0 + speed), "a body's angular velocity");
+    }
+    rb_world_destroy(tree.world);
+
+    /* A position pass on gaps of about a centimetre closes them to second
+     * order, as the tree's does. */
+    rb_world *world = chain.world;
+    for (int i = 0; i < BODIES; ++i) {
+        rb_body_state *state = &world->states[chain.bodies[i].index];
+        state->center = rb_add(state->center, rb_v2(1e-2 * sin(3.1 * i), 1e-2 * cos(1.3 * i)));
+        rb_body_state_turn(state, 1e-2 * sin(0.7 * i));
+    }
+    cr_expect_not(rb_joint_tree_correct_positions(world), "gaps of a centimetre are beyond the slop");
+    for (int k = 0; k < chain.pin_count; ++k) {
+        rb_joint *joint = joint_of(world, chain.pins[k]);
+        const rb_body_state *a = rb_joint_state_a(world, joint);
+        const rb_body_state *b = rb_joint_state_b(world, joint);
+        rb_vec2 gap = rb_sub(rb_add(b->center, rb_rotate(b->rotation, joint->frame.local_b)),
+                             rb_add(a->center, rb_rotate(a->rotation, joint->frame.local_a)));
+        cr_expect_lt(rb_length(gap), 2e-4, "pin %d: gap %.3g m after one pass (about 1e-2 before)", k, rb_length(gap));
+    }
+    destroy_world_and_expect_no_leak(world);
 }
 
 /* With no other row on its bodies, one pass solves the tree and a second
@@ -229,4 +321,138 @@ Test(joint_tree, one_position_pass_closes_small_gaps_to_second_order)
         cr_expect_lt(rb_length(gap), 2e-4, "pin %d: gap %.3g m after one pass (about 1e-2 before)", k, rb_length(gap));
     }
     destroy_world_and_expect_no_leak(scene.world);
+}
+
+/* ---- the trees kept from step to step ------------------------------------- */
+
+static void step(rb_world *world) { cr_assert_eq(rb_world_step(world, 1.0 / 60.0), RB_OK, "%s", rb_last_error()); }
+
+/* A step that finds nothing changed keeps the trees it found before: a
+ * body's mass altered in its node by hand stays altered (finding the trees
+ * again would read it from the body), until a joint changes. */
+Test(joint_tree, kept_from_step_to_step_while_nothing_changes)
+{
+    tree_scene scene = make_tree();
+    rb_world *world = scene.world;
+    step(world);
+    cr_assert(world->joint_tree.found && world->joint_tree.node_count == 16, "the trees are found");
+    rb_tree_node *node = &world->joint_tree.nodes[world->joint_tree.body_node[scene.bodies[5].index]];
+    const double mass = node->mass;
+    node->mass = 2.0 * mass;
+    step(world);
+    node = &world->joint_tree.nodes[world->joint_tree.body_node[scene.bodies[5].index]];
+    cr_expect_eq(node->mass, 2.0 * mass, "a step with nothing changed keeps the nodes");
+    cr_assert_eq(rb_revolute_joint_set_motor(world, scene.pins[1], true, 1.0, 10.0), RB_OK, "%s", rb_last_error());
+    step(world);
+    node = &world->joint_tree.nodes[world->joint_tree.body_node[scene.bodies[5].index]];
+    cr_expect_eq(node->mass, mass, "a motor turned on: the trees are found again");
+    destroy_world_and_expect_no_leak(world);
+}
+
+/* Two worlds run the same changes, step by step; the second finds its
+ * trees again before every step. Whatever the change (a motor, limits or
+ * a spring turned on and off, a body's mass, type or sleep, a pin
+ * destroyed or made, the settings), the first world's kept trees must
+ * give the second's state, bit for bit. */
+typedef enum tree_change {
+    MOTOR_ON,
+    MOTOR_OFF,
+    LIMITS_ON,
+    LIMITS_OFF,
+    SPRING_ON,
+    SPRING_OFF,
+    MASS_SET,
+    MASS_RESET,
+    MADE_STATIC,
+    MADE_DYNAMIC,
+    ASLEEP,
+    AWAKE,
+    TREES_OFF,
+    TREES_ON,
+    SOFT_STEP,
+    NGS,
+    PIN_DESTROYED,
+    PIN_MADE,
+    CHANGE_COUNT
+} tree_change;
+
+static void apply_change(tree_scene *scene, tree_change change)
+{
+    rb_world *world = scene->world;
+    rb_solver_settings settings = rb_world_solver_settings(world);
+    rb_status status = RB_OK;
+    switch (change) {
+    case MOTOR_ON:
+    case MOTOR_OFF:
+        status = rb_revolute_joint_set_motor(world, scene->pins[1], change == MOTOR_ON, 2.0, 50.0);
+        break;
+    case LIMITS_ON:
+    case LIMITS_OFF:
+        status =
+            rb_revolute_joint_set_limits(world, scene->pins[5], change == LIMITS_ON, -0.1, change == LIMITS_ON, 0.1);
+        break;
+    case SPRING_ON:
+    case SPRING_OFF:
+        status = rb_revolute_joint_set_spring(world, scene->pins[6], change == SPRING_ON, 3.0, 0.5);
+        break;
+    case MASS_SET: {
+        rb_mass_data mass = rb_body_mass_data(world, scene->bodies[1]);
+        mass.mass *= 0.01; /* the heaviest body no longer 1,000 times the lightest */
+        mass.rotational_inertia *= 0.01;
+        status = rb_body_set_mass_data(world, scene->bodies[1], &mass);
+        break;
+    }
+    case MASS_RESET:
+        status = rb_body_reset_mass_data(world, scene->bodies[1]);
+        break;
+    case MADE_STATIC:
+    case MADE_DYNAMIC:
+        status = rb_body_set_type(world, scene->bodies[7], change == MADE_STATIC ? RB_BODY_STATIC : RB_BODY_DYNAMIC);
+        break;
+    case ASLEEP:
+    case AWAKE:
+        status = rb_body_set_awake(world, scene->bodies[4], change == AWAKE);
+        break;
+    case TREES_OFF:
+    case TREES_ON:
+        settings.tree_pins = change == TREES_ON;
+        status = rb_world_set_solver_settings(world, &settings);
+        break;
+    case SOFT_STEP:
+    case NGS:
+        settings.type = change == SOFT_STEP ? RB_SOLVER_SOFT_STEP : RB_SOLVER_NGS;
+        status = rb_world_set_solver_settings(world, &settings);
+        break;
+    case PIN_DESTROYED:
+        status = rb_joint_destroy(world, scene->pins[5]);
+        break;
+    case PIN_MADE:
+        pin(scene, scene->bodies[3], scene->bodies[6], rb_v2(1.8, 0.2));
+        break;
+    case CHANGE_COUNT:
+        break;
+    }
+    cr_assert_eq(status, RB_OK, "change %d: %s", (int)change, rb_last_error());
+}
+
+Test(joint_tree, kept_trees_step_as_trees_found_anew_after_every_change)
+{
+    tree_scene kept = make_tree();
+    tree_scene anew = make_tree();
+    for (int change = -1; change < CHANGE_COUNT; ++change) { /* first a run with nothing changed */
+        if (change >= 0) {
+            apply_change(&kept, (tree_change)change);
+            apply_change(&anew, (tree_change)change);
+        }
+        for (int i = 0; i < 12; ++i) {
+            anew.world->joint_tree.found = false;
+            step(kept.world);
+            step(anew.world);
+            uint64_t a = rb_world_state_hash(kept.world), b = rb_world_state_hash(anew.world);
+            cr_assert_eq(a, b, "after change %d, step %d: kept trees %016llx, found anew %016llx", change, i,
+                         (unsigned long long)a, (unsigned long long)b);
+        }
+    }
+    rb_world_destroy(anew.world);
+    destroy_world_and_expect_no_leak(kept.world);
 }

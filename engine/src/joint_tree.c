@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "allocator.h"
+#include "joint_chain.h"
 #include "joint_solver.h"
 #include "joint_tree.h"
 
@@ -182,8 +183,10 @@ static int add_node(rb_world *world, int body, int joint, int parent)
     }
     if (body >= 0) {
         tree->body_node[body] = index;
-        node->mass = 1.0 / world->bodies[body].inv_mass; /* finite: the body moves freely */
-        node->inertia = 1.0 / world->bodies[body].inv_inertia;
+        node->inv_mass = world->bodies[body].inv_mass;
+        node->inv_inertia = world->bodies[body].inv_inertia;
+        node->mass = 1.0 / node->inv_mass; /* finite: the body moves freely */
+        node->inertia = 1.0 / node->inv_inertia;
     }
     return index;
 }
@@ -255,21 +258,21 @@ static bool trees_alone(const rb_world *world)
     return true;
 }
 
-void rb_joint_tree_build(rb_world *world)
+/* Finds the trees (sets in_tree and the nodes); returns false when out
+ * of memory, which leaves every pin to Gauss-Seidel. */
+static bool find_trees(rb_world *world)
 {
     rb_joint_tree *tree = &world->joint_tree;
     tree->node_count = 0;
-    tree->pose_factors = false;
-    tree->alone = false;
     if (!clear_and_find_uneven(world) || !tree->enabled) {
-        return;
+        return true;
     }
     int slots = world->body_slots;
     if (rb_grow_array((void **)&tree->body_node, &tree->body_node_capacity, slots, sizeof(int)) != 0 ||
         rb_grow_array((void **)&tree->union_parent, &tree->union_capacity, slots, sizeof(int)) != 0 ||
         rb_grow_array((void **)&tree->grounded, &tree->grounded_capacity, slots, 1) != 0 ||
         rb_grow_array((void **)&tree->mass_range, &tree->mass_range_capacity, 2 * slots, sizeof(double)) != 0) {
-        return; /* out of memory: every pin stays with Gauss-Seidel */
+        return false;
     }
     int pins = choose_pins(world);
     /* A forest of `pins` edges has at most 2·pins bodies. */
@@ -279,7 +282,7 @@ void rb_joint_tree_build(rb_world *world)
         for (int k = 0; k < world->active_joint_count; ++k) {
             world->joints[world->active_joints[k]].in_tree = false;
         }
-        return;
+        return pins == 0;
     }
     /* Trees with a pin to a fixed body are rooted at that pin, so that no
      * pin is a leaf (its pivot would be zero); the others at a body. */
@@ -301,6 +304,7 @@ void rb_joint_tree_build(rb_world *world)
             grow_tree(world, add_node(world, joint->body_a, -1, -1));
         }
     }
+    tree->chains = rb_joint_chain_all_chains(tree);
     tree->gauss_seidel_count = 0;
     for (int k = 0; k < world->active_joint_count; ++k) {
         const rb_joint *joint = &world->joints[world->active_joints[k]];
@@ -308,7 +312,99 @@ void rb_joint_tree_build(rb_world *world)
             tree->gauss_seidel_joints[tree->gauss_seidel_count++] = world->active_joints[k];
         }
     }
-    tree->alone = trees_alone(world);
+    return true;
+}
+
+/* ---- kept from step to step ---------------------------------------------- */
+
+/* What finding the trees reads of an active joint. */
+static rb_tree_key key_of(const rb_world *world, int slot)
+{
+    const rb_joint *joint = &world->joints[slot];
+    const rb_joint_frame *f = &joint->frame;
+    bool revolute = joint->type == RB_JOINT_REVOLUTE;
+    return (rb_tree_key){
+        .joint = slot,
+        .generation = joint->generation,
+        .body_a = joint->body_a,
+        .body_b = joint->body_b,
+        .type = joint->type,
+        .in_block = joint->in_block,
+        .plain_pin = joint->plain_pin,
+        .enable_lower = revolute && joint->as.revolute.enable_lower,
+        .enable_upper = revolute && joint->as.revolute.enable_upper,
+        .inv_mass_a = f->inv_mass_a,
+        .inv_inertia_a = f->inv_inertia_a,
+        .inv_mass_b = f->inv_mass_b,
+        .inv_inertia_b = f->inv_inertia_b,
+    };
+}
+
+static bool same_key(const rb_tree_key *a, const rb_tree_key *b)
+{
+    return a->joint == b->joint && a->generation == b->generation && a->body_a == b->body_a && a->body_b == b->body_b &&
+           a->type == b->type && a->in_block == b->in_block && a->plain_pin == b->plain_pin &&
+           a->enable_lower == b->enable_lower && a->enable_upper == b->enable_upper && a->inv_mass_a == b->inv_mass_a &&
+           a->inv_inertia_a == b->inv_inertia_a && a->inv_mass_b == b->inv_mass_b &&
+           a->inv_inertia_b == b->inv_inertia_b;
+}
+
+/* Whether the trees found last would be found again: the same active
+ * joints in the same slots, order and generations, with the same bodies,
+ * types, limits, motors and springs, and bodies of the same masses that
+ * move or not as before (a body asleep, static or of infinite mass does
+ * not move: the frames say so), under the same solver settings. The
+ * search reads nothing else: the bodies' lists of joints change only when
+ * a joint is made or destroyed. One comparison of a few fields a joint,
+ * where finding the trees again took some 500 instructions a joint. */
+static bool found_from_the_same(const rb_world *world)
+{
+    const rb_joint_tree *tree = &world->joint_tree;
+    if (!tree->found || tree->key_count != world->active_joint_count || tree->found_body_slots != world->body_slots ||
+        tree->found_ratio != uneven_ratio(world) || tree->found_enabled != tree->enabled) {
+        return false;
+    }
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        const rb_tree_key key = key_of(world, world->active_joints[k]);
+        if (!same_key(&key, &tree->keys[k])) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/* Records what the trees were found from; on running out of memory
+ * nothing, and they are found again next step. */
+static void record_keys(rb_world *world)
+{
+    rb_joint_tree *tree = &world->joint_tree;
+    tree->found =
+        rb_grow_array((void **)&tree->keys, &tree->key_capacity, world->active_joint_count, sizeof(rb_tree_key)) == 0;
+    if (!tree->found) {
+        return;
+    }
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        tree->keys[k] = key_of(world, world->active_joints[k]);
+    }
+    tree->key_count = world->active_joint_count;
+    tree->found_body_slots = world->body_slots;
+    tree->found_ratio = uneven_ratio(world);
+    tree->found_enabled = tree->enabled;
+}
+
+void rb_joint_tree_build(rb_world *world)
+{
+    rb_joint_tree *tree = &world->joint_tree;
+    tree->pose_factors = false;
+    if (!found_from_the_same(world)) {
+        if (find_trees(world)) {
+            record_keys(world);
+        } else {
+            tree->found = false;
+        }
+    }
+    /* Contacts and cables come and go from step to step. */
+    tree->alone = tree->node_count > 0 && trees_alone(world);
 }
 
 /* ---- factor and solve ----------------------------------------------------- */
@@ -322,8 +418,8 @@ void rb_joint_tree_build(rb_world *world)
  * so H(pin, body) = -s·G and H(body, pin) = -s·Gᵀ. The products the
  * factorisation needs are then those of the point constraint's mass
  * matrix (joint_point.c): G·E·Gᵀ for a body's 3×3 block E, and Gᵀ·F·G for
- * a pin's 2×2 block F. Symmetric blocks are kept whole (row-major) for
- * plain indexing. */
+ * a pin's 2×2 block F. Symmetric blocks keep their upper triangle alone
+ * (invert), each product written out for its shape. */
 
 /* s and r of the edge between node `n` and its parent, r the pin's
  * offset (measured before factoring) on the edge's body. */
@@ -342,34 +438,38 @@ static void measure_offsets(const rb_world *world, rb_tree_node *pin)
     pin->rb = rb_rotate(world->states[joint->body_b].rotation, joint->frame.local_b);
 }
 
-/* The inverse of a symmetric 2×2 or 3×3 block; false when singular. */
+/* The inverse of a symmetric 2×2 or 3×3 block, each kept as its upper
+ * triangle row by row (a 2×2 as 11 12 22, a 3×3 as 11 12 13 22 23 33);
+ * false when singular. */
 static bool invert(const double *a, double *inverse, int n)
 {
     if (n == 2) {
-        double det = a[0] * a[3] - a[1] * a[1];
+        const double a11 = a[0], a12 = a[1], a22 = a[2];
+        double det = a11 * a22 - a12 * a12;
         if (!(det != 0.0 && isfinite(det))) {
             return false;
         }
         double s = 1.0 / det;
-        inverse[0] = s * a[3];
-        inverse[1] = inverse[2] = -s * a[1];
-        inverse[3] = s * a[0];
+        inverse[0] = s * a22;
+        inverse[1] = -s * a12;
+        inverse[2] = s * a11;
         return true;
     }
-    double c00 = a[4] * a[8] - a[5] * a[5];
-    double c01 = a[5] * a[2] - a[1] * a[8];
-    double c02 = a[1] * a[5] - a[4] * a[2];
-    double det = a[0] * c00 + a[1] * c01 + a[2] * c02;
+    const double a11 = a[0], a12 = a[1], a13 = a[2], a22 = a[3], a23 = a[4], a33 = a[5];
+    double c11 = a22 * a33 - a23 * a23; /* cofactors */
+    double c12 = a23 * a13 - a12 * a33;
+    double c13 = a12 * a23 - a22 * a13;
+    double det = a11 * c11 + a12 * c12 + a13 * c13;
     if (!(det != 0.0 && isfinite(det))) {
         return false;
     }
     double s = 1.0 / det;
-    inverse[0] = s * c00;
-    inverse[1] = inverse[3] = s * c01;
-    inverse[2] = inverse[6] = s * c02;
-    inverse[4] = s * (a[0] * a[8] - a[2] * a[2]);
-    inverse[5] = inverse[7] = s * (a[2] * a[1] - a[0] * a[5]);
-    inverse[8] = s * (a[0] * a[4] - a[1] * a[1]);
+    inverse[0] = s * c11;
+    inverse[1] = s * c12;
+    inverse[2] = s * c13;
+    inverse[3] = s * (a11 * a33 - a13 * a13);
+    inverse[4] = s * (a13 * a12 - a11 * a23);
+    inverse[5] = s * (a11 * a22 - a12 * a12);
     return true;
 }
 
@@ -378,116 +478,105 @@ static bool invert(const double *a, double *inverse, int n)
 static void eliminate_body(rb_tree_node *node, rb_tree_node *pin, double s, rb_vec2 r)
 {
     const double *e = node->dinv;
-    for (int i = 0; i < 3; ++i) {
-        node->x[2 * i] = -s * (e[3 * i] - r.y * e[3 * i + 2]);
-        node->x[2 * i + 1] = -s * (e[3 * i + 1] + r.x * e[3 * i + 2]);
-    }
-    double k11 = e[0] - 2.0 * r.y * e[2] + r.y * r.y * e[8];
-    double k12 = e[1] + r.x * e[2] - r.y * e[5] - r.x * r.y * e[8];
-    double k22 = e[4] + 2.0 * r.x * e[5] + r.x * r.x * e[8];
-    pin->pivot[0] -= k11;
-    pin->pivot[1] -= k12;
-    pin->pivot[2] -= k12;
-    pin->pivot[3] -= k22;
+    const double e11 = e[0], e12 = e[1], e13 = e[2], e22 = e[3], e23 = e[4], e33 = e[5];
+    double *x = node->x;
+    x[0] = -s * (e11 - r.y * e13);
+    x[1] = -s * (e12 + r.x * e13);
+    x[2] = -s * (e12 - r.y * e23);
+    x[3] = -s * (e22 + r.x * e23);
+    x[4] = -s * (e13 - r.y * e33);
+    x[5] = -s * (e23 + r.x * e33);
+    double k11 = e11 - 2.0 * r.y * e13 + r.y * r.y * e33;
+    double k12 = e12 + r.x * e13 - r.y * e23 - r.x * r.y * e33;
+    double k22 = e22 + 2.0 * r.x * e23 + r.x * r.x * e33;
+    double *p = pin->pivot;
+    p[0] -= k11;
+    p[1] -= k12;
+    p[2] -= k22;
 }
 
 /* Eliminates pin node `node` into its parent body: X = D⁻¹·H = -s·F·G
  * (2×3) and the body's pivot loses Gᵀ·F·G. */
 static void eliminate_pin(rb_tree_node *node, rb_tree_node *body, double s, rb_vec2 r)
 {
-    const double f11 = node->dinv[0], f12 = node->dinv[1], f22 = node->dinv[3];
+    const double f11 = node->dinv[0], f12 = node->dinv[1], f22 = node->dinv[2];
     const double f13 = -r.y * f11 + r.x * f12; /* (F·G) third column */
     const double f23 = -r.y * f12 + r.x * f22;
-    const double x[6] = {-s * f11, -s * f12, -s * f13, -s * f12, -s * f22, -s * f23};
-    memcpy(node->x, x, sizeof x);
+    double *x = node->x;
+    x[0] = -s * f11;
+    x[1] = -s * f12;
+    x[2] = -s * f13;
+    x[3] = -s * f12;
+    x[4] = -s * f22;
+    x[5] = -s * f23;
     const double g33 = -r.y * f13 + r.x * f23;
     double *p = body->pivot;
     p[0] -= f11;
     p[1] -= f12;
-    p[3] -= f12;
     p[2] -= f13;
-    p[6] -= f13;
-    p[4] -= f22;
-    p[5] -= f23;
-    p[7] -= f23;
-    p[8] -= g33;
+    p[3] -= f22;
+    p[4] -= f23;
+    p[5] -= g33;
 }
 
-/* Factors every tree with the offsets its pins hold (node ra, rb).
- * Returns false when a pivot is singular, which leaves the trees unusable
- * for this pass. */
-static bool factor(rb_world *world)
+/* Starts a node's pivot at its own block of H, before its children are
+ * eliminated into it: a body's mass and inertia, a pin's zero. Chains
+ * keep no such pivots (joint_chain.c). */
+static void start_pivot(const rb_joint_tree *tree, rb_tree_node *node)
 {
-    rb_joint_tree *tree = &world->joint_tree;
-    for (int n = 0; n < tree->node_count; ++n) {
-        rb_tree_node *node = &tree->nodes[n];
-        memset(node->pivot, 0, sizeof node->pivot);
-        if (node->body >= 0) {
-            node->pivot[0] = node->pivot[4] = node->mass;
-            node->pivot[8] = node->inertia;
-        }
+    if (tree->chains) {
+        return;
     }
-    for (int n = tree->node_count - 1; n >= 0; --n) {
-        rb_tree_node *node = &tree->nodes[n];
-        if (!invert(node->pivot, node->dinv, node->dim)) {
-            return false;
-        }
-        if (node->parent < 0) {
-            continue;
-        }
-        rb_tree_node *parent = &tree->nodes[node->parent];
-        double s;
-        rb_vec2 r;
-        edge(node, parent, &s, &r);
-        if (node->body >= 0) {
-            eliminate_body(node, parent, s, r);
-        } else {
-            eliminate_pin(node, parent, s, r);
-        }
+    double *p = node->pivot;
+    if (node->body >= 0) {
+        p[0] = p[3] = node->mass;
+        p[5] = node->inertia;
+        p[1] = p[2] = p[4] = 0.0;
+    } else {
+        p[0] = p[1] = p[2] = 0.0;
     }
-    return true;
 }
 
-/* Solves H·x = b in place over node->value: L·D·Lᵀ from the leaves up,
- * then down from the roots. A body's X is 3 × 2 (its parent a pin), a
- * pin's 2 × 3 (its parent a body); written out for each, as this runs in
- * every pass. */
-static void solve(rb_joint_tree *tree)
+/* The forward substitution at a node whose children are done: its
+ * parent's right-hand side loses X(n)ᵀ·y(n), and y(n) becomes D⁻¹·y(n).
+ * A body's X is 3 × 2 (its parent a pin), a pin's 2 × 3 (its parent a
+ * body); written out for each, as this runs in every pass. */
+static void substitute_forward(rb_tree_node *node, rb_tree_node *parent)
 {
-    for (int n = tree->node_count - 1; n >= 0; --n) {
-        rb_tree_node *node = &tree->nodes[n];
-        double *y = node->value;
-        const double *d = node->dinv;
-        if (node->dim == 3) {
-            if (node->parent >= 0) { /* y(p) -= Xᵀ·y(n) */
-                double *yp = tree->nodes[node->parent].value;
-                const double *x = node->x;
-                yp[0] -= x[0] * y[0] + x[2] * y[1] + x[4] * y[2];
-                yp[1] -= x[1] * y[0] + x[3] * y[1] + x[5] * y[2];
-            }
-            const double y0 = y[0], y1 = y[1], y2 = y[2];
-            y[0] = d[0] * y0 + d[1] * y1 + d[2] * y2;
-            y[1] = d[3] * y0 + d[4] * y1 + d[5] * y2;
-            y[2] = d[6] * y0 + d[7] * y1 + d[8] * y2;
-        } else {
-            if (node->parent >= 0) {
-                double *yp = tree->nodes[node->parent].value;
-                const double *x = node->x;
-                yp[0] -= x[0] * y[0] + x[3] * y[1];
-                yp[1] -= x[1] * y[0] + x[4] * y[1];
-                yp[2] -= x[2] * y[0] + x[5] * y[1];
-            }
-            const double y0 = y[0], y1 = y[1];
-            y[0] = d[0] * y0 + d[1] * y1;
-            y[1] = d[2] * y0 + d[3] * y1;
+    double *y = node->value;
+    const double *d = node->dinv;
+    const double *x = node->x;
+    if (node->dim == 3) {
+        if (parent != NULL) {
+            double *yp = parent->value;
+            yp[0] -= x[0] * y[0] + x[2] * y[1] + x[4] * y[2];
+            yp[1] -= x[1] * y[0] + x[3] * y[1] + x[5] * y[2];
         }
+        const double y0 = y[0], y1 = y[1], y2 = y[2];
+        y[0] = d[0] * y0 + d[1] * y1 + d[2] * y2;
+        y[1] = d[1] * y0 + d[3] * y1 + d[4] * y2;
+        y[2] = d[2] * y0 + d[4] * y1 + d[5] * y2;
+    } else {
+        if (parent != NULL) {
+            double *yp = parent->value;
+            yp[0] -= x[0] * y[0] + x[3] * y[1];
+            yp[1] -= x[1] * y[0] + x[4] * y[1];
+            yp[2] -= x[2] * y[0] + x[5] * y[1];
+        }
+        const double y0 = y[0], y1 = y[1];
+        y[0] = d[0] * y0 + d[1] * y1;
+        y[1] = d[1] * y0 + d[2] * y1;
     }
+}
+
+/* The back substitution, down from the roots: x(n) -= X(n)·x(p). */
+static void substitute_back(rb_joint_tree *tree)
+{
     for (int n = 0; n < tree->node_count; ++n) {
         rb_tree_node *node = &tree->nodes[n];
         if (node->parent < 0) {
             continue;
         }
-        /* x(n) -= X·x(p) */
         const double *xp = tree->nodes[node->parent].value;
         const double *x = node->x;
         double *y = node->value;
@@ -502,26 +591,75 @@ static void solve(rb_joint_tree *tree)
     }
 }
 
-void rb_joint_tree_factor_velocities(rb_world *world)
+static rb_tree_node *parent_of(rb_joint_tree *tree, const rb_tree_node *node)
+{
+    return node->parent >= 0 ? &tree->nodes[node->parent] : NULL;
+}
+
+/* Solves H·x = b in place over node->value with the factors the nodes
+ * hold: L·D·Lᵀ from the leaves up, then down from the roots. */
+static void solve(rb_joint_tree *tree)
+{
+    if (tree->chains) {
+        rb_joint_chain_solve(tree);
+        return;
+    }
+    for (int n = tree->node_count - 1; n >= 0; --n) {
+        rb_tree_node *node = &tree->nodes[n];
+        substitute_forward(node, parent_of(tree, node));
+    }
+    substitute_back(tree);
+}
+
+/* Factors every tree with the offsets its pins hold (node ra, rb) and
+ * solves H·x = b as solve() does, in one sweep from the leaves: a node's
+ * forward substitution needs only its own factors and its children's.
+ * The pivots must be started (start_pivot) and the right-hand side set.
+ * Returns false when a pivot is singular, which leaves the trees unusable
+ * until they are factored again. */
+static bool factor_and_solve(rb_joint_tree *tree)
+{
+    if (tree->chains) {
+        return rb_joint_chain_factor_and_solve(tree);
+    }
+    for (int n = tree->node_count - 1; n >= 0; --n) {
+        rb_tree_node *node = &tree->nodes[n];
+        if (!invert(node->pivot, node->dinv, node->dim)) {
+            return false;
+        }
+        rb_tree_node *parent = parent_of(tree, node);
+        if (parent != NULL) {
+            double s;
+            rb_vec2 r;
+            edge(node, parent, &s, &r);
+            if (node->body >= 0) {
+                eliminate_body(node, parent, s, r);
+            } else {
+                eliminate_pin(node, parent, s, r);
+            }
+        }
+        substitute_forward(node, parent);
+    }
+    substitute_back(tree);
+    return true;
+}
+
+void rb_joint_tree_start_substep(rb_world *world)
 {
     rb_joint_tree *tree = &world->joint_tree;
-    for (int n = 0; n < tree->node_count; ++n) {
-        rb_tree_node *node = &tree->nodes[n];
-        if (node->joint >= 0) { /* the substep's offsets, which the pin's frame holds */
-            const rb_joint_frame *f = &world->joints[node->joint].frame;
-            node->ra = f->ra;
-            node->rb = f->rb;
-        }
-    }
     tree->pose_factors = false;
-    tree->velocity_factors = tree->node_count > 0 && factor(world);
+    tree->velocity_factors = false;
     tree->solved = false;
 }
 
+/* The substep's first pass factors the trees at the substep's anchors,
+ * which the pins' frames hold (rb_joints_warm_start), as it solves; the
+ * further passes reuse the factors. */
 void rb_joint_tree_solve_velocities(rb_world *world)
 {
     rb_joint_tree *tree = &world->joint_tree;
-    if (!tree->velocity_factors || (tree->alone && tree->solved)) {
+    const bool factoring = !tree->solved;
+    if (tree->node_count == 0 || (!factoring && (tree->alone || !tree->velocity_factors))) {
         return;
     }
     tree->solved = true;
@@ -529,15 +667,29 @@ void rb_joint_tree_solve_velocities(rb_world *world)
         rb_tree_node *node = &tree->nodes[n];
         if (node->joint < 0) {
             memset(node->value, 0, sizeof node->value);
-            continue;
+        } else {
+            const rb_joint *joint = &world->joints[node->joint];
+            if (factoring) {
+                node->ra = joint->frame.ra;
+                node->rb = joint->frame.rb;
+            }
+            rb_vec2 cdot =
+                rb_point_velocity_error(world, joint, rb_joint_state_a(world, joint), rb_joint_state_b(world, joint));
+            node->value[0] = cdot.x;
+            node->value[1] = cdot.y;
         }
-        const rb_joint *joint = &world->joints[node->joint];
-        rb_vec2 cdot =
-            rb_point_velocity_error(world, joint, rb_joint_state_a(world, joint), rb_joint_state_b(world, joint));
-        node->value[0] = cdot.x;
-        node->value[1] = cdot.y;
+        if (factoring) {
+            start_pivot(tree, node);
+        }
     }
-    solve(tree);
+    if (factoring) {
+        tree->velocity_factors = factor_and_solve(tree);
+        if (!tree->velocity_factors) {
+            return;
+        }
+    } else {
+        solve(tree);
+    }
     for (int n = 0; n < tree->node_count; ++n) {
         const rb_tree_node *node = &tree->nodes[n];
         if (node->body >= 0) {
@@ -589,23 +741,19 @@ void rb_joint_tree_solve_soft(rb_world *world)
     if (tree->node_count == 0) {
         return;
     }
-    if (!tree->pose_factors) {
-        for (int n = 0; n < tree->node_count; ++n) {
-            if (tree->nodes[n].joint >= 0) {
-                measure_offsets(world, &tree->nodes[n]);
-            }
-        }
-        tree->pose_factors = factor(world);
-        if (!tree->pose_factors) {
-            return;
-        }
-    }
+    const bool factoring = !tree->pose_factors;
     const rb_rigid_response *response = &world->joint_response;
     for (int n = 0; n < tree->node_count; ++n) {
         rb_tree_node *node = &tree->nodes[n];
+        if (factoring) {
+            start_pivot(tree, node);
+        }
         if (node->joint < 0) {
             memset(node->value, 0, sizeof node->value);
             continue;
+        }
+        if (factoring) {
+            measure_offsets(world, node);
         }
         const pin_offsets p = offsets_of(world, node);
         rb_vec2 va = rb_add(p.a->linear_velocity, rb_cross_sv(p.a->angular_velocity, p.ra));
@@ -617,7 +765,14 @@ void rb_joint_tree_solve_soft(rb_world *world)
         node->value[0] = cdot.x;
         node->value[1] = cdot.y;
     }
-    solve(tree);
+    if (factoring) {
+        tree->pose_factors = factor_and_solve(tree);
+        if (!tree->pose_factors) {
+            return;
+        }
+    } else {
+        solve(tree);
+    }
     for (int n = 0; n < tree->node_count; ++n) {
         const rb_tree_node *node = &tree->nodes[n];
         if (node->body >= 0) {
@@ -643,20 +798,20 @@ bool rb_joint_tree_correct_positions(rb_world *world)
         return true;
     }
     double cap = world->settings.max_linear_correction;
-    double largest = 0.0;
+    double slop = world->settings.linear_slop;
+    double largest_squared = 0.0; /* m²: squares compared, a square root only to cap a gap */
     for (int n = 0; n < tree->node_count; ++n) {
         rb_tree_node *node = &tree->nodes[n];
         if (node->joint < 0) {
-            memset(node->value, 0, sizeof node->value);
             continue;
         }
         measure_offsets(world, node);
         const pin_offsets p = offsets_of(world, node);
         rb_vec2 gap = pin_gap(&p);
-        double error = rb_length(gap);
-        largest = rb_max(largest, error);
-        if (error > cap) {
-            gap = rb_scale(cap / error, gap);
+        double error_squared = rb_length_squared(gap);
+        largest_squared = rb_max(largest_squared, error_squared);
+        if (error_squared > cap * cap) {
+            gap = rb_scale(cap / sqrt(error_squared), gap);
         }
         node->value[0] = gap.x;
         node->value[1] = gap.y;
@@ -665,10 +820,19 @@ bool rb_joint_tree_correct_positions(rb_world *world)
      * out of date once the bodies move. */
     tree->velocity_factors = false;
     tree->pose_factors = false;
-    if (largest <= world->settings.linear_slop || !factor(world)) {
-        return largest <= world->settings.linear_slop;
+    if (largest_squared <= slop * slop) {
+        return true;
     }
-    solve(tree);
+    for (int n = 0; n < tree->node_count; ++n) {
+        rb_tree_node *node = &tree->nodes[n];
+        start_pivot(tree, node);
+        if (node->joint < 0) {
+            memset(node->value, 0, sizeof node->value);
+        }
+    }
+    if (!factor_and_solve(tree)) {
+        return false;
+    }
     /* The step is the linearised system's, exact for small gaps. Where a
      * gap is large or a light body spins, it can ask for turns far beyond
      * the linearisation's reach, and the next pass overshoots back: scaled
@@ -710,5 +874,7 @@ void rb_joint_tree_free(rb_world *world)
     rb_free_array((void **)&tree->grounded, &tree->grounded_capacity, 1);
     rb_free_array((void **)&tree->mass_range, &tree->mass_range_capacity, sizeof(double));
     rb_free_array((void **)&tree->gauss_seidel_joints, &tree->gauss_seidel_capacity, sizeof(int));
+    rb_free_array((void **)&tree->keys, &tree->key_capacity, sizeof(rb_tree_key));
     tree->node_count = 0;
+    tree->found = false;
 }

@@ -74,24 +74,29 @@
 #define RB_SOFT_STEP_TREE_MASS_RATIO 200.0
 
 /* Finds the pins solved together this step (sets joint->in_tree) and
- * their trees. On running out of memory no joint is in a tree, and every
- * pin is solved by Gauss-Seidel as before. Call after the step's joint
- * list and frames' masses are prepared (rb_joints_collect_active). */
+ * their trees, or keeps last step's when they would be found the same
+ * (the same active joints, bodies, limits, motors, springs and masses,
+ * the same settings). On running out of memory no joint is in a tree,
+ * and every pin is solved by Gauss-Seidel as before. Call after the
+ * step's joint list and frames' masses are prepared
+ * (rb_joints_collect_active). */
 void rb_joint_tree_build(rb_world *world);
 
-/* Factors the trees at the substep's anchors: the pins' offsets at the
- * poses at the substep's start, which their frames hold once the joints
- * are prepared for the substep (rb_joints_warm_start). */
-void rb_joint_tree_factor_velocities(rb_world *world);
+/* Starts a substep: the factors the nodes hold are out of date. */
+void rb_joint_tree_start_substep(rb_world *world);
 
 /* One velocity pass over the trees' pins: the impulses that make every
  * pin's anchors move together (less the centripetal drift the pin
  * prepared, plus the response's bias), applied to the bodies and added to
- * each pin's accumulated impulse. When no other row acts on the trees'
- * bodies this step (no other joint, cable or contact), the substep's
- * first pass leaves nothing to solve but rounding, and the further passes
- * return at once: a chain's worst gap stays as it was, at the cost of one
- * pass a substep. */
+ * each pin's accumulated impulse. The substep's first pass factors the
+ * trees at the substep's anchors (the pins' offsets at the poses at the
+ * substep's start, which their frames hold once the joints are prepared
+ * for the substep, rb_joints_warm_start) in the same sweep as it solves;
+ * the further passes reuse the factors. When no other row acts on the
+ * trees' bodies this step (no other joint, cable or contact), the
+ * substep's first pass leaves nothing to solve but rounding, and the
+ * further passes return at once: a chain's worst gap stays as it was, at
+ * the cost of one pass a substep. */
 void rb_joint_tree_solve_velocities(rb_world *world);
 
 /* One soft-step pass over the trees' pins under the pass's response

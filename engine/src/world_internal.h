@@ -364,18 +364,32 @@ typedef struct rb_joint {
 
 /* A node of the pins' trees (joint_tree.h): a body or a pin. */
 typedef struct rb_tree_node {
-    int body;             /* body slot, or -1 for a pin */
-    int joint;            /* joint slot, or -1 for a body */
-    int parent;           /* node index, -1 for a root */
-    int dim;              /* 3 for a body (vx, vy, ω), 2 for a pin (its impulse) */
-    bool edge_on_b;       /* the edge to the parent joins a pin to its body B (else to its body A) */
-    double pivot[9];      /* D(node), dim × dim, summed from its children */
-    double dinv[9];       /* D(node)⁻¹ */
-    double x[6];          /* D(node)⁻¹·H(node, parent) */
-    double value[3];      /* the right-hand side, then the solution */
-    double mass, inertia; /* a body's, kg and kg·m²: its pivot before its children's */
-    rb_vec2 ra, rb;       /* a pin's anchor offsets (m) at the poses the nodes were factored at */
+    int body;                     /* body slot, or -1 for a pin */
+    int joint;                    /* joint slot, or -1 for a body */
+    int parent;                   /* node index, -1 for a root */
+    int dim;                      /* 3 for a body (vx, vy, ω), 2 for a pin (its impulse) */
+    bool edge_on_b;               /* the edge to the parent joins a pin to its body B (else to its body A) */
+    double pivot[6];              /* D(node), dim × dim, summed from its children: the upper triangle, row by row */
+    double dinv[6];               /* D(node)⁻¹, likewise */
+    double x[6];                  /* D(node)⁻¹·H(node, parent) */
+    double value[3];              /* the right-hand side, then the solution */
+    double mass, inertia;         /* a body's, kg and kg·m²: its pivot before its children's */
+    double inv_mass, inv_inertia; /* a body's, 1/kg and 1/(kg·m²) */
+    rb_vec2 ra, rb;               /* a pin's anchor offsets (m) at the poses the nodes were factored at */
 } rb_tree_node;
+
+/* What the trees were found from, one per active joint (joint_tree.c,
+ * found_from_the_same): the joint's slot and generation (a joint
+ * destroyed and another made in its slot differ), its bodies, and what
+ * makes it a pin of a tree or a row of its own. */
+typedef struct rb_tree_key {
+    int joint;           /* slot */
+    uint32_t generation; /* of the joint in the slot */
+    int body_a, body_b;
+    rb_joint_type type;
+    bool in_block, plain_pin, enable_lower, enable_upper;
+    double inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b; /* the frame's: 0 for a body that cannot move */
+} rb_tree_key;
 
 /* The pins solved together this step, with the arrays the search for
  * them reuses from step to step. */
@@ -385,6 +399,7 @@ typedef struct rb_joint_tree {
     bool pose_factors;     /* the nodes hold factors at the bodies' current poses */
     bool alone;            /* this step, no row outside the trees acts on a body in them */
     bool solved;           /* this substep's velocity pass has solved the trees */
+    bool chains;           /* every tree is a chain from a pin to a fixed body (joint_chain.h) */
     rb_tree_node *nodes;   /* breadth first from each root: a parent before its children */
     int node_count, node_capacity;
     int *body_node; /* per body slot: its node, or -1 */
@@ -399,6 +414,15 @@ typedef struct rb_joint_tree {
      * pins the trees solve, the joints the Gauss-Seidel passes visit. */
     int *gauss_seidel_joints;
     int gauss_seidel_count, gauss_seidel_capacity;
+    /* The trees are kept from step to step while they would be found
+     * the same: found is set once they are found and keys recorded, with
+     * the world's body slots, the solver's mass ratio and enabled then. */
+    bool found;
+    rb_tree_key *keys;
+    int key_count, key_capacity;
+    int found_body_slots;
+    double found_ratio;
+    bool found_enabled;
 } rb_joint_tree;
 
 /* The small limbs solved as one dense system (joint_block.h). */
