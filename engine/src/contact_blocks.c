@@ -19,7 +19,7 @@
  * is still in the processor's first cache: one pass over the contacts
  * where there were three (make the constraints, prepare their points,
  * copy them into blocks), each of which, on the base-100 pyramid's
- * 15,000 contacts, streamed 6.6 MB of constraints through the third-level
+ * 15,000 contacts, streamed 6.7 MB of constraints through the third-level
  * cache. What moves with the bodies (the normal's lever arms and the
  * effective masses) the blocks then prepare four at a time, in the step's
  * first warm start, which reads the block anyway (contact_block_passes.h);

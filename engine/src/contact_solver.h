@@ -75,7 +75,7 @@ typedef struct rb_block_point {
 
 /* Up to four two-point contacts of one colour, with no circle side and no
  * restitution, laid side by side for the passes that solve them together
- * (contact_blocks.c), 272 bytes a contact. They are laid out as their
+ * (contact_blocks.c), 276 bytes a contact. They are laid out as their
  * constraints are made (rb_contact_blocks_build), their points prepared
  * by the step's first warm start, and they hold their impulses until
  * rb_contact_solver_scatter_blocks writes them back to the constraints.
