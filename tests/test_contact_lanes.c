@@ -1,12 +1,14 @@
 /* SPDX-License-Identifier: MIT */
 /* The soft step's contact passes (warm start and soft pass) over blocks
- * of contacts, two and four at a time (contact_blocks.c), and the points'
- * preparation two at a time (contact_solver_wide.c), against the
+ * of contacts, two and four at a time (contact_blocks.c), the blocks'
+ * preparation of their points in the step's first warm start, and the
+ * points' preparation two at a time (contact_solver_wide.c), against the
  * references that take one at a time
  * (rb_contact_solver_warm_start_range, rb_contact_solver_solve_soft_range,
- * rb_contact_solver_prepare_points_range): from the same constraints and
+ * rb_contact_solver_prepare_points_range): from the same contacts and
  * velocities, both ways must leave the same velocities and impulses,
- * and both preparations the same constraints, byte for byte.
+ * and the preparations the same normals, lever arms and masses, byte for
+ * byte.
  * The stated tolerance is none: the values compare equal as numbers
  * (only the sign of a zero may differ, which == does not see), because
  * each lane does the reference's arithmetic in the reference's order.
@@ -70,8 +72,24 @@ static rb_contact_softness softness_of(const rb_world *world, bool use_bias)
     };
 }
 
+/* Whether constraint i is solved in a block. */
+static bool in_a_block(const rb_world *world, int i)
+{
+    const rb_contact_batches *batches = &world->contact_batches;
+    for (int k = 0; k < batches->block_count; ++k) {
+        for (int lane = 0; lane < RB_BLOCK_LANES; ++lane) {
+            if (batches->blocks[k].constraints[lane] == i) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
 /* The velocities and impulses the blocks' passes at `width` left against
- * the reference's. */
+ * the reference's; the largest push of the step, which restitution reads,
+ * where the constraint keeps it (not in a block, whose contacts have no
+ * restitution). */
 static void expect_same_results(const rb_world *world, const rb_body_state *reference_states,
                                 const rb_contact_constraint *reference_constraints, int width)
 {
@@ -87,32 +105,90 @@ static void expect_same_results(const rb_world *world, const rb_body_state *refe
     for (int i = 0; i < world->constraint_count; ++i) {
         const rb_contact_constraint *r = &reference_constraints[i];
         const rb_contact_constraint *w = &world->constraints[i];
+        bool keeps_max = !in_a_block(world, i);
         for (int j = 0; j < r->point_count; ++j) {
             cr_expect(r->points[j].normal_impulse == w->points[j].normal_impulse &&
                           r->points[j].tangent_impulse == w->points[j].tangent_impulse &&
-                          r->points[j].max_normal_impulse == w->points[j].max_normal_impulse,
-                      "constraint %d point %d: impulses (%.17g, %.17g) one at a time, (%.17g, %.17g) %d at a time", i,
-                      j, r->points[j].normal_impulse, r->points[j].tangent_impulse, w->points[j].normal_impulse,
-                      w->points[j].tangent_impulse, width);
+                          (!keeps_max || r->points[j].max_normal_impulse == w->points[j].max_normal_impulse),
+                      "constraint %d point %d: impulses (%.17g, %.17g, largest %.17g) one at a time, (%.17g, %.17g, "
+                      "largest %.17g) %d at a time",
+                      i, j, r->points[j].normal_impulse, r->points[j].tangent_impulse, r->points[j].max_normal_impulse,
+                      w->points[j].normal_impulse, w->points[j].tangent_impulse, w->points[j].max_normal_impulse,
+                      width);
         }
     }
 }
 
+/* Each lane's normal, lever arms and masses, as the blocks' first warm
+ * start prepared them, against its constraint as the reference
+ * (rb_contact_solver_prepare_points_range) prepared it: the same bytes.
+ * Returns how many lanes held a contact. */
+static int expect_same_preparation(const rb_world *world, const rb_contact_constraint *reference, int width)
+{
+    const rb_contact_batches *batches = &world->contact_batches;
+    int compared = 0;
+    for (int k = 0; k < batches->block_count; ++k) {
+        const rb_contact_block *q = &batches->blocks[k];
+        for (int lane = 0; lane < RB_BLOCK_LANES && q->constraints[lane] >= 0; ++lane) {
+            const rb_contact_constraint *c = &reference[q->constraints[lane]];
+            double lane_values[2 + 2 * 6] = {q->normal_x.v[lane], q->normal_y.v[lane]};
+            double reference_values[2 + 2 * 6] = {c->normal.x, c->normal.y};
+            for (int j = 0; j < 2; ++j) {
+                const rb_block_point *w = &q->points[j];
+                const rb_constraint_point *p = &c->points[j];
+                double *x = &lane_values[2 + 6 * j];
+                double *y = &reference_values[2 + 6 * j];
+                x[0] = w->normal_arm_a.v[lane], y[0] = p->normal_arm_a;
+                x[1] = w->normal_arm_b.v[lane], y[1] = p->normal_arm_b;
+                x[2] = w->tangent_arm_a.v[lane], y[2] = p->tangent_arm_a;
+                x[3] = w->tangent_arm_b.v[lane], y[3] = p->tangent_arm_b;
+                x[4] = w->normal_mass.v[lane], y[4] = p->normal_mass;
+                x[5] = w->tangent_mass.v[lane], y[5] = p->tangent_mass;
+            }
+            cr_expect(memcmp(lane_values, reference_values, sizeof lane_values) == 0,
+                      "constraint %d prepared differently in lane %d of block %d at width %d: normal (%.17g, %.17g) "
+                      "and (%.17g, %.17g), first point's normal mass %.17g and %.17g",
+                      q->constraints[lane], lane, k, width, lane_values[0], lane_values[1], reference_values[0],
+                      reference_values[1], lane_values[6], reference_values[6]);
+            ++compared;
+        }
+    }
+    return compared;
+}
+
+/* Every other constraint told its spring is the other one, in its
+ * constraint and, if it has one, in its lane. */
+static void mix_springs(rb_world *world)
+{
+    for (int i = 1; i < world->constraint_count; i += 2) {
+        world->constraints[i].against_fixed = !world->constraints[i].against_fixed;
+    }
+    const rb_contact_batches *batches = &world->contact_batches;
+    for (int k = 0; k < batches->block_count; ++k) {
+        rb_contact_block *q = &batches->blocks[k];
+        for (int lane = 0; lane < RB_BLOCK_LANES; ++lane) {
+            if (q->constraints[lane] % 2 == 1) {
+                q->against_fixed[lane] = ~q->against_fixed[lane];
+            }
+        }
+    }
+}
+
+/* How many constraints had two points, and how many of those had
+ * restitution. */
+typedef struct constraint_counts {
+    int two_point, bouncing;
+} constraint_counts;
+
 /* Prepares the world's contacts as a step does, disturbs every dynamic
  * body's velocity by up to `speed` m/s and `speed` rad/s, then from the
  * same start warm starts and runs two passes one at a time over the
- * constraints, and the same over the blocks gathered from them (whose
- * impulses are then written back) at each width the processor runs,
- * and compares. Returns how many constraints had two points. */
-static int expect_passes_agree(rb_world *world, double speed, bool use_bias, bool mix_springs, uint64_t seed)
+ * constraints, prepared by the reference, and the same over the blocks
+ * as the step lays them out and prepares them (whose impulses are then
+ * written back) at each width the processor runs, and compares. */
+static constraint_counts expect_passes_agree(rb_world *world, double speed, bool use_bias, bool mix, uint64_t seed)
 {
-    cr_assert_geq(rb_contact_solver_prepare(world), 0, "out of memory");
-    int count = world->constraint_count;
-    cr_assert_gt(count, 0, "the scene has contacts to solve");
-    rb_contact_solver_prepare_substep(world, TEST_DT / SUBSTEPS, (rb_substep_rows){.first_substep = true});
-    for (int i = 1; mix_springs && i < count; i += 2) {
-        world->constraints[i].against_fixed = !world->constraints[i].against_fixed;
-    }
+    double h = TEST_DT / SUBSTEPS;
     for (int i = 0; i < world->body_slots; ++i) {
         if (world->bodies[i].in_use && world->bodies[i].type == RB_BODY_DYNAMIC) {
             rb_body_state *s = &world->states[i];
@@ -120,17 +196,24 @@ static int expect_passes_agree(rb_world *world, double speed, bool use_bias, boo
             s->angular_velocity += speed * next_unit(&seed);
         }
     }
+    cr_assert_geq(rb_contact_solver_prepare(world), 0, "out of memory");
+    int count = world->constraint_count;
+    cr_assert_gt(count, 0, "the scene has contacts to solve");
+    rb_contact_solver_prepare_points_range(world, h, (rb_substep_rows){.first_substep = true}, 0, count);
+    if (mix) {
+        mix_springs(world);
+    }
     rb_contact_softness softness = softness_of(world, use_bias);
 
     size_t state_bytes = (size_t)world->body_slots * sizeof *world->states;
     size_t constraint_bytes = (size_t)count * sizeof *world->constraints;
     rb_body_state *start_states = malloc(state_bytes);
-    rb_contact_constraint *start_constraints = malloc(constraint_bytes);
     rb_body_state *reference_states = malloc(state_bytes);
+    rb_contact_constraint *prepared = malloc(constraint_bytes);
     rb_contact_constraint *reference_constraints = malloc(constraint_bytes);
-    cr_assert(start_states && start_constraints && reference_states && reference_constraints);
+    cr_assert(start_states && reference_states && prepared && reference_constraints);
     memcpy(start_states, world->states, state_bytes);
-    memcpy(start_constraints, world->constraints, constraint_bytes);
+    memcpy(prepared, world->constraints, constraint_bytes);
 
     rb_contact_solver_warm_start_range(world, 0, count);
     rb_contact_solver_solve_soft_range(world, &softness, 0, count);
@@ -139,20 +222,26 @@ static int expect_passes_agree(rb_world *world, double speed, bool use_bias, boo
     memcpy(reference_constraints, world->constraints, constraint_bytes);
     int moved = 0;
     int two_point = 0;
+    int bouncing = 0; /* two-point constraints with restitution, which no block takes */
     for (int i = 0; i < world->body_slots; ++i) {
         moved += reference_states[i].linear_velocity.x != start_states[i].linear_velocity.x;
     }
     for (int i = 0; i < count; ++i) {
         two_point += reference_constraints[i].point_count == 2;
+        bouncing += reference_constraints[i].point_count == 2 && reference_constraints[i].restitution > 0.0;
     }
     cr_expect_gt(moved, count / 4, "the pass changed velocities (%d bodies of %d constraints)", moved, count);
 
     for (int width = 2; width <= rb_contact_blocks_widest(); width += 2) {
         memcpy(world->states, start_states, state_bytes);
-        memcpy(world->constraints, start_constraints, constraint_bytes);
-        rb_contact_solver_gather_blocks(world);
+        cr_assert_eq(rb_contact_solver_prepare(world), count, "the same constraints again");
+        rb_contact_solver_prepare_singles(world, h);
+        if (mix) {
+            mix_springs(world);
+        }
         world->contact_batches.width = width;
-        rb_contact_solver_warm_start_blocks(world);
+        rb_contact_solver_warm_start_blocks(world, true);
+        int prepared_lanes = expect_same_preparation(world, prepared, width);
         rb_contact_solver_solve_soft(world, &softness);
         rb_contact_solver_solve_soft(world, &softness);
         rb_contact_solver_scatter_blocks(world);
@@ -163,8 +252,11 @@ static int expect_passes_agree(rb_world *world, double speed, bool use_bias, boo
                 in_blocks += world->contact_batches.blocks[k].constraints[lane] >= 0;
             }
         }
-        cr_expect_eq(in_blocks, two_point, "every two-point constraint is solved in a block (%d of %d were)", in_blocks,
-                     two_point);
+        cr_expect_eq(in_blocks, two_point - bouncing,
+                     "every two-point constraint without restitution is solved in a block (%d of %d were)", in_blocks,
+                     two_point - bouncing);
+        cr_expect_eq(prepared_lanes, in_blocks, "every lane's contact was compared (%d of %d)", prepared_lanes,
+                     in_blocks);
         cr_expect(in_blocks == 0 || RB_BLOCK_LANES * world->contact_batches.block_count > in_blocks,
                   "some block has an empty lane, so that empty lanes are tested (%d blocks for %d contacts)",
                   world->contact_batches.block_count, in_blocks);
@@ -178,10 +270,10 @@ static int expect_passes_agree(rb_world *world, double speed, bool use_bias, boo
         }
     }
     free(start_states);
-    free(start_constraints);
     free(reference_states);
+    free(prepared);
     free(reference_constraints);
-    return two_point;
+    return (constraint_counts){two_point, bouncing};
 }
 
 /* Prepares the world's contacts, moves and turns every dynamic body a
@@ -241,10 +333,20 @@ Test(contact_lanes, a_pyramid_and_balls_give_the_same_velocities_and_impulses_bo
         add_circle(world, ball, rb_v2(0.0, 0.0), 0.5, 1.0);
     }
     step_world(world, TEST_DT, 30);
+    /* Every seventh box bounces: its contacts, though they have two
+     * points, are solved one at a time, as the blocks do not keep the
+     * largest push that restitution reads. */
+    for (int k = 0; k < pyramid.box_count; k += 7) {
+        rb_shape_id shape;
+        cr_assert_eq(rb_body_shapes(world, scene_body_at(pyramid.first_box, k), &shape, 1), 1);
+        cr_assert_eq(rb_shape_set_restitution(world, shape, 0.5), RB_OK, "%s", rb_last_error());
+    }
     for (int round = 0; round < 6; ++round) {
-        int two_point =
+        constraint_counts n =
             expect_passes_agree(world, 0.5 * (round % 3), round % 2 == 0, round >= 3, 2024u + (uint64_t)round);
-        cr_expect_gt(two_point, 500, "the pyramid's contacts have two points (%d did)", two_point);
+        cr_expect_gt(n.two_point, 500, "the pyramid's contacts have two points (%d did)", n.two_point);
+        cr_expect(n.bouncing > 50 && n.bouncing < n.two_point / 2,
+                  "some of them, not most, have restitution (%d of %d)", n.bouncing, n.two_point);
     }
     /* The rows each solver asks for: the soft step's, NGS's, Baumgarte's. */
     expect_preparations_agree(world, (rb_substep_rows){.first_substep = true}, 11u);

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* The soft step's contact passes over the blocks (warm start, and the
- * soft pass that solves and relaxes), WIDTH contacts to a vector
+/* The soft step's contact passes over the blocks (warm start, which in
+ * the step's first substep also prepares the points, and the soft pass
+ * that solves and relaxes), WIDTH contacts to a vector
  * operation: included once with WIDTH 2 (contact_blocks_two.c) and once
  * with WIDTH 4 (contact_blocks_four.c, built for AVX), it defines
  * rb_contact_blocks_warm_start_WIDTH and rb_contact_blocks_solve_soft_WIDTH.
@@ -174,10 +175,76 @@ LANE_INLINE void apply_row_impulse(const block_lanes *s, lanes dx, lanes dy, lan
     v->wb = v->wb + VALUE(s, inv_inertia_b) * lambda * arm_b;
 }
 
-/* Both points' normal and friction impulses again, as the reference's
- * warm start applies them: point by point, the normal first. */
-LANE_INLINE void warm_start_lanes(const block_lanes *s)
+/* 1/k where k > 0, else 0, as mass_from_arms: the effective mass of a row
+ * of lever arms a, b about the two centres. */
+LANE_INLINE lanes mass_from_arms(lanes inv_mass_sum, lanes ia, lanes ib, lanes a, lanes b)
 {
+    lanes k = inv_mass_sum + ia * a * a + ib * b * b;
+    return select(k > zero(), both(1.0) / k, zero());
+}
+
+/* Point p of the lanes' contacts at the poses now, as
+ * rb_contact_solver_prepare_points_range prepares a constraint's: the
+ * surface points carried by their bodies, the anchors from each centre
+ * to the point midway between them, and the lever arms and effective
+ * masses of the normal and the tangent t = (ny, -nx). The reference moves
+ * each surface point out by its circle's radius; a block's contacts have
+ * none, and the term (0·n) is kept so that even a zero's sign is the
+ * reference's. */
+LANE_INLINE void prepare_point(const block_lanes *s, rb_block_point *p)
+{
+    lanes nx = VALUE(s, normal_x);
+    lanes ny = VALUE(s, normal_y);
+    lanes cax = GATHER(s, a, center.x);
+    lanes cay = GATHER(s, a, center.y);
+    lanes cbx = GATHER(s, b, center.x);
+    lanes cby = GATHER(s, b, center.y);
+    lanes qac = GATHER(s, a, rotation.c);
+    lanes qas = GATHER(s, a, rotation.s);
+    lanes qbc = GATHER(s, b, rotation.c);
+    lanes qbs = GATHER(s, b, rotation.s);
+    lanes lax = POINT_VALUE(s, p, local_surface_ax);
+    lanes lay = POINT_VALUE(s, p, local_surface_ay);
+    lanes lbx = POINT_VALUE(s, p, local_surface_bx);
+    lanes lby = POINT_VALUE(s, p, local_surface_by);
+    lanes radius = zero();
+    lanes pax = cax + (qac * lax - qas * lay) + radius * nx;
+    lanes pay = cay + (qas * lax + qac * lay) + radius * ny;
+    lanes pbx = cbx + (qbc * lbx - qbs * lby) - radius * nx;
+    lanes pby = cby + (qbs * lbx + qbc * lby) - radius * ny;
+    lanes half = both(0.5);
+    lanes mx = pax + half * (pbx - pax);
+    lanes my = pay + half * (pby - pay);
+    lanes rax = mx - cax;
+    lanes ray = my - cay;
+    lanes rbx = mx - cbx;
+    lanes rby = my - cby;
+    lanes tx = ny;
+    lanes ty = -nx;
+    lanes normal_arm_a = rax * ny - ray * nx;
+    lanes normal_arm_b = rbx * ny - rby * nx;
+    lanes tangent_arm_a = rax * ty - ray * tx;
+    lanes tangent_arm_b = rbx * ty - rby * tx;
+    store(&p->normal_arm_a, s->first, normal_arm_a);
+    store(&p->normal_arm_b, s->first, normal_arm_b);
+    store(&p->tangent_arm_a, s->first, tangent_arm_a);
+    store(&p->tangent_arm_b, s->first, tangent_arm_b);
+    lanes inv_mass_sum = VALUE(s, inv_mass_a) + VALUE(s, inv_mass_b);
+    lanes ia = VALUE(s, inv_inertia_a);
+    lanes ib = VALUE(s, inv_inertia_b);
+    store(&p->tangent_mass, s->first, mass_from_arms(inv_mass_sum, ia, ib, tangent_arm_a, tangent_arm_b));
+    store(&p->normal_mass, s->first, mass_from_arms(inv_mass_sum, ia, ib, normal_arm_a, normal_arm_b));
+}
+
+/* Both points' normal and friction impulses again, as the reference's
+ * warm start applies them: point by point, the normal first; with
+ * `prepare`, each point prepared first. */
+LANE_INLINE void warm_start_lanes(const block_lanes *s, bool prepare)
+{
+    if (prepare) {
+        prepare_point(s, &s->q->points[0]);
+        prepare_point(s, &s->q->points[1]);
+    }
     block_velocities v = load_velocities(s);
     lanes nx = VALUE(s, normal_x);
     lanes ny = VALUE(s, normal_y);
@@ -195,14 +262,14 @@ LANE_INLINE void warm_start_lanes(const block_lanes *s)
 
 /* Colour by colour, as the reference goes through them: the colour's
  * blocks, then its singles; the overflow colour last. */
-void WITH_WIDTH(rb_contact_blocks_warm_start_, WIDTH)(rb_world *world)
+void WITH_WIDTH(rb_contact_blocks_warm_start_, WIDTH)(rb_world *world, bool prepare)
 {
     const rb_contact_batches *batches = &world->contact_batches;
     for (int colour = 0; colour < RB_COLOUR_COUNT; ++colour) {
         for (int k = batches->block_start[colour]; k < batches->block_start[colour + 1]; ++k) {
             for (int first = 0; first < RB_BLOCK_LANES; first += WIDTH) {
                 block_lanes s = lanes_of(&batches->blocks[k], first);
-                warm_start_lanes(&s);
+                warm_start_lanes(&s, prepare);
             }
         }
         for (int k = batches->single_start[colour]; k < batches->single_start[colour + 1]; ++k) {
@@ -246,7 +313,6 @@ LANE_INLINE void solve_normal(const block_lanes *s, rb_block_point *p, lanes sep
     lanes impulse = -POINT_VALUE(s, p, normal_mass) * mass_scale * (vn + bias) - impulse_scale * old;
     lanes accumulated = max(old + impulse, zero());
     store(&p->normal_impulse, s->first, accumulated);
-    store(&p->max_normal_impulse, s->first, max(POINT_VALUE(s, p, max_normal_impulse), accumulated));
     apply_row_impulse(s, nx, ny, arm_a, arm_b, accumulated - old, v);
 }
 

@@ -10,20 +10,30 @@
  * (contact_blocks.h); tests/test_contact_lanes.c checks both widths
  * against the reference.
  *
- * Once a step, after the points are prepared, the two-point constraints
- * of each colour are laid four by four into rb_contact_block
- * (rb_contact_solver_gather_blocks): each value of the four contacts side
- * by side, which one load brings into a register, and the addresses of
- * their bodies' states, found once. The blocks then hold the impulses
- * through the step's passes (warm start, solve, relax), and
- * rb_contact_solver_scatter_blocks writes them back to the constraints
- * for restitution and the next step. The last block of a colour may have
- * empty lanes, whose contact cannot act (no mass, no impulse) between
- * two idle bodies of the batches' own. A contact with one point and the
- * overflow colour (whose constraints may share bodies) go through the
- * reference; colour by colour, a colour's blocks first and then its
- * others, which gives each body the reference's sums in the reference's
- * order (a body is in at most one constraint of a colour).
+ * Once a step, as rb_contact_solver_prepare makes the constraints, the
+ * two-point constraints of each colour are laid four by four into
+ * rb_contact_block (rb_contact_blocks_build): each value of the four
+ * contacts side by side, which one load brings into a register, and the
+ * addresses of their bodies' states, found once. Each contact is copied
+ * into its lane as soon as its constraint is made, while the constraint
+ * is still in the processor's first cache: one pass over the contacts
+ * where there were three (make the constraints, prepare their points,
+ * copy them into blocks), each of which, on the base-100 pyramid's
+ * 15,000 contacts, streamed 6.7 MB of constraints through the third-level
+ * cache. What moves with the bodies (the normal's lever arms and the
+ * effective masses) the blocks then prepare four at a time, in the step's
+ * first warm start, which reads the block anyway (contact_block_passes.h);
+ * the bodies have not moved since the constraints were made. The blocks
+ * hold the impulses through the step's passes (warm start, solve, relax),
+ * and rb_contact_solver_scatter_blocks writes them back to the
+ * constraints for the next step. The last block of a colour may have
+ * empty lanes, whose contact cannot act (no mass, no impulse) between two
+ * idle bodies of the batches' own. A contact with one point or with
+ * restitution, and the overflow colour (whose constraints may share
+ * bodies) go through the reference; colour by colour, a colour's blocks
+ * first and then its others, which gives each body the reference's sums
+ * in the reference's order (a body is in at most one constraint of a
+ * colour).
  *
  * Why four where two were had, measured on the base-20 pyramid at Box2D
  * v3's budget. Sequential impulses are a chain: each of a contact's four
@@ -41,6 +51,7 @@
  * through memory, they delayed every chain's first loads, and four wide
  * was then slower than two (0.140 against 0.134 ms of the step's solver
  * phases, against 0.104 ms as it is). */
+#include <assert.h>
 #include <string.h>
 
 #include "allocator.h"
@@ -72,8 +83,9 @@ int rb_contact_blocks_widest(void)
 }
 
 /* Copies constraint `index`, between the bodies whose states are at a
- * and b, into lane `lane` of block q: every field of the lane, so a block
- * needs no clearing before its lanes are filled. */
+ * and b, into lane `lane` of block q: every field the block's first warm
+ * start does not prepare, so a block needs no clearing before its lanes
+ * are filled. */
 static void copy_into_lane(rb_contact_block *q, int lane, int index, const rb_contact_constraint *c, rb_body_state *a,
                            rb_body_state *b)
 {
@@ -95,91 +107,115 @@ static void copy_into_lane(rb_contact_block *q, int lane, int index, const rb_co
         w->local_surface_ay.v[lane] = p->local_surface_a.y;
         w->local_surface_bx.v[lane] = p->local_surface_b.x;
         w->local_surface_by.v[lane] = p->local_surface_b.y;
-        w->normal_arm_a.v[lane] = p->normal_arm_a;
-        w->normal_arm_b.v[lane] = p->normal_arm_b;
-        w->tangent_arm_a.v[lane] = p->tangent_arm_a;
-        w->tangent_arm_b.v[lane] = p->tangent_arm_b;
-        w->normal_mass.v[lane] = p->normal_mass;
-        w->tangent_mass.v[lane] = p->tangent_mass;
         w->normal_impulse.v[lane] = p->normal_impulse;
         w->tangent_impulse.v[lane] = p->tangent_impulse;
-        w->max_normal_impulse.v[lane] = p->max_normal_impulse;
     }
 }
 
 /* Empties lane `lane` of block q, as copy_into_lane would copy a contact
- * that cannot act: along (1, 0) between the idle bodies, with no mass, no
- * lever arm and no impulse. */
+ * that cannot act: along (1, 0) between the idle bodies, with no mass and
+ * no impulse, its surface points at their centres (so no lever arm). */
 static void empty_lane(rb_contact_block *q, int lane, rb_contact_batches *batches)
 {
     static const rb_contact_constraint idle = {.normal = {1.0, 0.0}};
     copy_into_lane(q, lane, -1, &idle, &batches->idle_a, &batches->idle_b);
 }
 
-/* Whether a constraint can take a lane of a block: two points, and no
- * circle side (whose radius the blocks do not hold; a circle's contacts
- * have one point anyway). */
-static bool fits_a_block(const rb_contact_constraint *c)
+/* Makes room for the blocks and the singles, and finds where each
+ * colour's start, from the lanes rb_contact_solver_prepare counted:
+ * every colour's blocks full but its last. Returns 0, or -1 when out of
+ * memory. */
+static int lay_out_batches(rb_contact_batches *batches, const int start[RB_COLOUR_COUNT + 1])
 {
-    return c->point_count == 2 && c->radius_a == 0.0 && c->radius_b == 0.0;
+    int blocks = 0;
+    int singles = 0;
+    for (int colour = 0; colour < RB_COLOUR_COUNT; ++colour) {
+        batches->block_start[colour] = blocks;
+        batches->single_start[colour] = singles;
+        blocks += (batches->lanes[colour] + RB_BLOCK_LANES - 1) / RB_BLOCK_LANES;
+        singles += start[colour + 1] - start[colour] - batches->lanes[colour];
+    }
+    batches->block_start[RB_COLOUR_COUNT] = blocks;
+    batches->single_start[RB_COLOUR_COUNT] = singles;
+    batches->block_count = blocks;
+    batches->single_count = singles;
+    batches->overflow_start = start[RB_OVERFLOW_COLOUR];
+    return rb_grow_array((void **)&batches->blocks, &batches->block_capacity, blocks, sizeof *batches->blocks) != 0 ||
+                   rb_grow_array((void **)&batches->singles, &batches->single_capacity, singles,
+                                 sizeof *batches->singles) != 0
+               ? -1
+               : 0;
 }
 
-/* Within each colour, the two-point constraints in order, four to a
- * block, the colour's last block filled out with empty lanes; the
- * colour's other constraints become singles. The arrays grow only when
- * the contacts outgrow them. */
-void rb_contact_solver_gather_blocks(rb_world *world)
+int rb_contact_blocks_build(rb_world *world, const int start[RB_COLOUR_COUNT + 1])
 {
     rb_contact_batches *batches = &world->contact_batches;
-    int count = world->constraint_count;
-    batches->block_count = 0;
-    batches->single_count = 0;
     batches->width = rb_contact_blocks_widest();
     batches->idle_a = (rb_body_state){.rotation = {1.0, 0.0}};
     batches->idle_b = batches->idle_a;
-    /* Each colour's blocks but its last are full, and no block is empty. */
-    int most_blocks = count / RB_BLOCK_LANES + RB_COLOUR_COUNT;
-    if (most_blocks > count) {
-        most_blocks = count;
-    }
-    if (rb_grow_array((void **)&batches->blocks, &batches->block_capacity, most_blocks, sizeof *batches->blocks) != 0 ||
-        rb_grow_array((void **)&batches->singles, &batches->single_capacity, count, sizeof *batches->singles) != 0) {
+    if (lay_out_batches(batches, start) != 0) {
         /* Out of memory: no blocks and no singles; every constraint is
          * then solved one at a time in order, as the overflow colour's
          * are, which needs nothing more. */
+        batches->block_count = 0;
+        batches->single_count = 0;
         memset(batches->block_start, 0, sizeof batches->block_start);
         memset(batches->single_start, 0, sizeof batches->single_start);
         batches->overflow_start = 0;
-        return;
+        return -1;
     }
-    const rb_contact_constraint *constraints = world->constraints;
-    int start[RB_COLOUR_COUNT + 1];
-    rb_colouring_offsets(&world->contact_colouring, start);
+    int next[RB_COLOUR_COUNT + 1]; /* each colour's next constraint */
+    int lane[RB_COLOUR_COUNT];     /* each colour's next lane, counted from the first of its blocks */
+    int single[RB_COLOUR_COUNT];   /* and its next single */
+    memcpy(next, start, sizeof next);
     for (int colour = 0; colour < RB_COLOUR_COUNT; ++colour) {
-        batches->block_start[colour] = batches->block_count;
-        batches->single_start[colour] = batches->single_count;
-        int end = start[colour] + world->contact_colouring.sizes[colour];
-        int lane = RB_BLOCK_LANES; /* the next free lane of the colour's last block: none yet */
-        for (int i = start[colour]; i < end; ++i) {
-            if (!fits_a_block(&constraints[i])) {
-                batches->singles[batches->single_count++] = i;
-                continue;
-            }
-            if (lane == RB_BLOCK_LANES) {
-                ++batches->block_count;
-                lane = 0;
-            }
-            const rb_contact_constraint *c = &constraints[i];
-            copy_into_lane(&batches->blocks[batches->block_count - 1], lane++, i, c, &world->states[c->body_a],
-                           &world->states[c->body_b]);
+        lane[colour] = RB_BLOCK_LANES * batches->block_start[colour];
+        single[colour] = batches->single_start[colour];
+    }
+    rb_contact_constraint *constraints = world->constraints;
+    for (int i = 0; i < world->contact_count; ++i) {
+        const rb_contact *contact = &world->contacts[i];
+        int colour = contact->colour;
+        if (colour < 0) {
+            continue;
         }
-        for (; lane < RB_BLOCK_LANES; ++lane) {
-            empty_lane(&batches->blocks[batches->block_count - 1], lane, batches);
+        int index = next[colour]++;
+        rb_contact_constraint *c = &constraints[index];
+        rb_contact_solver_fill_constraint(world, i, c);
+        if (colour == RB_OVERFLOW_COLOUR) {
+            continue;
+        }
+        if (!rb_contact_takes_a_lane(contact)) {
+            batches->singles[single[colour]++] = index;
+            continue;
+        }
+        rb_body_state *a = &world->states[c->body_a];
+        rb_body_state *b = &world->states[c->body_b];
+        /* The normal as the bodies turn it now, as
+         * rb_contact_solver_prepare_points_range finds it. */
+        assert(c->normal_follows != RB_NORMAL_FROM_CENTERS && c->radius_a == 0.0 && c->radius_b == 0.0);
+        c->normal = rb_rotate(c->normal_follows == RB_NORMAL_TURNS_WITH_A ? a->rotation : b->rotation, c->local_normal);
+        int k = lane[colour]++;
+        copy_into_lane(&batches->blocks[k / RB_BLOCK_LANES], k % RB_BLOCK_LANES, index, c, a, b);
+    }
+    for (int colour = 0; colour < RB_COLOUR_COUNT; ++colour) {
+        for (int k = lane[colour]; k < RB_BLOCK_LANES * batches->block_start[colour + 1]; ++k) {
+            empty_lane(&batches->blocks[k / RB_BLOCK_LANES], k % RB_BLOCK_LANES, batches);
         }
     }
-    batches->block_start[RB_COLOUR_COUNT] = batches->block_count;
-    batches->single_start[RB_COLOUR_COUNT] = batches->single_count;
-    batches->overflow_start = start[RB_OVERFLOW_COLOUR];
+    return 0;
+}
+
+void rb_contact_solver_prepare_singles(rb_world *world, double h)
+{
+    const rb_contact_batches *batches = &world->contact_batches;
+    rb_substep_rows rows = {.first_substep = true};
+    for (int k = 0; k < batches->single_count; ++k) {
+        int i = batches->singles[k];
+        rb_contact_solver_prepare_points_range(world, h, rows, i, i + 1);
+    }
+    rb_contact_solver_prepare_points_range(world, h, rows, batches->overflow_start, world->constraint_count);
+    rb_contact_solver_record_approaches(world, h);
 }
 
 void rb_contact_solver_scatter_blocks(rb_world *world)
@@ -192,21 +228,20 @@ void rb_contact_solver_scatter_blocks(rb_world *world)
             for (int j = 0; j < 2; ++j) {
                 c->points[j].normal_impulse = q->points[j].normal_impulse.v[lane];
                 c->points[j].tangent_impulse = q->points[j].tangent_impulse.v[lane];
-                c->points[j].max_normal_impulse = q->points[j].max_normal_impulse.v[lane];
             }
         }
     }
 }
 
-void rb_contact_solver_warm_start_blocks(rb_world *world)
+void rb_contact_solver_warm_start_blocks(rb_world *world, bool prepare)
 {
 #if RB_BLOCKS_FOUR_WIDE
     if (world->contact_batches.width == 4) {
-        rb_contact_blocks_warm_start_4(world);
+        rb_contact_blocks_warm_start_4(world, prepare);
         return;
     }
 #endif
-    rb_contact_blocks_warm_start_2(world);
+    rb_contact_blocks_warm_start_2(world, prepare);
 }
 
 void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *softness)

@@ -13,9 +13,11 @@
  * along the tangent, clamped to the Coulomb cone |λt| ≤ μ·λn.
  */
 #include <assert.h>
+#include <string.h>
 
 #include "allocator.h"
 #include "contact.h"
+#include "contact_blocks.h"
 #include "contact_solver.h"
 #include "error.h"
 
@@ -84,14 +86,21 @@ static int moving_index(const rb_world *world, int body)
     return b->type == RB_BODY_DYNAMIC && b->awake ? body : -1;
 }
 
-int rb_contact_solver_prepare(rb_world *world)
+/* Colours the contacts to solve (constraint_colouring.c), each contact
+ * keeping its colour, and makes room for their constraints; for the soft
+ * step, also counts each colour's contacts that take a lane of a block
+ * (contact_blocks.c). start[k] is where colour k's constraints begin.
+ * Returns how many contacts are solved, or -1 when out of memory. */
+static int colour_contacts(rb_world *world, int start[RB_COLOUR_COUNT + 1])
 {
-    /* Colour the contacts to solve, then lay their constraints out colour
-     * by colour (constraint_colouring.c). */
     rb_colouring *colouring = &world->contact_colouring;
     if (rb_colouring_begin(colouring, world->body_slots) != 0) {
-        world->constraint_count = 0;
         return -1;
+    }
+    bool in_blocks = world->settings.type == RB_SOLVER_SOFT_STEP;
+    int *lanes = world->contact_batches.lanes;
+    if (in_blocks) {
+        memset(lanes, 0, sizeof world->contact_batches.lanes);
     }
     int count = 0;
     for (int i = 0; i < world->contact_count; ++i) {
@@ -100,80 +109,129 @@ int rb_contact_solver_prepare(rb_world *world)
         if (is_solvable(world, contact)) {
             contact->colour = rb_colouring_assign(colouring, moving_index(world, contact->body_a),
                                                   moving_index(world, contact->body_b));
+            if (in_blocks) {
+                lanes[contact->colour] += rb_contact_takes_a_lane(contact);
+            }
             ++count;
         }
     }
     if (rb_grow_array((void **)&world->constraints, &world->constraint_capacity, count, sizeof *world->constraints) !=
         0) {
+        return -1;
+    }
+    world->statistics.contact_colours = rb_colouring_offsets(colouring, start);
+    return count;
+}
+
+/* The shape's radius if it is a circle, else 0. */
+static double circle_radius(const rb_shape *shape)
+{
+    return shape->type == RB_SHAPE_CIRCLE ? shape->geometry.circle.radius : 0.0;
+}
+
+/* The constraint's values are worked out in local variables and then
+ * stored: read back through the pointer, each would be loaded again
+ * after every store, the compiler being unable to tell that the stores
+ * leave it unchanged. */
+void rb_contact_solver_fill_constraint(rb_world *world, int index, rb_contact_constraint *c)
+{
+    const rb_contact *contact = &world->contacts[index];
+    const rb_body *body_a = &world->bodies[contact->body_a];
+    const rb_body *body_b = &world->bodies[contact->body_b];
+    const rb_body_state *sa = &world->states[contact->body_a];
+    const rb_body_state *sb = &world->states[contact->body_b];
+    assert(contact->body_a != contact->body_b);
+    assert(fabs(rb_length(contact->manifold.normal) - 1.0) < 1e-9);
+    double inv_mass_a = body_a->awake ? body_a->inv_mass : 0.0;
+    double inv_inertia_a = body_a->awake ? body_a->inv_inertia : 0.0;
+    double inv_mass_b = body_b->awake ? body_b->inv_mass : 0.0;
+    double inv_inertia_b = body_b->awake ? body_b->inv_inertia : 0.0;
+    c->contact = index;
+    c->body_a = contact->body_a;
+    c->body_b = contact->body_b;
+    c->inv_mass_a = inv_mass_a;
+    c->inv_inertia_a = inv_inertia_a;
+    c->inv_mass_b = inv_mass_b;
+    c->inv_inertia_b = inv_inertia_b;
+    c->against_fixed = (inv_mass_a == 0.0 && inv_inertia_a == 0.0) || (inv_mass_b == 0.0 && inv_inertia_b == 0.0);
+    rb_vec2 normal = contact->manifold.normal;
+    c->normal = normal;
+    /* Only a circle has a radius, and a contact with a circle has one
+     * point (manifold.c, segment_manifold.c): the shapes of a two-point
+     * contact, the most common, need not be read. */
+    int point_count = contact->manifold.point_count;
+    double radius_a = 0.0;
+    double radius_b = 0.0;
+    bool circle_a = false;
+    bool circle_b = false;
+    if (point_count < 2) {
+        const rb_shape *shape_a = &world->shapes[contact->pair.shape_a];
+        const rb_shape *shape_b = &world->shapes[contact->pair.shape_b];
+        circle_a = shape_a->type == RB_SHAPE_CIRCLE;
+        circle_b = shape_b->type == RB_SHAPE_CIRCLE;
+        radius_a = circle_radius(shape_a);
+        radius_b = circle_radius(shape_b);
+    }
+    assert(point_count < 2 || (world->shapes[contact->pair.shape_a].type != RB_SHAPE_CIRCLE &&
+                               world->shapes[contact->pair.shape_b].type != RB_SHAPE_CIRCLE));
+    c->radius_a = radius_a;
+    c->radius_b = radius_b;
+    /* Which face the normal belongs to: a polygon's against a circle;
+     * between outlines, the reference face. */
+    bool reference_on_b = circle_a || (!circle_b && contact->manifold.reference_on_b);
+    if (circle_a && circle_b) {
+        c->normal_follows = RB_NORMAL_FROM_CENTERS;
+        c->local_normal = normal;
+    } else if (reference_on_b) {
+        c->normal_follows = RB_NORMAL_TURNS_WITH_B;
+        c->local_normal = rb_inv_rotate(sb->rotation, normal);
+    } else {
+        c->normal_follows = RB_NORMAL_TURNS_WITH_A;
+        c->local_normal = rb_inv_rotate(sa->rotation, normal);
+    }
+    c->friction = contact->friction;
+    c->restitution = contact->restitution;
+    world->bouncing_constraint_count += contact->restitution > 0.0;
+    c->point_count = point_count;
+    bool warm = world->settings.warm_starting;
+    for (int j = 0; j < point_count; ++j) {
+        const rb_manifold_point *mp = &contact->manifold.points[j];
+        rb_constraint_point *p = &c->points[j];
+        /* The two surface points, half the separation either side of the
+         * manifold point; a circle side keeps its centre instead. */
+        rb_vec2 surface_a = rb_mul_sub(mp->point, 0.5 * mp->separation + radius_a, normal);
+        rb_vec2 surface_b = rb_mul_add(mp->point, 0.5 * mp->separation + radius_b, normal);
+        p->local_surface_a = rb_inv_rotate(sa->rotation, rb_sub(surface_a, sa->center));
+        p->local_surface_b = rb_inv_rotate(sb->rotation, rb_sub(surface_b, sb->center));
+        p->normal_impulse = warm ? mp->normal_impulse : 0.0;
+        p->tangent_impulse = warm ? mp->tangent_impulse : 0.0;
+        p->max_normal_impulse = 0.0;
+        p->min_normal_velocity = 0.0;
+    }
+    c->use_block = false;
+}
+
+int rb_contact_solver_prepare(rb_world *world)
+{
+    world->bouncing_constraint_count = 0;
+    int start[RB_COLOUR_COUNT + 1];
+    int count = colour_contacts(world, start);
+    if (count < 0) {
         world->constraint_count = 0;
         return -1;
     }
-    int next[RB_COLOUR_COUNT + 1];
-    world->statistics.contact_colours = rb_colouring_offsets(colouring, next);
-    bool warm = world->settings.warm_starting;
-    world->bouncing_constraint_count = 0;
-    for (int i = 0; i < world->contact_count; ++i) {
-        const rb_contact *contact = &world->contacts[i];
-        if (contact->colour < 0) {
-            continue;
-        }
-        const rb_body *body_a = &world->bodies[contact->body_a];
-        const rb_body *body_b = &world->bodies[contact->body_b];
-        const rb_body_state *sa = &world->states[contact->body_a];
-        const rb_body_state *sb = &world->states[contact->body_b];
-        assert(contact->body_a != contact->body_b);
-        assert(fabs(rb_length(contact->manifold.normal) - 1.0) < 1e-9);
-        rb_contact_constraint *c = &world->constraints[next[contact->colour]++];
-        c->contact = i;
-        c->body_a = contact->body_a;
-        c->body_b = contact->body_b;
-        c->inv_mass_a = body_a->awake ? body_a->inv_mass : 0.0;
-        c->inv_inertia_a = body_a->awake ? body_a->inv_inertia : 0.0;
-        c->inv_mass_b = body_b->awake ? body_b->inv_mass : 0.0;
-        c->inv_inertia_b = body_b->awake ? body_b->inv_inertia : 0.0;
-        c->against_fixed =
-            (c->inv_mass_a == 0.0 && c->inv_inertia_a == 0.0) || (c->inv_mass_b == 0.0 && c->inv_inertia_b == 0.0);
-        c->normal = contact->manifold.normal;
-        const rb_shape *shape_a = &world->shapes[contact->pair.shape_a];
-        const rb_shape *shape_b = &world->shapes[contact->pair.shape_b];
-        bool circle_a = shape_a->type == RB_SHAPE_CIRCLE;
-        bool circle_b = shape_b->type == RB_SHAPE_CIRCLE;
-        c->radius_a = circle_a ? shape_a->geometry.circle.radius : 0.0;
-        c->radius_b = circle_b ? shape_b->geometry.circle.radius : 0.0;
-        /* Which face the normal belongs to: a polygon's against a circle;
-         * between outlines, the reference face. */
-        bool reference_on_b = circle_a || (!circle_b && contact->manifold.reference_on_b);
-        if (circle_a && circle_b) {
-            c->normal_follows = RB_NORMAL_FROM_CENTERS;
-            c->local_normal = c->normal;
-        } else if (reference_on_b) {
-            c->normal_follows = RB_NORMAL_TURNS_WITH_B;
-            c->local_normal = rb_inv_rotate(sb->rotation, c->normal);
-        } else {
-            c->normal_follows = RB_NORMAL_TURNS_WITH_A;
-            c->local_normal = rb_inv_rotate(sa->rotation, c->normal);
-        }
-        c->friction = contact->friction;
-        c->restitution = contact->restitution;
-        world->bouncing_constraint_count += contact->restitution > 0.0;
-        c->point_count = contact->manifold.point_count;
-        for (int j = 0; j < c->point_count; ++j) {
-            const rb_manifold_point *mp = &contact->manifold.points[j];
-            rb_constraint_point *p = &c->points[j];
-            /* The two surface points, half the separation either side of
-             * the manifold point; a circle side keeps its centre instead. */
-            rb_vec2 surface_a = rb_mul_sub(mp->point, 0.5 * mp->separation + c->radius_a, c->normal);
-            rb_vec2 surface_b = rb_mul_add(mp->point, 0.5 * mp->separation + c->radius_b, c->normal);
-            p->local_surface_a = rb_inv_rotate(sa->rotation, rb_sub(surface_a, sa->center));
-            p->local_surface_b = rb_inv_rotate(sb->rotation, rb_sub(surface_b, sb->center));
-            p->normal_impulse = warm ? mp->normal_impulse : 0.0;
-            p->tangent_impulse = warm ? mp->tangent_impulse : 0.0;
-            p->max_normal_impulse = 0.0;
-            p->min_normal_velocity = 0.0;
-        }
-        c->use_block = false;
-    }
     world->constraint_count = count;
+    if (world->settings.type == RB_SOLVER_SOFT_STEP && rb_contact_blocks_build(world, start) == 0) {
+        return count; /* the constraints and the blocks in one pass (contact_blocks.c) */
+    }
+    /* The constraints colour by colour, each colour's in the contacts'
+     * order. */
+    for (int i = 0; i < world->contact_count; ++i) {
+        int colour = world->contacts[i].colour;
+        if (colour >= 0) {
+            rb_contact_solver_fill_constraint(world, i, &world->constraints[start[colour]++]);
+        }
+    }
     return count;
 }
 
@@ -293,6 +351,13 @@ static void record_approaches(rb_world *world, double h, bool first_substep)
             p->impact_velocity = -sqrt(fmax(at_start * at_start - 2.0 * a * fmax(s, 0.0), 0.0));
             p->approach_acceleration = a;
         }
+    }
+}
+
+void rb_contact_solver_record_approaches(rb_world *world, double h)
+{
+    if (world->bouncing_constraint_count > 0) {
+        record_approaches(world, h, true);
     }
 }
 

@@ -70,33 +70,41 @@ typedef struct rb_block_point {
     rb_lanes4 local_surface_ax, local_surface_ay, local_surface_bx, local_surface_by;
     rb_lanes4 normal_arm_a, normal_arm_b, tangent_arm_a, tangent_arm_b;
     rb_lanes4 normal_mass, tangent_mass;
-    rb_lanes4 normal_impulse, tangent_impulse, max_normal_impulse;
+    rb_lanes4 normal_impulse, tangent_impulse;
 } rb_block_point;
 
-/* Up to four two-point contacts of one colour, with no circle side, laid
- * side by side for the passes that solve them together
- * (contact_blocks.c): a copy of their constraints made once a step, which
- * then holds their impulses until they are written back. A lane without
- * a contact holds one that cannot act (no mass, no impulse) between the
- * batches' two idle bodies. */
+/* Up to four two-point contacts of one colour, with no circle side and no
+ * restitution, laid side by side for the passes that solve them together
+ * (contact_blocks.c), 276 bytes a contact. They are laid out as their
+ * constraints are made (rb_contact_blocks_build), their points prepared
+ * by the step's first warm start, and they hold their impulses until
+ * rb_contact_solver_scatter_blocks writes them back to the constraints.
+ * A lane without a contact holds one that cannot act (no mass, no
+ * impulse) between the batches' two idle bodies. */
 struct rb_contact_block {
     /* the lanes' bodies in world->states (or the idle ones), found once
      * a step: no body is made or destroyed within a step, so the array
      * stays where it is */
     rb_body_state *body_a[RB_BLOCK_LANES];
     rb_body_state *body_b[RB_BLOCK_LANES];
-    int constraints[RB_BLOCK_LANES];       /* indices in world->constraints; -1 for an empty lane */
     int64_t against_fixed[RB_BLOCK_LANES]; /* all ones where the contact is against a body that cannot move */
     rb_lanes4 normal_x, normal_y;
     rb_lanes4 inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
     rb_lanes4 friction;
     rb_block_point points[2];
+    int constraints[RB_BLOCK_LANES]; /* indices in world->constraints; -1 for an empty lane */
 };
 
 /* Builds one constraint per touching, non-sensor contact that has a
  * dynamic body, fixing each point's surface points in the bodies' frames;
- * carries the impulses of the last step if warm starting. */
+ * carries the impulses of the last step if warm starting. The constraints
+ * are laid out colour by colour (constraint_colouring.h); for the soft
+ * step, the blocks are laid out in the same pass (rb_contact_blocks_build).
+ * Returns how many, or -1 when out of memory. */
 int rb_contact_solver_prepare(rb_world *world);
+/* Fills constraint c from contact `index` at the poses now: all but what
+ * rb_contact_solver_prepare_points_range prepares. */
+void rb_contact_solver_fill_constraint(rb_world *world, int index, rb_contact_constraint *c);
 /* What a solver asks of rb_contact_solver_prepare_substep. */
 typedef struct rb_substep_rows {
     /* the step's first substep: every point of a contact with restitution
@@ -145,25 +153,33 @@ typedef struct rb_contact_softness {
     double inv_h;                     /* 1/s, of the substep */
     bool use_bias;                    /* false in the relax pass: stop approach, push nothing */
 } rb_contact_softness;
-/* The soft step's contacts several at a time (contact_blocks.c). After
- * rb_contact_solver_prepare_substep at the step's start, gather_blocks
- * lays the two-point constraints of each colour four by four into
- * blocks (world->contact_batches); from then until scatter_blocks writes
- * their impulses back to the constraints, the blocks hold those impulses,
- * and only the passes below may be run on the contacts. The constraints
- * with one point, and those of the overflow colour, stay where they are
- * and are solved one at a time. */
-void rb_contact_solver_gather_blocks(rb_world *world);
+/* The soft step's contacts several at a time (contact_blocks.c). The
+ * two-point contacts of each colour are laid four by four into blocks
+ * (world->contact_batches) as rb_contact_solver_prepare makes their
+ * constraints; rb_contact_solver_prepare_singles then prepares the
+ * points of the other constraints (those with one point, with
+ * restitution, or in the overflow colour), which stay where they are and
+ * are solved one at a time, and the step's first warm start prepares the
+ * blocks' points. From then until scatter_blocks writes their impulses
+ * back to the constraints, the blocks hold those impulses, and only the
+ * passes below may be run on the contacts. */
+void rb_contact_solver_prepare_singles(rb_world *world, double h);
 void rb_contact_solver_scatter_blocks(rb_world *world);
-/* The warm start over the batches: rb_contact_solver_warm_start's result. */
-void rb_contact_solver_warm_start_blocks(rb_world *world);
+/* The warm start over the batches: rb_contact_solver_warm_start's result.
+ * With `prepare` (the step's first), each block's points are first
+ * prepared at the poses now, as rb_contact_solver_prepare_points_range
+ * prepares a constraint's. */
+void rb_contact_solver_warm_start_blocks(rb_world *world, bool prepare);
 void rb_contact_batches_free(rb_contact_batches *batches);
 size_t rb_contact_batches_bytes(const rb_contact_batches *batches);
+/* For the restitution of the constraints that bounce, at the step's
+ * start: what rb_contact_solver_prepare_substep records in the first
+ * substep (contact_solver.c). */
+void rb_contact_solver_record_approaches(rb_world *world, double h);
 
-/* One pass of soft contacts, over the batches gathered by
- * rb_contact_solver_gather_blocks. The anchors, normal and masses stay as
- * rb_contact_solver_prepare_substep set them at the start of the step;
- * each point's separation is measured anew from the poses now, so a pass
+/* One pass of soft contacts, over the batches rb_contact_solver_prepare
+ * laid out. The anchors, normal and masses stay as they were prepared at
+ * the start of the step; each point's separation is measured anew from the poses now, so a pass
  * after the positions moved sees the gap they left. The two-point
  * contacts of a colour four or two at a time (contact_blocks.c), the
  * others one at a time by rb_contact_solver_solve_soft_range. */

@@ -7,12 +7,14 @@
  * positions move removes the velocity the push left behind.
  *
  *   prepare the step       contact anchors, normal and masses, fixed for
- *                          the step, laid four by four into blocks
- *                          within a colour (contact_blocks.c);
- *                          each point's separation is measured anew from
- *                          the poses whenever it is solved;
- *                          the joints' masses and anchors in the body
- *                          frames (rb_joints_collect_active)
+ *                          the step: the two-point contacts laid four by
+ *                          four into blocks within a colour as their
+ *                          constraints are made, and prepared by the
+ *                          first warm start (contact_blocks.c), the
+ *                          others here; each point's separation is
+ *                          measured anew from the poses whenever it is
+ *                          solved; the joints' masses and anchors in the
+ *                          body frames (rb_joints_collect_active)
  *   for each substep of length h = dt / substeps:
  *       substep callback       the user's
  *       integrate velocities
@@ -92,8 +94,7 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
     rb_rigid_response joint_rigid = {.mass_scale = 1.0};
 
     double t = rb_world_clock(world);
-    rb_contact_solver_prepare_substep(world, h, (rb_substep_rows){.first_substep = true});
-    rb_contact_solver_gather_blocks(world);
+    rb_contact_solver_prepare_singles(world, h);
     profile->prepare += rb_world_clock(world) - t;
 
     for (int substep = 0; substep < substeps; ++substep) {
@@ -114,7 +115,7 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
         }
         rb_cables_warm_start(world);
         rb_joints_warm_start(world, h);
-        rb_contact_solver_warm_start_blocks(world);
+        rb_contact_solver_warm_start_blocks(world, substep == 0);
         profile->warm_start += rb_world_clock(world) - t;
 
         t = rb_world_clock(world);

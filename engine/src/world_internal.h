@@ -173,8 +173,8 @@ typedef struct rb_contact_block rb_contact_block; /* contact_solver.h */
 
 /* The soft step's contacts as its passes take them, colour by colour:
  * blocks of two-point constraints solved several at a time, and the
- * constraints of the colour with one point, one at a time
- * (rb_contact_solver_gather_blocks). */
+ * colour's other constraints one at a time (rb_contact_blocks_build,
+ * contact_blocks.c). */
 typedef struct rb_contact_batches {
     rb_contact_block *blocks;
     int block_count, block_capacity;
@@ -185,6 +185,7 @@ typedef struct rb_contact_batches {
     int overflow_start;                    /* the overflow colour's constraints, in world->constraints */
     rb_body_state idle_a, idle_b;          /* the bodies of a block's empty lanes: at rest, at the origin */
     int width;                             /* contacts solved by one vector operation: 4 or 2 (contact_blocks.h) */
+    int lanes[RB_COLOUR_COUNT + 1];        /* colour k's contacts that take a lane of a block */
 } rb_contact_batches;
 
 /* A symmetric 3x3 block K = J·M⁻¹·Jᵀ of three of a joint's rows, whose
