@@ -160,6 +160,7 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->island_parent, &world->island_capacity, sizeof *world->island_parent);
     rb_free_array((void **)&world->island_size, &world->island_size_capacity, sizeof *world->island_size);
     rb_free_array((void **)&world->island_rest, &world->island_rest_capacity, sizeof *world->island_rest);
+    rb_free_array((void **)&world->moving_bodies, &world->moving_body_capacity, sizeof *world->moving_bodies);
     rb_free_array((void **)&world->constraints, &world->constraint_capacity, sizeof *world->constraints);
     rb_colouring_free(&world->contact_colouring);
     rb_contact_batches_free(&world->contact_batches);
@@ -264,6 +265,7 @@ size_t rb_world_bytes_in_use(const rb_world *world)
            (size_t)world->wide_shape_capacity * sizeof *world->wide_shapes +
            (size_t)world->band_entry_capacity * sizeof *world->band_entries +
            (size_t)world->band_end_capacity * sizeof *world->band_end +
+           (size_t)world->moving_body_capacity * sizeof *world->moving_bodies +
            (size_t)world->constraint_capacity * sizeof *world->constraints +
            (size_t)world->contact_colouring.body_capacity * sizeof *world->contact_colouring.body_colours +
            rb_contact_batches_bytes(&world->contact_batches) + (size_t)world->joint_capacity * sizeof *world->joints +
