@@ -27,28 +27,39 @@
  * this list, a few dozen bytes a body, rather than every slot of
  * world->bodies (some 200 bytes each, for sleeping and static bodies
  * too) twice a substep. */
+static rb_moving_body moving_body(const rb_world *world, int index)
+{
+    const rb_body *body = &world->bodies[index];
+    return (rb_moving_body){
+        .index = index,
+        .acceleration = rb_mul_add(rb_scale(body->gravity_scale, world->gravity), body->inv_mass, body->force),
+        .inv_inertia = body->inv_inertia,
+        .torque = body->torque,
+        .linear_damping = body->linear_damping,
+        .angular_damping = body->angular_damping,
+    };
+}
+
+static bool is_moving(const rb_body *body, rb_body_type type)
+{
+    return body->in_use && body->awake && body->type == type;
+}
+
 static void list_moving_bodies(rb_world *world)
 {
-    rb_vec2 gravity = world->gravity;
     int count = 0;
-    for (int pass = 0; pass < 2; ++pass) {
-        rb_body_type listed = pass == 0 ? RB_BODY_DYNAMIC : RB_BODY_KINEMATIC;
-        for (int i = 0; i < world->body_slots; ++i) {
-            const rb_body *body = &world->bodies[i];
-            if (!body->in_use || !body->awake || body->type != listed) {
-                continue;
-            }
-            world->moving_bodies[count++] = (rb_moving_body){
-                .index = i,
-                .acceleration = rb_mul_add(rb_scale(body->gravity_scale, gravity), body->inv_mass, body->force),
-                .inv_inertia = body->inv_inertia,
-                .torque = body->torque,
-                .linear_damping = body->linear_damping,
-                .angular_damping = body->angular_damping,
-            };
+    int kinematic = 0;
+    for (int i = 0; i < world->body_slots; ++i) {
+        if (is_moving(&world->bodies[i], RB_BODY_DYNAMIC)) {
+            world->moving_bodies[count++] = moving_body(world, i);
         }
-        if (pass == 0) {
-            world->moving_dynamic_count = count;
+        kinematic += is_moving(&world->bodies[i], RB_BODY_KINEMATIC) ? 1 : 0;
+    }
+    world->moving_dynamic_count = count;
+    /* the kinematic bodies after them, in a second pass when there are some */
+    for (int i = 0; kinematic > 0 && i < world->body_slots; ++i) {
+        if (is_moving(&world->bodies[i], RB_BODY_KINEMATIC)) {
+            world->moving_bodies[count++] = moving_body(world, i);
         }
     }
     world->moving_body_count = count;

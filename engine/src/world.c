@@ -360,28 +360,23 @@ rb_shape_id rb_make_shape_id(const rb_world *world, int index)
 
 /* ---- the step ------------------------------------------------------------ */
 
-static double mechanical_energy(const rb_world *world)
+/* A dynamic body's kinetic energy and potential energy in gravity. */
+static double mechanical_energy(const rb_world *world, int i)
 {
-    double energy = 0.0;
-    for (int i = 0; i < world->body_slots; ++i) {
-        const rb_body *body = &world->bodies[i];
-        if (!body->in_use || body->type != RB_BODY_DYNAMIC) {
-            continue;
-        }
-        const rb_body_state *s = &world->states[i];
-        rb_vec2 gravity = rb_scale(body->gravity_scale, world->gravity);
-        energy += 0.5 * body->mass * rb_length_squared(s->linear_velocity) +
-                  0.5 * body->inertia * s->angular_velocity * s->angular_velocity -
-                  body->mass * rb_dot(gravity, s->center);
-    }
-    return energy;
+    const rb_body *body = &world->bodies[i];
+    const rb_body_state *s = &world->states[i];
+    rb_vec2 gravity = rb_scale(body->gravity_scale, world->gravity);
+    return 0.5 * body->mass * rb_length_squared(s->linear_velocity) +
+           0.5 * body->inertia * s->angular_velocity * s->angular_velocity - body->mass * rb_dot(gravity, s->center);
 }
 
 /* Clears the forces applied for this step, recomputes each moving body's
  * rotation from its angle (the solvers composed small turns,
- * rb_body_state_turn) and refreshes the counters. */
+ * rb_body_state_turn), sums the energy and refreshes the counters, in one
+ * pass over the bodies. */
 static void finalize_step(rb_world *world)
 {
+    double energy = 0.0;
     for (int i = 0; i < world->body_slots; ++i) {
         rb_body *body = &world->bodies[i];
         body->force = rb_v2(0.0, 0.0);
@@ -389,8 +384,12 @@ static void finalize_step(rb_world *world)
         if (body->in_use && body->awake && body->type != RB_BODY_STATIC) {
             world->states[i].rotation = rb_rot_from_angle(world->states[i].angle);
         }
+        if (body->in_use && body->type == RB_BODY_DYNAMIC) {
+            energy += mechanical_energy(world, i);
+        }
     }
     rb_statistics *stats = &world->statistics;
+    stats->energy = energy;
     stats->body_count = world->body_count;
     stats->shape_count = world->shape_count;
     stats->pair_count = world->contact_count;
@@ -403,7 +402,6 @@ static void finalize_step(rb_world *world)
     }
     stats->joint_count = world->joint_count;
     rb_joints_measure_errors(world, &stats->max_joint_gap, &stats->max_joint_angle_error);
-    stats->energy = mechanical_energy(world);
 }
 
 /* The first dynamic body whose pose or velocity is NaN or infinite,
@@ -518,7 +516,9 @@ rb_status rb_world_step(rb_world *world, double dt)
     }
 
     t = rb_world_clock(world);
-    rb_contacts_update_sensors(world);
+    if (world->solid_shape_count < world->shape_count) {
+        rb_contacts_update_sensors(world); /* a world without sensors need not look for their contacts */
+    }
     profile->sensors = rb_world_clock(world) - t;
 
     t = rb_world_clock(world);
