@@ -105,7 +105,7 @@ void rb_body_wake(rb_world *world, int body)
  * dynamic body and a moving kinematic one (or a mouse joint) is counted
  * and, with sleep on, wakes the dynamic body: that is what
  * keep_awake_by_kinematic repeats after the step. */
-static inline void link(rb_world *world, int a, int b)
+static inline __attribute__((always_inline)) void link(rb_world *world, int a, int b)
 {
     int kind_a = island_kind(world, a);
     int kind_b = island_kind(world, b);
