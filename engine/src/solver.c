@@ -30,13 +30,14 @@
 static rb_moving_body moving_body(const rb_world *world, int index)
 {
     const rb_body *body = &world->bodies[index];
+    bool dynamic = body->type == RB_BODY_DYNAMIC; /* a kinematic body moves at its own velocity, undamped */
     return (rb_moving_body){
         .index = index,
         .acceleration = rb_mul_add(rb_scale(body->gravity_scale, world->gravity), body->inv_mass, body->force),
         .inv_inertia = body->inv_inertia,
         .torque = body->torque,
-        .linear_damping = body->linear_damping,
-        .angular_damping = body->angular_damping,
+        .linear_damping = dynamic ? body->linear_damping : 0.0,
+        .angular_damping = dynamic ? body->angular_damping : 0.0,
     };
 }
 
