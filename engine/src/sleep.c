@@ -255,12 +255,13 @@ void rb_islands_sleep(rb_world *world, double dt)
         }
         islands += world->island_parent[i] == i ? 1 : 0;
         rb_body *body = &world->bodies[i];
-        if (body->awake) {
-            body->sleep_time =
-                world->enable_sleep && body->enable_sleep && is_resting(world, i) ? body->sleep_time + dt : 0.0;
+        /* With sleep off, every time at rest stays 0 (rb_world_enable_sleep
+         * woke every body), and the bodies are only counted. */
+        if (body->awake && world->enable_sleep) {
+            body->sleep_time = body->enable_sleep && is_resting(world, i) ? body->sleep_time + dt : 0.0;
             some_rested = some_rested || body->sleep_time >= RB_TIME_TO_SLEEP;
-            ++awake;
         }
+        awake += body->awake ? 1 : 0;
     }
     if (world->enable_sleep && world->kinematic_link_count > 0) {
         for_each_link(world, keep_awake_by_kinematic);
