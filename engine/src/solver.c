@@ -27,7 +27,7 @@
  * this list, a few dozen bytes a body, rather than every slot of
  * world->bodies (some 200 bytes each, for sleeping and static bodies
  * too) twice a substep. */
-static rb_moving_body moving_body(const rb_world *world, int index)
+static inline rb_moving_body moving_body(const rb_world *world, int index)
 {
     const rb_body *body = &world->bodies[index];
     bool dynamic = body->type == RB_BODY_DYNAMIC; /* a kinematic body moves at its own velocity, undamped */
