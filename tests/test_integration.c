@@ -208,6 +208,10 @@ Test(integration, kinematic_body_moves_at_constant_velocity_and_ignores_gravity)
     def.angle = 0.1;
     def.linear_velocity = rb_v2(1.5, -0.5);
     def.angular_velocity = 0.8;
+    /* Damping is a drag on dynamic bodies: a kinematic body given some
+     * keeps its velocity all the same. */
+    def.linear_damping = 2.0;
+    def.angular_damping = 3.0;
     rb_body_id body;
     cr_assert_eq(rb_body_create(world, &def, &body), RB_OK, "%s", rb_last_error());
     add_box(world, body, 0.5, 0.5, 1.0);

@@ -247,3 +247,43 @@ Test(sleep, switching_on_a_motor_wakes_the_joint_bodies)
     expect_near(rb_revolute_joint_speed(world, pin), 1.0, 1e-4, "the rod turns at the motor's speed");
     destroy_world_and_expect_no_leak(world);
 }
+
+/* Sets a slack law on the cable from the third substep of the step on:
+ * the law wakes the cable's bodies there, within the step. */
+static void slack_law_from_third_substep(rb_world *world, int substep, double h, void *context)
+{
+    (void)h;
+    const rb_cable_id *cable = context;
+    if (substep >= 2) {
+        rb_cable_set_tension_law(world, *cable, 0.0, 0.0);
+    }
+}
+
+Test(sleep, a_body_woken_within_a_step_moves_from_that_substep_on)
+{
+    /* A bob put to sleep in the air hangs on a slack cable. The substep
+     * callback sets the cable's law in substeps 2 to 5 of 6, which wakes
+     * the bob before substep 2's velocities are integrated: it falls for
+     * 4 substeps of h, semi-implicit Euler, v = -4·g·h and y moves by
+     * -g·h²·(1 + 2 + 3 + 4), not by a whole step's fall nor by nothing. */
+    rb_world *world = make_world(rb_v2(0.0, -9.8));
+    rb_body_id hook = make_body(world, RB_BODY_STATIC, rb_v2(0.0, 10.0), 0.0);
+    rb_body_id bob = make_body(world, RB_BODY_DYNAMIC, rb_v2(0.0, 5.0), 0.0);
+    add_circle(world, bob, rb_v2(0.0, 0.0), 0.25, 1.0);
+    rb_cable_def def = rb_default_cable_def();
+    def.point_count = 2;
+    def.bodies[0] = hook;
+    def.bodies[1] = bob;
+    rb_cable_id cable;
+    cr_assert_eq(rb_cable_create(world, &def, &cable), RB_OK, "%s", rb_last_error());
+    cr_assert_eq(rb_body_set_awake(world, bob, false), RB_OK);
+    step_world(world, TEST_DT, 1);
+    cr_assert_eq(rb_body_position(world, bob).y, 5.0, "asleep, the bob stays put");
+    cr_assert_eq(rb_world_set_substep_callback(world, slack_law_from_third_substep, &cable), RB_OK);
+    step_world(world, TEST_DT, 1);
+    cr_expect(rb_body_is_awake(world, bob));
+    double h = substep_of(world, TEST_DT);
+    expect_near(rb_body_linear_velocity(world, bob).y, -4.0 * 9.8 * h, 1e-12, "velocity after 4 substeps");
+    expect_near(rb_body_position(world, bob).y, 5.0 - 9.8 * h * h * 10.0, 1e-12, "fall over 4 substeps");
+    destroy_world_and_expect_no_leak(world);
+}

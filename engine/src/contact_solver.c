@@ -821,8 +821,13 @@ static inline double deeper(double deepest, double overlap) { return overlap > d
 
 /* The overlap at a constraint's points as the solver carries them:
  * -current_separation at each, to the bit. A face's normal is the same
- * for all the points, so it is turned once. */
-static double carried_overlap(const rb_world *world, const rb_contact_constraint *c)
+ * for all the points, so it is turned once. Between two polygons the
+ * radii are 0 and their terms, each adding 0·n to a point, are left out:
+ * they could only change the sign of a zero, and a zero is never the
+ * deepest overlap. Inline, as the sweep's one call per contact: a call
+ * cost 17 instructions a contact, saving and restoring registers. */
+static inline __attribute__((always_inline)) double carried_overlap(const rb_world *world,
+                                                                    const rb_contact_constraint *c)
 {
     const rb_body_state *a = &world->states[c->body_a];
     const rb_body_state *b = &world->states[c->body_b];
@@ -835,10 +840,15 @@ static double carried_overlap(const rb_world *world, const rb_contact_constraint
         return deepest;
     }
     rb_vec2 normal = turned_normal(c, a, b);
+    bool polygons = c->radius_a == 0.0 && c->radius_b == 0.0;
     for (int j = 0; j < c->point_count; ++j) {
         const rb_constraint_point *p = &c->points[j];
-        rb_vec2 pa = rb_mul_add(rb_add(a->center, rb_rotate(a->rotation, p->local_surface_a)), c->radius_a, normal);
-        rb_vec2 pb = rb_mul_sub(rb_add(b->center, rb_rotate(b->rotation, p->local_surface_b)), c->radius_b, normal);
+        rb_vec2 pa = rb_add(a->center, rb_rotate(a->rotation, p->local_surface_a));
+        rb_vec2 pb = rb_add(b->center, rb_rotate(b->rotation, p->local_surface_b));
+        if (!polygons) {
+            pa = rb_mul_add(pa, c->radius_a, normal);
+            pb = rb_mul_sub(pb, c->radius_b, normal);
+        }
         deepest = deeper(deepest, -rb_dot(normal, rb_sub(pb, pa)));
     }
     return deepest;

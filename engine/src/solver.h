@@ -13,8 +13,8 @@
 
 /* Advances the bodies by dt with the world's contacts and the world's
  * solver, filling the solver's part of the profile and statistics. Fails
- * only when memory for the constraints runs out; the bodies are then left
- * unmoved. */
+ * only when memory for the constraints or the list of moving bodies runs
+ * out; the bodies are then left unmoved. */
 rb_status rb_solver_step(rb_world *world, double dt);
 
 /* What a solver did in a step, summed over its substeps. */

@@ -160,6 +160,7 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->island_parent, &world->island_capacity, sizeof *world->island_parent);
     rb_free_array((void **)&world->island_size, &world->island_size_capacity, sizeof *world->island_size);
     rb_free_array((void **)&world->island_rest, &world->island_rest_capacity, sizeof *world->island_rest);
+    rb_free_array((void **)&world->moving_bodies, &world->moving_body_capacity, sizeof *world->moving_bodies);
     rb_free_array((void **)&world->constraints, &world->constraint_capacity, sizeof *world->constraints);
     rb_colouring_free(&world->contact_colouring);
     rb_contact_batches_free(&world->contact_batches);
@@ -264,6 +265,7 @@ size_t rb_world_bytes_in_use(const rb_world *world)
            (size_t)world->wide_shape_capacity * sizeof *world->wide_shapes +
            (size_t)world->band_entry_capacity * sizeof *world->band_entries +
            (size_t)world->band_end_capacity * sizeof *world->band_end +
+           (size_t)world->moving_body_capacity * sizeof *world->moving_bodies +
            (size_t)world->constraint_capacity * sizeof *world->constraints +
            (size_t)world->contact_colouring.body_capacity * sizeof *world->contact_colouring.body_colours +
            rb_contact_batches_bytes(&world->contact_batches) + (size_t)world->joint_capacity * sizeof *world->joints +
@@ -358,28 +360,23 @@ rb_shape_id rb_make_shape_id(const rb_world *world, int index)
 
 /* ---- the step ------------------------------------------------------------ */
 
-static double mechanical_energy(const rb_world *world)
+/* A dynamic body's kinetic energy and potential energy in gravity. */
+static double mechanical_energy(const rb_world *world, int i)
 {
-    double energy = 0.0;
-    for (int i = 0; i < world->body_slots; ++i) {
-        const rb_body *body = &world->bodies[i];
-        if (!body->in_use || body->type != RB_BODY_DYNAMIC) {
-            continue;
-        }
-        const rb_body_state *s = &world->states[i];
-        rb_vec2 gravity = rb_scale(body->gravity_scale, world->gravity);
-        energy += 0.5 * body->mass * rb_length_squared(s->linear_velocity) +
-                  0.5 * body->inertia * s->angular_velocity * s->angular_velocity -
-                  body->mass * rb_dot(gravity, s->center);
-    }
-    return energy;
+    const rb_body *body = &world->bodies[i];
+    const rb_body_state *s = &world->states[i];
+    rb_vec2 gravity = rb_scale(body->gravity_scale, world->gravity);
+    return 0.5 * body->mass * rb_length_squared(s->linear_velocity) +
+           0.5 * body->inertia * s->angular_velocity * s->angular_velocity - body->mass * rb_dot(gravity, s->center);
 }
 
 /* Clears the forces applied for this step, recomputes each moving body's
  * rotation from its angle (the solvers composed small turns,
- * rb_body_state_turn) and refreshes the counters. */
+ * rb_body_state_turn), sums the energy and refreshes the counters, in one
+ * pass over the bodies. */
 static void finalize_step(rb_world *world)
 {
+    double energy = 0.0;
     for (int i = 0; i < world->body_slots; ++i) {
         rb_body *body = &world->bodies[i];
         body->force = rb_v2(0.0, 0.0);
@@ -387,8 +384,12 @@ static void finalize_step(rb_world *world)
         if (body->in_use && body->awake && body->type != RB_BODY_STATIC) {
             world->states[i].rotation = rb_rot_from_angle(world->states[i].angle);
         }
+        if (body->in_use && body->type == RB_BODY_DYNAMIC) {
+            energy += mechanical_energy(world, i);
+        }
     }
     rb_statistics *stats = &world->statistics;
+    stats->energy = energy;
     stats->body_count = world->body_count;
     stats->shape_count = world->shape_count;
     stats->pair_count = world->contact_count;
@@ -401,7 +402,6 @@ static void finalize_step(rb_world *world)
     }
     stats->joint_count = world->joint_count;
     rb_joints_measure_errors(world, &stats->max_joint_gap, &stats->max_joint_angle_error);
-    stats->energy = mechanical_energy(world);
 }
 
 /* The first dynamic body whose pose or velocity is NaN or infinite,
@@ -516,7 +516,9 @@ rb_status rb_world_step(rb_world *world, double dt)
     }
 
     t = rb_world_clock(world);
-    rb_contacts_update_sensors(world);
+    if (world->solid_shape_count < world->shape_count) {
+        rb_contacts_update_sensors(world); /* a world without sensors need not look for their contacts */
+    }
     profile->sensors = rb_world_clock(world) - t;
 
     t = rb_world_clock(world);

@@ -88,6 +88,16 @@ typedef struct rb_body {
     int first_joint; /* -1 when none; joints link through rb_joint.next_on_a / next_on_b */
 } rb_body;
 
+/* A body the step moves (awake, not static), with what its integration
+ * reads, listed once a step (solver.c): the substeps' integration passes
+ * then read these instead of every slot of world->bodies. */
+typedef struct rb_moving_body {
+    int index;                              /* in world->bodies and world->states */
+    rb_vec2 acceleration;                   /* m/s², gravity times the body's scale plus force over mass */
+    double inv_inertia, torque;             /* 1/(kg·m²), N·m */
+    double linear_damping, angular_damping; /* 1/s, >= 0 */
+} rb_moving_body;
+
 typedef struct rb_shape {
     int next_free;
     uint32_t generation; /* of the last object made in the slot; RB_RETIRED_GENERATION retires it */
@@ -535,6 +545,17 @@ struct rb_world {
     int island_size_capacity;
     double *island_rest; /* s, by island root: the shortest time at rest */
     int island_rest_capacity;
+    /* this step's links from a dynamic body to a moving kinematic one or
+     * to a mouse joint (sleep.c) */
+    int kinematic_link_count;
+    /* The bodies this step moves (solver.c, list_moving_bodies): the
+     * dynamic ones first, then the kinematic ones. A body woken within the
+     * step (a cable law set in the substep callback) makes the list
+     * stale, and the next integration lists them again. */
+    rb_moving_body *moving_bodies;
+    int moving_body_count, moving_dynamic_count, moving_body_capacity;
+    bool moving_bodies_stale;
+
     int sweep_count;  /* shapes in the sweep: all of them, or none while no shape is solid */
     bool sweep_stale; /* shapes were created or destroyed: rebuild the sweep */
     /* a body was placed (it may be asleep) or the settings changed since
