@@ -434,6 +434,16 @@ static inline void apply_impulse_at(const rb_contact_constraint *c, rb_vec2 ra, 
     v->angular_b += c->inv_inertia_b * rb_cross(rb, impulse);
 }
 
+/* A point's accumulated impulses applied again, the normal's then the
+ * tangent's. */
+static inline void warm_start_point(const constraint_rows *m, const rb_constraint_point *p, body_velocities *v)
+{
+    apply_row_impulse(m, m->normal, p->normal_arm_a, p->normal_arm_b, p->normal_impulse, v);
+    apply_row_impulse(m, m->tangent, p->tangent_arm_a, p->tangent_arm_b, p->tangent_impulse, v);
+}
+
+/* The two-point case, by far the most common, written out so the
+ * compiler unrolls it (as in solve_friction). */
 void rb_contact_solver_warm_start_range(rb_world *world, int begin, int end)
 {
     for (int i = begin; i < end; ++i) {
@@ -442,10 +452,9 @@ void rb_contact_solver_warm_start_range(rb_world *world, int begin, int end)
         rb_body_state *b = &world->states[c->body_b];
         body_velocities v = load_velocities(a, b);
         constraint_rows m = load_rows(c);
-        for (int j = 0; j < c->point_count; ++j) {
-            const rb_constraint_point *p = &c->points[j];
-            apply_row_impulse(&m, m.normal, p->normal_arm_a, p->normal_arm_b, p->normal_impulse, &v);
-            apply_row_impulse(&m, m.tangent, p->tangent_arm_a, p->tangent_arm_b, p->tangent_impulse, &v);
+        warm_start_point(&m, &c->points[0], &v);
+        if (c->point_count == 2) {
+            warm_start_point(&m, &c->points[1], &v);
         }
         store_velocities(&v, a, b);
     }
