@@ -55,10 +55,14 @@ static inline void store_pair(double *first, double *second, lanes a)
 }
 
 /* Point j of both contacts, as rb_contact_solver_prepare_points_range
- * prepares it, with the normal (nx, ny) as the bodies now turn it. */
-static inline void prepare_point(rb_contact_constraint *c0, rb_contact_constraint *c1, int j, const rb_body_state *a0,
-                                 const rb_body_state *b0, const rb_body_state *a1, const rb_body_state *b1, lanes nx,
-                                 lanes ny, const rb_solver_settings *settings, double inv_h, rb_substep_rows rows)
+ * prepares it, with the normal (nx, ny) as the bodies now turn it.
+ * Inlined whatever its size, so that the two points share their bodies'
+ * loads (a call for each point read them twice). */
+static inline __attribute__((always_inline)) void prepare_point(rb_contact_constraint *c0, rb_contact_constraint *c1,
+                                                                int j, const rb_body_state *a0, const rb_body_state *b0,
+                                                                const rb_body_state *a1, const rb_body_state *b1,
+                                                                lanes nx, lanes ny, const rb_solver_settings *settings,
+                                                                double inv_h, rb_substep_rows rows)
 {
     rb_constraint_point *p0 = &c0->points[j];
     rb_constraint_point *p1 = &c1->points[j];
