@@ -499,6 +499,16 @@ static inline void apply_impulse_at(const rb_contact_constraint *c, rb_vec2 ra, 
     v->angular_b += c->inv_inertia_b * rb_cross(rb, impulse);
 }
 
+/* A point's accumulated impulses applied again, the normal's then the
+ * tangent's. */
+static inline void warm_start_point(const constraint_rows *m, const rb_constraint_point *p, body_velocities *v)
+{
+    apply_row_impulse(m, m->normal, p->normal_arm_a, p->normal_arm_b, p->normal_impulse, v);
+    apply_row_impulse(m, m->tangent, p->tangent_arm_a, p->tangent_arm_b, p->tangent_impulse, v);
+}
+
+/* The two-point case, by far the most common, written out so the
+ * compiler unrolls it (as in solve_friction). */
 void rb_contact_solver_warm_start_range(rb_world *world, int begin, int end)
 {
     for (int i = begin; i < end; ++i) {
@@ -507,10 +517,9 @@ void rb_contact_solver_warm_start_range(rb_world *world, int begin, int end)
         rb_body_state *b = &world->states[c->body_b];
         body_velocities v = load_velocities(a, b);
         constraint_rows m = load_rows(c);
-        for (int j = 0; j < c->point_count; ++j) {
-            const rb_constraint_point *p = &c->points[j];
-            apply_row_impulse(&m, m.normal, p->normal_arm_a, p->normal_arm_b, p->normal_impulse, &v);
-            apply_row_impulse(&m, m.tangent, p->tangent_arm_a, p->tangent_arm_b, p->tangent_impulse, &v);
+        warm_start_point(&m, &c->points[0], &v);
+        if (c->point_count == 2) {
+            warm_start_point(&m, &c->points[1], &v);
         }
         store_velocities(&v, a, b);
     }
@@ -623,8 +632,11 @@ static inline void solve_normal_block(rb_contact_constraint *c, const constraint
 void rb_contact_solver_solve_velocities(rb_world *world, bool backwards)
 {
     int n = world->constraint_count;
-    for (int k = 0; k < n; ++k) {
-        rb_contact_constraint *c = &world->constraints[backwards ? n - 1 - k : k];
+    /* the sweep's first constraint and the step to the next one */
+    int i = backwards ? n - 1 : 0;
+    int next = backwards ? -1 : 1;
+    for (int k = 0; k < n; ++k, i += next) {
+        rb_contact_constraint *c = &world->constraints[i];
         rb_body_state *a = &world->states[c->body_a];
         rb_body_state *b = &world->states[c->body_b];
         body_velocities v = load_velocities(a, b);
@@ -723,10 +735,23 @@ static void displace(rb_body_state *s, double inv_mass, double inv_inertia, rb_v
     }
 }
 
+/* The two surface points of p as the bodies now carry them, given the
+ * normal now: current_geometry's second half. */
+static inline void surface_points_now(const rb_contact_constraint *c, const rb_constraint_point *p,
+                                      const rb_body_state *sa, const rb_body_state *sb, rb_vec2 normal, rb_vec2 *pa,
+                                      rb_vec2 *pb)
+{
+    *pa = rb_mul_add(rb_add(sa->center, rb_rotate(sa->rotation, p->local_surface_a)), c->radius_a, normal);
+    *pb = rb_mul_sub(rb_add(sb->center, rb_rotate(sb->rotation, p->local_surface_b)), c->radius_b, normal);
+}
+
 /* Non-linear Gauss-Seidel (Catto, Box2D 2.x): for each point, C is the
  * overlap beyond the slop scaled by beta and capped; the position
  * impulse -C/K along the normal moves the two bodies apart directly,
- * with K the effective mass at the anchors as they are now. */
+ * with K the effective mass at the anchors as they are now. A face's
+ * normal is the same at both points of a contact until a correction
+ * turns its body, so it is turned once and again only after one (the
+ * same numbers as current_geometry's for each point). */
 bool rb_contact_solver_correct_positions(rb_world *world)
 {
     const rb_solver_settings *settings = &world->settings;
@@ -735,12 +760,18 @@ bool rb_contact_solver_correct_positions(rb_world *world)
         const rb_contact_constraint *c = &world->constraints[i];
         rb_body_state *a = &world->states[c->body_a];
         rb_body_state *b = &world->states[c->body_b];
+        bool face = c->normal_follows != RB_NORMAL_FROM_CENTERS;
+        rb_vec2 face_normal = face ? turned_normal(c, a, b) : c->normal;
         for (int j = 0; j < c->point_count; ++j) {
             const rb_constraint_point *p = &c->points[j];
-            rb_vec2 normal;
+            rb_vec2 normal = face_normal;
             rb_vec2 pa;
             rb_vec2 pb;
-            current_geometry(c, p, a, b, &normal, &pa, &pb);
+            if (face) {
+                surface_points_now(c, p, a, b, normal, &pa, &pb);
+            } else {
+                current_geometry(c, p, a, b, &normal, &pa, &pb);
+            }
             double s = rb_dot(normal, rb_sub(pb, pa));
             deepest = rb_min(deepest, s);
             double error = rb_min(
@@ -756,6 +787,9 @@ bool rb_contact_solver_correct_positions(rb_world *world)
             rb_vec2 impulse = rb_scale(-error * mass, normal);
             displace(a, -c->inv_mass_a, -c->inv_inertia_a, ra, impulse);
             displace(b, c->inv_mass_b, c->inv_inertia_b, rb, impulse);
+            if (face) {
+                face_normal = turned_normal(c, a, b);
+            }
         }
     }
     return deepest >= -NGS_TOLERANCE_SLOPS * settings->linear_slop;

@@ -55,10 +55,14 @@ static inline void store_pair(double *first, double *second, lanes a)
 }
 
 /* Point j of both contacts, as rb_contact_solver_prepare_points_range
- * prepares it, with the normal (nx, ny) as the bodies now turn it. */
-static inline void prepare_point(rb_contact_constraint *c0, rb_contact_constraint *c1, int j, const rb_body_state *a0,
-                                 const rb_body_state *b0, const rb_body_state *a1, const rb_body_state *b1, lanes nx,
-                                 lanes ny, const rb_solver_settings *settings, double inv_h, rb_substep_rows rows)
+ * prepares it, with the normal (nx, ny) as the bodies now turn it.
+ * Inlined whatever its size, so that the two points share their bodies'
+ * loads (a call for each point read them twice). */
+static inline __attribute__((always_inline)) void prepare_point(rb_contact_constraint *c0, rb_contact_constraint *c1,
+                                                                int j, const rb_body_state *a0, const rb_body_state *b0,
+                                                                const rb_body_state *a1, const rb_body_state *b1,
+                                                                lanes nx, lanes ny, const rb_solver_settings *settings,
+                                                                double inv_h, rb_substep_rows rows)
 {
     rb_constraint_point *p0 = &c0->points[j];
     rb_constraint_point *p1 = &c1->points[j];
@@ -172,6 +176,11 @@ static void prepare_two(rb_contact_constraint *c0, rb_contact_constraint *c1, co
         int block = _mm_movemask_pd(use_block);
         c0->use_block = (block & 1) != 0;
         c1->use_block = (block & 2) != 0;
+    }
+    /* Two blocks need no points' masses: their divisions, which bound
+     * this function's time, are left out. */
+    if (_mm_movemask_pd(use_block) == 3) {
+        return;
     }
     store_pair(&c0->points[0].normal_mass, &c1->points[0].normal_mass,
                select(use_block, pair(c0->points[0].normal_mass, c1->points[0].normal_mass),
