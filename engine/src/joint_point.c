@@ -92,15 +92,7 @@ void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double 
     rb_point_constraint_prepare_drift(world, joint, h);
 }
 
-void rb_point_alone_prepare(const rb_world *world, rb_joint *joint, double h)
-{
-    rb_joint_frame *f = &joint->frame;
-    const rb_block_matrix k = make_mass_matrix(f, f->ra, f->rb);
-    set_point_inverse(f, &k);
-    rb_point_constraint_prepare_drift(world, joint, h);
-}
-
-void rb_point_constraint_prepare_drift(const rb_world *world, rb_joint *joint, double h)
+static void prepare_drift(const rb_world *world, rb_joint_frame *f, int body_a, int body_b, double h)
 {
     /* Solve for the velocities that keep the anchors together at the end
      * of the substep, not just momentarily (SHAKE; Ryckaert, Ciccotti,
@@ -119,15 +111,26 @@ void rb_point_constraint_prepare_drift(const rb_world *world, rb_joint *joint, d
      * capped at one linear slop per substep. The angular velocities are
      * the substep's starting ones (rb_joints_prepare recorded them before
      * any warm start), so the drift is fixed for the substep. */
-    rb_joint_frame *f = &joint->frame;
-    const double omega_a = world->substep_omega[joint->body_a];
-    const double omega_b = world->substep_omega[joint->body_b];
+    const double omega_a = world->substep_omega[body_a];
+    const double omega_b = world->substep_omega[body_b];
     rb_vec2 drift = rb_scale(0.5 * h, rb_sub(rb_scale(omega_b * omega_b, f->rb), rb_scale(omega_a * omega_a, f->ra)));
     double drift_cap = world->settings.linear_slop / h;
     if (rb_length_squared(drift) > drift_cap * drift_cap) { /* a square root only when capping */
         drift = rb_scale(drift_cap / rb_length(drift), drift);
     }
     f->point_drift = drift;
+}
+
+void rb_point_alone_prepare(const rb_world *world, rb_joint_frame *f, int body_a, int body_b, double h)
+{
+    const rb_block_matrix k = make_mass_matrix(f, f->ra, f->rb);
+    set_point_inverse(f, &k);
+    prepare_drift(world, f, body_a, body_b, h);
+}
+
+void rb_point_constraint_prepare_drift(const rb_world *world, rb_joint *joint, double h)
+{
+    prepare_drift(world, &joint->frame, joint->body_a, joint->body_b, h);
 }
 
 /* Solves K_s·(x, z) = (v, w) with K_s = K whose coupling terms k13, k23
@@ -154,7 +157,7 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
     rb_body_state *a = rb_joint_state_a(world, joint);
     rb_body_state *b = rb_joint_state_b(world, joint);
     const rb_rigid_response *response = &world->joint_response;
-    rb_vec2 cdot = rb_point_velocity_error(world, joint, a, b);
+    rb_vec2 cdot = rb_point_frame_velocity_error(world, &joint->frame, a, b);
 
     rb_vec2 impulse;
     if (row != NULL) {
@@ -181,14 +184,17 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
             return;
         }
     }
-    rb_point_alone_solve(world, joint, a, b, cdot, accumulated);
+    rb_point_alone_solve(world, &joint->frame, a, b, cdot, accumulated);
 }
 
 double rb_point_constraint_correct(rb_world *world, rb_joint *joint, const double *angle_error)
 {
-    rb_body_state *a = rb_joint_state_a(world, joint);
-    rb_body_state *b = rb_joint_state_b(world, joint);
-    const rb_joint_frame *f = &joint->frame;
+    return rb_point_frame_correct(&joint->frame, rb_joint_state_a(world, joint), rb_joint_state_b(world, joint),
+                                  angle_error);
+}
+
+double rb_point_frame_correct(const rb_joint_frame *f, rb_body_state *a, rb_body_state *b, const double *angle_error)
+{
     rb_vec2 ra = rb_rotate(a->rotation, f->local_a);
     rb_vec2 rb = rb_rotate(b->rotation, f->local_b);
     rb_vec2 gap = rb_sub(rb_add(b->center, rb), rb_add(a->center, ra));

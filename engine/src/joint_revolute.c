@@ -190,7 +190,7 @@ void rb_revolute_warm_start(rb_world *world, rb_joint *joint, double h)
         if (joint->in_tree) {
             rb_point_constraint_prepare_drift(world, joint, h);
         } else {
-            rb_point_alone_prepare(world, joint, h);
+            rb_point_alone_prepare(world, &joint->frame, joint->body_a, joint->body_b, h);
         }
         rb_joint_apply_linear(joint, a, b, r->point_impulse);
         return;
@@ -248,7 +248,8 @@ void rb_revolute_solve(rb_world *world, rb_joint *joint, double h)
          * rb_joints_solve_velocities). */
         rb_body_state *a = rb_joint_state_a(world, joint);
         rb_body_state *b = rb_joint_state_b(world, joint);
-        rb_point_alone_solve(world, joint, a, b, rb_point_velocity_error(world, joint, a, b), &r->point_impulse);
+        rb_point_alone_solve(world, &joint->frame, a, b, rb_point_frame_velocity_error(world, &joint->frame, a, b),
+                             &r->point_impulse);
         return;
     }
     if (joint->in_block && !r->enable_spring && !r->enable_motor) {

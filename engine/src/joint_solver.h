@@ -116,17 +116,21 @@ static inline double rb_one_sided_row_total(const rb_world *world, double mass, 
 
 rb_body_state *rb_joint_state_a(rb_world *world, const rb_joint *joint); /* NULL for a mouse joint */
 rb_body_state *rb_joint_state_b(rb_world *world, const rb_joint *joint);
-/* Applies P at the anchors: -P to A, +P to B. Inline, with the next two:
- * every joint row calls them in every pass. */
-static inline void rb_joint_apply_linear(const rb_joint *joint, rb_body_state *a, rb_body_state *b, rb_vec2 impulse)
+/* Applies P at the frame's anchors: -P to A, +P to B. Inline, with the
+ * next two: every joint row calls them in every pass. */
+static inline void rb_frame_apply_linear(const rb_joint_frame *f, rb_body_state *a, rb_body_state *b, rb_vec2 impulse)
 {
-    const rb_joint_frame *f = &joint->frame;
     if (a != NULL) {
         a->linear_velocity = rb_mul_sub(a->linear_velocity, f->inv_mass_a, impulse);
         a->angular_velocity -= f->inv_inertia_a * rb_cross(f->ra, impulse);
     }
     b->linear_velocity = rb_mul_add(b->linear_velocity, f->inv_mass_b, impulse);
     b->angular_velocity += f->inv_inertia_b * rb_cross(f->rb, impulse);
+}
+
+static inline void rb_joint_apply_linear(const rb_joint *joint, rb_body_state *a, rb_body_state *b, rb_vec2 impulse)
+{
+    rb_frame_apply_linear(&joint->frame, a, b, impulse);
 }
 
 /* Applies L about the centres: -L to A, +L to B. */
@@ -139,14 +143,20 @@ static inline void rb_joint_apply_angular(const rb_joint *joint, rb_body_state *
 }
 
 /* Velocity of anchor B relative to anchor A. */
-static inline rb_vec2 rb_joint_relative_velocity(const rb_joint *joint, const rb_body_state *a, const rb_body_state *b)
+static inline rb_vec2 rb_frame_relative_velocity(const rb_joint_frame *f, const rb_body_state *a,
+                                                 const rb_body_state *b)
 {
-    rb_vec2 vb = rb_add(b->linear_velocity, rb_cross_sv(b->angular_velocity, joint->frame.rb));
+    rb_vec2 vb = rb_add(b->linear_velocity, rb_cross_sv(b->angular_velocity, f->rb));
     if (a == NULL) {
         return vb;
     }
-    rb_vec2 va = rb_add(a->linear_velocity, rb_cross_sv(a->angular_velocity, joint->frame.ra));
+    rb_vec2 va = rb_add(a->linear_velocity, rb_cross_sv(a->angular_velocity, f->ra));
     return rb_sub(vb, va);
+}
+
+static inline rb_vec2 rb_joint_relative_velocity(const rb_joint *joint, const rb_body_state *a, const rb_body_state *b)
+{
+    return rb_frame_relative_velocity(&joint->frame, a, b);
 }
 /* World anchor points at the poses now. */
 rb_vec2 rb_joint_anchor_a(const rb_world *world, const rb_joint *joint);
@@ -202,11 +212,10 @@ typedef struct rb_angular_row {
 /* The point's velocity error in a pass: Cdot less the substep's
  * centripetal drift (rb_point_constraint_prepare_drift), plus the
  * response's bias on the anchors' gap at the current poses. */
-static inline rb_vec2 rb_point_velocity_error(const rb_world *world, const rb_joint *joint, const rb_body_state *a,
-                                              const rb_body_state *b)
+static inline rb_vec2 rb_point_frame_velocity_error(const rb_world *world, const rb_joint_frame *f,
+                                                    const rb_body_state *a, const rb_body_state *b)
 {
-    const rb_joint_frame *f = &joint->frame;
-    rb_vec2 cdot = rb_sub(rb_joint_relative_velocity(joint, a, b), f->point_drift);
+    rb_vec2 cdot = rb_sub(rb_frame_relative_velocity(f, a, b), f->point_drift);
     const rb_rigid_response *response = &world->joint_response;
     if (response->bias_rate > 0.0) {
         rb_vec2 gap = rb_sub(rb_add(b->center, f->rb), rb_add(a->center, f->ra));
@@ -215,20 +224,25 @@ static inline rb_vec2 rb_point_velocity_error(const rb_world *world, const rb_jo
     return cdot;
 }
 
+static inline rb_vec2 rb_point_velocity_error(const rb_world *world, const rb_joint *joint, const rb_body_state *a,
+                                              const rb_body_state *b)
+{
+    return rb_point_frame_velocity_error(world, &joint->frame, a, b);
+}
+
 /* The pin alone, for its velocity error cdot: x = -K⁻¹·cdot with the
  * substep's inverse (0 when K is singular, which only two bodies that
  * cannot move make), as the pass's response delivers it, added to
  * *accumulated and applied at the anchors. Inline: the joint grid's and
  * the chains' pins run it in every velocity pass. */
-static inline void rb_point_alone_solve(const rb_world *world, const rb_joint *joint, rb_body_state *a,
+static inline void rb_point_alone_solve(const rb_world *world, const rb_joint_frame *f, rb_body_state *a,
                                         rb_body_state *b, rb_vec2 cdot, rb_vec2 *accumulated)
 {
-    const rb_joint_frame *f = &joint->frame;
     rb_vec2 impulse = rb_v2(-(f->point_inverse11 * cdot.x + f->point_inverse12 * cdot.y),
                             -(f->point_inverse12 * cdot.x + f->point_inverse22 * cdot.y));
     impulse = rb_soften(&world->joint_response, impulse, *accumulated);
     *accumulated = rb_add(*accumulated, impulse);
-    rb_joint_apply_linear(joint, a, b, impulse);
+    rb_frame_apply_linear(f, a, b, impulse);
 }
 
 /* Sets the joint's point block (K, and its cofactors for a pin with an
@@ -236,9 +250,9 @@ static inline void rb_point_alone_solve(const rb_world *world, const rb_joint *j
  * the frame is prepared, before any solve. */
 void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h);
 /* Sets the frame's point inverse and point_drift, not the point block: what
- * a pin without an angular row reads (rb_point_alone_solve), with one
- * cache line less written a pin a substep. */
-void rb_point_alone_prepare(const rb_world *world, rb_joint *joint, double h);
+ * a pin without an angular row reads (rb_point_alone_solve), for the
+ * frame of a joint or a pin row between bodies body_a and body_b. */
+void rb_point_alone_prepare(const rb_world *world, rb_joint_frame *f, int body_a, int body_b, double h);
 /* Sets only the frame's point_drift: what a pin its tree solves needs
  * (joint_tree.h). */
 void rb_point_constraint_prepare_drift(const rb_world *world, rb_joint *joint, double h);
@@ -249,6 +263,28 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
  * angle_error is not NULL, to remove that much relative angle (rad,
  * angle(B) - angle(A) - target) at the same time; returns the gap before. */
 double rb_point_constraint_correct(rb_world *world, rb_joint *joint, const double *angle_error);
+/* The same for the frame of a joint or a pin row; a is not NULL. */
+double rb_point_frame_correct(const rb_joint_frame *f, rb_body_state *a, rb_body_state *b, const double *angle_error);
+
+/* ---- the plain pins' rows (joint_pin.c) ------------------------------------ */
+
+/* At the first substep, once the trees are found: gathers the active
+ * plain pins that no tree solves into world->pin_rows, in the order of
+ * the active joints, with their masses, anchors and impulses; from then
+ * on the phases below read the rows for them, not the joints. */
+void rb_pins_gather(rb_world *world);
+/* The row's substep: its frame at the poses now (as any pin's), then the
+ * warm start with its impulse. */
+void rb_pin_warm_start(rb_world *world, rb_pin_row *row, double h);
+/* A velocity pass of the row, under the pass's response. */
+void rb_pin_solve(rb_world *world, rb_pin_row *row);
+/* An NGS pass of the row; true when its gap was within the linear slop. */
+bool rb_pin_correct(rb_world *world, rb_pin_row *row);
+/* At the end of the step: the rows' impulses back into their joints. */
+void rb_pins_scatter(rb_world *world);
+/* The impulse of a plain pin's point: its row's within a step, else its
+ * joint's. */
+rb_vec2 rb_pin_impulse(const rb_world *world, const rb_joint *joint);
 
 /* ---- the types ------------------------------------------------------------ */
 

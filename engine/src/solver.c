@@ -89,6 +89,7 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
     rb_joints_prepare(world);
     if (substep == 0) {
         rb_joint_tree_build(world);
+        rb_pins_gather(world); /* the plain pins the trees leave, into their rows */
     }
     rb_contact_solver_prepare_substep(world, h,
                                       (rb_substep_rows){.first_substep = substep == 0,
@@ -151,6 +152,7 @@ rb_status rb_solver_step(rb_world *world, double dt)
     }
 
     t = rb_world_clock(world);
+    rb_pins_scatter(world);
     world->statistics.max_penetration = rb_contact_solver_store_impulses(world);
     profile->store_impulses = rb_world_clock(world) - t;
 

@@ -111,6 +111,7 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
         rb_joints_prepare(world);
         if (substep == 0) {
             rb_joint_tree_build(world);
+            rb_pins_gather(world); /* the plain pins the trees leave, into their rows */
         }
         rb_cables_warm_start(world);
         rb_joints_warm_start(world, h);
