@@ -423,6 +423,8 @@ rb_status rb_joints_collect_active(rb_world *world)
                       sizeof *world->point_blocks) != 0 ||
         rb_grow_array((void **)&world->pin_rows, &world->pin_row_capacity, world->joint_count,
                       sizeof *world->pin_rows) != 0 ||
+        rb_grow_array((void **)&world->pin_anchors, &world->pin_anchor_capacity, world->joint_count,
+                      sizeof *world->pin_anchors) != 0 ||
         rb_grow_array((void **)&world->pin_row_of, &world->pin_row_of_capacity, world->joint_slots,
                       sizeof *world->pin_row_of) != 0) {
         world->active_joint_count = 0;
@@ -464,7 +466,7 @@ void rb_joints_warm_start(rb_world *world, double h)
     for (int k = 0; k < world->active_joint_count; ++k) {
         int row = world->pin_row_of[world->active_joints[k]];
         if (row >= 0) {
-            rb_pin_warm_start(world, &world->pin_rows[row], h);
+            rb_pin_warm_start(world, row, h);
             continue;
         }
         rb_joint *joint = active_joint(world, k);
@@ -556,7 +558,7 @@ bool rb_joints_correct_positions(rb_world *world, bool backwards)
         int slot = pass_slot(list, k, backwards);
         int row = world->pin_row_of[slot];
         if (row >= 0) {
-            all_within = rb_pin_correct(world, &world->pin_rows[row]) && all_within;
+            all_within = rb_pin_correct(world, row) && all_within;
             continue;
         }
         rb_joint *joint = &world->joints[slot];

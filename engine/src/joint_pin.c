@@ -5,9 +5,11 @@
  * than arithmetic: each phase of each substep streams every pin through
  * the caches. A joint holds much a pass does not read (its type's
  * settings, the pool's links, the limits' impulses), so the step gathers
- * what a plain pin's phases read, its bodies, frame and impulse, into a
- * dense array once, lets the phases read and write that alone, and
- * writes the impulses back into the joints once at the end (Box2D v3
+ * what a plain pin's velocity passes read, its bodies, the frame's
+ * masses, anchors, inverse mass matrix and drift, and its impulse, into a
+ * dense array once (rb_pin_row), with the anchors in the body frames
+ * beside it, lets the phases read and write those alone, and writes the
+ * impulses back into the joints once at the end (Box2D v3
  * keeps its joints' solver data apart from their definitions likewise:
  * Catto, "Solver2D", 2024).
  *
@@ -17,6 +19,40 @@
 #include <string.h>
 
 #include "joint_solver.h"
+
+/* The row's frame as its joint's would be, anchors in the body frames
+ * included; and what of a frame the row keeps. */
+static rb_joint_frame row_frame(const rb_pin_row *row, const rb_pin_anchors *anchors)
+{
+    return (rb_joint_frame){
+        .inv_mass_a = row->inv_mass_a,
+        .inv_inertia_a = row->inv_inertia_a,
+        .inv_mass_b = row->inv_mass_b,
+        .inv_inertia_b = row->inv_inertia_b,
+        .ra = row->ra,
+        .rb = row->rb,
+        .point_inverse11 = row->point_inverse11,
+        .point_inverse12 = row->point_inverse12,
+        .point_inverse22 = row->point_inverse22,
+        .point_drift = row->point_drift,
+        .local_a = anchors->local_a,
+        .local_b = anchors->local_b,
+    };
+}
+
+static void keep_frame(rb_pin_row *row, const rb_joint_frame *f)
+{
+    row->inv_mass_a = f->inv_mass_a;
+    row->inv_inertia_a = f->inv_inertia_a;
+    row->inv_mass_b = f->inv_mass_b;
+    row->inv_inertia_b = f->inv_inertia_b;
+    row->ra = f->ra;
+    row->rb = f->rb;
+    row->point_inverse11 = f->point_inverse11;
+    row->point_inverse12 = f->point_inverse12;
+    row->point_inverse22 = f->point_inverse22;
+    row->point_drift = f->point_drift;
+}
 
 void rb_pins_gather(rb_world *world)
 {
@@ -30,42 +66,39 @@ void rb_pins_gather(rb_world *world)
         if (joint->type != RB_JOINT_REVOLUTE || !joint->plain_pin || joint->in_tree) {
             continue;
         }
-        world->pin_rows[count] = (rb_pin_row){
-            .body_a = joint->body_a,
-            .body_b = joint->body_b,
-            .impulse = joint->as.revolute.point_impulse,
-            .frame = joint->frame, /* the masses and local anchors this step (rb_joints_collect_active) */
-        };
+        /* the masses and the anchors in the body frames, this step's (rb_joints_collect_active) */
+        rb_pin_row *row = &world->pin_rows[count];
+        row->body_a = joint->body_a;
+        row->body_b = joint->body_b;
+        row->impulse = joint->as.revolute.point_impulse;
+        keep_frame(row, &joint->frame);
+        world->pin_anchors[count] = (rb_pin_anchors){joint->frame.local_a, joint->frame.local_b};
         world->pin_row_of[slot] = count++;
     }
     world->pin_row_count = count;
     world->pin_rows_live = true;
 }
 
-void rb_pin_warm_start(rb_world *world, rb_pin_row *row, double h)
+void rb_pin_warm_start(rb_world *world, int row, double h)
 {
-    rb_joint_frame *f = &row->frame;
-    rb_body_state *a = &world->states[row->body_a];
-    rb_body_state *b = &world->states[row->body_b];
-    f->rb = rb_rotate(b->rotation, f->local_b);
-    f->ra = rb_rotate(a->rotation, f->local_a);
-    rb_point_alone_prepare(world, f, row->body_a, row->body_b, h);
-    rb_frame_apply_linear(f, a, b, row->impulse);
+    rb_pin_row *r = &world->pin_rows[row];
+    rb_joint_frame f = row_frame(r, &world->pin_anchors[row]);
+    rb_body_state *a = &world->states[r->body_a];
+    rb_body_state *b = &world->states[r->body_b];
+    f.rb = rb_rotate(b->rotation, f.local_b);
+    f.ra = rb_rotate(a->rotation, f.local_a);
+    rb_point_alone_prepare(world, &f, r->body_a, r->body_b, h);
+    rb_frame_apply_linear(&f, a, b, r->impulse);
+    keep_frame(r, &f);
 }
 
-void rb_pin_solve(rb_world *world, rb_pin_row *row)
+bool rb_pin_correct(rb_world *world, int row)
 {
-    rb_body_state *a = &world->states[row->body_a];
-    rb_body_state *b = &world->states[row->body_b];
-    rb_point_alone_solve(world, &row->frame, a, b, rb_point_frame_velocity_error(world, &row->frame, a, b),
-                         &row->impulse);
-}
-
-bool rb_pin_correct(rb_world *world, rb_pin_row *row)
-{
-    rb_body_state *a = &world->states[row->body_a];
-    rb_body_state *b = &world->states[row->body_b];
-    return rb_point_frame_correct(&row->frame, a, b, NULL) <= world->settings.linear_slop;
+    const rb_pin_row *r = &world->pin_rows[row];
+    const rb_joint_frame f = row_frame(r, &world->pin_anchors[row]);
+    rb_body_state *a = &world->states[r->body_a];
+    rb_body_state *b = &world->states[r->body_b];
+    return rb_point_frame_correct(&f, a, b, NULL) <= world->settings.linear_slop;
 }
 
 void rb_pins_scatter(rb_world *world)
