@@ -82,14 +82,9 @@ void rb_pins_gather(rb_world *world)
 void rb_pin_warm_start(rb_world *world, int row, double h)
 {
     rb_pin_row *r = &world->pin_rows[row];
-    rb_joint_frame f = row_frame(r, &world->pin_anchors[row]);
-    rb_body_state *a = &world->states[r->body_a];
-    rb_body_state *b = &world->states[r->body_b];
-    f.rb = rb_rotate(b->rotation, f.local_b);
-    f.ra = rb_rotate(a->rotation, f.local_a);
-    rb_point_alone_prepare(world, &f, r->body_a, r->body_b, h);
-    rb_frame_apply_linear(&f, a, b, r->impulse);
-    keep_frame(r, &f);
+    rb_pin_prepare(world, r, &world->pin_anchors[row], h);
+    rb_apply_at_anchors(&world->states[r->body_a], &world->states[r->body_b], r->inv_mass_a, r->inv_inertia_a,
+                        r->inv_mass_b, r->inv_inertia_b, r->ra, r->rb, r->impulse);
 }
 
 bool rb_pin_correct(rb_world *world, int row)

@@ -17,11 +17,12 @@
  * limit correction). */
 #include "joint_solver.h"
 
-static inline rb_block_matrix make_mass_matrix(const rb_joint_frame *f, rb_vec2 ra, rb_vec2 rb)
+static inline rb_block_matrix make_mass_matrix(double inv_mass_a, double inv_inertia_a, double inv_mass_b,
+                                               double inv_inertia_b, rb_vec2 ra, rb_vec2 rb)
 {
-    double m = f->inv_mass_a + f->inv_mass_b;
-    double ia = f->inv_inertia_a;
-    double ib = f->inv_inertia_b;
+    double m = inv_mass_a + inv_mass_b;
+    double ia = inv_inertia_a;
+    double ib = inv_inertia_b;
     return (rb_block_matrix){
         .k11 = m + ia * ra.y * ra.y + ib * rb.y * rb.y,
         .k12 = -ia * ra.x * ra.y - ib * rb.x * rb.y,
@@ -70,29 +71,29 @@ static bool solves_with_a_row(const rb_joint *joint)
 }
 
 /* The inverse of K's upper-left 2x2, the pin alone, or all 0 when that
- * is singular. */
-static void set_point_inverse(rb_joint_frame *f, const rb_block_matrix *k)
+ * is singular: (inverse11, inverse12, inverse22). */
+static void point_inverse(const rb_block_matrix *k, double *inverse11, double *inverse12, double *inverse22)
 {
     double det = k->k11 * k->k22 - k->k12 * k->k12;
     double inverse_det = det > 0.0 ? 1.0 / det : 0.0;
-    f->point_inverse11 = inverse_det * k->k22;
-    f->point_inverse12 = -inverse_det * k->k12;
-    f->point_inverse22 = inverse_det * k->k11;
+    *inverse11 = inverse_det * k->k22;
+    *inverse12 = -inverse_det * k->k12;
+    *inverse22 = inverse_det * k->k11;
 }
 
 void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h)
 {
     rb_joint_frame *f = &joint->frame;
     rb_point_block *p = point_block(world, joint);
-    p->mass = make_mass_matrix(f, f->ra, f->rb);
-    set_point_inverse(f, &p->mass);
+    p->mass = make_mass_matrix(f->inv_mass_a, f->inv_inertia_a, f->inv_mass_b, f->inv_inertia_b, f->ra, f->rb);
+    point_inverse(&p->mass, &f->point_inverse11, &f->point_inverse12, &f->point_inverse22);
     if (solves_with_a_row(joint)) {
         make_cofactors(p);
     }
     rb_point_constraint_prepare_drift(world, joint, h);
 }
 
-static void prepare_drift(const rb_world *world, rb_joint_frame *f, int body_a, int body_b, double h)
+static inline rb_vec2 centripetal_drift(const rb_world *world, int body_a, int body_b, rb_vec2 ra, rb_vec2 rb, double h)
 {
     /* Solve for the velocities that keep the anchors together at the end
      * of the substep, not just momentarily (SHAKE; Ryckaert, Ciccotti,
@@ -113,24 +114,28 @@ static void prepare_drift(const rb_world *world, rb_joint_frame *f, int body_a, 
      * any warm start), so the drift is fixed for the substep. */
     const double omega_a = world->substep_omega[body_a];
     const double omega_b = world->substep_omega[body_b];
-    rb_vec2 drift = rb_scale(0.5 * h, rb_sub(rb_scale(omega_b * omega_b, f->rb), rb_scale(omega_a * omega_a, f->ra)));
+    rb_vec2 drift = rb_scale(0.5 * h, rb_sub(rb_scale(omega_b * omega_b, rb), rb_scale(omega_a * omega_a, ra)));
     double drift_cap = world->settings.linear_slop / h;
     if (rb_length_squared(drift) > drift_cap * drift_cap) { /* a square root only when capping */
         drift = rb_scale(drift_cap / rb_length(drift), drift);
     }
-    f->point_drift = drift;
-}
-
-void rb_point_alone_prepare(const rb_world *world, rb_joint_frame *f, int body_a, int body_b, double h)
-{
-    const rb_block_matrix k = make_mass_matrix(f, f->ra, f->rb);
-    set_point_inverse(f, &k);
-    prepare_drift(world, f, body_a, body_b, h);
+    return drift;
 }
 
 void rb_point_constraint_prepare_drift(const rb_world *world, rb_joint *joint, double h)
 {
-    prepare_drift(world, &joint->frame, joint->body_a, joint->body_b, h);
+    rb_joint_frame *f = &joint->frame;
+    f->point_drift = centripetal_drift(world, joint->body_a, joint->body_b, f->ra, f->rb, h);
+}
+
+void rb_pin_prepare(const rb_world *world, rb_pin_row *row, const rb_pin_anchors *anchors, double h)
+{
+    row->rb = rb_rotate(world->states[row->body_b].rotation, anchors->local_b);
+    row->ra = rb_rotate(world->states[row->body_a].rotation, anchors->local_a);
+    const rb_block_matrix k =
+        make_mass_matrix(row->inv_mass_a, row->inv_inertia_a, row->inv_mass_b, row->inv_inertia_b, row->ra, row->rb);
+    point_inverse(&k, &row->point_inverse11, &row->point_inverse12, &row->point_inverse22);
+    row->point_drift = centripetal_drift(world, row->body_a, row->body_b, row->ra, row->rb, h);
 }
 
 /* Solves K_s·(x, z) = (v, w) with K_s = K whose coupling terms k13, k23
@@ -199,7 +204,7 @@ double rb_point_frame_correct(const rb_joint_frame *f, rb_body_state *a, rb_body
     rb_vec2 rb = rb_rotate(b->rotation, f->local_b);
     rb_vec2 gap = rb_sub(rb_add(b->center, rb), rb_add(a->center, ra));
     double error = rb_length(gap);
-    rb_block_matrix k = make_mass_matrix(f, ra, rb);
+    rb_block_matrix k = make_mass_matrix(f->inv_mass_a, f->inv_inertia_a, f->inv_mass_b, f->inv_inertia_b, ra, rb);
     rb_vec2 impulse = rb_v2(0.0, 0.0);
     double angular = 0.0;
     bool solved = angle_error != NULL && rb_block_solve3(&k, rb_neg(gap), -*angle_error, &impulse, &angular);

@@ -118,14 +118,20 @@ rb_body_state *rb_joint_state_a(rb_world *world, const rb_joint *joint); /* NULL
 rb_body_state *rb_joint_state_b(rb_world *world, const rb_joint *joint);
 /* Applies P at the frame's anchors: -P to A, +P to B. Inline, with the
  * next two: every joint row calls them in every pass. */
-static inline void rb_frame_apply_linear(const rb_joint_frame *f, rb_body_state *a, rb_body_state *b, rb_vec2 impulse)
+static inline void rb_apply_at_anchors(rb_body_state *a, rb_body_state *b, double inv_mass_a, double inv_inertia_a,
+                                       double inv_mass_b, double inv_inertia_b, rb_vec2 ra, rb_vec2 rb, rb_vec2 impulse)
 {
     if (a != NULL) {
-        a->linear_velocity = rb_mul_sub(a->linear_velocity, f->inv_mass_a, impulse);
-        a->angular_velocity -= f->inv_inertia_a * rb_cross(f->ra, impulse);
+        a->linear_velocity = rb_mul_sub(a->linear_velocity, inv_mass_a, impulse);
+        a->angular_velocity -= inv_inertia_a * rb_cross(ra, impulse);
     }
-    b->linear_velocity = rb_mul_add(b->linear_velocity, f->inv_mass_b, impulse);
-    b->angular_velocity += f->inv_inertia_b * rb_cross(f->rb, impulse);
+    b->linear_velocity = rb_mul_add(b->linear_velocity, inv_mass_b, impulse);
+    b->angular_velocity += inv_inertia_b * rb_cross(rb, impulse);
+}
+
+static inline void rb_frame_apply_linear(const rb_joint_frame *f, rb_body_state *a, rb_body_state *b, rb_vec2 impulse)
+{
+    rb_apply_at_anchors(a, b, f->inv_mass_a, f->inv_inertia_a, f->inv_mass_b, f->inv_inertia_b, f->ra, f->rb, impulse);
 }
 
 static inline void rb_joint_apply_linear(const rb_joint *joint, rb_body_state *a, rb_body_state *b, rb_vec2 impulse)
@@ -249,10 +255,6 @@ static inline void rb_point_alone_solve(const rb_world *world, const rb_joint_fr
  * angular row) and the frame's point_drift for the substep; after
  * the frame is prepared, before any solve. */
 void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h);
-/* Sets the frame's point inverse and point_drift, not the point block: what
- * a pin without an angular row reads (rb_point_alone_solve), for the
- * frame of a joint or a pin row between bodies body_a and body_b. */
-void rb_point_alone_prepare(const rb_world *world, rb_joint_frame *f, int body_a, int body_b, double h);
 /* Sets only the frame's point_drift: what a pin its tree solves needs
  * (joint_tree.h). */
 void rb_point_constraint_prepare_drift(const rb_world *world, rb_joint *joint, double h);
@@ -273,8 +275,12 @@ double rb_point_frame_correct(const rb_joint_frame *f, rb_body_state *a, rb_body
  * the active joints, with their masses, anchors and impulses; from then
  * on the phases below read the rows for them, not the joints. */
 void rb_pins_gather(rb_world *world);
-/* Row `row`'s substep: its frame at the poses now (as any pin's), then
- * the warm start with its impulse. */
+/* Sets the row's anchors in the world at the poses now, its point
+ * inverse and drift, as rb_point_constraint_prepare does a joint's
+ * (joint_point.c). */
+void rb_pin_prepare(const rb_world *world, rb_pin_row *row, const rb_pin_anchors *anchors, double h);
+/* Row `row`'s substep: rb_pin_prepare, then the warm start with its
+ * impulse. */
 void rb_pin_warm_start(rb_world *world, int row, double h);
 /* A velocity pass of the row, under the pass's response. Inline: the
  * joint grid runs it 160,000 times a step. */
