@@ -463,8 +463,9 @@ static void prepare_frame(rb_world *world, rb_joint *joint)
  * plain pin in its row (joint_pin.c). */
 void rb_joints_warm_start(rb_world *world, double h)
 {
+    const bool all_pins = world->pin_row_count == world->active_joint_count; /* then row k is joint k */
     for (int k = 0; k < world->active_joint_count; ++k) {
-        int row = world->pin_row_of[world->active_joints[k]];
+        int row = all_pins ? k : world->pin_row_of[world->active_joints[k]];
         if (row >= 0) {
             rb_pin_warm_start(world, row, h);
             continue;
@@ -512,21 +513,36 @@ static pass_list pass_joints(const rb_world *world)
     return (pass_list){world->active_joints, world->active_joint_count};
 }
 
-/* The slot of the k-th joint of the list, counted from the end when
- * sweeping backwards. */
-static int pass_slot(pass_list list, int k, bool backwards) { return list.joints[backwards ? list.count - 1 - k : k]; }
+/* The k-th of `count`, counted from the end when sweeping backwards. */
+static int pass_index(int count, int k, bool backwards) { return backwards ? count - 1 - k : k; }
+
+/* The slot of the k-th joint of the list. */
+static int pass_slot(pass_list list, int k, bool backwards)
+{
+    return list.joints[pass_index(list.count, k, backwards)];
+}
+
+/* The row of the k-th joint of the list, or -1. When every joint of the
+ * list is a plain pin in its row (the joint grid, a chain), the rows are
+ * the list, in the same order, and no look-up is needed. */
+static int pass_row(const rb_world *world, pass_list list, int k, bool backwards)
+{
+    if (world->pin_row_count == list.count) {
+        return pass_index(list.count, k, backwards);
+    }
+    return world->pin_row_of[pass_slot(list, k, backwards)];
+}
 
 void rb_joints_solve_velocities(rb_world *world, double h, bool backwards)
 {
     const pass_list list = pass_joints(world);
     for (int k = 0; k < list.count; ++k) {
-        int slot = pass_slot(list, k, backwards);
-        int row = world->pin_row_of[slot];
+        int row = pass_row(world, list, k, backwards);
         if (row >= 0) {
             rb_pin_solve(world, &world->pin_rows[row]);
             continue;
         }
-        rb_joint *joint = &world->joints[slot];
+        rb_joint *joint = &world->joints[pass_slot(list, k, backwards)];
         switch (joint->type) {
         case RB_JOINT_REVOLUTE:
             rb_revolute_solve(world, joint, h);
@@ -555,13 +571,12 @@ bool rb_joints_correct_positions(rb_world *world, bool backwards)
     bool all_within = true;
     const pass_list list = pass_joints(world);
     for (int k = 0; k < list.count; ++k) {
-        int slot = pass_slot(list, k, backwards);
-        int row = world->pin_row_of[slot];
+        int row = pass_row(world, list, k, backwards);
         if (row >= 0) {
             all_within = rb_pin_correct(world, row) && all_within;
             continue;
         }
-        rb_joint *joint = &world->joints[slot];
+        rb_joint *joint = &world->joints[pass_slot(list, k, backwards)];
         bool within = true;
         switch (joint->type) {
         case RB_JOINT_REVOLUTE:
