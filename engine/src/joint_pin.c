@@ -20,40 +20,6 @@
 
 #include "joint_solver.h"
 
-/* The row's frame as its joint's would be, anchors in the body frames
- * included; and what of a frame the row keeps. */
-static rb_joint_frame row_frame(const rb_pin_row *row, const rb_pin_anchors *anchors)
-{
-    return (rb_joint_frame){
-        .inv_mass_a = row->inv_mass_a,
-        .inv_inertia_a = row->inv_inertia_a,
-        .inv_mass_b = row->inv_mass_b,
-        .inv_inertia_b = row->inv_inertia_b,
-        .ra = row->ra,
-        .rb = row->rb,
-        .point_inverse11 = row->point_inverse11,
-        .point_inverse12 = row->point_inverse12,
-        .point_inverse22 = row->point_inverse22,
-        .point_drift = row->point_drift,
-        .local_a = anchors->local_a,
-        .local_b = anchors->local_b,
-    };
-}
-
-static void keep_frame(rb_pin_row *row, const rb_joint_frame *f)
-{
-    row->inv_mass_a = f->inv_mass_a;
-    row->inv_inertia_a = f->inv_inertia_a;
-    row->inv_mass_b = f->inv_mass_b;
-    row->inv_inertia_b = f->inv_inertia_b;
-    row->ra = f->ra;
-    row->rb = f->rb;
-    row->point_inverse11 = f->point_inverse11;
-    row->point_inverse12 = f->point_inverse12;
-    row->point_inverse22 = f->point_inverse22;
-    row->point_drift = f->point_drift;
-}
-
 void rb_pins_gather(rb_world *world)
 {
     if (world->joint_slots > 0) {
@@ -66,13 +32,20 @@ void rb_pins_gather(rb_world *world)
         if (joint->type != RB_JOINT_REVOLUTE || !joint->plain_pin || joint->in_tree) {
             continue;
         }
-        /* the masses and the anchors in the body frames, this step's (rb_joints_collect_active) */
-        rb_pin_row *row = &world->pin_rows[count];
-        row->body_a = joint->body_a;
-        row->body_b = joint->body_b;
-        row->impulse = joint->as.revolute.point_impulse;
-        keep_frame(row, &joint->frame);
-        world->pin_anchors[count] = (rb_pin_anchors){joint->frame.local_a, joint->frame.local_b};
+        /* The masses and the anchors in the body frames, this step's
+         * (rb_joints_collect_active); each substep's warm start prepares
+         * the rest (rb_pin_prepare). */
+        const rb_joint_frame *f = &joint->frame;
+        world->pin_rows[count] = (rb_pin_row){
+            .body_a = joint->body_a,
+            .body_b = joint->body_b,
+            .inv_mass_a = f->inv_mass_a,
+            .inv_inertia_a = f->inv_inertia_a,
+            .inv_mass_b = f->inv_mass_b,
+            .inv_inertia_b = f->inv_inertia_b,
+            .impulse = joint->as.revolute.point_impulse,
+        };
+        world->pin_anchors[count] = (rb_pin_anchors){f->local_a, f->local_b};
         world->pin_row_of[slot] = count++;
     }
     world->pin_row_count = count;
@@ -89,11 +62,7 @@ void rb_pin_warm_start(rb_world *world, int row, double h)
 
 bool rb_pin_correct(rb_world *world, int row)
 {
-    const rb_pin_row *r = &world->pin_rows[row];
-    const rb_joint_frame f = row_frame(r, &world->pin_anchors[row]);
-    rb_body_state *a = &world->states[r->body_a];
-    rb_body_state *b = &world->states[r->body_b];
-    return rb_point_frame_correct(&f, a, b, NULL) <= world->settings.linear_slop;
+    return rb_pin_correct_point(world, &world->pin_rows[row], &world->pin_anchors[row]) <= world->settings.linear_slop;
 }
 
 void rb_pins_scatter(rb_world *world)

@@ -192,32 +192,43 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
     rb_point_alone_solve(world, &joint->frame, a, b, cdot, accumulated);
 }
 
-double rb_point_constraint_correct(rb_world *world, rb_joint *joint, const double *angle_error)
+/* One NGS pass on bodies a and b, of the given inverse masses, whose
+ * anchors are local_a and local_b in their frames (from the centres). */
+static double correct_point(rb_body_state *a, rb_body_state *b, double inv_mass_a, double inv_inertia_a,
+                            double inv_mass_b, double inv_inertia_b, rb_vec2 local_a, rb_vec2 local_b,
+                            const double *angle_error)
 {
-    return rb_point_frame_correct(&joint->frame, rb_joint_state_a(world, joint), rb_joint_state_b(world, joint),
-                                  angle_error);
-}
-
-double rb_point_frame_correct(const rb_joint_frame *f, rb_body_state *a, rb_body_state *b, const double *angle_error)
-{
-    rb_vec2 ra = rb_rotate(a->rotation, f->local_a);
-    rb_vec2 rb = rb_rotate(b->rotation, f->local_b);
+    rb_vec2 ra = rb_rotate(a->rotation, local_a);
+    rb_vec2 rb = rb_rotate(b->rotation, local_b);
     rb_vec2 gap = rb_sub(rb_add(b->center, rb), rb_add(a->center, ra));
     double error = rb_length(gap);
-    rb_block_matrix k = make_mass_matrix(f->inv_mass_a, f->inv_inertia_a, f->inv_mass_b, f->inv_inertia_b, ra, rb);
+    rb_block_matrix k = make_mass_matrix(inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b, ra, rb);
     rb_vec2 impulse = rb_v2(0.0, 0.0);
     double angular = 0.0;
     bool solved = angle_error != NULL && rb_block_solve3(&k, rb_neg(gap), -*angle_error, &impulse, &angular);
     if (!solved && !rb_block_solve2(&k, rb_neg(gap), &impulse)) {
         return error;
     }
-    a->center = rb_mul_sub(a->center, f->inv_mass_a, impulse);
-    b->center = rb_mul_add(b->center, f->inv_mass_b, impulse);
-    if (f->inv_inertia_a > 0.0) {
-        rb_body_state_turn(a, -(f->inv_inertia_a * (rb_cross(ra, impulse) + angular)));
+    a->center = rb_mul_sub(a->center, inv_mass_a, impulse);
+    b->center = rb_mul_add(b->center, inv_mass_b, impulse);
+    if (inv_inertia_a > 0.0) {
+        rb_body_state_turn(a, -(inv_inertia_a * (rb_cross(ra, impulse) + angular)));
     }
-    if (f->inv_inertia_b > 0.0) {
-        rb_body_state_turn(b, f->inv_inertia_b * (rb_cross(rb, impulse) + angular));
+    if (inv_inertia_b > 0.0) {
+        rb_body_state_turn(b, inv_inertia_b * (rb_cross(rb, impulse) + angular));
     }
     return error;
+}
+
+double rb_point_constraint_correct(rb_world *world, rb_joint *joint, const double *angle_error)
+{
+    const rb_joint_frame *f = &joint->frame;
+    return correct_point(rb_joint_state_a(world, joint), rb_joint_state_b(world, joint), f->inv_mass_a,
+                         f->inv_inertia_a, f->inv_mass_b, f->inv_inertia_b, f->local_a, f->local_b, angle_error);
+}
+
+double rb_pin_correct_point(rb_world *world, const rb_pin_row *row, const rb_pin_anchors *anchors)
+{
+    return correct_point(&world->states[row->body_a], &world->states[row->body_b], row->inv_mass_a, row->inv_inertia_a,
+                         row->inv_mass_b, row->inv_inertia_b, anchors->local_a, anchors->local_b, NULL);
 }
