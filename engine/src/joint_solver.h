@@ -116,8 +116,10 @@ static inline double rb_one_sided_row_total(const rb_world *world, double mass, 
 
 rb_body_state *rb_joint_state_a(rb_world *world, const rb_joint *joint); /* NULL for a mouse joint */
 rb_body_state *rb_joint_state_b(rb_world *world, const rb_joint *joint);
-/* Applies P at the frame's anchors: -P to A, +P to B. Inline, with the
- * next two: every joint row calls them in every pass. */
+/* Applies P at anchors ra of A and rb of B (world offsets from the
+ * centres), on bodies of these inverse masses: -P to A (NULL: a fixed
+ * point), +P to B. Inline, with the next ones: every joint row calls them
+ * in every pass. */
 static inline void rb_apply_at_anchors(rb_body_state *a, rb_body_state *b, double inv_mass_a, double inv_inertia_a,
                                        double inv_mass_b, double inv_inertia_b, rb_vec2 ra, rb_vec2 rb, rb_vec2 impulse)
 {
@@ -277,7 +279,8 @@ void rb_pins_gather(rb_world *world);
  * inverse and drift, as rb_point_constraint_prepare does a joint's
  * (joint_point.c). */
 void rb_pin_prepare(const rb_world *world, rb_pin_row *row, const rb_pin_anchors *anchors, double h);
-/* The same for a pin row, the point alone (joint_point.c). */
+/* One NGS pass of a pin row, the point alone, as
+ * rb_point_constraint_correct's; returns the gap before (joint_point.c). */
 double rb_pin_correct_point(rb_world *world, const rb_pin_row *row, const rb_pin_anchors *anchors);
 /* Row `row`'s substep: rb_pin_prepare, then the warm start with its
  * impulse. */
