@@ -459,12 +459,16 @@ static void prepare_frame(rb_world *world, rb_joint *joint)
     f->ra = joint->body_a >= 0 ? rb_rotate(world->states[joint->body_a].rotation, f->local_a) : rb_v2(0.0, 0.0);
 }
 
+/* The k-th of `count`, counted from the end when sweeping backwards. */
+static int pass_index(int count, int k, bool backwards) { return backwards ? count - 1 - k : k; }
+
 /* Each joint in one visit: its substep's frame, then its warm start; a
  * plain pin in its row (joint_pin.c). */
-void rb_joints_warm_start(rb_world *world, double h)
+void rb_joints_warm_start(rb_world *world, double h, bool backwards)
 {
     const bool all_pins = world->pin_row_count == world->active_joint_count; /* then row k is joint k */
-    for (int k = 0; k < world->active_joint_count; ++k) {
+    for (int n = 0; n < world->active_joint_count; ++n) {
+        int k = pass_index(world->active_joint_count, n, backwards);
         int row = all_pins ? k : world->pin_row_of[world->active_joints[k]];
         if (row >= 0) {
             rb_pin_warm_start(world, row, h);
@@ -512,9 +516,6 @@ static pass_list pass_joints(const rb_world *world)
     }
     return (pass_list){world->active_joints, world->active_joint_count};
 }
-
-/* The k-th of `count`, counted from the end when sweeping backwards. */
-static int pass_index(int count, int k, bool backwards) { return backwards ? count - 1 - k : k; }
 
 /* The slot of the k-th joint of the list. */
 static int pass_slot(pass_list list, int k, bool backwards)

@@ -34,12 +34,13 @@ rb_status rb_joints_collect_active(rb_world *world);
 /* At the start of each substep, before any warm start: records every
  * body's angular velocity, from which the pins' drift is computed. */
 void rb_joints_prepare(rb_world *world);
-/* Visits each joint once a substep of length h: prepares what moves with
- * the bodies (the anchors turned into the world at the poses now, the
- * pins' mass matrices and drift, the distance joints' axes), then warm
- * starts it with its accumulated impulses. One pass where two passes over
- * every joint would each read it from memory. */
-void rb_joints_warm_start(rb_world *world, double h);
+/* Visits each joint once a substep of length h, in creation order or
+ * (backwards) the reverse: prepares what moves with the bodies (the
+ * anchors turned into the world at the poses now, the pins' mass matrices
+ * and drift, the distance joints' axes), then warm starts it with its
+ * accumulated impulses. One pass where two passes over every joint would
+ * each read it from memory. */
+void rb_joints_warm_start(rb_world *world, double h, bool backwards);
 /* One pass over the joints, in creation order or (backwards) the reverse,
  * but for the plain pins their trees solve (joint_tree.h), which both
  * passes leave to the trees. NGS and Baumgarte alternate: in a chain an

@@ -96,7 +96,7 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
                                                         .baumgarte_bias = contact_bias,
                                                         .block_normals = world->settings.block_solver});
     rb_cables_warm_start(world);
-    rb_joints_warm_start(world, h);
+    rb_joints_warm_start(world, h, false);
     rb_joint_tree_factor_velocities(world);
     rb_joint_blocks_factor(world, h);
     rb_contact_solver_warm_start(world);
