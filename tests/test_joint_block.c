@@ -83,7 +83,8 @@ static void prepare(rb_world *world, double h)
     rb_joint_blocks_build(world);
     world->joint_response = (rb_rigid_response){.mass_scale = 1.0};
     rb_joints_prepare(world);
-    rb_joints_warm_start(world, h); /* the frames; the impulses are still 0 */
+    rb_pins_gather(world);
+    rb_joints_warm_start(world, h, false); /* the frames; the impulses are still 0 */
     rb_joint_blocks_factor(world, h);
 }
 

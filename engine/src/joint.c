@@ -190,7 +190,7 @@ static rb_vec2 linear_impulse(const rb_world *world, const rb_joint *joint)
 {
     switch (joint->type) {
     case RB_JOINT_REVOLUTE:
-        return joint->as.revolute.point_impulse;
+        return rb_pin_impulse(world, joint); /* a substep callback may ask within the step */
     case RB_JOINT_WELD:
         return joint->as.weld.point_impulse;
     case RB_JOINT_DISTANCE: {
@@ -420,7 +420,13 @@ rb_status rb_joints_collect_active(rb_world *world)
         rb_grow_array((void **)&world->substep_omega, &world->substep_omega_capacity, world->body_slots,
                       sizeof *world->substep_omega) != 0 ||
         rb_grow_array((void **)&world->point_blocks, &world->point_block_capacity, world->joint_slots,
-                      sizeof *world->point_blocks) != 0) {
+                      sizeof *world->point_blocks) != 0 ||
+        rb_grow_array((void **)&world->pin_rows, &world->pin_row_capacity, world->joint_count,
+                      sizeof *world->pin_rows) != 0 ||
+        rb_grow_array((void **)&world->pin_anchors, &world->pin_anchor_capacity, world->joint_count,
+                      sizeof *world->pin_anchors) != 0 ||
+        rb_grow_array((void **)&world->pin_row_of, &world->pin_row_of_capacity, world->joint_slots,
+                      sizeof *world->pin_row_of) != 0) {
         world->active_joint_count = 0;
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for the joint list");
     }
@@ -453,10 +459,21 @@ static void prepare_frame(rb_world *world, rb_joint *joint)
     f->ra = joint->body_a >= 0 ? rb_rotate(world->states[joint->body_a].rotation, f->local_a) : rb_v2(0.0, 0.0);
 }
 
-/* Each joint in one visit: its substep's frame, then its warm start. */
-void rb_joints_warm_start(rb_world *world, double h)
+/* The k-th of `count`, counted from the end when sweeping backwards. */
+static int pass_index(int count, int k, bool backwards) { return backwards ? count - 1 - k : k; }
+
+/* Each joint in one visit: its substep's frame, then its warm start; a
+ * plain pin in its row (joint_pin.c). */
+void rb_joints_warm_start(rb_world *world, double h, bool backwards)
 {
-    for (int k = 0; k < world->active_joint_count; ++k) {
+    const bool all_pins = world->pin_row_count == world->active_joint_count; /* then row k is joint k */
+    for (int n = 0; n < world->active_joint_count; ++n) {
+        int k = pass_index(world->active_joint_count, n, backwards);
+        int row = all_pins ? k : world->pin_row_of[world->active_joints[k]];
+        if (row >= 0) {
+            rb_pin_warm_start(world, row, h);
+            continue;
+        }
         rb_joint *joint = active_joint(world, k);
         prepare_frame(world, joint);
         switch (joint->type) {
@@ -500,17 +517,33 @@ static pass_list pass_joints(const rb_world *world)
     return (pass_list){world->active_joints, world->active_joint_count};
 }
 
-/* The k-th joint of the list, counted from the end when sweeping backwards. */
-static rb_joint *pass_joint(rb_world *world, pass_list list, int k, bool backwards)
+/* The slot of the k-th joint of the list. */
+static int pass_slot(pass_list list, int k, bool backwards)
 {
-    return &world->joints[list.joints[backwards ? list.count - 1 - k : k]];
+    return list.joints[pass_index(list.count, k, backwards)];
+}
+
+/* The row of the k-th joint of the list, or -1. When every joint of the
+ * list is a plain pin in its row (the joint grid, a chain), the rows are
+ * the list, in the same order, and no look-up is needed. */
+static int pass_row(const rb_world *world, pass_list list, int k, bool backwards)
+{
+    if (world->pin_row_count == list.count) {
+        return pass_index(list.count, k, backwards);
+    }
+    return world->pin_row_of[pass_slot(list, k, backwards)];
 }
 
 void rb_joints_solve_velocities(rb_world *world, double h, bool backwards)
 {
     const pass_list list = pass_joints(world);
     for (int k = 0; k < list.count; ++k) {
-        rb_joint *joint = pass_joint(world, list, k, backwards);
+        int row = pass_row(world, list, k, backwards);
+        if (row >= 0) {
+            rb_pin_solve(world, &world->pin_rows[row]);
+            continue;
+        }
+        rb_joint *joint = &world->joints[pass_slot(list, k, backwards)];
         switch (joint->type) {
         case RB_JOINT_REVOLUTE:
             rb_revolute_solve(world, joint, h);
@@ -539,7 +572,12 @@ bool rb_joints_correct_positions(rb_world *world, bool backwards)
     bool all_within = true;
     const pass_list list = pass_joints(world);
     for (int k = 0; k < list.count; ++k) {
-        rb_joint *joint = pass_joint(world, list, k, backwards);
+        int row = pass_row(world, list, k, backwards);
+        if (row >= 0) {
+            all_within = rb_pin_correct(world, row) && all_within;
+            continue;
+        }
+        rb_joint *joint = &world->joints[pass_slot(list, k, backwards)];
         bool within = true;
         switch (joint->type) {
         case RB_JOINT_REVOLUTE:

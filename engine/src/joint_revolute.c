@@ -184,14 +184,11 @@ void rb_revolute_warm_start(rb_world *world, rb_joint *joint, double h)
     rb_body_state *b = rb_joint_state_b(world, joint);
     const rb_revolute_data *r = &joint->as.revolute;
     if (joint->plain_pin) {
-        /* The joint grid's and the chains' pins: the point alone, its
-         * angular impulses all zero. A pin its tree solves needs only its
-         * drift; the tree factors its own matrix (joint_tree.h). */
-        if (joint->in_tree) {
-            rb_point_constraint_prepare_drift(world, joint, h);
-        } else {
-            rb_point_alone_prepare(world, joint, h);
-        }
+        /* A plain pin its tree solves (the others are in their rows,
+         * joint_pin.c): the point alone, its angular impulses all zero;
+         * it needs only its drift, the tree factors its own matrix
+         * (joint_tree.h). */
+        rb_point_constraint_prepare_drift(world, joint, h);
         rb_joint_apply_linear(joint, a, b, r->point_impulse);
         return;
     }
@@ -242,15 +239,8 @@ static void solve_limits(rb_world *world, rb_joint *joint, rb_body_state *a, rb_
 
 void rb_revolute_solve(rb_world *world, rb_joint *joint, double h)
 {
+    /* A plain pin is solved in its row (joint_pin.c) or with its tree. */
     rb_revolute_data *r = &joint->as.revolute;
-    if (joint->plain_pin) {
-        /* The point alone (a plain pin its tree solves is not visited:
-         * rb_joints_solve_velocities). */
-        rb_body_state *a = rb_joint_state_a(world, joint);
-        rb_body_state *b = rb_joint_state_b(world, joint);
-        rb_point_alone_solve(world, joint, a, b, rb_point_velocity_error(world, joint, a, b), &r->point_impulse);
-        return;
-    }
     if (joint->in_block && !r->enable_spring && !r->enable_motor) {
         return; /* the pin and its limits are its block's (joint_block.h) */
     }
@@ -299,11 +289,8 @@ double rb_revolute_angle_error(const rb_world *world, const rb_joint *joint)
 
 bool rb_revolute_correct(rb_world *world, rb_joint *joint)
 {
-    if (joint->in_tree) { /* corrected with its tree (joint_tree.h) */
+    if (joint->in_tree) { /* corrected with its tree (joint_tree.h); a plain pin otherwise in its row */
         return true;
-    }
-    if (joint->plain_pin) { /* no angle to read, no limit to hold */
-        return rb_point_constraint_correct(world, joint, NULL) <= world->settings.linear_slop;
     }
     rb_revolute_data *r = &joint->as.revolute;
     double angle = rb_joint_relative_angle(world, joint, r->reference_angle);

@@ -34,12 +34,13 @@ rb_status rb_joints_collect_active(rb_world *world);
 /* At the start of each substep, before any warm start: records every
  * body's angular velocity, from which the pins' drift is computed. */
 void rb_joints_prepare(rb_world *world);
-/* Visits each joint once a substep of length h: prepares what moves with
- * the bodies (the anchors turned into the world at the poses now, the
- * pins' mass matrices and drift, the distance joints' axes), then warm
- * starts it with its accumulated impulses. One pass where two passes over
- * every joint would each read it from memory. */
-void rb_joints_warm_start(rb_world *world, double h);
+/* Visits each joint once a substep of length h, in creation order or
+ * (backwards) the reverse: prepares what moves with the bodies (the
+ * anchors turned into the world at the poses now, the pins' mass matrices
+ * and drift, the distance joints' axes), then warm starts it with its
+ * accumulated impulses. One pass where two passes over every joint would
+ * each read it from memory. */
+void rb_joints_warm_start(rb_world *world, double h, bool backwards);
 /* One pass over the joints, in creation order or (backwards) the reverse,
  * but for the plain pins their trees solve (joint_tree.h), which both
  * passes leave to the trees. NGS and Baumgarte alternate: in a chain an
@@ -116,17 +117,29 @@ static inline double rb_one_sided_row_total(const rb_world *world, double mass, 
 
 rb_body_state *rb_joint_state_a(rb_world *world, const rb_joint *joint); /* NULL for a mouse joint */
 rb_body_state *rb_joint_state_b(rb_world *world, const rb_joint *joint);
-/* Applies P at the anchors: -P to A, +P to B. Inline, with the next two:
- * every joint row calls them in every pass. */
+/* Applies P at anchors ra of A and rb of B (world offsets from the
+ * centres), on bodies of these inverse masses: -P to A (NULL: a fixed
+ * point), +P to B. Inline, with the next ones: every joint row calls them
+ * in every pass. */
+static inline void rb_apply_at_anchors(rb_body_state *a, rb_body_state *b, double inv_mass_a, double inv_inertia_a,
+                                       double inv_mass_b, double inv_inertia_b, rb_vec2 ra, rb_vec2 rb, rb_vec2 impulse)
+{
+    if (a != NULL) {
+        a->linear_velocity = rb_mul_sub(a->linear_velocity, inv_mass_a, impulse);
+        a->angular_velocity -= inv_inertia_a * rb_cross(ra, impulse);
+    }
+    b->linear_velocity = rb_mul_add(b->linear_velocity, inv_mass_b, impulse);
+    b->angular_velocity += inv_inertia_b * rb_cross(rb, impulse);
+}
+
+static inline void rb_frame_apply_linear(const rb_joint_frame *f, rb_body_state *a, rb_body_state *b, rb_vec2 impulse)
+{
+    rb_apply_at_anchors(a, b, f->inv_mass_a, f->inv_inertia_a, f->inv_mass_b, f->inv_inertia_b, f->ra, f->rb, impulse);
+}
+
 static inline void rb_joint_apply_linear(const rb_joint *joint, rb_body_state *a, rb_body_state *b, rb_vec2 impulse)
 {
-    const rb_joint_frame *f = &joint->frame;
-    if (a != NULL) {
-        a->linear_velocity = rb_mul_sub(a->linear_velocity, f->inv_mass_a, impulse);
-        a->angular_velocity -= f->inv_inertia_a * rb_cross(f->ra, impulse);
-    }
-    b->linear_velocity = rb_mul_add(b->linear_velocity, f->inv_mass_b, impulse);
-    b->angular_velocity += f->inv_inertia_b * rb_cross(f->rb, impulse);
+    rb_frame_apply_linear(&joint->frame, a, b, impulse);
 }
 
 /* Applies L about the centres: -L to A, +L to B. */
@@ -139,14 +152,20 @@ static inline void rb_joint_apply_angular(const rb_joint *joint, rb_body_state *
 }
 
 /* Velocity of anchor B relative to anchor A. */
-static inline rb_vec2 rb_joint_relative_velocity(const rb_joint *joint, const rb_body_state *a, const rb_body_state *b)
+static inline rb_vec2 rb_frame_relative_velocity(const rb_joint_frame *f, const rb_body_state *a,
+                                                 const rb_body_state *b)
 {
-    rb_vec2 vb = rb_add(b->linear_velocity, rb_cross_sv(b->angular_velocity, joint->frame.rb));
+    rb_vec2 vb = rb_add(b->linear_velocity, rb_cross_sv(b->angular_velocity, f->rb));
     if (a == NULL) {
         return vb;
     }
-    rb_vec2 va = rb_add(a->linear_velocity, rb_cross_sv(a->angular_velocity, joint->frame.ra));
+    rb_vec2 va = rb_add(a->linear_velocity, rb_cross_sv(a->angular_velocity, f->ra));
     return rb_sub(vb, va);
+}
+
+static inline rb_vec2 rb_joint_relative_velocity(const rb_joint *joint, const rb_body_state *a, const rb_body_state *b)
+{
+    return rb_frame_relative_velocity(&joint->frame, a, b);
 }
 /* World anchor points at the poses now. */
 rb_vec2 rb_joint_anchor_a(const rb_world *world, const rb_joint *joint);
@@ -202,11 +221,10 @@ typedef struct rb_angular_row {
 /* The point's velocity error in a pass: Cdot less the substep's
  * centripetal drift (rb_point_constraint_prepare_drift), plus the
  * response's bias on the anchors' gap at the current poses. */
-static inline rb_vec2 rb_point_velocity_error(const rb_world *world, const rb_joint *joint, const rb_body_state *a,
-                                              const rb_body_state *b)
+static inline rb_vec2 rb_point_frame_velocity_error(const rb_world *world, const rb_joint_frame *f,
+                                                    const rb_body_state *a, const rb_body_state *b)
 {
-    const rb_joint_frame *f = &joint->frame;
-    rb_vec2 cdot = rb_sub(rb_joint_relative_velocity(joint, a, b), f->point_drift);
+    rb_vec2 cdot = rb_sub(rb_frame_relative_velocity(f, a, b), f->point_drift);
     const rb_rigid_response *response = &world->joint_response;
     if (response->bias_rate > 0.0) {
         rb_vec2 gap = rb_sub(rb_add(b->center, f->rb), rb_add(a->center, f->ra));
@@ -215,30 +233,31 @@ static inline rb_vec2 rb_point_velocity_error(const rb_world *world, const rb_jo
     return cdot;
 }
 
+static inline rb_vec2 rb_point_velocity_error(const rb_world *world, const rb_joint *joint, const rb_body_state *a,
+                                              const rb_body_state *b)
+{
+    return rb_point_frame_velocity_error(world, &joint->frame, a, b);
+}
+
 /* The pin alone, for its velocity error cdot: x = -K⁻¹·cdot with the
  * substep's inverse (0 when K is singular, which only two bodies that
  * cannot move make), as the pass's response delivers it, added to
  * *accumulated and applied at the anchors. Inline: the joint grid's and
  * the chains' pins run it in every velocity pass. */
-static inline void rb_point_alone_solve(const rb_world *world, const rb_joint *joint, rb_body_state *a,
+static inline void rb_point_alone_solve(const rb_world *world, const rb_joint_frame *f, rb_body_state *a,
                                         rb_body_state *b, rb_vec2 cdot, rb_vec2 *accumulated)
 {
-    const rb_joint_frame *f = &joint->frame;
     rb_vec2 impulse = rb_v2(-(f->point_inverse11 * cdot.x + f->point_inverse12 * cdot.y),
                             -(f->point_inverse12 * cdot.x + f->point_inverse22 * cdot.y));
     impulse = rb_soften(&world->joint_response, impulse, *accumulated);
     *accumulated = rb_add(*accumulated, impulse);
-    rb_joint_apply_linear(joint, a, b, impulse);
+    rb_frame_apply_linear(f, a, b, impulse);
 }
 
 /* Sets the joint's point block (K, and its cofactors for a pin with an
  * angular row) and the frame's point_drift for the substep; after
  * the frame is prepared, before any solve. */
 void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h);
-/* Sets the frame's point inverse and point_drift, not the point block: what
- * a pin without an angular row reads (rb_point_alone_solve), with one
- * cache line less written a pin a substep. */
-void rb_point_alone_prepare(const rb_world *world, rb_joint *joint, double h);
 /* Sets only the frame's point_drift: what a pin its tree solves needs
  * (joint_tree.h). */
 void rb_point_constraint_prepare_drift(const rb_world *world, rb_joint *joint, double h);
@@ -249,6 +268,53 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
  * angle_error is not NULL, to remove that much relative angle (rad,
  * angle(B) - angle(A) - target) at the same time; returns the gap before. */
 double rb_point_constraint_correct(rb_world *world, rb_joint *joint, const double *angle_error);
+
+/* ---- the plain pins' rows (joint_pin.c) ------------------------------------ */
+
+/* At the first substep, once the trees are found: gathers the active
+ * plain pins that no tree solves into world->pin_rows, in the order of
+ * the active joints, with their masses, anchors and impulses; from then
+ * on the phases below read the rows for them, not the joints. */
+void rb_pins_gather(rb_world *world);
+/* Sets the row's anchors in the world at the poses now, its point
+ * inverse and drift, as rb_point_constraint_prepare does a joint's
+ * (joint_point.c). */
+void rb_pin_prepare(const rb_world *world, rb_pin_row *row, const rb_pin_anchors *anchors, double h);
+/* One NGS pass of a pin row, the point alone, as
+ * rb_point_constraint_correct's; returns the gap before (joint_point.c). */
+double rb_pin_correct_point(rb_world *world, const rb_pin_row *row, const rb_pin_anchors *anchors);
+/* Row `row`'s substep: rb_pin_prepare, then the warm start with its
+ * impulse. */
+void rb_pin_warm_start(rb_world *world, int row, double h);
+/* A velocity pass of the row, under the pass's response. Inline: the
+ * joint grid runs it 160,000 to 240,000 times a step. */
+static inline void rb_pin_solve(rb_world *world, rb_pin_row *row)
+{
+    /* The row's frame, as the joint's would be; the compiler keeps it in
+     * registers. */
+    const rb_joint_frame f = {
+        .inv_mass_a = row->inv_mass_a,
+        .inv_inertia_a = row->inv_inertia_a,
+        .inv_mass_b = row->inv_mass_b,
+        .inv_inertia_b = row->inv_inertia_b,
+        .ra = row->ra,
+        .rb = row->rb,
+        .point_inverse11 = row->point_inverse11,
+        .point_inverse12 = row->point_inverse12,
+        .point_inverse22 = row->point_inverse22,
+        .point_drift = row->point_drift,
+    };
+    rb_body_state *a = &world->states[row->body_a];
+    rb_body_state *b = &world->states[row->body_b];
+    rb_point_alone_solve(world, &f, a, b, rb_point_frame_velocity_error(world, &f, a, b), &row->impulse);
+}
+/* An NGS pass of row `row`; true when its gap was within the linear slop. */
+bool rb_pin_correct(rb_world *world, int row);
+/* At the end of the step: the rows' impulses back into their joints. */
+void rb_pins_scatter(rb_world *world);
+/* The impulse of a plain pin's point: its row's within a step, else its
+ * joint's. */
+rb_vec2 rb_pin_impulse(const rb_world *world, const rb_joint *joint);
 
 /* ---- the types ------------------------------------------------------------ */
 

@@ -137,13 +137,14 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
     rb_joints_prepare(world);
     if (substep == 0) {
         rb_joint_tree_build(world);
+        rb_pins_gather(world); /* the plain pins the trees leave, into their rows */
     }
     rb_contact_solver_prepare_substep(world, h,
                                       (rb_substep_rows){.first_substep = substep == 0,
                                                         .baumgarte_bias = contact_bias,
                                                         .block_normals = world->settings.block_solver});
     rb_cables_warm_start(world);
-    rb_joints_warm_start(world, h);
+    rb_joints_warm_start(world, h, false);
     rb_joint_tree_start_substep(world);
     rb_joint_blocks_factor(world, h);
     rb_contact_solver_warm_start(world);
@@ -207,6 +208,7 @@ rb_status rb_solver_step(rb_world *world, double dt)
     }
 
     t = rb_world_clock(world);
+    rb_pins_scatter(world);
     world->statistics.max_penetration = rb_contact_solver_store_impulses(world);
     profile->store_impulses = rb_world_clock(world) - t;
 

@@ -152,6 +152,9 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->active_joints, &world->active_joint_capacity, sizeof *world->active_joints);
     rb_free_array((void **)&world->substep_omega, &world->substep_omega_capacity, sizeof *world->substep_omega);
     rb_free_array((void **)&world->point_blocks, &world->point_block_capacity, sizeof *world->point_blocks);
+    rb_free_array((void **)&world->pin_rows, &world->pin_row_capacity, sizeof *world->pin_rows);
+    rb_free_array((void **)&world->pin_anchors, &world->pin_anchor_capacity, sizeof *world->pin_anchors);
+    rb_free_array((void **)&world->pin_row_of, &world->pin_row_of_capacity, sizeof *world->pin_row_of);
     rb_free_array((void **)&world->sweep, &world->sweep_capacity, sizeof *world->sweep);
     rb_free_array((void **)&world->refits, &world->refit_capacity, sizeof *world->refits);
     rb_free_array((void **)&world->wide_shapes, &world->wide_shape_capacity, sizeof *world->wide_shapes);
@@ -270,6 +273,9 @@ size_t rb_world_bytes_in_use(const rb_world *world)
            (size_t)world->contact_colouring.body_capacity * sizeof *world->contact_colouring.body_colours +
            rb_contact_batches_bytes(&world->contact_batches) + (size_t)world->joint_capacity * sizeof *world->joints +
            (size_t)world->point_block_capacity * sizeof *world->point_blocks +
+           (size_t)world->pin_row_capacity * sizeof *world->pin_rows +
+           (size_t)world->pin_anchor_capacity * sizeof *world->pin_anchors +
+           (size_t)world->pin_row_of_capacity * sizeof *world->pin_row_of +
            (size_t)world->cable_capacity * sizeof *world->cables + rb_contact_events_bytes(world);
 }
 

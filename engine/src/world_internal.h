@@ -247,6 +247,30 @@ typedef struct rb_point_block {
     double c11, c12, c13, c22, c23, c33, det;
 } rb_point_block;
 
+/* A plain pin (a revolute joint with no limit, motor or spring, which no
+ * tree solves) as the solver's passes read it: the fields of its
+ * rb_joint_frame that the velocity passes read, its bodies and its
+ * impulse, 128 bytes. A dense array of them is gathered once a step, in
+ * the order of the active joints; every phase of every substep reads and
+ * writes the rows alone, and the impulses go back to the joints once, at
+ * the end of the step (joint_pin.c). A pass over the 100 x 100 joint
+ * grid then streams 128 bytes a pin where it read the first 184 of each
+ * 344-byte joint. */
+typedef struct rb_pin_row {
+    int body_a, body_b;
+    double inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
+    rb_vec2 ra, rb;
+    double point_inverse11, point_inverse12, point_inverse22;
+    rb_vec2 point_drift;
+    rb_vec2 impulse; /* N·s, accumulated; the joint's point_impulse while the step runs */
+} rb_pin_row;
+
+/* A pin row's anchors in the body frames, which only the preparation
+ * and the position passes read: kept beside the rows, not in them. */
+typedef struct rb_pin_anchors {
+    rb_vec2 local_a, local_b;
+} rb_pin_anchors;
+
 typedef struct rb_revolute_data {
     /* What every pass of a plain pin reads, first: */
     bool enable_lower, enable_upper, enable_motor, enable_spring;
@@ -582,6 +606,13 @@ struct rb_world {
     int active_joint_count, active_joint_capacity;
     double *substep_omega; /* per body slot: rad/s at the substep's start, before any warm start (rb_joints_prepare) */
     int substep_omega_capacity;
+    rb_pin_row *pin_rows; /* this step's plain pins, in the order of the active joints (joint_pin.c) */
+    int pin_row_count, pin_row_capacity;
+    rb_pin_anchors *pin_anchors; /* beside pin_rows */
+    int pin_anchor_capacity;
+    int *pin_row_of; /* per joint slot: its row in pin_rows this step, or -1 */
+    int pin_row_of_capacity;
+    bool pin_rows_live; /* the rows, not the joints, hold the pins' impulses (within a step) */
     int joint_slots;
     int joint_free;
     int joint_count;

@@ -1,0 +1,147 @@
+/* SPDX-License-Identifier: MIT */
+/* The plain pins' rows (joint_pin.c): within a step a plain revolute
+ * joint is solved from a dense row, not from the joint, and its impulse
+ * goes back to the joint at the end of the step. What the user reads
+ * must not tell the difference: the reaction of a pin holding a bob at
+ * rest is its weight, m·g, whether read after a step or inside the
+ * substep callback (where the row, not the joint, holds the impulse);
+ * and a mesh of pins moves to the same bits whether the rows stand alone
+ * (every joint a plain pin) or are found through the joints' look-up
+ * (another joint beside them). */
+#include <criterion/criterion.h>
+#include <math.h>
+
+#include "rb/rb.h"
+#include "test_support.h"
+
+#define G 9.8
+
+typedef struct reaction_log {
+    rb_joint_id pin;
+    int calls;
+    double worst_error; /* N, |reaction - m·g| over the callbacks after each step's first substep */
+    double weight;      /* N */
+} reaction_log;
+
+/* From the second substep on, the reaction is the last substep's impulse
+ * over its length, and a bob at rest under its pivot hangs its weight. */
+static void read_reaction(rb_world *world, int substep, double h, void *context)
+{
+    (void)h;
+    reaction_log *log = context;
+    log->calls++;
+    if (substep == 0) {
+        return; /* at the first step's first substep nothing has acted yet */
+    }
+    rb_vec2 force = rb_joint_reaction_force(world, log->pin);
+    double error = hypot(force.x, force.y - log->weight);
+    log->worst_error = fmax(log->worst_error, error);
+}
+
+Test(pin_rows, reaction_inside_a_substep_and_after_the_step_is_the_weight)
+{
+    rb_world *world = make_world(rb_v2(0.0, -G));
+    rb_body_id pivot = make_body(world, RB_BODY_STATIC, rb_v2(0.0, 0.0), 0.0);
+    rb_body_id bob = make_body(world, RB_BODY_DYNAMIC, rb_v2(0.0, -1.0), 0.0);
+    add_circle(world, bob, rb_v2(0.0, 0.0), 0.1, 1.0);
+    reaction_log log = {.pin = make_pin(world, pivot, bob, rb_v2(0.0, 0.0))};
+    log.weight = rb_body_mass(world, bob) * G;
+    rb_vec2 before = rb_joint_reaction_force(world, log.pin);
+    cr_expect(before.x == 0.0 && before.y == 0.0, "no reaction before the first step: (%g, %g) N", before.x, before.y);
+    cr_assert_eq(rb_world_set_substep_callback(world, read_reaction, &log), RB_OK, "%s", rb_last_error());
+
+    for (int step = 0; step < 3; ++step) {
+        cr_assert_eq(rb_world_step(world, TEST_DT), RB_OK, "%s", rb_last_error());
+        rb_vec2 after = rb_joint_reaction_force(world, log.pin);
+        cr_expect(hypot(after.x, after.y - log.weight) <= 1e-9 * log.weight,
+                  "step %d: reaction (%.15g, %.15g) N after the step, weight %.15g N", step, after.x, after.y,
+                  log.weight);
+    }
+    int substeps = rb_world_solver_settings(world).substeps;
+    cr_assert_eq(log.calls, 3 * substeps);
+    cr_expect(log.worst_error <= 1e-9 * log.weight,
+              "inside the substeps the reaction is off the weight %.15g N by %g N", log.weight, log.worst_error);
+    destroy_world_and_expect_no_leak(world);
+}
+
+enum { SIDE = 6 };
+
+/* The peers' joint grid (docs/benchmarks.md) at SIDE × SIDE: circles 1 m
+ * apart, each pinned to the one above and the one to its left, hung by
+ * its top left corner alone, so that it swings down as a whole. */
+static void make_grid(rb_world *world, rb_body_id bodies[SIDE][SIDE])
+{
+    for (int row = 0; row < SIDE; ++row) {
+        for (int column = 0; column < SIDE; ++column) {
+            bool fixed = row == 0 && column == 0;
+            rb_body_id body =
+                make_body(world, fixed ? RB_BODY_STATIC : RB_BODY_DYNAMIC, rb_v2((double)column, -(double)row), 0.0);
+            add_circle(world, body, rb_v2(0.0, 0.0), 0.4, 1.0);
+            bodies[row][column] = body;
+            if (row > 0) {
+                make_pin(world, bodies[row - 1][column], body, rb_v2((double)column, 0.5 - (double)row));
+            }
+            if (column > 0) {
+                make_pin(world, bodies[row][column - 1], body, rb_v2((double)column - 0.5, -(double)row));
+            }
+        }
+    }
+}
+
+/* The grid alone, and the grid after a distance joint between two bodies
+ * far away (created first, so that no pin's row is its joint's place in
+ * the active list), under `solver`: the grid's bodies end in the same
+ * bits. */
+static void expect_same_grid(rb_solver_type solver)
+{
+    rb_world *worlds[2];
+    rb_body_id grids[2][SIDE][SIDE];
+    for (int w = 0; w < 2; ++w) {
+        worlds[w] = make_world(rb_v2(0.0, -G));
+        rb_world_enable_sleep(worlds[w], false);
+        rb_solver_settings settings = rb_world_solver_settings(worlds[w]);
+        settings.type = solver;
+        cr_assert_eq(rb_world_set_solver_settings(worlds[w], &settings), RB_OK, "%s", rb_last_error());
+        if (w == 1) {
+            rb_body_id a = make_body(worlds[w], RB_BODY_DYNAMIC, rb_v2(-1000.0, 0.0), 0.0);
+            rb_body_id b = make_body(worlds[w], RB_BODY_DYNAMIC, rb_v2(-1001.0, 0.0), 0.0);
+            add_circle(worlds[w], a, rb_v2(0.0, 0.0), 0.2, 1.0);
+            add_circle(worlds[w], b, rb_v2(0.0, 0.0), 0.2, 1.0);
+            rb_distance_joint_def def = rb_default_distance_joint_def();
+            cr_assert_eq(rb_distance_joint_def_between(&def, worlds[w], a, b, rb_v2(-1000.0, 0.0), rb_v2(-1001.0, 0.0)),
+                         RB_OK, "%s", rb_last_error());
+            rb_joint_id bar;
+            cr_assert_eq(rb_distance_joint_create(worlds[w], &def, &bar), RB_OK, "%s", rb_last_error());
+        }
+        make_grid(worlds[w], grids[w]);
+        step_world(worlds[w], TEST_DT, 90);
+    }
+    int different = 0;
+    for (int row = 0; row < SIDE; ++row) {
+        for (int column = 0; column < SIDE; ++column) {
+            rb_vec2 p0 = rb_body_position(worlds[0], grids[0][row][column]);
+            rb_vec2 p1 = rb_body_position(worlds[1], grids[1][row][column]);
+            rb_vec2 v0 = rb_body_linear_velocity(worlds[0], grids[0][row][column]);
+            rb_vec2 v1 = rb_body_linear_velocity(worlds[1], grids[1][row][column]);
+            double a0 = rb_body_angle(worlds[0], grids[0][row][column]);
+            double a1 = rb_body_angle(worlds[1], grids[1][row][column]);
+            if (p0.x != p1.x || p0.y != p1.y || v0.x != v1.x || v0.y != v1.y || a0 != a1) {
+                ++different;
+            }
+        }
+    }
+    cr_expect_eq(different, 0, "solver %d: %d of the grid's %d bodies differ with a joint beside the pins", solver,
+                 different, SIDE * SIDE);
+    /* The grid moved: a test of bodies at rest would prove nothing. */
+    rb_vec2 corner = rb_body_position(worlds[0], grids[0][SIDE - 1][SIDE - 1]);
+    cr_expect(hypot(corner.x - (SIDE - 1.0), corner.y + (SIDE - 1.0)) > 1.0, "the grid's corner stayed at (%g, %g)",
+              corner.x, corner.y);
+    rb_world_destroy(worlds[1]);
+    destroy_world_and_expect_no_leak(worlds[0]);
+}
+
+Test(pin_rows, same_bits_with_and_without_another_joint_under_ngs) { expect_same_grid(RB_SOLVER_NGS); }
+
+Test(pin_rows, same_bits_with_and_without_another_joint_under_the_soft_step) { expect_same_grid(RB_SOLVER_SOFT_STEP); }
+
+Test(pin_rows, same_bits_with_and_without_another_joint_under_baumgarte) { expect_same_grid(RB_SOLVER_BAUMGARTE); }
