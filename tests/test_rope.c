@@ -154,11 +154,16 @@ Test(rope, at_box2d_v3s_budget_the_soft_step_does_not_come_apart_where_box2d_v3_
      * reaches sqrt(2·g·20.25 m) = 20.1 m/s and no more unless the solver
      * makes energy: a rope that comes apart lets it fly ever faster (Box2D
      * v3's box: 409 m/s). The stretch is transient (metres at the bottom
-     * of the first swings), but bounded. */
+     * of the first swings), but bounded. How far it reaches is chaotic:
+     * with the heavy box's mass changed by 1e-9 to 1.1e-8 of itself the
+     * farthest reach at 1,000:1 spreads from 46.6 m to 51.8 m (12 runs
+     * each of two builds that round differently), so the bound is 3 times
+     * the rope's reach, beyond that spread and far below a rope that has
+     * come apart (hundreds of metres); the speed is the sharper bound. */
     const double ratios[] = {700.0, 1000.0};
     for (size_t k = 0; k < sizeof ratios / sizeof ratios[0]; ++k) {
         rope_run run = run_chain(PEER_LINKS, ratios[k], SCENE_CHAIN_SWING, 40.0, V3_BUDGET);
-        cr_expect_lt(run.farthest, 2.5 * PEER_REACH, "%g:1: the box went %.1f m from the pin (the rope reaches %g m)",
+        cr_expect_lt(run.farthest, 3.0 * PEER_REACH, "%g:1: the box went %.1f m from the pin (the rope reaches %g m)",
                      ratios[k], run.farthest, PEER_REACH);
         cr_expect_lt(run.fastest, 1.05 * sqrt(2.0 * 10.0 * PEER_REACH), "%g:1: the box reached %.1f m/s", ratios[k],
                      run.fastest);
