@@ -690,9 +690,9 @@ static void apply_held_impulses(rb_world *world, bool backwards)
 static void prepare_cold(rb_world *world, double h)
 {
     rb_joint_tree *tree = &world->joint_tree;
+    tree->cold = true;
     for (int n = 0; n < tree->node_count; ++n) {
         rb_tree_node *node = &tree->nodes[n];
-        start_pivot(tree, node);
         if (node->joint < 0) {
             memset(node->value, 0, sizeof node->value);
             continue;
@@ -710,11 +710,12 @@ static void prepare_cold(rb_world *world, double h)
 
 void rb_joint_tree_warm_start(rb_world *world, double h, bool backwards)
 {
-    const rb_joint_tree *tree = &world->joint_tree;
+    rb_joint_tree *tree = &world->joint_tree;
     if (starts_cold(world)) {
         prepare_cold(world, h);
         return;
     }
+    tree->cold = false;
     for (int k = 0; k < tree->node_count; ++k) {
         const int j = tree->nodes[backwards ? tree->node_count - 1 - k : k].joint;
         if (j >= 0 && world->joints[j].plain_pin) { /* not a body, nor a pin with a motor or spring */
@@ -734,7 +735,7 @@ void rb_joint_tree_start_substep(rb_world *world)
 
 /* Sets each node's right-hand side for a velocity pass: a pin's velocity
  * error, a body's zero; when factoring, also each pin's offsets (the
- * substep's anchors, which the pins' frames hold) and the pivots' start. */
+ * substep's anchors, which the pins' frames hold). */
 static void read_velocity_errors(rb_world *world, bool factoring)
 {
     rb_joint_tree *tree = &world->joint_tree;
@@ -753,9 +754,6 @@ static void read_velocity_errors(rb_world *world, bool factoring)
             node->value[0] = cdot.x;
             node->value[1] = cdot.y;
         }
-        if (factoring) {
-            start_pivot(tree, node);
-        }
     }
 }
 
@@ -770,11 +768,15 @@ void rb_joint_tree_solve_velocities(rb_world *world)
         return;
     }
     tree->solved = true;
-    const bool cold = factoring && starts_cold(world);
+    const bool cold = tree->cold; /* the warm start's sweep read the velocity errors */
+    tree->cold = false;
     if (!cold) {
         read_velocity_errors(world, factoring);
     }
     if (factoring) {
+        for (int n = 0; !tree->chains && n < tree->node_count; ++n) {
+            start_pivot(tree, &tree->nodes[n]);
+        }
         tree->velocity_factors = factor_and_solve(tree);
         if (!tree->velocity_factors) {
             if (cold) {
