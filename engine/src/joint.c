@@ -462,45 +462,6 @@ static void prepare_frame(rb_world *world, rb_joint *joint)
 /* The k-th of `count`, counted from the end when sweeping backwards. */
 static int pass_index(int count, int k, bool backwards) { return backwards ? count - 1 - k : k; }
 
-/* Each joint in one visit: its substep's frame, then its warm start; a
- * plain pin in its row (joint_pin.c). */
-void rb_joints_warm_start(rb_world *world, double h, bool backwards)
-{
-    const bool all_pins = world->pin_row_count == world->active_joint_count; /* then row k is joint k */
-    for (int n = 0; n < world->active_joint_count; ++n) {
-        int k = pass_index(world->active_joint_count, n, backwards);
-        int row = all_pins ? k : world->pin_row_of[world->active_joints[k]];
-        if (row >= 0) {
-            rb_pin_warm_start(world, row, h);
-            continue;
-        }
-        rb_joint *joint = active_joint(world, k);
-        prepare_frame(world, joint);
-        switch (joint->type) {
-        case RB_JOINT_REVOLUTE:
-            rb_revolute_warm_start(world, joint, h);
-            break;
-        case RB_JOINT_WELD:
-            rb_point_constraint_prepare(world, joint, h);
-            rb_weld_warm_start(world, joint);
-            break;
-        case RB_JOINT_DISTANCE:
-            rb_distance_prepare(world, joint);
-            rb_distance_warm_start(world, joint);
-            break;
-        case RB_JOINT_MOUSE:
-            rb_mouse_warm_start(world, joint);
-            break;
-        case RB_JOINT_PRISMATIC:
-            rb_prismatic_warm_start(world, joint);
-            break;
-        case RB_JOINT_PULLEY:
-            rb_pulley_warm_start(world, joint);
-            break;
-        }
-    }
-}
-
 /* The joints the Gauss-Seidel passes visit this step: the active ones,
  * less the plain pins the trees solve whole (joint_tree.h). */
 typedef struct pass_list {
@@ -532,6 +493,47 @@ static int pass_row(const rb_world *world, pass_list list, int k, bool backwards
         return pass_index(list.count, k, backwards);
     }
     return world->pin_row_of[pass_slot(list, k, backwards)];
+}
+
+/* Each joint in one visit: its substep's frame, then its warm start; a
+ * plain pin in its row (joint_pin.c). The plain pins the trees solve
+ * whole are prepared and warm started by their trees, in one sweep over
+ * their pins (rb_joint_tree_warm_start). */
+void rb_joints_warm_start(rb_world *world, double h, bool backwards)
+{
+    const pass_list list = pass_joints(world);
+    for (int k = 0; k < list.count; ++k) {
+        int row = pass_row(world, list, k, backwards);
+        if (row >= 0) {
+            rb_pin_warm_start(world, row, h);
+            continue;
+        }
+        rb_joint *joint = &world->joints[pass_slot(list, k, backwards)];
+        prepare_frame(world, joint);
+        switch (joint->type) {
+        case RB_JOINT_REVOLUTE:
+            rb_revolute_warm_start(world, joint, h);
+            break;
+        case RB_JOINT_WELD:
+            rb_point_constraint_prepare(world, joint, h);
+            rb_weld_warm_start(world, joint);
+            break;
+        case RB_JOINT_DISTANCE:
+            rb_distance_prepare(world, joint);
+            rb_distance_warm_start(world, joint);
+            break;
+        case RB_JOINT_MOUSE:
+            rb_mouse_warm_start(world, joint);
+            break;
+        case RB_JOINT_PRISMATIC:
+            rb_prismatic_warm_start(world, joint);
+            break;
+        case RB_JOINT_PULLEY:
+            rb_pulley_warm_start(world, joint);
+            break;
+        }
+    }
+    rb_joint_tree_warm_start(world, h, backwards);
 }
 
 void rb_joints_solve_velocities(rb_world *world, double h, bool backwards)

@@ -109,6 +109,11 @@ static bool sweep_down(rb_joint_tree *tree, bool factoring)
             if (!(det != 0.0 && isfinite(det))) {
                 return false;
             }
+            /* F = adj(D)/det. W and the next Schur complement are taken
+             * as adj(D)·C and Cᵀ·adj(D)·C scaled by 1/det, so that they
+             * are formed while the division runs: the sweep waits on one
+             * division and one product a pin, not on F, W and the
+             * complement in turn. */
             const double inverse_det = 1.0 / det;
             double *f = pin->dinv;
             f[0] = inverse_det * d22;
@@ -118,14 +123,16 @@ static bool sweep_down(rb_joint_tree *tree, bool factoring)
                 const rb_tree_node *next = &tree->nodes[n + 2];
                 double c[4]; /* K(k, k+1) */
                 shared_block(below, side(pin, below, below), side(next, below, next), c);
+                const double a0 = d22 * c[0] - d12 * c[2], a1 = d22 * c[1] - d12 * c[3]; /* adj(D)·C */
+                const double a2 = d11 * c[2] - d12 * c[0], a3 = d11 * c[3] - d12 * c[1];
                 double *w = pin->x;
-                w[0] = f[0] * c[0] + f[1] * c[2];
-                w[1] = f[0] * c[1] + f[1] * c[3];
-                w[2] = f[1] * c[0] + f[2] * c[2];
-                w[3] = f[1] * c[1] + f[2] * c[3];
-                schur[0] = c[0] * w[0] + c[2] * w[2];
-                schur[1] = c[0] * w[1] + c[2] * w[3];
-                schur[2] = c[1] * w[1] + c[3] * w[3];
+                w[0] = inverse_det * a0;
+                w[1] = inverse_det * a1;
+                w[2] = inverse_det * a2;
+                w[3] = inverse_det * a3;
+                schur[0] = inverse_det * (c[0] * a0 + c[2] * a2);
+                schur[1] = inverse_det * (c[0] * a1 + c[2] * a3);
+                schur[2] = inverse_det * (c[1] * a1 + c[3] * a3);
             }
         }
         double *z = pin->value;

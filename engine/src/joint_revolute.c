@@ -183,15 +183,6 @@ void rb_revolute_warm_start(rb_world *world, rb_joint *joint, double h)
     rb_body_state *a = rb_joint_state_a(world, joint);
     rb_body_state *b = rb_joint_state_b(world, joint);
     const rb_revolute_data *r = &joint->as.revolute;
-    if (joint->plain_pin) {
-        /* A plain pin its tree solves (the others are in their rows,
-         * joint_pin.c): the point alone, its angular impulses all zero;
-         * it needs only its drift, the tree factors its own matrix
-         * (joint_tree.h). */
-        rb_point_constraint_prepare_drift(world, joint, h);
-        rb_joint_apply_linear(joint, a, b, r->point_impulse);
-        return;
-    }
     rb_point_constraint_prepare(world, joint, h);
     rb_joint_apply_linear(joint, a, b, r->point_impulse);
     rb_joint_apply_angular(joint, a, b, r->motor_impulse + r->spring_impulse + r->lower_impulse - r->upper_impulse);

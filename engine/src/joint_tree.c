@@ -644,6 +644,87 @@ static bool factor_and_solve(rb_joint_tree *tree)
     return true;
 }
 
+/* Whether this substep's pins start cold: a tree that no other row
+ * touches, under a solver whose first velocity pass solves it exactly
+ * (NGS, rb_joint_tree_solve_velocities). Its bodies' velocities after
+ * that pass are then those of the exact solution whatever impulse the
+ * pins were warm started with: applying the held impulses first and
+ * adding the pass's correction to them, or solving from the velocities
+ * as they are for the whole impulse, differ only in rounding. So its
+ * pins are not warm started; their velocity errors are read in the same
+ * sweep that prepares their frames, and the pass's impulses replace
+ * those they hold. (The soft step's passes soften each impulse by the
+ * one the pin holds, rb_soften, and need the warm start.) */
+static bool starts_cold(const rb_world *world)
+{
+    return world->joint_tree.alone && world->settings.type != RB_SOLVER_SOFT_STEP;
+}
+
+/* A plain pin's anchors turned into the world at the poses now (its
+ * frame's ra, rb) and its centripetal drift for the substep. */
+static void prepare_pin(rb_world *world, rb_joint *joint, double h)
+{
+    rb_joint_frame *f = &joint->frame;
+    f->rb = rb_rotate(world->states[joint->body_b].rotation, f->local_b);
+    f->ra = rb_rotate(world->states[joint->body_a].rotation, f->local_a);
+    rb_point_constraint_prepare_drift(world, joint, h);
+}
+
+/* Applies each plain pin's held impulse at its anchors. */
+static void apply_held_impulses(rb_world *world, bool backwards)
+{
+    const rb_joint_tree *tree = &world->joint_tree;
+    for (int k = 0; k < tree->node_count; ++k) {
+        const int j = tree->nodes[backwards ? tree->node_count - 1 - k : k].joint;
+        if (j >= 0 && world->joints[j].plain_pin) {
+            const rb_joint *joint = &world->joints[j];
+            rb_joint_apply_linear(joint, &world->states[joint->body_a], &world->states[joint->body_b],
+                                  joint->as.revolute.point_impulse);
+        }
+    }
+}
+
+/* The cold start's sweep: each pin prepared as rb_joint_tree_warm_start
+ * does, then its velocity error as the substep's first pass reads it
+ * (rb_joint_tree_solve_velocities), at the anchors it factors at. */
+static void prepare_cold(rb_world *world, double h)
+{
+    rb_joint_tree *tree = &world->joint_tree;
+    tree->cold = true;
+    for (int n = 0; n < tree->node_count; ++n) {
+        rb_tree_node *node = &tree->nodes[n];
+        if (node->joint < 0) {
+            memset(node->value, 0, sizeof node->value);
+            continue;
+        }
+        rb_joint *joint = &world->joints[node->joint];
+        prepare_pin(world, joint, h); /* a tree alone has no pin with a motor or spring */
+        node->ra = joint->frame.ra;
+        node->rb = joint->frame.rb;
+        const rb_vec2 cdot =
+            rb_point_velocity_error(world, joint, &world->states[joint->body_a], &world->states[joint->body_b]);
+        node->value[0] = cdot.x;
+        node->value[1] = cdot.y;
+    }
+}
+
+void rb_joint_tree_warm_start(rb_world *world, double h, bool backwards)
+{
+    rb_joint_tree *tree = &world->joint_tree;
+    if (starts_cold(world)) {
+        prepare_cold(world, h);
+        return;
+    }
+    tree->cold = false;
+    for (int k = 0; k < tree->node_count; ++k) {
+        const int j = tree->nodes[backwards ? tree->node_count - 1 - k : k].joint;
+        if (j >= 0 && world->joints[j].plain_pin) { /* not a body, nor a pin with a motor or spring */
+            prepare_pin(world, &world->joints[j], h);
+        }
+    }
+    apply_held_impulses(world, backwards);
+}
+
 void rb_joint_tree_start_substep(rb_world *world)
 {
     rb_joint_tree *tree = &world->joint_tree;
@@ -652,17 +733,12 @@ void rb_joint_tree_start_substep(rb_world *world)
     tree->solved = false;
 }
 
-/* The substep's first pass factors the trees at the substep's anchors,
- * which the pins' frames hold (rb_joints_warm_start), as it solves; the
- * further passes reuse the factors. */
-void rb_joint_tree_solve_velocities(rb_world *world)
+/* Sets each node's right-hand side for a velocity pass: a pin's velocity
+ * error, a body's zero; when factoring, also each pin's offsets (the
+ * substep's anchors, which the pins' frames hold). */
+static void read_velocity_errors(rb_world *world, bool factoring)
 {
     rb_joint_tree *tree = &world->joint_tree;
-    const bool factoring = !tree->solved;
-    if (tree->node_count == 0 || (!factoring && (tree->alone || !tree->velocity_factors))) {
-        return;
-    }
-    tree->solved = true;
     for (int n = 0; n < tree->node_count; ++n) {
         rb_tree_node *node = &tree->nodes[n];
         if (node->joint < 0) {
@@ -678,13 +754,34 @@ void rb_joint_tree_solve_velocities(rb_world *world)
             node->value[0] = cdot.x;
             node->value[1] = cdot.y;
         }
-        if (factoring) {
-            start_pivot(tree, node);
-        }
+    }
+}
+
+/* The substep's first pass factors the trees at the substep's anchors as
+ * it solves, its right-hand side read by the warm start's sweep when the
+ * pins start cold; the further passes reuse the factors. */
+void rb_joint_tree_solve_velocities(rb_world *world)
+{
+    rb_joint_tree *tree = &world->joint_tree;
+    const bool factoring = !tree->solved;
+    if (tree->node_count == 0 || (!factoring && (tree->alone || !tree->velocity_factors))) {
+        return;
+    }
+    tree->solved = true;
+    const bool cold = tree->cold; /* the warm start's sweep read the velocity errors */
+    tree->cold = false;
+    if (!cold) {
+        read_velocity_errors(world, factoring);
     }
     if (factoring) {
+        for (int n = 0; !tree->chains && n < tree->node_count; ++n) {
+            start_pivot(tree, &tree->nodes[n]);
+        }
         tree->velocity_factors = factor_and_solve(tree);
         if (!tree->velocity_factors) {
+            if (cold) {
+                apply_held_impulses(world, false); /* the warm start they would have had */
+            }
             return;
         }
     } else {
@@ -698,7 +795,8 @@ void rb_joint_tree_solve_velocities(rb_world *world)
             state->angular_velocity += node->value[2];
         } else {
             rb_revolute_data *r = &world->joints[node->joint].as.revolute;
-            r->point_impulse = rb_add(r->point_impulse, rb_v2(node->value[0], node->value[1]));
+            const rb_vec2 impulse = rb_v2(node->value[0], node->value[1]);
+            r->point_impulse = cold ? impulse : rb_add(r->point_impulse, impulse);
         }
     }
 }
@@ -791,15 +889,45 @@ void rb_joint_tree_solve_soft(rb_world *world)
     }
 }
 
+/* Whether every pin's gap is within the linear slop at the poses now:
+ * the position pass's check, which is all it does while the trees hold
+ * (at the defaults, every pass of the 100:1 chains), reading only the
+ * poses and the anchors in the body frames. */
+static bool gaps_within_slop(const rb_world *world)
+{
+    const rb_joint_tree *tree = &world->joint_tree;
+    const double slop = world->settings.linear_slop;
+    for (int n = 0; n < tree->node_count; ++n) {
+        const int j = tree->nodes[n].joint;
+        if (j < 0) {
+            continue;
+        }
+        const rb_joint *joint = &world->joints[j];
+        const rb_body_state *a = &world->states[joint->body_a];
+        const rb_body_state *b = &world->states[joint->body_b];
+        const rb_vec2 anchor_a = rb_add(a->center, rb_rotate(a->rotation, joint->frame.local_a));
+        const rb_vec2 anchor_b = rb_add(b->center, rb_rotate(b->rotation, joint->frame.local_b));
+        if (rb_length_squared(rb_sub(anchor_b, anchor_a)) > slop * slop) {
+            return false;
+        }
+    }
+    return true;
+}
+
 bool rb_joint_tree_correct_positions(rb_world *world)
 {
     rb_joint_tree *tree = &world->joint_tree;
     if (tree->node_count == 0) {
         return true;
     }
+    /* The factors at the current poses replace the substep's, and are
+     * out of date once the bodies move. */
+    tree->velocity_factors = false;
+    tree->pose_factors = false;
+    if (gaps_within_slop(world)) {
+        return true;
+    }
     double cap = world->settings.max_linear_correction;
-    double slop = world->settings.linear_slop;
-    double largest_squared = 0.0; /* m²: squares compared, a square root only to cap a gap */
     for (int n = 0; n < tree->node_count; ++n) {
         rb_tree_node *node = &tree->nodes[n];
         if (node->joint < 0) {
@@ -809,19 +937,11 @@ bool rb_joint_tree_correct_positions(rb_world *world)
         const pin_offsets p = offsets_of(world, node);
         rb_vec2 gap = pin_gap(&p);
         double error_squared = rb_length_squared(gap);
-        largest_squared = rb_max(largest_squared, error_squared);
         if (error_squared > cap * cap) {
             gap = rb_scale(cap / sqrt(error_squared), gap);
         }
         node->value[0] = gap.x;
         node->value[1] = gap.y;
-    }
-    /* The factors at the current poses replace the substep's, and are
-     * out of date once the bodies move. */
-    tree->velocity_factors = false;
-    tree->pose_factors = false;
-    if (largest_squared <= slop * slop) {
-        return true;
     }
     for (int n = 0; n < tree->node_count; ++n) {
         rb_tree_node *node = &tree->nodes[n];

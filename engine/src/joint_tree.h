@@ -82,6 +82,17 @@
  * (rb_joints_collect_active). */
 void rb_joint_tree_build(rb_world *world);
 
+/* Each plain pin of the trees in one sweep over their pins, in place of
+ * the joints' visit (rb_joints_warm_start): its anchors turned into the
+ * world at the substep's poses (the frame's ra, rb), its centripetal
+ * drift for the substep, and its warm start with the impulse it holds.
+ * Backwards, the pins are taken in the reverse order. When no other row
+ * acts on the trees' bodies this step and the solver is NGS, the pins
+ * start cold instead: no warm start, their velocity errors read in the
+ * same sweep, and the substep's first pass, which solves the trees
+ * exactly, replaces the impulses they hold (joint_tree.c, starts_cold). */
+void rb_joint_tree_warm_start(rb_world *world, double h, bool backwards);
+
 /* Starts a substep: the factors the nodes hold are out of date. */
 void rb_joint_tree_start_substep(rb_world *world);
 

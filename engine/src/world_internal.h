@@ -434,6 +434,7 @@ typedef struct rb_joint_tree {
     bool pose_factors;     /* the nodes hold factors at the bodies' current poses */
     bool alone;            /* this step, no row outside the trees acts on a body in them */
     bool solved;           /* this substep's velocity pass has solved the trees */
+    bool cold;             /* this substep's pins were not warm started: their velocity errors are read */
     bool chains;           /* every tree is a chain from a pin to a fixed body (joint_chain.h) */
     rb_tree_node *nodes;   /* breadth first from each root: a parent before its children */
     int node_count, node_capacity;
