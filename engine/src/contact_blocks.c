@@ -25,8 +25,8 @@
  * first warm start, which reads the block anyway (contact_block_passes.h);
  * the bodies have not moved since the constraints were made. The blocks
  * hold the impulses through the step's passes (warm start, solve, relax),
- * and rb_contact_solver_scatter_blocks writes them back to the
- * constraints for the next step. The last block of a colour may have
+ * and the step's last pass writes each block's back to its constraints
+ * as it solves the block (contact_block_passes.h). The last block of a colour may have
  * empty lanes, whose contact cannot act (no mass, no impulse) between two
  * idle bodies of the batches' own. A contact with one point or with
  * restitution, and the overflow colour (whose constraints may share
@@ -216,21 +216,6 @@ void rb_contact_solver_prepare_singles(rb_world *world, double h)
     }
     rb_contact_solver_prepare_points_range(world, h, rows, batches->overflow_start, world->constraint_count);
     rb_contact_solver_record_approaches(world, h);
-}
-
-void rb_contact_solver_scatter_blocks(rb_world *world)
-{
-    const rb_contact_batches *batches = &world->contact_batches;
-    for (int k = 0; k < batches->block_count; ++k) {
-        const rb_contact_block *q = &batches->blocks[k];
-        for (int lane = 0; lane < RB_BLOCK_LANES && q->constraints[lane] >= 0; ++lane) {
-            rb_contact_constraint *c = &world->constraints[q->constraints[lane]];
-            for (int j = 0; j < 2; ++j) {
-                c->points[j].normal_impulse = q->points[j].normal_impulse.v[lane];
-                c->points[j].tangent_impulse = q->points[j].tangent_impulse.v[lane];
-            }
-        }
-    }
 }
 
 void rb_contact_solver_warm_start_blocks(rb_world *world, bool prepare)

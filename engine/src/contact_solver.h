@@ -77,8 +77,8 @@ typedef struct rb_block_point {
  * restitution, laid side by side for the passes that solve them together
  * (contact_blocks.c), 276 bytes a contact. They are laid out as their
  * constraints are made (rb_contact_blocks_build), their points prepared
- * by the step's first warm start, and they hold their impulses until
- * rb_contact_solver_scatter_blocks writes them back to the constraints.
+ * by the step's first warm start, and they hold their impulses until the
+ * step's last soft pass writes them back to the constraints.
  * A lane without a contact holds one that cannot act (no mass, no
  * impulse) between the batches' two idle bodies. */
 struct rb_contact_block {
@@ -152,6 +152,7 @@ typedef struct rb_contact_softness {
     double linear_slop;               /* m, overlap left alone */
     double inv_h;                     /* 1/s, of the substep */
     bool use_bias;                    /* false in the relax pass: stop approach, push nothing */
+    bool write_back;                  /* the step's last pass: each block's impulses back to its constraints */
 } rb_contact_softness;
 /* The soft step's contacts several at a time (contact_blocks.c). The
  * two-point contacts of each colour are laid four by four into blocks
@@ -160,11 +161,10 @@ typedef struct rb_contact_softness {
  * points of the other constraints (those with one point, with
  * restitution, or in the overflow colour), which stay where they are and
  * are solved one at a time, and the step's first warm start prepares the
- * blocks' points. From then until scatter_blocks writes their impulses
- * back to the constraints, the blocks hold those impulses, and only the
- * passes below may be run on the contacts. */
+ * blocks' points. From then until the soft pass with `write_back` writes
+ * their impulses back to the constraints, the blocks hold those
+ * impulses, and only the passes below may be run on the contacts. */
 void rb_contact_solver_prepare_singles(rb_world *world, double h);
-void rb_contact_solver_scatter_blocks(rb_world *world);
 /* The warm start over the batches: rb_contact_solver_warm_start's result.
  * With `prepare` (the step's first), each block's points are first
  * prepared at the poses now, as rb_contact_solver_prepare_points_range
@@ -182,7 +182,11 @@ void rb_contact_solver_record_approaches(rb_world *world, double h);
  * the start of the step; each point's separation is measured anew from the poses now, so a pass
  * after the positions moved sees the gap they left. The two-point
  * contacts of a colour four or two at a time (contact_blocks.c), the
- * others one at a time by rb_contact_solver_solve_soft_range. */
+ * others one at a time by rb_contact_solver_solve_soft_range. With
+ * softness->write_back, each block's impulses are written back to its
+ * constraints as soon as the block is solved, while it is in the cache:
+ * the step's last pass does so, and the constraints then hold every
+ * contact's impulses for restitution and rb_contact_solver_store_impulses. */
 void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *softness);
 /* The same pass, one contact at a time, over constraints begin .. end - 1
  * (contact_solver.c): the reference the blocks' pass agrees with. */
