@@ -92,6 +92,10 @@ static void copy_into_lane(rb_contact_block *q, int lane, int index, const rb_co
     q->body_a[lane] = a;
     q->body_b[lane] = b;
     q->constraints[lane] = index;
+    q->contacts[lane] = c->contact;
+    q->turns_with_a[lane] = c->normal_follows == RB_NORMAL_TURNS_WITH_A ? -1 : 0;
+    q->local_normal_x.v[lane] = c->local_normal.x;
+    q->local_normal_y.v[lane] = c->local_normal.y;
     q->against_fixed[lane] = c->against_fixed ? -1 : 0;
     q->normal_x.v[lane] = c->normal.x;
     q->normal_y.v[lane] = c->normal.y;
@@ -197,6 +201,7 @@ int rb_contact_blocks_build(rb_world *world, const int start[RB_COLOUR_COUNT + 1
         c->normal = rb_rotate(c->normal_follows == RB_NORMAL_TURNS_WITH_A ? a->rotation : b->rotation, c->local_normal);
         int k = lane[colour]++;
         copy_into_lane(&batches->blocks[k / RB_BLOCK_LANES], k % RB_BLOCK_LANES, index, c, a, b);
+        c->in_lane = true;
     }
     for (int colour = 0; colour < RB_COLOUR_COUNT; ++colour) {
         for (int k = lane[colour]; k < RB_BLOCK_LANES * batches->block_start[colour + 1]; ++k) {

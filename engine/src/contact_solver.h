@@ -51,8 +51,9 @@ struct rb_contact_constraint {
     double friction, restitution;
     int point_count;
     rb_constraint_point points[RB_MAX_MANIFOLD_POINTS];
-    bool use_block;                   /* the 2x2 normal mass matrix is well conditioned */
-    double k11, k12, k22;             /* normal mass matrix K (1/kg) */
+    bool in_lane;         /* solved in a block, whose last pass writes its impulses straight to its manifold */
+    bool use_block;       /* the 2x2 normal mass matrix is well conditioned */
+    double k11, k12, k22; /* normal mass matrix K (1/kg) */
     double inv_k11, inv_k12, inv_k22; /* its inverse (kg) */
 };
 
@@ -93,6 +94,13 @@ struct rb_contact_block {
     rb_lanes4 friction;
     rb_block_point points[2];
     int constraints[RB_BLOCK_LANES]; /* indices in world->constraints; -1 for an empty lane */
+    int contacts[RB_BLOCK_LANES];    /* indices in world->contacts, whose manifolds the last pass writes */
+    /* Read by the step's last pass alone, which measures the overlap with
+     * the normal turned as the bodies turned it (carried_overlap,
+     * contact_solver.c): at the end, so the other passes leave these
+     * cache lines alone. */
+    int64_t turns_with_a[RB_BLOCK_LANES]; /* all ones where the normal turns with body A, zero with B */
+    rb_lanes4 local_normal_x, local_normal_y;
 };
 
 /* Builds one constraint per touching, non-sensor contact that has a
@@ -152,7 +160,8 @@ typedef struct rb_contact_softness {
     double linear_slop;               /* m, overlap left alone */
     double inv_h;                     /* 1/s, of the substep */
     bool use_bias;                    /* false in the relax pass: stop approach, push nothing */
-    bool write_back;                  /* the step's last pass: each block's impulses back to its constraints */
+    bool write_back;                  /* the step's last pass: each block's impulses into its manifolds */
+    bool measure_overlap;             /* and, after the last positions, its deepest overlap (rb_contact_batches) */
 } rb_contact_softness;
 /* The soft step's contacts several at a time (contact_blocks.c). The
  * two-point contacts of each colour are laid four by four into blocks

@@ -102,6 +102,7 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
     bool last_relaxes = settings->relax_iterations > 0;
     rb_contact_softness last = last_relaxes ? relax : springs;
     last.write_back = true;
+    last.measure_overlap = last_relaxes; /* after the last positions */
     rb_rigid_response joint_spring = spring_for(settings->joint_hertz, settings->joint_damping_ratio, h);
     rb_rigid_response joint_rigid = {.mass_scale = 1.0};
 
