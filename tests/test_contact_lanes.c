@@ -214,8 +214,9 @@ typedef struct constraint_counts {
  * body's velocity by up to `speed` m/s and `speed` rad/s, then from the
  * same start warm starts and runs two passes one at a time over the
  * constraints, prepared by the reference, and the same over the blocks
- * as the step lays them out and prepares them (whose impulses are then
- * written back) at each width the processor runs, and compares. */
+ * as the step lays them out and prepares them, the second pass as the
+ * step's last (writing the impulses into the manifolds and measuring the
+ * deepest overlap), at each width the processor runs, and compares. */
 static constraint_counts expect_passes_agree(rb_world *world, double speed, bool use_bias, bool mix, uint64_t seed)
 {
     double h = TEST_DT / SUBSTEPS;

@@ -25,8 +25,8 @@
  * first warm start, which reads the block anyway (contact_block_passes.h);
  * the bodies have not moved since the constraints were made. The blocks
  * hold the impulses through the step's passes (warm start, solve, relax),
- * and the step's last pass writes each block's back to its constraints
- * as it solves the block (contact_block_passes.h). The last block of a colour may have
+ * and the step's last pass writes each block's into its contacts'
+ * manifolds as it solves the block (contact_block_passes.h). The last block of a colour may have
  * empty lanes, whose contact cannot act (no mass, no impulse) between two
  * idle bodies of the batches' own. A contact with one point or with
  * restitution, and the overflow colour (whose constraints may share

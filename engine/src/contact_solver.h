@@ -79,7 +79,7 @@ typedef struct rb_block_point {
  * (contact_blocks.c), 276 bytes a contact. They are laid out as their
  * constraints are made (rb_contact_blocks_build), their points prepared
  * by the step's first warm start, and they hold their impulses until the
- * step's last soft pass writes them back to the constraints.
+ * step's last soft pass writes them into the contacts' manifolds.
  * A lane without a contact holds one that cannot act (no mass, no
  * impulse) between the batches' two idle bodies. */
 struct rb_contact_block {
@@ -170,9 +170,10 @@ typedef struct rb_contact_softness {
  * points of the other constraints (those with one point, with
  * restitution, or in the overflow colour), which stay where they are and
  * are solved one at a time, and the step's first warm start prepares the
- * blocks' points. From then until the soft pass with `write_back` writes
- * their impulses back to the constraints, the blocks hold those
- * impulses, and only the passes below may be run on the contacts. */
+ * blocks' points. From then on the blocks hold those impulses (the soft
+ * pass with `write_back` writes them into the contacts' manifolds, not
+ * the constraints), and only the passes below may be run on the
+ * contacts. */
 void rb_contact_solver_prepare_singles(rb_world *world, double h);
 /* The warm start over the batches: rb_contact_solver_warm_start's result.
  * With `prepare` (the step's first), each block's points are first
@@ -192,10 +193,15 @@ void rb_contact_solver_record_approaches(rb_world *world, double h);
  * after the positions moved sees the gap they left. The two-point
  * contacts of a colour four or two at a time (contact_blocks.c), the
  * others one at a time by rb_contact_solver_solve_soft_range. With
- * softness->write_back, each block's impulses are written back to its
- * constraints as soon as the block is solved, while it is in the cache:
- * the step's last pass does so, and the constraints then hold every
- * contact's impulses for restitution and rb_contact_solver_store_impulses. */
+ * softness->write_back (the step's last pass), each block's impulses go
+ * straight into its contacts' manifolds as soon as the block is solved,
+ * while it is in the cache, and its constraints (in_lane) keep the
+ * impulses they started with: no reader needs them, as restitution
+ * passes over contacts without it, which all block contacts are. With
+ * softness->measure_overlap too (a last pass after the last positions),
+ * the pass also measures the blocks' deepest overlap, which
+ * rb_contact_solver_store_impulses then takes instead of reading their
+ * constraints again. */
 void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *softness);
 /* The same pass, one contact at a time, over constraints begin .. end - 1
  * (contact_solver.c): the reference the blocks' pass agrees with. */

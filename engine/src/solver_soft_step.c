@@ -32,8 +32,9 @@
  *   apply restitution
  *
  * The step's last contact pass (the last relax pass, or the last solve
- * pass where there is none) writes the blocks' impulses back to the
- * constraints as it goes.
+ * pass where there is none) writes the blocks' impulses into their
+ * contacts' manifolds as it goes and, if it is a relax pass, measures
+ * their deepest overlap at the final poses (contact_solver.h).
  *
  * The springs are stiff (contact_hertz, joint_hertz) but not beyond a
  * quarter of the substep rate: an implicit spring much stiffer than its
@@ -97,7 +98,7 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
     };
     rb_contact_softness relax = springs;
     relax.use_bias = false;
-    /* The step's last pass writes the blocks' impulses back (velocity
+    /* The step's last pass writes the blocks' impulses out (velocity
      * iterations are at least 1, so there is always one). */
     bool last_relaxes = settings->relax_iterations > 0;
     rb_contact_softness last = last_relaxes ? relax : springs;
