@@ -87,8 +87,10 @@ static bool in_a_block(const rb_world *world, int i)
 }
 
 /* The velocities and impulses the blocks' passes at `width` left against
- * the reference's; the largest push of the step, which restitution reads,
- * where the constraint keeps it (not in a block, whose contacts have no
+ * the reference's: a block's contacts' impulses in their manifolds, where
+ * the last pass writes them, the others' in their constraints; the
+ * largest push of the step, which restitution reads, where the
+ * constraint keeps it (not in a block, whose contacts have no
  * restitution). */
 static void expect_same_results(const rb_world *world, const rb_body_state *reference_states,
                                 const rb_contact_constraint *reference_constraints, int width)
@@ -105,18 +107,46 @@ static void expect_same_results(const rb_world *world, const rb_body_state *refe
     for (int i = 0; i < world->constraint_count; ++i) {
         const rb_contact_constraint *r = &reference_constraints[i];
         const rb_contact_constraint *w = &world->constraints[i];
-        bool keeps_max = !in_a_block(world, i);
+        bool in_block = in_a_block(world, i);
+        cr_expect_eq(w->in_lane, in_block, "constraint %d says it is %sin a block", i, w->in_lane ? "" : "not ");
+        const rb_manifold *m = &world->contacts[w->contact].manifold;
         for (int j = 0; j < r->point_count; ++j) {
-            cr_expect(r->points[j].normal_impulse == w->points[j].normal_impulse &&
-                          r->points[j].tangent_impulse == w->points[j].tangent_impulse &&
-                          (!keeps_max || r->points[j].max_normal_impulse == w->points[j].max_normal_impulse),
+            double normal = in_block ? m->points[j].normal_impulse : w->points[j].normal_impulse;
+            double tangent = in_block ? m->points[j].tangent_impulse : w->points[j].tangent_impulse;
+            cr_expect(r->points[j].normal_impulse == normal && r->points[j].tangent_impulse == tangent &&
+                          (in_block || r->points[j].max_normal_impulse == w->points[j].max_normal_impulse),
                       "constraint %d point %d: impulses (%.17g, %.17g, largest %.17g) one at a time, (%.17g, %.17g, "
                       "largest %.17g) %d at a time",
                       i, j, r->points[j].normal_impulse, r->points[j].tangent_impulse, r->points[j].max_normal_impulse,
-                      w->points[j].normal_impulse, w->points[j].tangent_impulse, w->points[j].max_normal_impulse,
-                      width);
+                      normal, tangent, w->points[j].max_normal_impulse, width);
         }
     }
+}
+
+/* The deepest overlap of the constraints in blocks at the poses now,
+ * computed here from each constraint's definition: its normal turned
+ * with the body whose face it is, its surface points carried with their
+ * bodies, the overlap the negated distance between them along the
+ * normal. */
+static double deepest_in_blocks(const rb_world *world)
+{
+    double deepest = 0.0;
+    for (int i = 0; i < world->constraint_count; ++i) {
+        const rb_contact_constraint *c = &world->constraints[i];
+        if (!in_a_block(world, i)) {
+            continue;
+        }
+        const rb_body_state *a = &world->states[c->body_a];
+        const rb_body_state *b = &world->states[c->body_b];
+        rb_rot turn = c->normal_follows == RB_NORMAL_TURNS_WITH_A ? a->rotation : b->rotation;
+        rb_vec2 normal = rb_rotate(turn, c->local_normal);
+        for (int j = 0; j < c->point_count; ++j) {
+            rb_vec2 pa = rb_add(a->center, rb_rotate(a->rotation, c->points[j].local_surface_a));
+            rb_vec2 pb = rb_add(b->center, rb_rotate(b->rotation, c->points[j].local_surface_b));
+            deepest = fmax(deepest, -rb_dot(normal, rb_sub(pb, pa)));
+        }
+    }
+    return deepest;
 }
 
 /* Each lane's normal, lever arms and masses, as the blocks' first warm
@@ -184,8 +214,9 @@ typedef struct constraint_counts {
  * body's velocity by up to `speed` m/s and `speed` rad/s, then from the
  * same start warm starts and runs two passes one at a time over the
  * constraints, prepared by the reference, and the same over the blocks
- * as the step lays them out and prepares them (whose impulses are then
- * written back) at each width the processor runs, and compares. */
+ * as the step lays them out and prepares them, the second pass as the
+ * step's last (writing the impulses into the manifolds and measuring the
+ * deepest overlap), at each width the processor runs, and compares. */
 static constraint_counts expect_passes_agree(rb_world *world, double speed, bool use_bias, bool mix, uint64_t seed)
 {
     double h = TEST_DT / SUBSTEPS;
@@ -214,6 +245,12 @@ static constraint_counts expect_passes_agree(rb_world *world, double speed, bool
     cr_assert(start_states && reference_states && prepared && reference_constraints);
     memcpy(start_states, world->states, state_bytes);
     memcpy(prepared, world->constraints, constraint_bytes);
+    /* The impulses the step carries over, which each width starts from
+     * again: the blocks' last pass writes into the manifolds. */
+    size_t contact_bytes = (size_t)world->contact_count * sizeof *world->contacts;
+    rb_contact *start_contacts = malloc(contact_bytes);
+    cr_assert(start_contacts);
+    memcpy(start_contacts, world->contacts, contact_bytes);
 
     rb_contact_solver_warm_start_range(world, 0, count);
     rb_contact_solver_solve_soft_range(world, &softness, 0, count);
@@ -234,6 +271,7 @@ static constraint_counts expect_passes_agree(rb_world *world, double speed, bool
 
     for (int width = 2; width <= rb_contact_blocks_widest(); width += 2) {
         memcpy(world->states, start_states, state_bytes);
+        memcpy(world->contacts, start_contacts, contact_bytes);
         cr_assert_eq(rb_contact_solver_prepare(world), count, "the same constraints again");
         rb_contact_solver_prepare_singles(world, h);
         if (mix) {
@@ -243,8 +281,10 @@ static constraint_counts expect_passes_agree(rb_world *world, double speed, bool
         rb_contact_solver_warm_start_blocks(world, true);
         int prepared_lanes = expect_same_preparation(world, prepared, width);
         rb_contact_solver_solve_soft(world, &softness);
-        rb_contact_solver_solve_soft(world, &softness);
-        rb_contact_solver_scatter_blocks(world);
+        rb_contact_softness last = softness;
+        last.write_back = true; /* the impulses into the manifolds, as the step's last pass */
+        last.measure_overlap = true;
+        rb_contact_solver_solve_soft(world, &last);
         expect_same_results(world, reference_states, reference_constraints, width);
         int in_blocks = 0;
         for (int k = 0; k < world->contact_batches.block_count; ++k) {
@@ -252,6 +292,12 @@ static constraint_counts expect_passes_agree(rb_world *world, double speed, bool
                 in_blocks += world->contact_batches.blocks[k].constraints[lane] >= 0;
             }
         }
+        double deepest = deepest_in_blocks(world);
+        cr_expect(in_blocks == 0 || deepest > 0.0, "some contact in a block overlaps, so the measure is tested");
+        cr_expect(world->contact_batches.overlap_measured && world->contact_batches.deepest_overlap == deepest,
+                  "the blocks' deepest overlap: %.17g m measured by the last pass, %.17g m from the constraints, "
+                  "at width %d",
+                  world->contact_batches.deepest_overlap, deepest, width);
         cr_expect_eq(in_blocks, two_point - bouncing,
                      "every two-point constraint without restitution is solved in a block (%d of %d were)", in_blocks,
                      two_point - bouncing);
@@ -270,6 +316,7 @@ static constraint_counts expect_passes_agree(rb_world *world, double speed, bool
         }
     }
     free(start_states);
+    free(start_contacts);
     free(reference_states);
     free(prepared);
     free(reference_constraints);

@@ -25,8 +25,8 @@
  * first warm start, which reads the block anyway (contact_block_passes.h);
  * the bodies have not moved since the constraints were made. The blocks
  * hold the impulses through the step's passes (warm start, solve, relax),
- * and rb_contact_solver_scatter_blocks writes them back to the
- * constraints for the next step. The last block of a colour may have
+ * and the step's last pass writes each block's into its contacts'
+ * manifolds as it solves the block (contact_block_passes.h). The last block of a colour may have
  * empty lanes, whose contact cannot act (no mass, no impulse) between two
  * idle bodies of the batches' own. A contact with one point or with
  * restitution, and the overflow colour (whose constraints may share
@@ -92,6 +92,10 @@ static void copy_into_lane(rb_contact_block *q, int lane, int index, const rb_co
     q->body_a[lane] = a;
     q->body_b[lane] = b;
     q->constraints[lane] = index;
+    q->contacts[lane] = c->contact;
+    q->turns_with_a[lane] = c->normal_follows == RB_NORMAL_TURNS_WITH_A ? -1 : 0;
+    q->local_normal_x.v[lane] = c->local_normal.x;
+    q->local_normal_y.v[lane] = c->local_normal.y;
     q->against_fixed[lane] = c->against_fixed ? -1 : 0;
     q->normal_x.v[lane] = c->normal.x;
     q->normal_y.v[lane] = c->normal.y;
@@ -197,6 +201,7 @@ int rb_contact_blocks_build(rb_world *world, const int start[RB_COLOUR_COUNT + 1
         c->normal = rb_rotate(c->normal_follows == RB_NORMAL_TURNS_WITH_A ? a->rotation : b->rotation, c->local_normal);
         int k = lane[colour]++;
         copy_into_lane(&batches->blocks[k / RB_BLOCK_LANES], k % RB_BLOCK_LANES, index, c, a, b);
+        c->in_lane = true;
     }
     for (int colour = 0; colour < RB_COLOUR_COUNT; ++colour) {
         for (int k = lane[colour]; k < RB_BLOCK_LANES * batches->block_start[colour + 1]; ++k) {
@@ -216,21 +221,6 @@ void rb_contact_solver_prepare_singles(rb_world *world, double h)
     }
     rb_contact_solver_prepare_points_range(world, h, rows, batches->overflow_start, world->constraint_count);
     rb_contact_solver_record_approaches(world, h);
-}
-
-void rb_contact_solver_scatter_blocks(rb_world *world)
-{
-    const rb_contact_batches *batches = &world->contact_batches;
-    for (int k = 0; k < batches->block_count; ++k) {
-        const rb_contact_block *q = &batches->blocks[k];
-        for (int lane = 0; lane < RB_BLOCK_LANES && q->constraints[lane] >= 0; ++lane) {
-            rb_contact_constraint *c = &world->constraints[q->constraints[lane]];
-            for (int j = 0; j < 2; ++j) {
-                c->points[j].normal_impulse = q->points[j].normal_impulse.v[lane];
-                c->points[j].tangent_impulse = q->points[j].tangent_impulse.v[lane];
-            }
-        }
-    }
 }
 
 void rb_contact_solver_warm_start_blocks(rb_world *world, bool prepare)

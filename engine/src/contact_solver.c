@@ -147,6 +147,7 @@ void rb_contact_solver_fill_constraint(rb_world *world, int index, rb_contact_co
     double inv_mass_b = body_b->awake ? body_b->inv_mass : 0.0;
     double inv_inertia_b = body_b->awake ? body_b->inv_inertia : 0.0;
     c->contact = index;
+    c->in_lane = false;
     c->body_a = contact->body_a;
     c->body_b = contact->body_b;
     c->inv_mass_a = inv_mass_a;
@@ -897,11 +898,20 @@ static inline __attribute__((always_inline)) double carried_overlap(const rb_wor
 double rb_contact_solver_store_impulses(rb_world *world)
 {
     double trusted = TRUSTED_OVERLAP_SLOPS * world->settings.linear_slop;
-    double deepest = 0.0;
+    /* The soft step's last pass wrote the impulses of the contacts in its
+     * blocks to their manifolds, and after a relax pass measured their
+     * deepest overlap too: those constraints need not be read again. */
+    rb_contact_batches *batches = &world->contact_batches;
+    bool lanes_measured = batches->overlap_measured;
+    double deepest = lanes_measured ? batches->deepest_overlap : 0.0;
+    batches->overlap_measured = false;
     for (int i = 0; i < world->constraint_count; ++i) {
         const rb_contact_constraint *c = &world->constraints[i];
+        if (c->in_lane && lanes_measured) {
+            continue;
+        }
         rb_manifold *m = &world->contacts[c->contact].manifold;
-        for (int j = 0; j < c->point_count; ++j) {
+        for (int j = 0; j < c->point_count && !c->in_lane; ++j) {
             m->points[j].normal_impulse = c->points[j].normal_impulse;
             m->points[j].tangent_impulse = c->points[j].tangent_impulse;
         }

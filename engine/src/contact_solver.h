@@ -51,8 +51,9 @@ struct rb_contact_constraint {
     double friction, restitution;
     int point_count;
     rb_constraint_point points[RB_MAX_MANIFOLD_POINTS];
-    bool use_block;                   /* the 2x2 normal mass matrix is well conditioned */
-    double k11, k12, k22;             /* normal mass matrix K (1/kg) */
+    bool in_lane;         /* solved in a block, whose last pass writes its impulses straight to its manifold */
+    bool use_block;       /* the 2x2 normal mass matrix is well conditioned */
+    double k11, k12, k22; /* normal mass matrix K (1/kg) */
     double inv_k11, inv_k12, inv_k22; /* its inverse (kg) */
 };
 
@@ -77,8 +78,8 @@ typedef struct rb_block_point {
  * restitution, laid side by side for the passes that solve them together
  * (contact_blocks.c), 276 bytes a contact. They are laid out as their
  * constraints are made (rb_contact_blocks_build), their points prepared
- * by the step's first warm start, and they hold their impulses until
- * rb_contact_solver_scatter_blocks writes them back to the constraints.
+ * by the step's first warm start, and they hold their impulses until the
+ * step's last soft pass writes them into the contacts' manifolds.
  * A lane without a contact holds one that cannot act (no mass, no
  * impulse) between the batches' two idle bodies. */
 struct rb_contact_block {
@@ -93,6 +94,13 @@ struct rb_contact_block {
     rb_lanes4 friction;
     rb_block_point points[2];
     int constraints[RB_BLOCK_LANES]; /* indices in world->constraints; -1 for an empty lane */
+    int contacts[RB_BLOCK_LANES];    /* indices in world->contacts, whose manifolds the last pass writes */
+    /* Read by the step's last pass alone, which measures the overlap with
+     * the normal turned as the bodies turned it (carried_overlap,
+     * contact_solver.c): at the end, so the other passes leave these
+     * cache lines alone. */
+    int64_t turns_with_a[RB_BLOCK_LANES]; /* all ones where the normal turns with body A, zero with B */
+    rb_lanes4 local_normal_x, local_normal_y;
 };
 
 /* Builds one constraint per touching, non-sensor contact that has a
@@ -152,6 +160,8 @@ typedef struct rb_contact_softness {
     double linear_slop;               /* m, overlap left alone */
     double inv_h;                     /* 1/s, of the substep */
     bool use_bias;                    /* false in the relax pass: stop approach, push nothing */
+    bool write_back;                  /* the step's last pass: each block's impulses into its manifolds */
+    bool measure_overlap;             /* and, after the last positions, its deepest overlap (rb_contact_batches) */
 } rb_contact_softness;
 /* The soft step's contacts several at a time (contact_blocks.c). The
  * two-point contacts of each colour are laid four by four into blocks
@@ -160,11 +170,11 @@ typedef struct rb_contact_softness {
  * points of the other constraints (those with one point, with
  * restitution, or in the overflow colour), which stay where they are and
  * are solved one at a time, and the step's first warm start prepares the
- * blocks' points. From then until scatter_blocks writes their impulses
- * back to the constraints, the blocks hold those impulses, and only the
- * passes below may be run on the contacts. */
+ * blocks' points. From then on the blocks hold those impulses (the soft
+ * pass with `write_back` writes them into the contacts' manifolds, not
+ * the constraints), and only the passes below may be run on the
+ * contacts. */
 void rb_contact_solver_prepare_singles(rb_world *world, double h);
-void rb_contact_solver_scatter_blocks(rb_world *world);
 /* The warm start over the batches: rb_contact_solver_warm_start's result.
  * With `prepare` (the step's first), each block's points are first
  * prepared at the poses now, as rb_contact_solver_prepare_points_range
@@ -182,7 +192,16 @@ void rb_contact_solver_record_approaches(rb_world *world, double h);
  * the start of the step; each point's separation is measured anew from the poses now, so a pass
  * after the positions moved sees the gap they left. The two-point
  * contacts of a colour four or two at a time (contact_blocks.c), the
- * others one at a time by rb_contact_solver_solve_soft_range. */
+ * others one at a time by rb_contact_solver_solve_soft_range. With
+ * softness->write_back (the step's last pass), each block's impulses go
+ * straight into its contacts' manifolds as soon as the block is solved,
+ * while it is in the cache, and its constraints (in_lane) keep the
+ * impulses they started with: no reader needs them, as restitution
+ * passes over contacts without it, which all block contacts are. With
+ * softness->measure_overlap too (a last pass after the last positions),
+ * the pass also measures the blocks' deepest overlap, which
+ * rb_contact_solver_store_impulses then takes instead of reading their
+ * constraints again. */
 void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *softness);
 /* The same pass, one contact at a time, over constraints begin .. end - 1
  * (contact_solver.c): the reference the blocks' pass agrees with. */

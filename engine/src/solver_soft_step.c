@@ -29,7 +29,12 @@
  *       correct the trees      position_iterations NGS passes over the
  *                              pins of uneven trees (joint_tree.h)
  *       relax                  relax_iterations passes without bias
- *   write the contacts' impulses back from the blocks, apply restitution
+ *   apply restitution
+ *
+ * The step's last contact pass (the last relax pass, or the last solve
+ * pass where there is none) writes the blocks' impulses into their
+ * contacts' manifolds as it goes and, if it is a relax pass, measures
+ * their deepest overlap at the final poses (contact_solver.h).
  *
  * The springs are stiff (contact_hertz, joint_hertz) but not beyond a
  * quarter of the substep rate: an implicit spring much stiffer than its
@@ -93,6 +98,12 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
     };
     rb_contact_softness relax = springs;
     relax.use_bias = false;
+    /* The step's last pass writes the blocks' impulses out (velocity
+     * iterations are at least 1, so there is always one). */
+    bool last_relaxes = settings->relax_iterations > 0;
+    rb_contact_softness last = last_relaxes ? relax : springs;
+    last.write_back = true;
+    last.measure_overlap = last_relaxes; /* after the last positions */
     rb_rigid_response joint_spring = spring_for(settings->joint_hertz, settings->joint_damping_ratio, h);
     rb_rigid_response joint_rigid = {.mass_scale = 1.0};
 
@@ -125,7 +136,8 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
         t = rb_world_clock(world);
         world->joint_response = joint_spring;
         for (int iteration = 0; iteration < settings->velocity_iterations; ++iteration) {
-            solve_pass(world, h, &springs);
+            bool is_last = !last_relaxes && substep == substeps - 1 && iteration == settings->velocity_iterations - 1;
+            solve_pass(world, h, is_last ? &last : &springs);
         }
         profile->solve_velocities += rb_world_clock(world) - t;
 
@@ -143,13 +155,13 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
         t = rb_world_clock(world);
         world->joint_response = joint_rigid;
         for (int iteration = 0; iteration < settings->relax_iterations; ++iteration) {
-            solve_pass(world, h, &relax);
+            bool is_last = substep == substeps - 1 && iteration == settings->relax_iterations - 1;
+            solve_pass(world, h, is_last ? &last : &relax);
         }
         profile->relax += rb_world_clock(world) - t;
     }
 
     t = rb_world_clock(world);
-    rb_contact_solver_scatter_blocks(world);
     rb_contact_solver_apply_restitution(world, h);
     profile->restitution = rb_world_clock(world) - t;
     return (rb_solver_counts){

@@ -196,6 +196,11 @@ typedef struct rb_contact_batches {
     rb_body_state idle_a, idle_b;          /* the bodies of a block's empty lanes: at rest, at the origin */
     int width;                             /* contacts solved by one vector operation: 4 or 2 (contact_blocks.h) */
     int lanes[RB_COLOUR_COUNT + 1];        /* colour k's contacts that take a lane of a block */
+    /* The deepest overlap of the blocks' contacts at the step's final
+     * poses, measured by its last pass when that pass came after the
+     * positions moved (a relax pass), for rb_contact_solver_store_impulses. */
+    bool overlap_measured;
+    double deepest_overlap; /* m, >= 0 */
 } rb_contact_batches;
 
 /* A symmetric 3x3 block K = J·M⁻¹·Jᵀ of three of a joint's rows, whose
