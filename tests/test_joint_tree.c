@@ -55,19 +55,37 @@ static void pin(tree_scene *scene, rb_body_id a, rb_body_id b, rb_vec2 anchor)
                  rb_last_error());
 }
 
-/* Body 0 pinned to the ground; bodies 1, 2, 3 pinned to body 0 (a
- * branch); 4, 5, 6 a chain from body 1; 7 pinned to body 6 and, with
- * `loops`, to the ground again (a loop through the ground) and to body 2
- * (a loop). */
-static tree_scene make_tree_with(bool loops)
+/* A world with the ground and BODIES links of unequal densities (1 to
+ * 1,000) along x, the i-th raised by rise·(i mod period), not yet pinned. */
+static tree_scene make_links(double rise, int period)
 {
     tree_scene scene = {.world = make_world(rb_v2(0.0, -9.8))};
     rb_body_def ground = rb_default_body_def();
     cr_assert_eq(rb_body_create(scene.world, &ground, &scene.ground), RB_OK);
     const double densities[BODIES] = {1.0, 1000.0, 3.0, 10.0, 1.0, 300.0, 2.0, 50.0};
     for (int i = 0; i < BODIES; ++i) {
-        scene.bodies[i] = add_link(scene.world, rb_v2(0.5 * i, 0.2 * (i % 3)), 0.3 * i, densities[i]);
+        scene.bodies[i] = add_link(scene.world, rb_v2(0.5 * i, rise * (i % period)), 0.3 * i, densities[i]);
     }
+    return scene;
+}
+
+/* Velocities the pins do not allow. */
+static void give_velocities_the_pins_forbid(tree_scene *scene)
+{
+    for (int i = 0; i < BODIES; ++i) {
+        cr_assert_eq(rb_body_set_linear_velocity(scene->world, scene->bodies[i], rb_v2(sin(1.7 * i), cos(2.3 * i))),
+                     RB_OK);
+        cr_assert_eq(rb_body_set_angular_velocity(scene->world, scene->bodies[i], 2.0 * sin(0.9 * i + 0.4)), RB_OK);
+    }
+}
+
+/* Body 0 pinned to the ground; bodies 1, 2, 3 pinned to body 0 (a
+ * branch); 4, 5, 6 a chain from body 1; 7 pinned to body 6 and, with
+ * `loops`, to the ground again (a loop through the ground) and to body 2
+ * (a loop). */
+static tree_scene make_tree_with(bool loops)
+{
+    tree_scene scene = make_links(0.2, 3);
     pin(&scene, scene.ground, scene.bodies[0], rb_v2(-0.2, 0.0));
     for (int i = 1; i <= 3; ++i) {
         pin(&scene, scene.bodies[0], scene.bodies[i], rb_v2(0.25 * i, 0.1));
@@ -80,12 +98,7 @@ static tree_scene make_tree_with(bool loops)
         pin(&scene, scene.ground, scene.bodies[7], rb_v2(3.6, 0.2));
         pin(&scene, scene.bodies[2], scene.bodies[7], rb_v2(3.4, 0.1));
     }
-    /* Velocities the pins do not allow. */
-    for (int i = 0; i < BODIES; ++i) {
-        cr_assert_eq(rb_body_set_linear_velocity(scene.world, scene.bodies[i], rb_v2(sin(1.7 * i), cos(2.3 * i))),
-                     RB_OK);
-        cr_assert_eq(rb_body_set_angular_velocity(scene.world, scene.bodies[i], 2.0 * sin(0.9 * i + 0.4)), RB_OK);
-    }
+    give_velocities_the_pins_forbid(&scene);
     return scene;
 }
 
@@ -191,13 +204,7 @@ Test(joint_tree, one_velocity_pass_meets_every_pin_with_the_pins_impulses)
  * upper and the lower link. */
 static tree_scene make_chain(void)
 {
-    tree_scene scene = {.world = make_world(rb_v2(0.0, -9.8))};
-    rb_body_def ground = rb_default_body_def();
-    cr_assert_eq(rb_body_create(scene.world, &ground, &scene.ground), RB_OK);
-    const double densities[BODIES] = {1.0, 1000.0, 3.0, 10.0, 1.0, 300.0, 2.0, 50.0};
-    for (int i = 0; i < BODIES; ++i) {
-        scene.bodies[i] = add_link(scene.world, rb_v2(0.5 * i, 0.1 * (i % 2)), 0.3 * i, densities[i]);
-    }
+    tree_scene scene = make_links(0.1, 2);
     pin(&scene, scene.ground, scene.bodies[0], rb_v2(-0.2, 0.0));
     for (int i = 1; i < BODIES; ++i) {
         rb_vec2 anchor = rb_v2(0.5 * i - 0.25, 0.05);
@@ -207,11 +214,7 @@ static tree_scene make_chain(void)
             pin(&scene, scene.bodies[i], scene.bodies[i - 1], anchor);
         }
     }
-    for (int i = 0; i < BODIES; ++i) {
-        cr_assert_eq(rb_body_set_linear_velocity(scene.world, scene.bodies[i], rb_v2(sin(1.7 * i), cos(2.3 * i))),
-                     RB_OK);
-        cr_assert_eq(rb_body_set_angular_velocity(scene.world, scene.bodies[i], 2.0 * sin(0.9 * i + 0.4)), RB_OK);
-    }
+    give_velocities_the_pins_forbid(&scene);
     return scene;
 }
 
