@@ -104,9 +104,10 @@ static tree_scene make_tree_with(bool loops)
 
 static tree_scene make_tree(void) { return make_tree_with(true); }
 
-/* The solver's set-up of one substep of h, as rb_solver_sequential_substep
- * does it, with the trees on (NGS). */
-static void prepare(rb_world *world, double h)
+/* The solver's set-up of a step's first substep up to the warm start, as
+ * rb_solver_step and rb_solver_sequential_substep do it, with the trees
+ * on (NGS). */
+static void build_substep(rb_world *world)
 {
     cr_assert_eq(rb_joints_collect_active(world), RB_OK);
     world->joint_tree.enabled = true;
@@ -114,11 +115,39 @@ static void prepare(rb_world *world, double h)
     rb_joints_prepare(world);
     rb_joint_tree_build(world);
     rb_pins_gather(world);
+}
+
+/* The solver's set-up of one substep of h, the warm start included. */
+static void prepare(rb_world *world, double h)
+{
+    build_substep(world);
     rb_joints_warm_start(world, h, false); /* the frames; the impulses are still 0 */
     rb_joint_tree_start_substep(world);
 }
 
 static rb_joint *joint_of(rb_world *world, rb_joint_id id) { return &world->joints[id.index]; }
+
+/* Every body of the scene moved and turned by about a centimetre (0.01
+ * rad): one position pass of the trees must close the first `pins` pins'
+ * gaps to below 2e-4 m, second order in the displacement. */
+static void expect_one_position_pass_closes_centimetre_gaps(tree_scene *scene, int pins)
+{
+    rb_world *world = scene->world;
+    for (int i = 0; i < BODIES; ++i) {
+        rb_body_state *state = &world->states[scene->bodies[i].index];
+        state->center = rb_add(state->center, rb_v2(1e-2 * sin(3.1 * i), 1e-2 * cos(1.3 * i)));
+        rb_body_state_turn(state, 1e-2 * sin(0.7 * i));
+    }
+    cr_expect_not(rb_joint_tree_correct_positions(world), "gaps of a centimetre are beyond the slop");
+    for (int k = 0; k < pins; ++k) {
+        rb_joint *joint = joint_of(world, scene->pins[k]);
+        const rb_body_state *a = rb_joint_state_a(world, joint);
+        const rb_body_state *b = rb_joint_state_b(world, joint);
+        rb_vec2 gap = rb_sub(rb_add(b->center, rb_rotate(b->rotation, joint->frame.local_b)),
+                             rb_add(a->center, rb_rotate(a->rotation, joint->frame.local_a)));
+        cr_expect_lt(rb_length(gap), 2e-4, "pin %d: gap %.3g m after one pass (about 1e-2 before)", k, rb_length(gap));
+    }
+}
 
 Test(joint_tree, the_tree_takes_every_pin_but_those_closing_loops)
 {
@@ -246,20 +275,7 @@ Test(joint_tree, a_chain_solved_through_its_pins_meets_every_pin)
     /* A position pass on gaps of about a centimetre closes them to second
      * order, as the tree's does. */
     rb_world *world = chain.world;
-    for (int i = 0; i < BODIES; ++i) {
-        rb_body_state *state = &world->states[chain.bodies[i].index];
-        state->center = rb_add(state->center, rb_v2(1e-2 * sin(3.1 * i), 1e-2 * cos(1.3 * i)));
-        rb_body_state_turn(state, 1e-2 * sin(0.7 * i));
-    }
-    cr_expect_not(rb_joint_tree_correct_positions(world), "gaps of a centimetre are beyond the slop");
-    for (int k = 0; k < chain.pin_count; ++k) {
-        rb_joint *joint = joint_of(world, chain.pins[k]);
-        const rb_body_state *a = rb_joint_state_a(world, joint);
-        const rb_body_state *b = rb_joint_state_b(world, joint);
-        rb_vec2 gap = rb_sub(rb_add(b->center, rb_rotate(b->rotation, joint->frame.local_b)),
-                             rb_add(a->center, rb_rotate(a->rotation, joint->frame.local_a)));
-        cr_expect_lt(rb_length(gap), 2e-4, "pin %d: gap %.3g m after one pass (about 1e-2 before)", k, rb_length(gap));
-    }
+    expect_one_position_pass_closes_centimetre_gaps(&chain, chain.pin_count);
     destroy_world_and_expect_no_leak(world);
 }
 
@@ -323,12 +339,7 @@ static void expect_cold_start_as_warm(tree_scene (*make)(void))
         for (int k = 0; k < scene.pin_count; ++k) {
             joint_of(world, scene.pins[k])->as.revolute.point_impulse = rb_v2(3.0 * sin(1.1 * k), 2.0 * cos(0.7 * k));
         }
-        cr_assert_eq(rb_joints_collect_active(world), RB_OK);
-        world->joint_tree.enabled = true;
-        world->joint_response = (rb_rigid_response){.mass_scale = 1.0};
-        rb_joints_prepare(world);
-        rb_joint_tree_build(world);
-        rb_pins_gather(world);
+        build_substep(world);
         cr_assert(world->joint_tree.alone, "no row but the tree's pins acts on its bodies");
         world->joint_tree.alone = !warm; /* warm: as if another row touched it */
         rb_joints_warm_start(world, 1.0 / 360.0, false);
@@ -367,20 +378,7 @@ Test(joint_tree, one_position_pass_closes_small_gaps_to_second_order)
     rb_world *world = scene.world;
     prepare(world, 1.0 / 360.0);
     /* Open every pin by about a centimetre, beyond the linear slop. */
-    for (int i = 0; i < BODIES; ++i) {
-        rb_body_state *state = &world->states[scene.bodies[i].index];
-        state->center = rb_add(state->center, rb_v2(1e-2 * sin(3.1 * i), 1e-2 * cos(1.3 * i)));
-        rb_body_state_turn(state, 1e-2 * sin(0.7 * i));
-    }
-    cr_expect_not(rb_joint_tree_correct_positions(world), "gaps of a centimetre are beyond the slop");
-    for (int k = 0; k < scene.pin_count - 2; ++k) {
-        rb_joint *joint = joint_of(world, scene.pins[k]);
-        const rb_body_state *a = rb_joint_state_a(world, joint);
-        const rb_body_state *b = rb_joint_state_b(world, joint);
-        rb_vec2 gap = rb_sub(rb_add(b->center, rb_rotate(b->rotation, joint->frame.local_b)),
-                             rb_add(a->center, rb_rotate(a->rotation, joint->frame.local_a)));
-        cr_expect_lt(rb_length(gap), 2e-4, "pin %d: gap %.3g m after one pass (about 1e-2 before)", k, rb_length(gap));
-    }
+    expect_one_position_pass_closes_centimetre_gaps(&scene, scene.pin_count - 2);
     destroy_world_and_expect_no_leak(scene.world);
 }
 
