@@ -505,3 +505,21 @@ Test(broad_phase, steps_that_begin_and_end_pairs_allocate_nothing)
     cr_expect_gt(ended, 100, "only %d pairs ended", ended);
     destroy_world_and_expect_no_leak(world);
 }
+
+/* The peers' swinging chain (40 links, a box of 100 times a link's mass at
+ * its end, released horizontally) sweeps through new heights as it swings,
+ * so its boxes cross the edges of the sweep's bands and fall into two
+ * bands, then one, from step to step. After a second, when the arrays have
+ * grown to what the scene needs, a step allocates nothing. */
+Test(broad_phase, a_swinging_chain_crossing_bands_allocates_nothing)
+{
+    rb_world *world = make_world(rb_v2(0.0, -9.81));
+    scene_chain chain;
+    cr_assert_eq(scene_chain_create(world, 40, 20.0, SCENE_CHAIN_SWING, &chain), RB_OK, "%s", rb_last_error());
+    step_world(world, TEST_DT, 60);
+    const uint64_t allocations = rb_allocation_count();
+    step_world(world, TEST_DT, 600);
+    cr_expect_eq(rb_allocation_count(), allocations, "%llu allocations in 600 steps",
+                 (unsigned long long)(rb_allocation_count() - allocations));
+    destroy_world_and_expect_no_leak(world);
+}

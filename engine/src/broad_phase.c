@@ -321,10 +321,15 @@ static int band_of(const band_layout *bands, double y)
 
 /* Copies the sweep's entries into world->band_entries, band after band,
  * each band in the sweep's order of lower x; band b's entries end at
- * world->band_end[b]. */
+ * world->band_end[b]. The arrays are kept large enough for every entry to
+ * reach one band more than it does now, and for as many bands as entries:
+ * a moving scene's boxes cross band edges from step to step, and without
+ * that room the array would grow in whichever step first has a few more
+ * boxes across an edge than any step before. */
 static rb_status fill_bands(rb_world *world, const band_layout *bands)
 {
-    if (rb_grow_array((void **)&world->band_end, &world->band_end_capacity, bands->count + 1,
+    if (rb_grow_array((void **)&world->band_end, &world->band_end_capacity,
+                      (bands->count > world->sweep_count ? bands->count : world->sweep_count) + 1,
                       sizeof *world->band_end) != 0) {
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for the broad phase");
     }
@@ -341,8 +346,8 @@ static rb_status fill_bands(rb_world *world, const band_layout *bands)
     for (int b = 0; b < bands->count; ++b) {
         cursor[b + 1] += cursor[b];
     }
-    if (rb_grow_array((void **)&world->band_entries, &world->band_entry_capacity, cursor[bands->count],
-                      sizeof *world->band_entries) != 0) {
+    if (rb_grow_array((void **)&world->band_entries, &world->band_entry_capacity,
+                      cursor[bands->count] + world->sweep_count, sizeof *world->band_entries) != 0) {
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for the broad phase");
     }
     for (int k = 0; k < world->sweep_count; ++k) {
