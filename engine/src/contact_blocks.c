@@ -61,12 +61,14 @@
 void rb_contact_batches_free(rb_contact_batches *batches)
 {
     rb_free_array((void **)&batches->blocks, &batches->block_capacity, sizeof *batches->blocks);
+    rb_free_array((void **)&batches->tails, &batches->tail_capacity, sizeof *batches->tails);
     rb_free_array((void **)&batches->singles, &batches->single_capacity, sizeof *batches->singles);
 }
 
 size_t rb_contact_batches_bytes(const rb_contact_batches *batches)
 {
     return (size_t)batches->block_capacity * sizeof *batches->blocks +
+           (size_t)batches->tail_capacity * sizeof *batches->tails +
            (size_t)batches->single_capacity * sizeof *batches->singles;
 }
 
@@ -83,19 +85,21 @@ int rb_contact_blocks_widest(void)
 }
 
 /* Copies constraint `index`, between the bodies whose states are at a
- * and b, into lane `lane` of block q: every field the block's first warm
- * start does not prepare, so a block needs no clearing before its lanes
- * are filled. */
-static void copy_into_lane(rb_contact_block *q, int lane, int index, const rb_contact_constraint *c, rb_body_state *a,
-                           rb_body_state *b)
+ * and b, into lane `lane` of block k and its tail: every field the
+ * block's first warm start does not prepare, so a block needs no clearing
+ * before its lanes are filled. */
+static void copy_into_lane(rb_contact_batches *batches, int k, int lane, int index, const rb_contact_constraint *c,
+                           rb_body_state *a, rb_body_state *b)
 {
+    rb_contact_block_tail *tail = &batches->tails[k];
+    tail->constraints[lane] = index;
+    tail->contacts[lane] = c->contact;
+    tail->turns_with_a[lane] = c->normal_follows == RB_NORMAL_TURNS_WITH_A ? -1 : 0;
+    tail->local_normal_x.v[lane] = c->local_normal.x;
+    tail->local_normal_y.v[lane] = c->local_normal.y;
+    rb_contact_block *q = &batches->blocks[k];
     q->body_a[lane] = a;
     q->body_b[lane] = b;
-    q->constraints[lane] = index;
-    q->contacts[lane] = c->contact;
-    q->turns_with_a[lane] = c->normal_follows == RB_NORMAL_TURNS_WITH_A ? -1 : 0;
-    q->local_normal_x.v[lane] = c->local_normal.x;
-    q->local_normal_y.v[lane] = c->local_normal.y;
     q->against_fixed[lane] = c->against_fixed ? -1 : 0;
     q->normal_x.v[lane] = c->normal.x;
     q->normal_y.v[lane] = c->normal.y;
@@ -116,13 +120,13 @@ static void copy_into_lane(rb_contact_block *q, int lane, int index, const rb_co
     }
 }
 
-/* Empties lane `lane` of block q, as copy_into_lane would copy a contact
+/* Empties lane `lane` of block k, as copy_into_lane would copy a contact
  * that cannot act: along (1, 0) between the idle bodies, with no mass and
  * no impulse, its surface points at their centres (so no lever arm). */
-static void empty_lane(rb_contact_block *q, int lane, rb_contact_batches *batches)
+static void empty_lane(rb_contact_batches *batches, int k, int lane)
 {
     static const rb_contact_constraint idle = {.normal = {1.0, 0.0}};
-    copy_into_lane(q, lane, -1, &idle, &batches->idle_a, &batches->idle_b);
+    copy_into_lane(batches, k, lane, -1, &idle, &batches->idle_a, &batches->idle_b);
 }
 
 /* Makes room for the blocks and the singles, and finds where each
@@ -145,6 +149,8 @@ static int lay_out_batches(rb_contact_batches *batches, const int start[RB_COLOU
     batches->single_count = singles;
     batches->overflow_start = start[RB_OVERFLOW_COLOUR];
     return rb_grow_array((void **)&batches->blocks, &batches->block_capacity, blocks, sizeof *batches->blocks) != 0 ||
+                   rb_grow_array((void **)&batches->tails, &batches->tail_capacity, blocks, sizeof *batches->tails) !=
+                       0 ||
                    rb_grow_array((void **)&batches->singles, &batches->single_capacity, singles,
                                  sizeof *batches->singles) != 0
                ? -1
@@ -200,12 +206,12 @@ int rb_contact_blocks_build(rb_world *world, const int start[RB_COLOUR_COUNT + 1
         assert(c->normal_follows != RB_NORMAL_FROM_CENTERS && c->radius_a == 0.0 && c->radius_b == 0.0);
         c->normal = rb_rotate(c->normal_follows == RB_NORMAL_TURNS_WITH_A ? a->rotation : b->rotation, c->local_normal);
         int k = lane[colour]++;
-        copy_into_lane(&batches->blocks[k / RB_BLOCK_LANES], k % RB_BLOCK_LANES, index, c, a, b);
+        copy_into_lane(batches, k / RB_BLOCK_LANES, k % RB_BLOCK_LANES, index, c, a, b);
         c->in_lane = true;
     }
     for (int colour = 0; colour < RB_COLOUR_COUNT; ++colour) {
         for (int k = lane[colour]; k < RB_BLOCK_LANES * batches->block_start[colour + 1]; ++k) {
-            empty_lane(&batches->blocks[k / RB_BLOCK_LANES], k % RB_BLOCK_LANES, batches);
+            empty_lane(batches, k / RB_BLOCK_LANES, k % RB_BLOCK_LANES);
         }
     }
     return 0;
