@@ -444,29 +444,15 @@ LANE_INLINE void write_back(rb_world *world, const rb_contact_batches *batches, 
     }
 }
 
-/* What the step's last pass does with one or two sets of lanes once it
- * has solved them, while their blocks are in the cache: their impulses
- * into their contacts' manifolds, and, after the positions moved (a
- * relax pass), their deepest overlap taken into *deepest. A function of
- * its own, not inlined, which the other passes never call: inlined into
- * the loop, the reads of the blocks' tails cost the loop of every pass
- * 15 % more instructions (callgrind, the base-100 pyramid). */
-static __attribute__((noinline)) void finish_sets(rb_world *world, const rb_contact_batches *batches,
-                                                  const rb_contact_softness *k, const block_lanes *s,
-                                                  const block_lanes *t, lanes *deepest)
+/* Blocks b .. b + n - 1's impulses into their contacts' manifolds
+ * (write_back), in a function of its own, not inlined, which only the
+ * step's last pass calls: inlined into the pass's loop, it cost the loop
+ * of every pass more instructions (callgrind, the base-20 pyramid). */
+static __attribute__((noinline)) void write_back_blocks(rb_world *world, const rb_contact_batches *batches, int b,
+                                                        int n)
 {
-    int bs = (int)(s->q - batches->blocks);
-    int bt = t != NULL ? (int)(t->q - batches->blocks) : bs;
-    if (k->write_back) {
-        write_back(world, batches, bs);
-        if (bt != bs) {
-            write_back(world, batches, bt);
-        }
-    }
-    if (k->measure_overlap) {
-        *deepest = t != NULL ? max(carried_overlap(s, &batches->tails[bs]),
-                                   max(carried_overlap(t, &batches->tails[bt]), *deepest))
-                             : max(carried_overlap(s, &batches->tails[bs]), *deepest);
+    for (int m = b; m < b + n; ++m) {
+        write_back(world, batches, m);
     }
 }
 
@@ -474,7 +460,6 @@ void WITH_WIDTH(rb_contact_blocks_solve_soft_, WIDTH)(rb_world *world, const rb_
 {
     rb_contact_softness k = *softness;
     rb_contact_batches *batches = &world->contact_batches;
-    bool finish = k.write_back || k.measure_overlap;
     lanes deepest = zero();
     for (int colour = 0; colour < RB_COLOUR_COUNT; ++colour) {
         /* Two sets of lanes at a time: at WIDTH 2 a block's two halves, at
@@ -486,8 +471,12 @@ void WITH_WIDTH(rb_contact_blocks_solve_soft_, WIDTH)(rb_world *world, const rb_
             block_lanes s = lanes_of(&batches->blocks[b], 0);
             block_lanes t = lanes_of(&batches->blocks[b], 2);
             solve_two_sets(&s, &t, &k);
-            if (finish) {
-                finish_sets(world, batches, &k, &s, &t, &deepest);
+            if (k.write_back) {
+                write_back_blocks(world, batches, b, 1);
+            }
+            if (k.measure_overlap) {
+                const rb_contact_block_tail *tail = &batches->tails[b];
+                deepest = max(carried_overlap(&s, tail), max(carried_overlap(&t, tail), deepest));
             }
         }
 #else
@@ -495,15 +484,22 @@ void WITH_WIDTH(rb_contact_blocks_solve_soft_, WIDTH)(rb_world *world, const rb_
             block_lanes s = lanes_of(&batches->blocks[b], 0);
             block_lanes t = lanes_of(&batches->blocks[b + 1], 0);
             solve_two_sets(&s, &t, &k);
-            if (finish) {
-                finish_sets(world, batches, &k, &s, &t, &deepest);
+            if (k.write_back) {
+                write_back_blocks(world, batches, b, 2);
+            }
+            if (k.measure_overlap) {
+                deepest = max(carried_overlap(&s, &batches->tails[b]),
+                              max(carried_overlap(&t, &batches->tails[b + 1]), deepest));
             }
         }
         if (b < end) {
             block_lanes s = lanes_of(&batches->blocks[b], 0);
             solve_lanes(&s, &k);
-            if (finish) {
-                finish_sets(world, batches, &k, &s, NULL, &deepest);
+            if (k.write_back) {
+                write_back_blocks(world, batches, b, 1);
+            }
+            if (k.measure_overlap) {
+                deepest = max(carried_overlap(&s, &batches->tails[b]), deepest);
             }
         }
 #endif

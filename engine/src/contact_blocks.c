@@ -85,12 +85,15 @@ int rb_contact_blocks_widest(void)
 }
 
 /* Copies constraint `index`, between the bodies whose states are at a
- * and b, into lane `lane` of block k and its tail: every field the
+ * and b, into lane `slot` of the blocks (lane slot % RB_BLOCK_LANES of
+ * block slot / RB_BLOCK_LANES) and of their tails: every field the
  * block's first warm start does not prepare, so a block needs no clearing
  * before its lanes are filled. */
-static void copy_into_lane(rb_contact_batches *batches, int k, int lane, int index, const rb_contact_constraint *c,
+static void copy_into_lane(rb_contact_batches *batches, int slot, int index, const rb_contact_constraint *c,
                            rb_body_state *a, rb_body_state *b)
 {
+    int k = slot / RB_BLOCK_LANES;
+    int lane = slot % RB_BLOCK_LANES;
     rb_contact_block_tail *tail = &batches->tails[k];
     tail->constraints[lane] = index;
     tail->contacts[lane] = c->contact;
@@ -120,13 +123,14 @@ static void copy_into_lane(rb_contact_batches *batches, int k, int lane, int ind
     }
 }
 
-/* Empties lane `lane` of block k, as copy_into_lane would copy a contact
- * that cannot act: along (1, 0) between the idle bodies, with no mass and
- * no impulse, its surface points at their centres (so no lever arm). */
-static void empty_lane(rb_contact_batches *batches, int k, int lane)
+/* Empties lane `slot` of the blocks, as copy_into_lane would copy a
+ * contact that cannot act: along (1, 0) between the idle bodies, with no
+ * mass and no impulse, its surface points at their centres (so no lever
+ * arm). */
+static void empty_lane(rb_contact_batches *batches, int slot)
 {
     static const rb_contact_constraint idle = {.normal = {1.0, 0.0}};
-    copy_into_lane(batches, k, lane, -1, &idle, &batches->idle_a, &batches->idle_b);
+    copy_into_lane(batches, slot, -1, &idle, &batches->idle_a, &batches->idle_b);
 }
 
 /* Makes room for the blocks and the singles, and finds where each
@@ -205,13 +209,12 @@ int rb_contact_blocks_build(rb_world *world, const int start[RB_COLOUR_COUNT + 1
          * rb_contact_solver_prepare_points_range finds it. */
         assert(c->normal_follows != RB_NORMAL_FROM_CENTERS && c->radius_a == 0.0 && c->radius_b == 0.0);
         c->normal = rb_rotate(c->normal_follows == RB_NORMAL_TURNS_WITH_A ? a->rotation : b->rotation, c->local_normal);
-        int k = lane[colour]++;
-        copy_into_lane(batches, k / RB_BLOCK_LANES, k % RB_BLOCK_LANES, index, c, a, b);
+        copy_into_lane(batches, lane[colour]++, index, c, a, b);
         c->in_lane = true;
     }
     for (int colour = 0; colour < RB_COLOUR_COUNT; ++colour) {
         for (int k = lane[colour]; k < RB_BLOCK_LANES * batches->block_start[colour + 1]; ++k) {
-            empty_lane(batches, k / RB_BLOCK_LANES, k % RB_BLOCK_LANES);
+            empty_lane(batches, k);
         }
     }
     return 0;
