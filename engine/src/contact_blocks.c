@@ -89,11 +89,11 @@ int rb_contact_blocks_widest(void)
  * block slot / RB_BLOCK_LANES) and of their tails: every field the
  * block's first warm start does not prepare, so a block needs no clearing
  * before its lanes are filled. */
-static void copy_into_lane(rb_contact_batches *batches, int slot, int index, const rb_contact_constraint *c,
+static void copy_into_lane(rb_contact_batches *batches, unsigned slot, int index, const rb_contact_constraint *c,
                            rb_body_state *a, rb_body_state *b)
 {
-    int k = slot / RB_BLOCK_LANES;
-    int lane = slot % RB_BLOCK_LANES;
+    unsigned k = slot / RB_BLOCK_LANES; /* unsigned: a shift and a mask, where a signed division takes five more */
+    unsigned lane = slot % RB_BLOCK_LANES;
     rb_contact_block_tail *tail = &batches->tails[k];
     tail->constraints[lane] = index;
     tail->contacts[lane] = c->contact;
@@ -127,7 +127,7 @@ static void copy_into_lane(rb_contact_batches *batches, int slot, int index, con
  * contact that cannot act: along (1, 0) between the idle bodies, with no
  * mass and no impulse, its surface points at their centres (so no lever
  * arm). */
-static void empty_lane(rb_contact_batches *batches, int slot)
+static void empty_lane(rb_contact_batches *batches, unsigned slot)
 {
     static const rb_contact_constraint idle = {.normal = {1.0, 0.0}};
     copy_into_lane(batches, slot, -1, &idle, &batches->idle_a, &batches->idle_b);
@@ -209,12 +209,12 @@ int rb_contact_blocks_build(rb_world *world, const int start[RB_COLOUR_COUNT + 1
          * rb_contact_solver_prepare_points_range finds it. */
         assert(c->normal_follows != RB_NORMAL_FROM_CENTERS && c->radius_a == 0.0 && c->radius_b == 0.0);
         c->normal = rb_rotate(c->normal_follows == RB_NORMAL_TURNS_WITH_A ? a->rotation : b->rotation, c->local_normal);
-        copy_into_lane(batches, lane[colour]++, index, c, a, b);
+        copy_into_lane(batches, (unsigned)lane[colour]++, index, c, a, b);
         c->in_lane = true;
     }
     for (int colour = 0; colour < RB_COLOUR_COUNT; ++colour) {
         for (int k = lane[colour]; k < RB_BLOCK_LANES * batches->block_start[colour + 1]; ++k) {
-            empty_lane(batches, k);
+            empty_lane(batches, (unsigned)k);
         }
     }
     return 0;
