@@ -14,7 +14,11 @@
  * two-point constraints of each colour are laid four by four into
  * rb_contact_block (rb_contact_blocks_build): each value of the four
  * contacts side by side, which one load brings into a register, and the
- * addresses of their bodies' states, found once. Each contact is copied
+ * addresses of their bodies' states, found once; what the step's last
+ * pass alone reads (where the impulses go, the normal in its body's
+ * frame) goes into the block's tail, in an array beside the blocks
+ * (rb_contact_block_tail), so that the other passes stream 272 bytes a
+ * contact rather than 304. Each contact is copied
  * into its lane as soon as its constraint is made, while the constraint
  * is still in the processor's first cache: one pass over the contacts
  * where there were three (make the constraints, prepare their points,
