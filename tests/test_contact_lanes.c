@@ -78,7 +78,7 @@ static bool in_a_block(const rb_world *world, int i)
     const rb_contact_batches *batches = &world->contact_batches;
     for (int k = 0; k < batches->block_count; ++k) {
         for (int lane = 0; lane < RB_BLOCK_LANES; ++lane) {
-            if (batches->blocks[k].constraints[lane] == i) {
+            if (batches->tails[k].constraints[lane] == i) {
                 return true;
             }
         }
@@ -159,8 +159,9 @@ static int expect_same_preparation(const rb_world *world, const rb_contact_const
     int compared = 0;
     for (int k = 0; k < batches->block_count; ++k) {
         const rb_contact_block *q = &batches->blocks[k];
-        for (int lane = 0; lane < RB_BLOCK_LANES && q->constraints[lane] >= 0; ++lane) {
-            const rb_contact_constraint *c = &reference[q->constraints[lane]];
+        const int *constraints = batches->tails[k].constraints;
+        for (int lane = 0; lane < RB_BLOCK_LANES && constraints[lane] >= 0; ++lane) {
+            const rb_contact_constraint *c = &reference[constraints[lane]];
             double lane_values[2 + 2 * 6] = {q->normal_x.v[lane], q->normal_y.v[lane]};
             double reference_values[2 + 2 * 6] = {c->normal.x, c->normal.y};
             for (int j = 0; j < 2; ++j) {
@@ -178,7 +179,7 @@ static int expect_same_preparation(const rb_world *world, const rb_contact_const
             cr_expect(memcmp(lane_values, reference_values, sizeof lane_values) == 0,
                       "constraint %d prepared differently in lane %d of block %d at width %d: normal (%.17g, %.17g) "
                       "and (%.17g, %.17g), first point's normal mass %.17g and %.17g",
-                      q->constraints[lane], lane, k, width, lane_values[0], lane_values[1], reference_values[0],
+                      constraints[lane], lane, k, width, lane_values[0], lane_values[1], reference_values[0],
                       reference_values[1], lane_values[6], reference_values[6]);
             ++compared;
         }
@@ -197,7 +198,7 @@ static void mix_springs(rb_world *world)
     for (int k = 0; k < batches->block_count; ++k) {
         rb_contact_block *q = &batches->blocks[k];
         for (int lane = 0; lane < RB_BLOCK_LANES; ++lane) {
-            if (q->constraints[lane] % 2 == 1) {
+            if (batches->tails[k].constraints[lane] % 2 == 1) {
                 q->against_fixed[lane] = ~q->against_fixed[lane];
             }
         }
@@ -289,7 +290,7 @@ static constraint_counts expect_passes_agree(rb_world *world, double speed, bool
         int in_blocks = 0;
         for (int k = 0; k < world->contact_batches.block_count; ++k) {
             for (int lane = 0; lane < RB_BLOCK_LANES; ++lane) {
-                in_blocks += world->contact_batches.blocks[k].constraints[lane] >= 0;
+                in_blocks += world->contact_batches.tails[k].constraints[lane] >= 0;
             }
         }
         double deepest = deepest_in_blocks(world);

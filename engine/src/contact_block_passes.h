@@ -406,15 +406,16 @@ LANE_INLINE void solve_two_sets(const block_lanes *s, const block_lanes *t, cons
 
 /* The deepest overlap of the lanes' two points at the poses now, each
  * lane as carried_overlap measures its constraint (contact_solver.c):
- * the normal turned with the body whose face it is. */
-LANE_INLINE lanes carried_overlap(const block_lanes *s)
+ * the normal turned with the body whose face it is, read with the side
+ * it turns with from the block's tail. */
+LANE_INLINE lanes carried_overlap(const block_lanes *s, const rb_contact_block_tail *tail)
 {
     mask with_a;
-    memcpy(&with_a, &s->q->turns_with_a[s->first], sizeof with_a);
+    memcpy(&with_a, &tail->turns_with_a[s->first], sizeof with_a);
     lanes qc = select(with_a, GATHER(s, a, rotation.c), GATHER(s, b, rotation.c));
     lanes qs = select(with_a, GATHER(s, a, rotation.s), GATHER(s, b, rotation.s));
-    lanes lnx = VALUE(s, local_normal_x);
-    lanes lny = VALUE(s, local_normal_y);
+    lanes lnx = load(&tail->local_normal_x, s->first);
+    lanes lny = load(&tail->local_normal_y, s->first);
     lanes nx = qc * lnx - qs * lny;
     lanes ny = qs * lnx + qc * lny;
     lanes deepest = zero();
@@ -427,18 +428,33 @@ LANE_INLINE lanes carried_overlap(const block_lanes *s)
     return deepest;
 }
 
-/* Block q's impulses into its contacts' manifolds, for the step's last
+/* Block k's impulses into its contacts' manifolds, for the step's last
  * pass, while the block is in the cache: written to the constraints
  * instead, and copied on by rb_contact_solver_store_impulses, they made
  * a stream of 15,000 writes more on the base-100 pyramid. */
-LANE_INLINE void write_back(rb_world *world, const rb_contact_block *q)
+LANE_INLINE void write_back(rb_world *world, const rb_contact_batches *batches, int k)
 {
-    for (int lane = 0; lane < RB_BLOCK_LANES && q->constraints[lane] >= 0; ++lane) {
-        rb_manifold *m = &world->contacts[q->contacts[lane]].manifold;
+    const rb_contact_block *q = &batches->blocks[k];
+    const rb_contact_block_tail *tail = &batches->tails[k];
+    for (int lane = 0; lane < RB_BLOCK_LANES && tail->constraints[lane] >= 0; ++lane) {
+        rb_manifold *m = &world->contacts[tail->contacts[lane]].manifold;
         for (int j = 0; j < 2; ++j) {
             m->points[j].normal_impulse = q->points[j].normal_impulse.v[lane];
             m->points[j].tangent_impulse = q->points[j].tangent_impulse.v[lane];
         }
+    }
+}
+
+/* Blocks b .. b + n - 1's impulses into their contacts' manifolds
+ * (write_back), in a function of its own, not inlined, which only the
+ * step's last pass calls: inlined into the pass's loop, with the tails
+ * apart from the blocks, it made the loop of every pass 15 % more
+ * instructions (callgrind, the base-100 pyramid at Box2D v3's budget). */
+static __attribute__((noinline)) void write_back_blocks(rb_world *world, const rb_contact_batches *batches, int b,
+                                                        int n)
+{
+    for (int m = b; m < b + n; ++m) {
+        write_back(world, batches, m);
     }
 }
 
@@ -458,10 +474,11 @@ void WITH_WIDTH(rb_contact_blocks_solve_soft_, WIDTH)(rb_world *world, const rb_
             block_lanes t = lanes_of(&batches->blocks[b], 2);
             solve_two_sets(&s, &t, &k);
             if (k.write_back) {
-                write_back(world, &batches->blocks[b]);
+                write_back_blocks(world, batches, b, 1);
             }
             if (k.measure_overlap) {
-                deepest = max(carried_overlap(&s), max(carried_overlap(&t), deepest));
+                const rb_contact_block_tail *tail = &batches->tails[b];
+                deepest = max(carried_overlap(&s, tail), max(carried_overlap(&t, tail), deepest));
             }
         }
 #else
@@ -470,21 +487,21 @@ void WITH_WIDTH(rb_contact_blocks_solve_soft_, WIDTH)(rb_world *world, const rb_
             block_lanes t = lanes_of(&batches->blocks[b + 1], 0);
             solve_two_sets(&s, &t, &k);
             if (k.write_back) {
-                write_back(world, &batches->blocks[b]);
-                write_back(world, &batches->blocks[b + 1]);
+                write_back_blocks(world, batches, b, 2);
             }
             if (k.measure_overlap) {
-                deepest = max(carried_overlap(&s), max(carried_overlap(&t), deepest));
+                deepest = max(carried_overlap(&s, &batches->tails[b]),
+                              max(carried_overlap(&t, &batches->tails[b + 1]), deepest));
             }
         }
         if (b < end) {
             block_lanes s = lanes_of(&batches->blocks[b], 0);
             solve_lanes(&s, &k);
             if (k.write_back) {
-                write_back(world, &batches->blocks[b]);
+                write_back_blocks(world, batches, b, 1);
             }
             if (k.measure_overlap) {
-                deepest = max(carried_overlap(&s), deepest);
+                deepest = max(carried_overlap(&s, &batches->tails[b]), deepest);
             }
         }
 #endif

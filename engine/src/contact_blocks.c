@@ -14,7 +14,11 @@
  * two-point constraints of each colour are laid four by four into
  * rb_contact_block (rb_contact_blocks_build): each value of the four
  * contacts side by side, which one load brings into a register, and the
- * addresses of their bodies' states, found once. Each contact is copied
+ * addresses of their bodies' states, found once; what the step's last
+ * pass alone reads (where the impulses go, the normal in its body's
+ * frame) goes into the block's tail, in an array beside the blocks
+ * (rb_contact_block_tail), so that the other passes stream 272 bytes a
+ * contact rather than 304. Each contact is copied
  * into its lane as soon as its constraint is made, while the constraint
  * is still in the processor's first cache: one pass over the contacts
  * where there were three (make the constraints, prepare their points,
@@ -61,12 +65,14 @@
 void rb_contact_batches_free(rb_contact_batches *batches)
 {
     rb_free_array((void **)&batches->blocks, &batches->block_capacity, sizeof *batches->blocks);
+    rb_free_array((void **)&batches->tails, &batches->tail_capacity, sizeof *batches->tails);
     rb_free_array((void **)&batches->singles, &batches->single_capacity, sizeof *batches->singles);
 }
 
 size_t rb_contact_batches_bytes(const rb_contact_batches *batches)
 {
     return (size_t)batches->block_capacity * sizeof *batches->blocks +
+           (size_t)batches->tail_capacity * sizeof *batches->tails +
            (size_t)batches->single_capacity * sizeof *batches->singles;
 }
 
@@ -83,19 +89,24 @@ int rb_contact_blocks_widest(void)
 }
 
 /* Copies constraint `index`, between the bodies whose states are at a
- * and b, into lane `lane` of block q: every field the block's first warm
- * start does not prepare, so a block needs no clearing before its lanes
- * are filled. */
-static void copy_into_lane(rb_contact_block *q, int lane, int index, const rb_contact_constraint *c, rb_body_state *a,
-                           rb_body_state *b)
+ * and b, into lane `slot` of the blocks (lane slot % RB_BLOCK_LANES of
+ * block slot / RB_BLOCK_LANES) and of their tails: every field the
+ * block's first warm start does not prepare, so a block needs no clearing
+ * before its lanes are filled. */
+static void copy_into_lane(rb_contact_batches *batches, unsigned slot, int index, const rb_contact_constraint *c,
+                           rb_body_state *a, rb_body_state *b)
 {
+    unsigned k = slot / RB_BLOCK_LANES; /* unsigned: a shift and a mask, where a signed division takes five more */
+    unsigned lane = slot % RB_BLOCK_LANES;
+    rb_contact_block_tail *tail = &batches->tails[k];
+    tail->constraints[lane] = index;
+    tail->contacts[lane] = c->contact;
+    tail->turns_with_a[lane] = c->normal_follows == RB_NORMAL_TURNS_WITH_A ? -1 : 0;
+    tail->local_normal_x.v[lane] = c->local_normal.x;
+    tail->local_normal_y.v[lane] = c->local_normal.y;
+    rb_contact_block *q = &batches->blocks[k];
     q->body_a[lane] = a;
     q->body_b[lane] = b;
-    q->constraints[lane] = index;
-    q->contacts[lane] = c->contact;
-    q->turns_with_a[lane] = c->normal_follows == RB_NORMAL_TURNS_WITH_A ? -1 : 0;
-    q->local_normal_x.v[lane] = c->local_normal.x;
-    q->local_normal_y.v[lane] = c->local_normal.y;
     q->against_fixed[lane] = c->against_fixed ? -1 : 0;
     q->normal_x.v[lane] = c->normal.x;
     q->normal_y.v[lane] = c->normal.y;
@@ -116,13 +127,14 @@ static void copy_into_lane(rb_contact_block *q, int lane, int index, const rb_co
     }
 }
 
-/* Empties lane `lane` of block q, as copy_into_lane would copy a contact
- * that cannot act: along (1, 0) between the idle bodies, with no mass and
- * no impulse, its surface points at their centres (so no lever arm). */
-static void empty_lane(rb_contact_block *q, int lane, rb_contact_batches *batches)
+/* Empties lane `slot` of the blocks, as copy_into_lane would copy a
+ * contact that cannot act: along (1, 0) between the idle bodies, with no
+ * mass and no impulse, its surface points at their centres (so no lever
+ * arm). */
+static void empty_lane(rb_contact_batches *batches, unsigned slot)
 {
     static const rb_contact_constraint idle = {.normal = {1.0, 0.0}};
-    copy_into_lane(q, lane, -1, &idle, &batches->idle_a, &batches->idle_b);
+    copy_into_lane(batches, slot, -1, &idle, &batches->idle_a, &batches->idle_b);
 }
 
 /* Makes room for the blocks and the singles, and finds where each
@@ -145,6 +157,8 @@ static int lay_out_batches(rb_contact_batches *batches, const int start[RB_COLOU
     batches->single_count = singles;
     batches->overflow_start = start[RB_OVERFLOW_COLOUR];
     return rb_grow_array((void **)&batches->blocks, &batches->block_capacity, blocks, sizeof *batches->blocks) != 0 ||
+                   rb_grow_array((void **)&batches->tails, &batches->tail_capacity, blocks, sizeof *batches->tails) !=
+                       0 ||
                    rb_grow_array((void **)&batches->singles, &batches->single_capacity, singles,
                                  sizeof *batches->singles) != 0
                ? -1
@@ -199,13 +213,12 @@ int rb_contact_blocks_build(rb_world *world, const int start[RB_COLOUR_COUNT + 1
          * rb_contact_solver_prepare_points_range finds it. */
         assert(c->normal_follows != RB_NORMAL_FROM_CENTERS && c->radius_a == 0.0 && c->radius_b == 0.0);
         c->normal = rb_rotate(c->normal_follows == RB_NORMAL_TURNS_WITH_A ? a->rotation : b->rotation, c->local_normal);
-        int k = lane[colour]++;
-        copy_into_lane(&batches->blocks[k / RB_BLOCK_LANES], k % RB_BLOCK_LANES, index, c, a, b);
+        copy_into_lane(batches, (unsigned)lane[colour]++, index, c, a, b);
         c->in_lane = true;
     }
     for (int colour = 0; colour < RB_COLOUR_COUNT; ++colour) {
         for (int k = lane[colour]; k < RB_BLOCK_LANES * batches->block_start[colour + 1]; ++k) {
-            empty_lane(&batches->blocks[k / RB_BLOCK_LANES], k % RB_BLOCK_LANES, batches);
+            empty_lane(batches, (unsigned)k);
         }
     }
     return 0;

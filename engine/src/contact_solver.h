@@ -76,12 +76,12 @@ typedef struct rb_block_point {
 
 /* Up to four two-point contacts of one colour, with no circle side and no
  * restitution, laid side by side for the passes that solve them together
- * (contact_blocks.c), 276 bytes a contact. They are laid out as their
- * constraints are made (rb_contact_blocks_build), their points prepared
- * by the step's first warm start, and they hold their impulses until the
- * step's last soft pass writes them into the contacts' manifolds.
- * A lane without a contact holds one that cannot act (no mass, no
- * impulse) between the batches' two idle bodies. */
+ * (contact_blocks.c): what every pass reads, 272 bytes a contact. They
+ * are laid out as their constraints are made (rb_contact_blocks_build),
+ * their points prepared by the step's first warm start, and they hold
+ * their impulses until the step's last soft pass writes them into the
+ * contacts' manifolds. A lane without a contact holds one that cannot act
+ * (no mass, no impulse) between the batches' two idle bodies. */
 struct rb_contact_block {
     /* the lanes' bodies in world->states (or the idle ones), found once
      * a step: no body is made or destroyed within a step, so the array
@@ -93,12 +93,19 @@ struct rb_contact_block {
     rb_lanes4 inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
     rb_lanes4 friction;
     rb_block_point points[2];
-    int constraints[RB_BLOCK_LANES]; /* indices in world->constraints; -1 for an empty lane */
-    int contacts[RB_BLOCK_LANES];    /* indices in world->contacts, whose manifolds the last pass writes */
-    /* Read by the step's last pass alone, which measures the overlap with
-     * the normal turned as the bodies turned it (carried_overlap,
-     * contact_solver.c): at the end, so the other passes leave these
-     * cache lines alone. */
+};
+
+/* What the step's last soft pass alone reads of a block, 32 bytes a
+ * contact, in an array beside the blocks (the same index): where its
+ * contacts' impulses go, and the normal in the frame of the body that
+ * turns it, to measure the overlap left (carried_overlap,
+ * contact_solver.c). Kept at the end of each block, these cache lines
+ * were streamed through every pass with the rest (the processor fetches
+ * a block's lines in a run); apart, the other passes read 272 bytes a
+ * contact instead of 304. */
+struct rb_contact_block_tail {
+    int constraints[RB_BLOCK_LANES];      /* indices in world->constraints; -1 for an empty lane */
+    int contacts[RB_BLOCK_LANES];         /* indices in world->contacts, whose manifolds the last pass writes */
     int64_t turns_with_a[RB_BLOCK_LANES]; /* all ones where the normal turns with body A, zero with B */
     rb_lanes4 local_normal_x, local_normal_y;
 };

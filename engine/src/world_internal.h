@@ -179,7 +179,8 @@ typedef struct rb_event_arrays {
 } rb_event_arrays;
 
 typedef struct rb_contact_constraint rb_contact_constraint;
-typedef struct rb_contact_block rb_contact_block; /* contact_solver.h */
+typedef struct rb_contact_block rb_contact_block;           /* contact_solver.h */
+typedef struct rb_contact_block_tail rb_contact_block_tail; /* contact_solver.h */
 
 /* The soft step's contacts as its passes take them, colour by colour:
  * blocks of two-point constraints solved several at a time, and the
@@ -187,7 +188,8 @@ typedef struct rb_contact_block rb_contact_block; /* contact_solver.h */
  * contact_blocks.c). */
 typedef struct rb_contact_batches {
     rb_contact_block *blocks;
-    int block_count, block_capacity;
+    rb_contact_block_tail *tails; /* block k's tail is tails[k] */
+    int block_count, block_capacity, tail_capacity;
     int *singles; /* indices in world->constraints */
     int single_count, single_capacity;
     int block_start[RB_COLOUR_COUNT + 1];  /* colour k's blocks start here; the last entry is block_count */
