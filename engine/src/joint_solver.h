@@ -308,8 +308,36 @@ static inline void rb_pin_solve(rb_world *world, rb_pin_row *row)
     rb_body_state *b = &world->states[row->body_b];
     rb_point_alone_solve(world, &f, a, b, rb_point_frame_velocity_error(world, &f, a, b), &row->impulse);
 }
+/* A velocity pass of a row under a rigid response (NGS's and 2.4's:
+ * mass scale 1, impulse scale 0, no bias), where rb_pin_solve's
+ * softening, P·1 - 0·(accumulated), returns the rigid impulse itself:
+ * the same arithmetic less six products and a branch a pin, to the same
+ * bits. Inline, as rb_pin_solve. The pin's velocity error Cdot = vB + ωB × rB - vA - ωA × rA,
+ * less the drift its substep asks for (joint_point.c), is removed by
+ * P = -K⁻¹·Cdot with the substep's inverse. */
+static inline void rb_pin_solve_rigid(rb_body_state *states, rb_pin_row *row)
+{
+    rb_body_state *a = &states[row->body_a];
+    rb_body_state *b = &states[row->body_b];
+    const rb_vec2 ra = row->ra;
+    const rb_vec2 rb = row->rb;
+    const rb_vec2 vb = rb_add(b->linear_velocity, rb_cross_sv(b->angular_velocity, rb));
+    const rb_vec2 va = rb_add(a->linear_velocity, rb_cross_sv(a->angular_velocity, ra));
+    const rb_vec2 cdot = rb_sub(rb_sub(vb, va), row->point_drift);
+    const rb_vec2 impulse = rb_v2(-(row->point_inverse11 * cdot.x + row->point_inverse12 * cdot.y),
+                                  -(row->point_inverse12 * cdot.x + row->point_inverse22 * cdot.y));
+    row->impulse = rb_add(row->impulse, impulse);
+    rb_apply_at_anchors(a, b, row->inv_mass_a, row->inv_inertia_a, row->inv_mass_b, row->inv_inertia_b, ra, rb,
+                        impulse);
+}
+
 /* An NGS pass of row `row`; true when its gap was within the linear slop. */
 bool rb_pin_correct(rb_world *world, int row);
+/* Whole passes over the rows, in their order or backwards, for a pass
+ * whose joints are all rows (the joint grid): a warm start, an NGS
+ * position pass (true when every gap was within the linear slop). */
+void rb_pins_warm_start(rb_world *world, double h, bool backwards);
+bool rb_pins_correct_positions(rb_world *world, bool backwards);
 /* At the end of the step: the rows' impulses back into their joints. */
 void rb_pins_scatter(rb_world *world);
 /* The impulse of a plain pin's point: its row's within a step, else its
