@@ -59,7 +59,7 @@ void rb_pins_gather(rb_world *world)
  * same bits; then the warm start with its impulse. Inlined by force into
  * the whole pass, where a call a pin cost some 15 instructions of the 160
  * the visit takes. */
-static inline __attribute__((always_inline)) void warm_start_row(rb_world *world, int row, double h)
+static inline __attribute__((always_inline)) void warm_start_row(rb_world *world, int row, double h, double drift_cap)
 {
     rb_pin_row *r = &world->pin_rows[row];
     const rb_pin_anchors *anchors = &world->pin_anchors[row];
@@ -76,12 +76,15 @@ static inline __attribute__((always_inline)) void warm_start_row(rb_world *world
     r->point_inverse11 = inverse_det * k22;
     r->point_inverse12 = -inverse_det * k12;
     r->point_inverse22 = inverse_det * k11;
-    r->point_drift = rb_point_drift(world, r->body_a, r->body_b, ra, rb, h);
+    r->point_drift = rb_point_drift(world, r->body_a, r->body_b, ra, rb, h, drift_cap);
     rb_apply_at_anchors(&world->states[r->body_a], &world->states[r->body_b], r->inv_mass_a, r->inv_inertia_a,
                         r->inv_mass_b, r->inv_inertia_b, r->ra, r->rb, r->impulse);
 }
 
-void rb_pin_warm_start(rb_world *world, int row, double h) { warm_start_row(world, row, h); }
+void rb_pin_warm_start(rb_world *world, int row, double h)
+{
+    warm_start_row(world, row, h, rb_point_drift_cap(world, h));
+}
 
 /* The position pass of a pin row: the point constraint's NGS pass
  * (rb_point_constraint_correct, joint_point.c) with the arithmetic a pin
@@ -97,7 +100,7 @@ void rb_pin_warm_start(rb_world *world, int row, double h) { warm_start_row(worl
  * P moves the centres by ∓P/m and turns the bodies by ∓(r × P)/I. The
  * pass is within the slop when |C| is, compared squared: no square root.
  * (Catto, Box2D 2.4, b2RevoluteJoint::SolvePositionConstraints.) */
-static inline __attribute__((always_inline)) bool correct_row(rb_world *world, int row_index)
+static inline __attribute__((always_inline)) bool correct_row(rb_world *world, int row_index, double slop_squared)
 {
     const rb_pin_row *row = &world->pin_rows[row_index];
     const rb_pin_anchors *anchors = &world->pin_anchors[row_index];
@@ -111,8 +114,7 @@ static inline __attribute__((always_inline)) bool correct_row(rb_world *world, i
     const rb_vec2 ra = rb_rotate(a->rotation, anchors->local_a);
     const rb_vec2 rb = rb_rotate(b->rotation, anchors->local_b);
     const rb_vec2 gap = rb_sub(rb_add(b->center, rb), rb_add(a->center, ra));
-    const double slop = world->settings.linear_slop;
-    const bool within = rb_length_squared(gap) <= slop * slop;
+    const bool within = rb_length_squared(gap) <= slop_squared;
 
     const double m = inv_mass_a + inv_mass_b;
     const double k11 = m + inv_inertia_a * ra.y * ra.y + inv_inertia_b * rb.y * rb.y;
@@ -137,7 +139,9 @@ static inline __attribute__((always_inline)) bool correct_row(rb_world *world, i
     return within;
 }
 
-bool rb_pin_correct(rb_world *world, int row) { return correct_row(world, row); }
+static double slop_squared(const rb_world *world) { return world->settings.linear_slop * world->settings.linear_slop; }
+
+bool rb_pin_correct(rb_world *world, int row) { return correct_row(world, row, slop_squared(world)); }
 
 /* The k-th row of a pass, counted from the end when sweeping backwards. */
 static int row_at(int count, int k, bool backwards) { return backwards ? count - 1 - k : k; }
@@ -145,17 +149,19 @@ static int row_at(int count, int k, bool backwards) { return backwards ? count -
 __attribute__((noinline)) void rb_pins_warm_start(rb_world *world, double h, bool backwards)
 {
     const int count = world->pin_row_count;
+    const double drift_cap = rb_point_drift_cap(world, h);
     for (int k = 0; k < count; ++k) {
-        warm_start_row(world, row_at(count, k, backwards), h);
+        warm_start_row(world, row_at(count, k, backwards), h, drift_cap);
     }
 }
 
 __attribute__((noinline)) bool rb_pins_correct_positions(rb_world *world, bool backwards)
 {
     const int count = world->pin_row_count;
+    const double slop = slop_squared(world);
     bool all_within = true;
     for (int k = 0; k < count; ++k) {
-        all_within = correct_row(world, row_at(count, k, backwards)) && all_within;
+        all_within = correct_row(world, row_at(count, k, backwards), slop) && all_within;
     }
     return all_within;
 }

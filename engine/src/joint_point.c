@@ -96,7 +96,7 @@ void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double 
 void rb_point_constraint_prepare_drift(const rb_world *world, rb_joint *joint, double h)
 {
     rb_joint_frame *f = &joint->frame;
-    f->point_drift = rb_point_drift(world, joint->body_a, joint->body_b, f->ra, f->rb, h);
+    f->point_drift = rb_point_drift(world, joint->body_a, joint->body_b, f->ra, f->rb, h, rb_point_drift_cap(world, h));
 }
 
 /* Solves K_s·(x, z) = (v, w) with K_s = K whose coupling terms k13, k23

@@ -258,11 +258,16 @@ static inline void rb_point_alone_solve(const rb_world *world, const rb_joint_fr
  * angular row) and the frame's point_drift for the substep; after
  * the frame is prepared, before any solve. */
 void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h);
+/* The largest drift rb_point_drift asks for in a substep of length h:
+ * one linear slop per substep (m/s). */
+static inline double rb_point_drift_cap(const rb_world *world, double h) { return world->settings.linear_slop / h; }
+
 /* The velocity a pin asks of its anchors' separation in a substep of
  * length h so that they still meet at its end while their offsets ra and
  * rb turn with the bodies (m/s; the centripetal drift). Inline: every
  * pin's substep computes it. */
-static inline rb_vec2 rb_point_drift(const rb_world *world, int body_a, int body_b, rb_vec2 ra, rb_vec2 rb, double h)
+static inline rb_vec2 rb_point_drift(const rb_world *world, int body_a, int body_b, rb_vec2 ra, rb_vec2 rb, double h,
+                                     double drift_cap)
 {
     /* Solve for the velocities that keep the anchors together at the end
      * of the substep, not just momentarily (SHAKE; Ryckaert, Ciccotti,
@@ -278,13 +283,13 @@ static inline rb_vec2 rb_point_drift(const rb_world *world, int body_a, int body
      * any body the solver can follow. A larger one means bodies spin
      * faster than the iterations converge (a light link beside a heavy
      * one), and asking for it then feeds the spin until it explodes; it is
-     * capped at one linear slop per substep. The angular velocities are
+     * capped at one linear slop per substep (drift_cap, m/s, from
+     * rb_point_drift_cap). The angular velocities are
      * the substep's starting ones (rb_joints_prepare recorded them before
      * any warm start), so the drift is fixed for the substep. */
     const double omega_a = world->substep_omega[body_a];
     const double omega_b = world->substep_omega[body_b];
     rb_vec2 drift = rb_scale(0.5 * h, rb_sub(rb_scale(omega_b * omega_b, rb), rb_scale(omega_a * omega_a, ra)));
-    double drift_cap = world->settings.linear_slop / h;
     if (rb_length_squared(drift) > drift_cap * drift_cap) { /* a square root only when capping */
         drift = rb_scale(drift_cap / rb_length(drift), drift);
     }
