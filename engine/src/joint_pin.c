@@ -57,8 +57,7 @@ void rb_pins_gather(rb_world *world)
  * drift its velocity passes ask for (rb_point_drift), as
  * rb_point_constraint_prepare prepares a joint's (joint_point.c), to the
  * same bits; then the warm start with its impulse. Inlined by force into
- * the whole pass, where a call a pin cost some 15 instructions of the 160
- * the visit takes. */
+ * the whole pass, which would otherwise make a call a pin. */
 static inline __attribute__((always_inline)) void warm_start_row(rb_world *world, int row, double h, double drift_cap)
 {
     rb_pin_row *r = &world->pin_rows[row];
@@ -146,6 +145,10 @@ bool rb_pin_correct(rb_world *world, int row) { return correct_row(world, row, s
 /* The k-th row of a pass, counted from the end when sweeping backwards. */
 static int row_at(int count, int k, bool backwards) { return backwards ? count - 1 - k : k; }
 
+/* The whole passes are kept out of joint.c's passes, which call them:
+ * inlined there under link-time optimisation they would be compiled with
+ * joint.c's options, not with those engine/CMakeLists.txt gives this
+ * file. */
 __attribute__((noinline)) void rb_pins_warm_start(rb_world *world, double h, bool backwards)
 {
     const int count = world->pin_row_count;
