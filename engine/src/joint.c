@@ -484,16 +484,16 @@ static int pass_slot(pass_list list, int k, bool backwards)
     return list.joints[pass_index(list.count, k, backwards)];
 }
 
-/* The row of the k-th joint of the list, or -1. When every joint of the
- * list is a plain pin in its row (the joint grid, a chain), the rows are
- * the list, in the same order, and no look-up is needed. */
+/* The row of the k-th joint of the list, or -1. */
 static int pass_row(const rb_world *world, pass_list list, int k, bool backwards)
 {
-    if (world->pin_row_count == list.count) {
-        return pass_index(list.count, k, backwards);
-    }
     return world->pin_row_of[pass_slot(list, k, backwards)];
 }
+
+/* Whether every joint of the list is a plain pin in its row (the joint
+ * grid, a chain): the rows are then the list, in the same order, and the
+ * passes run over the rows alone (joint_pin.c). */
+static bool all_rows(const rb_world *world, pass_list list) { return world->pin_row_count == list.count; }
 
 /* Each joint in one visit: its substep's frame, then its warm start; a
  * plain pin in its row (joint_pin.c). The plain pins the trees solve
@@ -502,6 +502,11 @@ static int pass_row(const rb_world *world, pass_list list, int k, bool backwards
 void rb_joints_warm_start(rb_world *world, double h, bool backwards)
 {
     const pass_list list = pass_joints(world);
+    if (all_rows(world, list)) {
+        rb_pins_warm_start(world, h, backwards);
+        rb_joint_tree_warm_start(world, h, backwards);
+        return;
+    }
     for (int k = 0; k < list.count; ++k) {
         int row = pass_row(world, list, k, backwards);
         if (row >= 0) {
@@ -536,9 +541,30 @@ void rb_joints_warm_start(rb_world *world, double h, bool backwards)
     rb_joint_tree_warm_start(world, h, backwards);
 }
 
+/* A velocity pass over the rows alone, under the pass's response: the
+ * rigid one of NGS and 2.4 in fewer operations (rb_pin_solve_rigid). */
+static void solve_rows(rb_world *world, bool backwards)
+{
+    const int count = world->pin_row_count;
+    const rb_rigid_response *response = &world->joint_response;
+    if (response->mass_scale == 1.0 && response->impulse_scale == 0.0 && response->bias_rate == 0.0) {
+        for (int k = 0; k < count; ++k) {
+            rb_pin_solve_rigid(world->states, &world->pin_rows[pass_index(count, k, backwards)]);
+        }
+        return;
+    }
+    for (int k = 0; k < count; ++k) {
+        rb_pin_solve(world, &world->pin_rows[pass_index(count, k, backwards)]);
+    }
+}
+
 void rb_joints_solve_velocities(rb_world *world, double h, bool backwards)
 {
     const pass_list list = pass_joints(world);
+    if (all_rows(world, list)) {
+        solve_rows(world, backwards);
+        return;
+    }
     for (int k = 0; k < list.count; ++k) {
         int row = pass_row(world, list, k, backwards);
         if (row >= 0) {
@@ -571,8 +597,12 @@ void rb_joints_solve_velocities(rb_world *world, double h, bool backwards)
 
 bool rb_joints_correct_positions(rb_world *world, bool backwards)
 {
-    bool all_within = true;
     const pass_list list = pass_joints(world);
+    if (all_rows(world, list)) {
+        bool pins_within = rb_pins_correct_positions(world, backwards);
+        return rb_joint_tree_correct_positions(world) && pins_within;
+    }
+    bool all_within = true;
     for (int k = 0; k < list.count; ++k) {
         int row = pass_row(world, list, k, backwards);
         if (row >= 0) {

@@ -34,7 +34,7 @@ void rb_pins_gather(rb_world *world)
         }
         /* The masses and the anchors in the body frames, this step's
          * (rb_joints_collect_active); each substep's warm start prepares
-         * the rest (rb_pin_prepare). */
+         * the rest (warm_start_row). */
         const rb_joint_frame *f = &joint->frame;
         world->pin_rows[count] = (rb_pin_row){
             .body_a = joint->body_a,
@@ -52,17 +52,121 @@ void rb_pins_gather(rb_world *world)
     world->pin_rows_live = true;
 }
 
-void rb_pin_warm_start(rb_world *world, int row, double h)
+/* The row's substep: its anchors turned into the world at the poses now,
+ * the inverse of its 2 × 2 mass matrix K (rb_pin_correct gives K) and the
+ * drift its velocity passes ask for (rb_point_drift), as
+ * rb_point_constraint_prepare prepares a joint's (joint_point.c), to the
+ * same bits; then the warm start with its impulse. Inlined by force into
+ * the whole pass, which would otherwise make a call a pin. */
+static inline __attribute__((always_inline)) void warm_start_row(rb_world *world, int row, double h, double drift_cap)
 {
     rb_pin_row *r = &world->pin_rows[row];
-    rb_pin_prepare(world, r, &world->pin_anchors[row], h);
+    const rb_pin_anchors *anchors = &world->pin_anchors[row];
+    r->rb = rb_rotate(world->states[r->body_b].rotation, anchors->local_b);
+    r->ra = rb_rotate(world->states[r->body_a].rotation, anchors->local_a);
+    const rb_vec2 ra = r->ra;
+    const rb_vec2 rb = r->rb;
+    const double m = r->inv_mass_a + r->inv_mass_b;
+    const double k11 = m + r->inv_inertia_a * ra.y * ra.y + r->inv_inertia_b * rb.y * rb.y;
+    const double k12 = -r->inv_inertia_a * ra.x * ra.y - r->inv_inertia_b * rb.x * rb.y;
+    const double k22 = m + r->inv_inertia_a * ra.x * ra.x + r->inv_inertia_b * rb.x * rb.x;
+    const double det = k11 * k22 - k12 * k12;
+    const double inverse_det = det > 0.0 ? 1.0 / det : 0.0; /* all 0 when K is singular */
+    r->point_inverse11 = inverse_det * k22;
+    r->point_inverse12 = -inverse_det * k12;
+    r->point_inverse22 = inverse_det * k11;
+    r->point_drift = rb_point_drift(world, r->body_a, r->body_b, ra, rb, h, drift_cap);
     rb_apply_at_anchors(&world->states[r->body_a], &world->states[r->body_b], r->inv_mass_a, r->inv_inertia_a,
                         r->inv_mass_b, r->inv_inertia_b, r->ra, r->rb, r->impulse);
 }
 
-bool rb_pin_correct(rb_world *world, int row)
+void rb_pin_warm_start(rb_world *world, int row, double h)
 {
-    return rb_pin_correct_point(world, &world->pin_rows[row], &world->pin_anchors[row]) <= world->settings.linear_slop;
+    warm_start_row(world, row, h, rb_point_drift_cap(world, h));
+}
+
+/* The position pass of a pin row: the point constraint's NGS pass
+ * (rb_point_constraint_correct, joint_point.c) with the arithmetic a pin
+ * alone needs and no more, to the same bits. With the anchors turned into
+ * the world at the poses now, rA = R(θA)·localA and rB likewise, the gap
+ * C = (cB + rB) - (cA + rA) is closed to first order by the impulse
+ * P = -K⁻¹·C, K being the pin's 2 × 2 mass matrix at the poses now
+ * (joint_point.c gives it):
+ *   k11 = 1/mA + 1/mB + rA.y²/IA + rB.y²/IB,
+ *   k12 = -rA.x·rA.y/IA - rB.x·rB.y/IB,
+ *   k22 = 1/mA + 1/mB + rA.x²/IA + rB.x²/IB,
+ * solved by its adjugate over its determinant (Cramer's rule for 2 × 2);
+ * P moves the centres by ∓P/m and turns the bodies by ∓(r × P)/I. The
+ * pass is within the slop when |C| is, compared squared: no square root.
+ * (Catto, Box2D 2.4, b2RevoluteJoint::SolvePositionConstraints.) */
+static inline __attribute__((always_inline)) bool correct_row(rb_world *world, int row_index, double slop_squared)
+{
+    const rb_pin_row *row = &world->pin_rows[row_index];
+    const rb_pin_anchors *anchors = &world->pin_anchors[row_index];
+    rb_body_state *a = &world->states[row->body_a];
+    rb_body_state *b = &world->states[row->body_b];
+    const double inv_mass_a = row->inv_mass_a;
+    const double inv_inertia_a = row->inv_inertia_a;
+    const double inv_mass_b = row->inv_mass_b;
+    const double inv_inertia_b = row->inv_inertia_b;
+
+    const rb_vec2 ra = rb_rotate(a->rotation, anchors->local_a);
+    const rb_vec2 rb = rb_rotate(b->rotation, anchors->local_b);
+    const rb_vec2 gap = rb_sub(rb_add(b->center, rb), rb_add(a->center, ra));
+    const bool within = rb_length_squared(gap) <= slop_squared;
+
+    const double m = inv_mass_a + inv_mass_b;
+    const double k11 = m + inv_inertia_a * ra.y * ra.y + inv_inertia_b * rb.y * rb.y;
+    const double k12 = -inv_inertia_a * ra.x * ra.y - inv_inertia_b * rb.x * rb.y;
+    const double k22 = m + inv_inertia_a * ra.x * ra.x + inv_inertia_b * rb.x * rb.x;
+    const double det = k11 * k22 - k12 * k12;
+    if (!(det > 0.0)) {
+        return within; /* two bodies that cannot move */
+    }
+    const double inverse_det = 1.0 / det;
+    const rb_vec2 v = rb_neg(gap);
+    const rb_vec2 impulse = rb_v2((k22 * v.x - k12 * v.y) * inverse_det, (k11 * v.y - k12 * v.x) * inverse_det);
+
+    a->center = rb_mul_sub(a->center, inv_mass_a, impulse);
+    b->center = rb_mul_add(b->center, inv_mass_b, impulse);
+    if (inv_inertia_a > 0.0) {
+        rb_body_state_turn(a, -(inv_inertia_a * rb_cross(ra, impulse)));
+    }
+    if (inv_inertia_b > 0.0) {
+        rb_body_state_turn(b, inv_inertia_b * rb_cross(rb, impulse));
+    }
+    return within;
+}
+
+static double slop_squared(const rb_world *world) { return world->settings.linear_slop * world->settings.linear_slop; }
+
+bool rb_pin_correct(rb_world *world, int row) { return correct_row(world, row, slop_squared(world)); }
+
+/* The k-th row of a pass, counted from the end when sweeping backwards. */
+static int row_at(int count, int k, bool backwards) { return backwards ? count - 1 - k : k; }
+
+/* The whole passes are kept out of joint.c's passes, which call them:
+ * inlined there under link-time optimisation they would be compiled with
+ * joint.c's options, not with those engine/CMakeLists.txt gives this
+ * file. */
+__attribute__((noinline)) void rb_pins_warm_start(rb_world *world, double h, bool backwards)
+{
+    const int count = world->pin_row_count;
+    const double drift_cap = rb_point_drift_cap(world, h);
+    for (int k = 0; k < count; ++k) {
+        warm_start_row(world, row_at(count, k, backwards), h, drift_cap);
+    }
+}
+
+__attribute__((noinline)) bool rb_pins_correct_positions(rb_world *world, bool backwards)
+{
+    const int count = world->pin_row_count;
+    const double slop = slop_squared(world);
+    bool all_within = true;
+    for (int k = 0; k < count; ++k) {
+        all_within = correct_row(world, row_at(count, k, backwards), slop) && all_within;
+    }
+    return all_within;
 }
 
 void rb_pins_scatter(rb_world *world)

@@ -93,49 +93,10 @@ void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double 
     rb_point_constraint_prepare_drift(world, joint, h);
 }
 
-static inline rb_vec2 centripetal_drift(const rb_world *world, int body_a, int body_b, rb_vec2 ra, rb_vec2 rb, double h)
-{
-    /* Solve for the velocities that keep the anchors together at the end
-     * of the substep, not just momentarily (SHAKE; Ryckaert, Ciccotti,
-     * Berendsen, J. Comput. Phys. 23, 1977): the anchor offsets turn with
-     * their bodies while the positions advance, each by
-     * h·ω × r - ½·(h·ω)²·r to second order, so the gap grows by h times
-     * Cdot - ½·h·(ωB²·rB - ωA²·rA). Asking for Cdot alone leaves that
-     * centripetal drift for the position pass, which removes it without
-     * the matching velocity, and a pendulum then loses energy every
-     * swing (Box2D 2.4 loses 86 % of a 90° swing's energy in 200 s).
-     *
-     * The drift is the curvature of one substep's path: millimetres for
-     * any body the solver can follow. A larger one means bodies spin
-     * faster than the iterations converge (a light link beside a heavy
-     * one), and asking for it then feeds the spin until it explodes; it is
-     * capped at one linear slop per substep. The angular velocities are
-     * the substep's starting ones (rb_joints_prepare recorded them before
-     * any warm start), so the drift is fixed for the substep. */
-    const double omega_a = world->substep_omega[body_a];
-    const double omega_b = world->substep_omega[body_b];
-    rb_vec2 drift = rb_scale(0.5 * h, rb_sub(rb_scale(omega_b * omega_b, rb), rb_scale(omega_a * omega_a, ra)));
-    double drift_cap = world->settings.linear_slop / h;
-    if (rb_length_squared(drift) > drift_cap * drift_cap) { /* a square root only when capping */
-        drift = rb_scale(drift_cap / rb_length(drift), drift);
-    }
-    return drift;
-}
-
 void rb_point_constraint_prepare_drift(const rb_world *world, rb_joint *joint, double h)
 {
     rb_joint_frame *f = &joint->frame;
-    f->point_drift = centripetal_drift(world, joint->body_a, joint->body_b, f->ra, f->rb, h);
-}
-
-void rb_pin_prepare(const rb_world *world, rb_pin_row *row, const rb_pin_anchors *anchors, double h)
-{
-    row->rb = rb_rotate(world->states[row->body_b].rotation, anchors->local_b);
-    row->ra = rb_rotate(world->states[row->body_a].rotation, anchors->local_a);
-    const rb_block_matrix k =
-        make_mass_matrix(row->inv_mass_a, row->inv_inertia_a, row->inv_mass_b, row->inv_inertia_b, row->ra, row->rb);
-    point_inverse(&k, &row->point_inverse11, &row->point_inverse12, &row->point_inverse22);
-    row->point_drift = centripetal_drift(world, row->body_a, row->body_b, row->ra, row->rb, h);
+    f->point_drift = rb_point_drift(world, joint->body_a, joint->body_b, f->ra, f->rb, h, rb_point_drift_cap(world, h));
 }
 
 /* Solves K_s·(x, z) = (v, w) with K_s = K whose coupling terms k13, k23
@@ -194,14 +155,10 @@ void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumu
 
 /* One NGS pass on bodies a and b, of the given inverse masses, whose
  * anchors are local_a and local_b in their frames (from the centres).
- * Inlined into each caller by force: a pin row's pass, which has no
- * angle row, then drops the 3 x 3 path, and the joint grid's position
- * pass takes 3 % fewer instructions a step than through one shared
- * copy. */
-static inline __attribute__((always_inline)) double correct_point(rb_body_state *a, rb_body_state *b, double inv_mass_a,
-                                                                  double inv_inertia_a, double inv_mass_b,
-                                                                  double inv_inertia_b, rb_vec2 local_a,
-                                                                  rb_vec2 local_b, const double *angle_error)
+ * (A plain pin's rows have their own, the point alone: joint_pin.c.) */
+static double correct_point(rb_body_state *a, rb_body_state *b, double inv_mass_a, double inv_inertia_a,
+                            double inv_mass_b, double inv_inertia_b, rb_vec2 local_a, rb_vec2 local_b,
+                            const double *angle_error)
 {
     rb_vec2 ra = rb_rotate(a->rotation, local_a);
     rb_vec2 rb = rb_rotate(b->rotation, local_b);
@@ -230,10 +187,4 @@ double rb_point_constraint_correct(rb_world *world, rb_joint *joint, const doubl
     const rb_joint_frame *f = &joint->frame;
     return correct_point(rb_joint_state_a(world, joint), rb_joint_state_b(world, joint), f->inv_mass_a,
                          f->inv_inertia_a, f->inv_mass_b, f->inv_inertia_b, f->local_a, f->local_b, angle_error);
-}
-
-double rb_pin_correct_point(rb_world *world, const rb_pin_row *row, const rb_pin_anchors *anchors)
-{
-    return correct_point(&world->states[row->body_a], &world->states[row->body_b], row->inv_mass_a, row->inv_inertia_a,
-                         row->inv_mass_b, row->inv_inertia_b, anchors->local_a, anchors->local_b, NULL);
 }

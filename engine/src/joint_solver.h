@@ -258,6 +258,44 @@ static inline void rb_point_alone_solve(const rb_world *world, const rb_joint_fr
  * angular row) and the frame's point_drift for the substep; after
  * the frame is prepared, before any solve. */
 void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h);
+/* The largest drift rb_point_drift asks for in a substep of length h:
+ * one linear slop per substep (m/s). */
+static inline double rb_point_drift_cap(const rb_world *world, double h) { return world->settings.linear_slop / h; }
+
+/* The velocity a pin asks of its anchors' separation in a substep of
+ * length h so that they still meet at its end while their offsets ra and
+ * rb turn with the bodies (m/s; the centripetal drift). Inline: every
+ * pin's substep computes it. */
+static inline rb_vec2 rb_point_drift(const rb_world *world, int body_a, int body_b, rb_vec2 ra, rb_vec2 rb, double h,
+                                     double drift_cap)
+{
+    /* Solve for the velocities that keep the anchors together at the end
+     * of the substep, not just momentarily (SHAKE; Ryckaert, Ciccotti,
+     * Berendsen, J. Comput. Phys. 23, 1977): the anchor offsets turn with
+     * their bodies while the positions advance, each by
+     * h·ω × r - ½·(h·ω)²·r to second order, so the gap grows by h times
+     * Cdot - ½·h·(ωB²·rB - ωA²·rA). Asking for Cdot alone leaves that
+     * centripetal drift for the position pass, which removes it without
+     * the matching velocity, and a pendulum then loses energy every
+     * swing (Box2D 2.4 loses 86 % of a 90° swing's energy in 200 s).
+     *
+     * The drift is the curvature of one substep's path: millimetres for
+     * any body the solver can follow. A larger one means bodies spin
+     * faster than the iterations converge (a light link beside a heavy
+     * one), and asking for it then feeds the spin until it explodes; it is
+     * capped at one linear slop per substep (drift_cap, m/s, from
+     * rb_point_drift_cap). The angular velocities are
+     * the substep's starting ones (rb_joints_prepare recorded them before
+     * any warm start), so the drift is fixed for the substep. */
+    const double omega_a = world->substep_omega[body_a];
+    const double omega_b = world->substep_omega[body_b];
+    rb_vec2 drift = rb_scale(0.5 * h, rb_sub(rb_scale(omega_b * omega_b, rb), rb_scale(omega_a * omega_a, ra)));
+    if (rb_length_squared(drift) > drift_cap * drift_cap) { /* a square root only when capping */
+        drift = rb_scale(drift_cap / rb_length(drift), drift);
+    }
+    return drift;
+}
+
 /* Sets only the frame's point_drift: what a pin its tree solves needs
  * (joint_tree.h). */
 void rb_point_constraint_prepare_drift(const rb_world *world, rb_joint *joint, double h);
@@ -276,15 +314,9 @@ double rb_point_constraint_correct(rb_world *world, rb_joint *joint, const doubl
  * the active joints, with their masses, anchors and impulses; from then
  * on the phases below read the rows for them, not the joints. */
 void rb_pins_gather(rb_world *world);
-/* Sets the row's anchors in the world at the poses now, its point
- * inverse and drift, as rb_point_constraint_prepare does a joint's
- * (joint_point.c). */
-void rb_pin_prepare(const rb_world *world, rb_pin_row *row, const rb_pin_anchors *anchors, double h);
-/* One NGS pass of a pin row, the point alone, as
- * rb_point_constraint_correct's; returns the gap before (joint_point.c). */
-double rb_pin_correct_point(rb_world *world, const rb_pin_row *row, const rb_pin_anchors *anchors);
-/* Row `row`'s substep: rb_pin_prepare, then the warm start with its
- * impulse. */
+/* Row `row`'s substep: its anchors in the world at the poses now, its
+ * point inverse and drift, as rb_point_constraint_prepare sets a joint's,
+ * then the warm start with its impulse (joint_pin.c). */
 void rb_pin_warm_start(rb_world *world, int row, double h);
 /* A velocity pass of the row, under the pass's response. Inline: the
  * joint grid runs it 160,000 to 240,000 times a step. */
@@ -308,8 +340,36 @@ static inline void rb_pin_solve(rb_world *world, rb_pin_row *row)
     rb_body_state *b = &world->states[row->body_b];
     rb_point_alone_solve(world, &f, a, b, rb_point_frame_velocity_error(world, &f, a, b), &row->impulse);
 }
+/* A velocity pass of a row under a rigid response (NGS's and 2.4's:
+ * mass scale 1, impulse scale 0, no bias), where rb_pin_solve's
+ * softening, P·1 - 0·(accumulated), returns the rigid impulse itself:
+ * the same arithmetic less six products and a branch a pin, to the same
+ * bits. Inline, as rb_pin_solve. The pin's velocity error Cdot = vB + ωB × rB - vA - ωA × rA,
+ * less the drift its substep asks for (joint_point.c), is removed by
+ * P = -K⁻¹·Cdot with the substep's inverse. */
+static inline void rb_pin_solve_rigid(rb_body_state *states, rb_pin_row *row)
+{
+    rb_body_state *a = &states[row->body_a];
+    rb_body_state *b = &states[row->body_b];
+    const rb_vec2 ra = row->ra;
+    const rb_vec2 rb = row->rb;
+    const rb_vec2 vb = rb_add(b->linear_velocity, rb_cross_sv(b->angular_velocity, rb));
+    const rb_vec2 va = rb_add(a->linear_velocity, rb_cross_sv(a->angular_velocity, ra));
+    const rb_vec2 cdot = rb_sub(rb_sub(vb, va), row->point_drift);
+    const rb_vec2 impulse = rb_v2(-(row->point_inverse11 * cdot.x + row->point_inverse12 * cdot.y),
+                                  -(row->point_inverse12 * cdot.x + row->point_inverse22 * cdot.y));
+    row->impulse = rb_add(row->impulse, impulse);
+    rb_apply_at_anchors(a, b, row->inv_mass_a, row->inv_inertia_a, row->inv_mass_b, row->inv_inertia_b, ra, rb,
+                        impulse);
+}
+
 /* An NGS pass of row `row`; true when its gap was within the linear slop. */
 bool rb_pin_correct(rb_world *world, int row);
+/* Whole passes over the rows, in their order or backwards, for a pass
+ * whose joints are all rows (the joint grid): a warm start, an NGS
+ * position pass (true when every gap was within the linear slop). */
+void rb_pins_warm_start(rb_world *world, double h, bool backwards);
+bool rb_pins_correct_positions(rb_world *world, bool backwards);
 /* At the end of the step: the rows' impulses back into their joints. */
 void rb_pins_scatter(rb_world *world);
 /* The impulse of a plain pin's point: its row's within a step, else its
