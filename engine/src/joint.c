@@ -426,7 +426,12 @@ rb_status rb_joints_collect_active(rb_world *world)
         rb_grow_array((void **)&world->pin_anchors, &world->pin_anchor_capacity, world->joint_count,
                       sizeof *world->pin_anchors) != 0 ||
         rb_grow_array((void **)&world->pin_row_of, &world->pin_row_of_capacity, world->joint_slots,
-                      sizeof *world->pin_row_of) != 0) {
+                      sizeof *world->pin_row_of) != 0 ||
+        rb_grow_array((void **)&world->coloured_joints, &world->coloured_joint_capacity, world->joint_count,
+                      sizeof *world->coloured_joints) != 0 ||
+        rb_grow_array((void **)&world->joint_colours, &world->joint_colour_capacity, world->joint_count,
+                      sizeof *world->joint_colours) != 0 ||
+        rb_colouring_begin(&world->joint_colouring, world->body_slots) != 0) {
         world->active_joint_count = 0;
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for the joint list");
     }
@@ -437,6 +442,7 @@ rb_status rb_joints_collect_active(rb_world *world)
         }
     }
     world->active_joint_count = count;
+    world->joints_coloured = false; /* until the soft step colours them (joint_colouring.c) */
     prepare_for_step(world);
     return RB_OK;
 }
@@ -471,11 +477,21 @@ typedef struct pass_list {
 
 static pass_list pass_joints(const rb_world *world)
 {
+    if (world->joints_coloured) {
+        return (pass_list){world->coloured_joints, world->coloured_joint_count};
+    }
     const rb_joint_tree *tree = &world->joint_tree;
     if (tree->node_count > 0) {
         return (pass_list){tree->gauss_seidel_joints, tree->gauss_seidel_count};
     }
     return (pass_list){world->active_joints, world->active_joint_count};
+}
+
+const int *rb_joint_pass_list(const rb_world *world, int *count)
+{
+    const pass_list list = pass_joints(world);
+    *count = list.count;
+    return list.joints;
 }
 
 /* The slot of the k-th joint of the list. */

@@ -31,6 +31,17 @@
  * zeroed). */
 rb_status rb_joints_collect_active(rb_world *world);
 
+/* The joints the passes below visit this step, in the order they visit
+ * them: the active ones less the plain pins the trees solve whole
+ * (joint_tree.h), in creation order, or in colour order once
+ * rb_joints_order_by_colour has run. */
+const int *rb_joint_pass_list(const rb_world *world, int *count);
+/* The soft step's order (joint_colouring.c): from now until the next
+ * rb_joints_collect_active, the passes visit the joints colour by colour,
+ * the joints against a body they cannot move last; after the trees are
+ * found and before rb_pins_gather. */
+void rb_joints_order_by_colour(rb_world *world);
+
 /* At the start of each substep, before any warm start: records every
  * body's angular velocity, from which the pins' drift is computed. */
 void rb_joints_prepare(rb_world *world);
@@ -273,7 +284,7 @@ double rb_point_constraint_correct(rb_world *world, rb_joint *joint, const doubl
 
 /* At the first substep, once the trees are found: gathers the active
  * plain pins that no tree solves into world->pin_rows, in the order of
- * the active joints, with their masses, anchors and impulses; from then
+ * the pass list (rb_joint_pass_list), with their masses, anchors and impulses; from then
  * on the phases below read the rows for them, not the joints. */
 void rb_pins_gather(rb_world *world);
 /* Sets the row's anchors in the world at the poses now, its point

@@ -155,6 +155,9 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->pin_rows, &world->pin_row_capacity, sizeof *world->pin_rows);
     rb_free_array((void **)&world->pin_anchors, &world->pin_anchor_capacity, sizeof *world->pin_anchors);
     rb_free_array((void **)&world->pin_row_of, &world->pin_row_of_capacity, sizeof *world->pin_row_of);
+    rb_free_array((void **)&world->coloured_joints, &world->coloured_joint_capacity, sizeof *world->coloured_joints);
+    rb_free_array((void **)&world->joint_colours, &world->joint_colour_capacity, sizeof *world->joint_colours);
+    rb_colouring_free(&world->joint_colouring);
     rb_free_array((void **)&world->sweep, &world->sweep_capacity, sizeof *world->sweep);
     rb_free_array((void **)&world->refits, &world->refit_capacity, sizeof *world->refits);
     rb_free_array((void **)&world->wide_shapes, &world->wide_shape_capacity, sizeof *world->wide_shapes);
@@ -276,6 +279,9 @@ size_t rb_world_bytes_in_use(const rb_world *world)
            (size_t)world->pin_row_capacity * sizeof *world->pin_rows +
            (size_t)world->pin_anchor_capacity * sizeof *world->pin_anchors +
            (size_t)world->pin_row_of_capacity * sizeof *world->pin_row_of +
+           (size_t)world->coloured_joint_capacity * sizeof *world->coloured_joints +
+           (size_t)world->joint_colour_capacity * sizeof *world->joint_colours +
+           (size_t)world->joint_colouring.body_capacity * sizeof *world->joint_colouring.body_colours +
            (size_t)world->cable_capacity * sizeof *world->cables + rb_contact_events_bytes(world);
 }
 

@@ -612,13 +612,21 @@ struct rb_world {
     int active_joint_count, active_joint_capacity;
     double *substep_omega; /* per body slot: rad/s at the substep's start, before any warm start (rb_joints_prepare) */
     int substep_omega_capacity;
-    rb_pin_row *pin_rows; /* this step's plain pins, in the order of the active joints (joint_pin.c) */
+    rb_pin_row *pin_rows; /* this step's plain pins, in the order of the pass list (joint_pin.c) */
     int pin_row_count, pin_row_capacity;
     rb_pin_anchors *pin_anchors; /* beside pin_rows */
     int pin_anchor_capacity;
     int *pin_row_of; /* per joint slot: its row in pin_rows this step, or -1 */
     int pin_row_of_capacity;
     bool pin_rows_live; /* the rows, not the joints, hold the pins' impulses (within a step) */
+    /* The soft step's pass list in colour order, while joints_coloured
+     * (joint_colouring.c); joint_colours holds each listed joint's colour. */
+    int *coloured_joints;
+    int coloured_joint_count, coloured_joint_capacity;
+    int *joint_colours;
+    int joint_colour_capacity;
+    rb_colouring joint_colouring;
+    bool joints_coloured;
     int joint_slots;
     int joint_free;
     int joint_count;
