@@ -427,10 +427,16 @@ rb_status rb_joints_collect_active(rb_world *world)
                       sizeof *world->pin_anchors) != 0 ||
         rb_grow_array((void **)&world->pin_row_of, &world->pin_row_of_capacity, world->joint_slots,
                       sizeof *world->pin_row_of) != 0 ||
-        rb_grow_array((void **)&world->coloured_joints, &world->coloured_joint_capacity, world->joint_count,
-                      sizeof *world->coloured_joints) != 0 ||
-        rb_grow_array((void **)&world->joint_colours, &world->joint_colour_capacity, world->joint_count,
-                      sizeof *world->joint_colours) != 0 ||
+        rb_grow_array((void **)&world->ordered_joints, &world->ordered_joint_capacity, world->joint_count,
+                      sizeof *world->ordered_joints) != 0 ||
+        rb_grow_array((void **)&world->joint_order_scratch, &world->joint_order_scratch_capacity, world->joint_count,
+                      sizeof *world->joint_order_scratch) != 0 ||
+        rb_grow_array((void **)&world->joint_keys, &world->joint_key_capacity, world->joint_count,
+                      sizeof *world->joint_keys) != 0 ||
+        rb_grow_array((void **)&world->body_depth, &world->body_depth_capacity, world->body_slots,
+                      sizeof *world->body_depth) != 0 ||
+        rb_grow_array((void **)&world->body_queue, &world->body_queue_capacity, world->body_slots + 1,
+                      sizeof *world->body_queue) != 0 ||
         rb_colouring_begin(&world->joint_colouring, world->body_slots) != 0) {
         world->active_joint_count = 0;
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for the joint list");
@@ -442,7 +448,7 @@ rb_status rb_joints_collect_active(rb_world *world)
         }
     }
     world->active_joint_count = count;
-    world->joints_coloured = false; /* until the soft step colours them (joint_colouring.c) */
+    world->joints_ordered = false; /* until the soft step orders them (joint_order.c) */
     prepare_for_step(world);
     return RB_OK;
 }
@@ -477,8 +483,8 @@ typedef struct pass_list {
 
 static pass_list pass_joints(const rb_world *world)
 {
-    if (world->joints_coloured) {
-        return (pass_list){world->coloured_joints, world->coloured_joint_count};
+    if (world->joints_ordered) {
+        return (pass_list){world->ordered_joints, world->ordered_joint_count};
     }
     const rb_joint_tree *tree = &world->joint_tree;
     if (tree->node_count > 0) {

@@ -619,14 +619,22 @@ struct rb_world {
     int *pin_row_of; /* per joint slot: its row in pin_rows this step, or -1 */
     int pin_row_of_capacity;
     bool pin_rows_live; /* the rows, not the joints, hold the pins' impulses (within a step) */
-    /* The soft step's pass list in colour order, while joints_coloured
-     * (joint_colouring.c); joint_colours holds each listed joint's colour. */
-    int *coloured_joints;
-    int coloured_joint_count, coloured_joint_capacity;
-    int *joint_colours;
-    int joint_colour_capacity;
+    /* The soft step's pass list in its order, while joints_ordered
+     * (joint_order.c), and the scratch that finds it: the list in colour
+     * order, a key per listed joint, each body's depth from the supports
+     * and the search's queue (body_slots + 1). */
+    int *ordered_joints;
+    int ordered_joint_count, ordered_joint_capacity;
+    int *joint_order_scratch;
+    int joint_order_scratch_capacity;
+    int *joint_keys;
+    int joint_key_capacity;
+    int *body_depth;
+    int body_depth_capacity;
+    int *body_queue;
+    int body_queue_capacity;
     rb_colouring joint_colouring;
-    bool joints_coloured;
+    bool joints_ordered;
     int joint_slots;
     int joint_free;
     int joint_count;
