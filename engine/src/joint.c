@@ -437,6 +437,12 @@ rb_status rb_joints_collect_active(rb_world *world)
                       sizeof *world->body_depth) != 0 ||
         rb_grow_array((void **)&world->body_queue, &world->body_queue_capacity, world->body_slots + 1,
                       sizeof *world->body_queue) != 0 ||
+        rb_grow_array((void **)&world->joint_ends, &world->joint_end_capacity, 2 * world->joint_slots,
+                      sizeof *world->joint_ends) != 0 ||
+        rb_grow_array((void **)&world->body_edge_start, &world->body_edge_start_capacity, world->body_slots + 1,
+                      sizeof *world->body_edge_start) != 0 ||
+        rb_grow_array((void **)&world->body_edges, &world->body_edge_capacity, 2 * world->joint_count,
+                      sizeof *world->body_edges) != 0 ||
         rb_colouring_begin(&world->joint_colouring, world->body_slots) != 0) {
         world->active_joint_count = 0;
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for the joint list");

@@ -36,46 +36,68 @@
 
 #include "joint_solver.h"
 
-/* A body the joints' impulses move: dynamic and awake (a joint is solved
- * while one of its bodies is). */
-static bool moves(const rb_world *world, int body)
-{
-    return body >= 0 && world->bodies[body].type == RB_BODY_DYNAMIC && world->bodies[body].awake;
-}
+/* Whether a body the joints' impulses move (dynamic and awake: a joint
+ * is solved while one of its bodies is), once find_depths has marked
+ * them: -1 or a depth for those, 0 for the others and the world (-1). */
+static bool marked_moving(const rb_world *world, int body) { return body >= 0 && world->body_depth[body] != 0; }
 
-/* The list's joints colour by colour into world->joint_order_scratch, in
- * the list's order within each colour. */
-static void sort_by_colour(rb_world *world, const int *joints, int count)
+/* Marks the bodies that move and links each to its active joints' other
+ * bodies (compressed rows: body i's in body_edges[body_edge_start[i] ..
+ * body_edge_start[i + 1]]), with each active joint's bodies in
+ * joint_ends: the passes below read these small arrays rather than the
+ * joints and bodies. */
+static void link_bodies(rb_world *world)
 {
-    rb_colouring *colouring = &world->joint_colouring;
-    (void)rb_colouring_begin(colouring, world->body_slots); /* the space is there: no allocation */
-    for (int k = 0; k < count; ++k) {
-        const rb_joint *joint = &world->joints[joints[k]];
-        int a = moves(world, joint->body_a) ? joint->body_a : -1;
-        int b = moves(world, joint->body_b) ? joint->body_b : -1;
-        world->joint_keys[k] = rb_colouring_assign(colouring, a, b);
+    int *depth = world->body_depth;
+    for (int i = 0; i < world->body_slots; ++i) {
+        const rb_body *body = &world->bodies[i];
+        depth[i] = body->type == RB_BODY_DYNAMIC && body->awake ? -1 : 0;
     }
-    int offsets[RB_COLOUR_COUNT + 1];
-    (void)rb_colouring_offsets(colouring, offsets);
-    for (int k = 0; k < count; ++k) {
-        world->joint_order_scratch[offsets[world->joint_keys[k]]++] = joints[k];
+    int *start = world->body_edge_start;
+    memset(start, 0, (size_t)(world->body_slots + 1) * sizeof *start);
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        int slot = world->active_joints[k];
+        int a = world->joints[slot].body_a;
+        int b = world->joints[slot].body_b;
+        world->joint_ends[2 * slot] = a;
+        world->joint_ends[2 * slot + 1] = b;
+        start[a + 1] += marked_moving(world, a) ? 1 : 0; /* counts, one place on */
+        start[b + 1] += marked_moving(world, b) ? 1 : 0;
     }
+    for (int i = 0; i < world->body_slots; ++i) {
+        start[i + 1] += start[i];
+    }
+    /* Filled through start[i], which then ends at the next body's start:
+     * moved back one place after. */
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        const int *ends = &world->joint_ends[2 * world->active_joints[k]];
+        if (marked_moving(world, ends[0])) {
+            world->body_edges[start[ends[0]]++] = ends[1];
+        }
+        if (marked_moving(world, ends[1])) {
+            world->body_edges[start[ends[1]]++] = ends[0];
+        }
+    }
+    for (int i = world->body_slots; i > 0; --i) {
+        start[i] = start[i - 1];
+    }
+    start[0] = 0;
 }
 
 /* Every moving body's depth in world->body_depth: 1 for one pinned to a
  * body that cannot move, one more for each joint beyond, -1 for one that
  * reaches no support. Returns the deepest. */
-static int find_depths(rb_world *world, const int *joints, int count)
+static int find_depths(rb_world *world)
 {
+    link_bodies(world);
     int *depth = world->body_depth;
     int *queue = world->body_queue;
-    memset(depth, 0xff, (size_t)world->body_slots * sizeof *depth); /* all -1 */
     int tail = 0;
-    for (int k = 0; k < count; ++k) {
-        const rb_joint *joint = &world->joints[joints[k]];
-        bool a_moves = moves(world, joint->body_a);
-        bool b_moves = moves(world, joint->body_b);
-        int pinned = a_moves && !b_moves ? joint->body_a : (b_moves && !a_moves ? joint->body_b : -1);
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        const int *ends = &world->joint_ends[2 * world->active_joints[k]];
+        bool a_moves = marked_moving(world, ends[0]);
+        bool b_moves = marked_moving(world, ends[1]);
+        int pinned = a_moves && !b_moves ? ends[0] : (b_moves && !a_moves ? ends[1] : -1);
         if (pinned >= 0 && depth[pinned] < 0) {
             depth[pinned] = 1;
             queue[tail++] = pinned;
@@ -85,25 +107,43 @@ static int find_depths(rb_world *world, const int *joints, int count)
     for (int head = 0; head < tail; ++head) {
         int body = queue[head];
         deepest = depth[body];
-        for (int j = world->bodies[body].first_joint; j >= 0;) {
-            const rb_joint *joint = &world->joints[j];
-            int other = joint->body_a == body ? joint->body_b : joint->body_a;
-            if (moves(world, other) && depth[other] < 0) {
+        for (int e = world->body_edge_start[body]; e < world->body_edge_start[body + 1]; ++e) {
+            int other = world->body_edges[e];
+            if (other >= 0 && depth[other] < 0) {
                 depth[other] = depth[body] + 1;
                 queue[tail++] = other;
             }
-            j = joint->body_a == body ? joint->next_on_a : joint->next_on_b;
         }
     }
     return deepest;
 }
 
+/* The list's joints colour by colour into world->joint_order_scratch, in
+ * the list's order within each colour. */
+static void sort_by_colour(rb_world *world, const int *joints, int count)
+{
+    rb_colouring *colouring = &world->joint_colouring;
+    (void)rb_colouring_begin(colouring, world->body_slots); /* the space is there: no allocation */
+    for (int k = 0; k < count; ++k) {
+        const int *ends = &world->joint_ends[2 * joints[k]];
+        int a = marked_moving(world, ends[0]) ? ends[0] : -1;
+        int b = marked_moving(world, ends[1]) ? ends[1] : -1;
+        world->joint_keys[k] = rb_colouring_assign(colouring, a, b);
+    }
+    int offsets[RB_COLOUR_COUNT + 1];
+    (void)rb_colouring_offsets(colouring, offsets);
+    for (int k = 0; k < count; ++k) {
+        world->joint_order_scratch[offsets[world->joint_keys[k]]++] = joints[k];
+    }
+}
+
 /* Where a joint goes: 0 for one that reaches no support, then from the
  * deepest (1) to depth 1 (deepest). */
-static int depth_bucket(const rb_world *world, const rb_joint *joint, int deepest)
+static int depth_bucket(const rb_world *world, int slot, int deepest)
 {
-    int depth_a = moves(world, joint->body_a) ? world->body_depth[joint->body_a] : 0;
-    int depth_b = moves(world, joint->body_b) ? world->body_depth[joint->body_b] : 0;
+    const int *ends = &world->joint_ends[2 * slot];
+    int depth_a = ends[0] >= 0 ? world->body_depth[ends[0]] : 0;
+    int depth_b = world->body_depth[ends[1]];
     if (depth_a < 0 || depth_b < 0) {
         return 0;
     }
@@ -114,15 +154,15 @@ void rb_joints_order_for_soft_step(rb_world *world)
 {
     int count = 0;
     const int *joints = rb_joint_pass_list(world, &count);
+    int deepest = find_depths(world);
     sort_by_colour(world, joints, count);
-    int deepest = find_depths(world, joints, count);
 
     /* A stable counting sort of the coloured list by depth, the deepest
      * first; the queue, done with, holds the buckets' starts. */
     int *start = world->body_queue;
     memset(start, 0, (size_t)(deepest + 1) * sizeof *start);
     for (int k = 0; k < count; ++k) {
-        world->joint_keys[k] = depth_bucket(world, &world->joints[world->joint_order_scratch[k]], deepest);
+        world->joint_keys[k] = depth_bucket(world, world->joint_order_scratch[k], deepest);
         ++start[world->joint_keys[k]];
     }
     int offset = 0;

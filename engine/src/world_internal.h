@@ -621,8 +621,8 @@ struct rb_world {
     bool pin_rows_live; /* the rows, not the joints, hold the pins' impulses (within a step) */
     /* The soft step's pass list in its order, while joints_ordered
      * (joint_order.c), and the scratch that finds it: the list in colour
-     * order, a key per listed joint, each body's depth from the supports
-     * and the search's queue (body_slots + 1). */
+     * order, a key per listed joint, each body's depth from the supports,
+     * the search's queue (body_slots + 1) and the bodies' links. */
     int *ordered_joints;
     int ordered_joint_count, ordered_joint_capacity;
     int *joint_order_scratch;
@@ -633,6 +633,12 @@ struct rb_world {
     int body_depth_capacity;
     int *body_queue;
     int body_queue_capacity;
+    int *joint_ends; /* per joint slot: its bodies, a then b */
+    int joint_end_capacity;
+    int *body_edge_start; /* body_slots + 1: where each body's joints' other bodies start in body_edges */
+    int body_edge_start_capacity;
+    int *body_edges;
+    int body_edge_capacity;
     rb_colouring joint_colouring;
     bool joints_ordered;
     int joint_slots;
