@@ -459,6 +459,7 @@ typedef struct rb_joint_tree {
      * the same: found is set once they are found and keys recorded, with
      * the world's body slots, the solver's mass ratio and enabled then. */
     bool found;
+    unsigned finds; /* how many times the trees were looked for anew */
     rb_tree_key *keys;
     int key_count, key_capacity;
     int found_body_slots;
@@ -641,6 +642,8 @@ struct rb_world {
     int body_edge_capacity;
     rb_colouring joint_colouring;
     bool joints_ordered;
+    bool joint_order_kept;      /* ordered_joints holds the order for the trees' last search... */
+    unsigned joint_order_finds; /* ...this one (rb_joint_tree.finds) */
     int joint_slots;
     int joint_free;
     int joint_count;
