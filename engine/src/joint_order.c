@@ -26,8 +26,9 @@
  * pass, bench_engine --scene joint_grid --grid N): the joint grid hung
  * from the middle of its top row, built column by column, stretched to
  * 0.634 m at N = 100 swept in the order the joints were made, backwards
- * (0.861 m forwards): the half whose load travelled against the sweep
- * converged more slowly. Colour by colour alone, as Box2D v3 solves its
+ * (0.861 m forwards): the load of one half of it travelled to the
+ * supports with the sweep, the other half's against it, one joint a
+ * pass. Colour by colour alone, as Box2D v3 solves its
  * joints, it reaches 0.613 m, as Box2D v3's 0.620 m (and the 30 and 60
  * grids Box2D v3's gaps to 5 digits); by depth alone 0.689 m; by depth
  * and colour 0.589 m. On a chain the order is the backward sweep the
