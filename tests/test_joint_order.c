@@ -2,8 +2,9 @@
 /* The order in which the soft step visits the joints (engine/src/joint_order.c):
  * from the free ends to the supports, colour by colour within a depth.
  *
- * Two truths. The physics of a chain does not depend on the order its
- * joints were made in: made from the pin outwards or from the free end
+ * Three truths. A body cut free falls freely, whatever order the passes
+ * kept from the steps before. The physics of a chain does not depend on
+ * the order its joints were made in: made from the pin outwards or from the free end
  * inwards, the same chain must move the same, to the bit, since the
  * passes visit its joints by their distance from the pin either way
  * (swept in the order the joints were made, the two differed). And Box2D
@@ -42,8 +43,10 @@ static rb_world *make_v3_budget_world(void)
 
 /* A chain of CHAIN_LINKS boxes swinging from a pin at the origin, released
  * horizontal, its last link `heavy` times as dense as the others; its
- * joints made from the pin outwards, or (inwards) from the free end. */
-static void make_chain(rb_world *world, double heavy, bool inwards, rb_body_id links[CHAIN_LINKS])
+ * joints made from the pin outwards, or (inwards) from the free end, joint
+ * i holding link i to the one before (or the pin). */
+static void make_chain(rb_world *world, double heavy, bool inwards, rb_body_id links[CHAIN_LINKS],
+                       rb_joint_id joints[CHAIN_LINKS])
 {
     rb_body_def pin_def = rb_default_body_def();
     rb_body_id pin;
@@ -63,15 +66,59 @@ static void make_chain(rb_world *world, double heavy, bool inwards, rb_body_id l
         cr_assert_eq(rb_shape_create_polygon(world, links[i], &shape, &box, &id), RB_OK, "%s", rb_last_error());
     }
     for (int k = 0; k < CHAIN_LINKS; ++k) {
-        int i = inwards ? CHAIN_LINKS - 1 - k : k; /* joint i holds link i to the one before (or the pin) */
+        int i = inwards ? CHAIN_LINKS - 1 - k : k;
         rb_revolute_joint_def def = rb_default_revolute_joint_def();
         def.body_a = i == 0 ? pin : links[i - 1];
         def.body_b = links[i];
         def.local_anchor_a = i == 0 ? rb_v2(0.0, 0.0) : rb_v2(LINK_HALF_LENGTH, 0.0);
         def.local_anchor_b = rb_v2(-LINK_HALF_LENGTH, 0.0);
-        rb_joint_id joint;
-        cr_assert_eq(rb_revolute_joint_create(world, &def, &joint), RB_OK, "%s", rb_last_error());
+        cr_assert_eq(rb_revolute_joint_create(world, &def, &joints[i]), RB_OK, "%s", rb_last_error());
     }
+}
+
+/* The order is kept from step to step while the joints are the same
+ * (joint_order.c): cut between two steps, the chain must come apart as if
+ * the order were found anew. Its lower half is then free, and its centre
+ * of mass (the links are alike) falls as semi-implicit Euler moves a body
+ * under gravity alone over N substeps of h: by v0·N·h - g·h²·N(N + 1)/2,
+ * whatever its links do to one another. Held by the cut joint, it would
+ * swing from the pin instead, metres away. */
+#define CUT_ABOVE 10 /* the joint that holds link 10 to link 9 */
+
+static rb_vec2 lower_centre(const rb_world *world, const rb_body_id links[CHAIN_LINKS], bool velocity)
+{
+    rb_vec2 sum = rb_v2(0.0, 0.0);
+    for (int i = CUT_ABOVE; i < CHAIN_LINKS; ++i) {
+        sum = rb_add(sum, velocity ? rb_body_linear_velocity(world, links[i]) : rb_body_position(world, links[i]));
+    }
+    return rb_scale(1.0 / (CHAIN_LINKS - CUT_ABOVE), sum);
+}
+
+Test(joint_order, a_chain_cut_between_steps_comes_apart)
+{
+    rb_world *world = make_v3_budget_world();
+    rb_body_id links[CHAIN_LINKS];
+    rb_joint_id joints[CHAIN_LINKS];
+    make_chain(world, 1.0, false, links, joints);
+    for (int step = 0; step < 30; ++step) { /* the order is found, then kept */
+        cr_assert_eq(rb_world_step(world, TEST_DT), RB_OK, "%s", rb_last_error());
+    }
+    cr_assert_eq(rb_joint_destroy(world, joints[CUT_ABOVE]), RB_OK, "%s", rb_last_error());
+    const rb_vec2 start = lower_centre(world, links, false);
+    const rb_vec2 start_velocity = lower_centre(world, links, true);
+    const int steps = 60;
+    for (int step = 0; step < steps; ++step) {
+        cr_assert_eq(rb_world_step(world, TEST_DT), RB_OK, "%s", rb_last_error());
+    }
+    const double h = TEST_DT / V3_SUBSTEPS;
+    const double n = (double)steps * V3_SUBSTEPS;
+    const double expected_y = start.y + start_velocity.y * n * h + PEER_GRAVITY * h * h * n * (n + 1.0) / 2.0;
+    const double expected_x = start.x + start_velocity.x * n * h;
+    const rb_vec2 end = lower_centre(world, links, false);
+    cr_expect(fabs(end.y - expected_y) < 1e-6 && fabs(end.x - expected_x) < 1e-6,
+              "the cut half's centre at (%.9f, %.9f) m, free fall puts it at (%.9f, %.9f) m", end.x, end.y, expected_x,
+              expected_y);
+    destroy_world_and_expect_no_leak(world);
 }
 
 Test(joint_order, a_chain_moves_the_same_whichever_way_its_joints_were_made)
@@ -80,9 +127,10 @@ Test(joint_order, a_chain_moves_the_same_whichever_way_its_joints_were_made)
     for (size_t h = 0; h < sizeof heavies / sizeof heavies[0]; ++h) {
         rb_world *worlds[2];
         rb_body_id links[2][CHAIN_LINKS];
+        rb_joint_id joints[2][CHAIN_LINKS];
         for (int w = 0; w < 2; ++w) {
             worlds[w] = make_v3_budget_world();
-            make_chain(worlds[w], heavies[h], w == 1, links[w]);
+            make_chain(worlds[w], heavies[h], w == 1, links[w], joints[w]);
         }
         for (int step = 0; step < 120; ++step) {
             for (int w = 0; w < 2; ++w) {
