@@ -53,7 +53,19 @@
 #include "rb/rb.h"
 #include "scenes/scenes.h"
 
-enum { OPT_SCENE, OPT_SOLVER, OPT_RUNS, OPT_STEPS, OPT_WARMUP, OPT_VEL, OPT_POS, OPT_SUBSTEPS, OPT_CSV, OPT_QUICK };
+enum {
+    OPT_SCENE,
+    OPT_SOLVER,
+    OPT_RUNS,
+    OPT_STEPS,
+    OPT_WARMUP,
+    OPT_VEL,
+    OPT_POS,
+    OPT_SUBSTEPS,
+    OPT_GRID,
+    OPT_CSV,
+    OPT_QUICK
+};
 
 static const cli_option options_table[] = {
     {.name = "scene",
@@ -118,6 +130,14 @@ static const cli_option options_table[] = {
      .min = 1,
      .max = 1000,
      .fallback = "the engine's"},
+    {.name = "grid",
+     .id = OPT_GRID,
+     .kind = CLI_INT,
+     .value_name = "N",
+     .help = "the joint grid's side (as Box2D v3's harness's --grid)",
+     .min = 2,
+     .max = 1000,
+     .fallback = "100"},
     {.name = "csv",
      .id = OPT_CSV,
      .kind = CLI_PATH,
@@ -172,7 +192,7 @@ typedef enum bench_kind {
 typedef struct bench_scene {
     const char *name;
     bench_kind kind;
-    int size;   /* pyramid base, grid side, chain layout (scene_chain_layout) */
+    int size;   /* pyramid base, chain layout (scene_chain_layout); the grid's is --grid */
     bool peer;  /* one of the peers' scenes */
     bool sweep; /* one of the scaling sweep's pyramids */
 } bench_scene;
@@ -181,7 +201,7 @@ static const bench_scene bench_scenes[] = {
     {"pyramid20", KIND_PYRAMID, 20, true, false},
     {"pyramid100", KIND_PYRAMID, 100, true, false},
     {"many_pyramids", KIND_MANY_PYRAMIDS, BENCH_MANY_PYRAMIDS_BASE, false, false},
-    {"joint_grid", KIND_JOINT_GRID, BENCH_GRID_SIZE, true, false},
+    {"joint_grid", KIND_JOINT_GRID, 0, true, false}, /* of side --grid */
     {"chain_hang", KIND_CHAIN, SCENE_CHAIN_HANG, true, false},
     {"chain_swing", KIND_CHAIN, SCENE_CHAIN_SWING, true, false},
     {"balls", KIND_BALLS, BENCH_BALLS_COUNT, false, false},
@@ -203,6 +223,7 @@ typedef struct bench_options {
     int velocity_iterations;            /* 1 .. 1000, or 0 for the engine default */
     int position_iterations;            /* 0 .. 1000, or -1 for the engine default */
     int substeps;                       /* 1 .. 1000, or 0 for the engine default */
+    int grid;                           /* the joint grid's side, 2 .. 1000 */
     const char *csv_path;
 } bench_options;
 
@@ -245,8 +266,12 @@ static bool select_solvers(const char *name, bench_options *opts)
 
 static parse_result parse_options(int argc, char **argv, bench_options *opts)
 {
-    *opts = (bench_options){
-        .runs = -1, .steps = -1, .warmup = -1, .position_iterations = -1, .csv_path = "bench_engine.csv"};
+    *opts = (bench_options){.runs = -1,
+                            .steps = -1,
+                            .warmup = -1,
+                            .position_iterations = -1,
+                            .grid = BENCH_GRID_SIZE,
+                            .csv_path = "bench_engine.csv"};
     bool quick = false;
     const char *scene = "all";
     const char *solver = NULL;
@@ -279,6 +304,9 @@ static parse_result parse_options(int argc, char **argv, bench_options *opts)
             break;
         case OPT_SUBSTEPS:
             opts->substeps = (int)value.integer;
+            break;
+        case OPT_GRID:
+            opts->grid = (int)value.integer;
             break;
         case OPT_CSV:
             opts->csv_path = value.text;
@@ -381,7 +409,7 @@ static bool engine_failed(const char *what)
     return false;
 }
 
-static rb_status build_scene(const bench_scene *scene, bench_world *bw)
+static rb_status build_scene(const bench_scene *scene, const bench_options *opts, bench_world *bw)
 {
     rb_status status = RB_OK;
     switch (scene->kind) {
@@ -396,9 +424,9 @@ static rb_status build_scene(const bench_scene *scene, bench_world *bw)
         bw->body_count = bw->pyramid.box_count;
         break;
     case KIND_JOINT_GRID:
-        status = scene_joint_grid_create(bw->world, scene->size, &bw->grid);
+        status = scene_joint_grid_create(bw->world, opts->grid, &bw->grid);
         bw->first_body = bw->grid.first_body;
-        bw->body_count = scene->size * scene->size;
+        bw->body_count = opts->grid * opts->grid;
         break;
     case KIND_CHAIN:
         status = scene_chain_create(bw->world, BENCH_CHAIN_LINKS, BENCH_CHAIN_HEAVY_DENSITY,
@@ -441,7 +469,7 @@ static bool bench_world_create(const bench_scene *scene, rb_solver_type solver, 
     if (rb_world_create(&def, &bw->world) != RB_OK) {
         return engine_failed("rb_world_create");
     }
-    if (build_scene(scene, bw) != RB_OK) {
+    if (build_scene(scene, opts, bw) != RB_OK) {
         return engine_failed("building the scene");
     }
     bw->start_x = malloc((size_t)bw->body_count * sizeof *bw->start_x);

@@ -426,7 +426,24 @@ rb_status rb_joints_collect_active(rb_world *world)
         rb_grow_array((void **)&world->pin_anchors, &world->pin_anchor_capacity, world->joint_count,
                       sizeof *world->pin_anchors) != 0 ||
         rb_grow_array((void **)&world->pin_row_of, &world->pin_row_of_capacity, world->joint_slots,
-                      sizeof *world->pin_row_of) != 0) {
+                      sizeof *world->pin_row_of) != 0 ||
+        rb_grow_array((void **)&world->ordered_joints, &world->ordered_joint_capacity, world->joint_count,
+                      sizeof *world->ordered_joints) != 0 ||
+        rb_grow_array((void **)&world->joint_order_scratch, &world->joint_order_scratch_capacity, world->joint_count,
+                      sizeof *world->joint_order_scratch) != 0 ||
+        rb_grow_array((void **)&world->joint_keys, &world->joint_key_capacity, world->joint_count,
+                      sizeof *world->joint_keys) != 0 ||
+        rb_grow_array((void **)&world->body_depth, &world->body_depth_capacity, world->body_slots,
+                      sizeof *world->body_depth) != 0 ||
+        rb_grow_array((void **)&world->body_queue, &world->body_queue_capacity, world->body_slots + 1,
+                      sizeof *world->body_queue) != 0 ||
+        rb_grow_array((void **)&world->joint_ends, &world->joint_end_capacity, 2 * world->joint_slots,
+                      sizeof *world->joint_ends) != 0 ||
+        rb_grow_array((void **)&world->body_edge_start, &world->body_edge_start_capacity, world->body_slots + 1,
+                      sizeof *world->body_edge_start) != 0 ||
+        rb_grow_array((void **)&world->body_edges, &world->body_edge_capacity, 2 * world->joint_count,
+                      sizeof *world->body_edges) != 0 ||
+        rb_colouring_begin(&world->joint_colouring, world->body_slots) != 0) {
         world->active_joint_count = 0;
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for the joint list");
     }
@@ -437,6 +454,7 @@ rb_status rb_joints_collect_active(rb_world *world)
         }
     }
     world->active_joint_count = count;
+    world->joints_ordered = false; /* until the soft step orders them (joint_order.c) */
     prepare_for_step(world);
     return RB_OK;
 }
@@ -471,11 +489,21 @@ typedef struct pass_list {
 
 static pass_list pass_joints(const rb_world *world)
 {
+    if (world->joints_ordered) {
+        return (pass_list){world->ordered_joints, world->ordered_joint_count};
+    }
     const rb_joint_tree *tree = &world->joint_tree;
     if (tree->node_count > 0) {
         return (pass_list){tree->gauss_seidel_joints, tree->gauss_seidel_count};
     }
     return (pass_list){world->active_joints, world->active_joint_count};
+}
+
+const int *rb_joint_pass_list(const rb_world *world, int *count)
+{
+    const pass_list list = pass_joints(world);
+    *count = list.count;
+    return list.joints;
 }
 
 /* The slot of the k-th joint of the list. */

@@ -14,7 +14,7 @@
  * Catto, "Solver2D", 2024).
  *
  * The rows run the same arithmetic as the joints they stand for, in the
- * same order (the active joints', which every phase keeps), so a step
+ * same order (the pass list's, which every phase keeps), so a step
  * gives the same bits either way. */
 #include <string.h>
 
@@ -26,8 +26,10 @@ void rb_pins_gather(rb_world *world)
         memset(world->pin_row_of, 0xff, (size_t)world->joint_slots * sizeof *world->pin_row_of); /* all -1 */
     }
     int count = 0;
-    for (int k = 0; k < world->active_joint_count; ++k) {
-        int slot = world->active_joints[k];
+    int listed = 0;
+    const int *joints = rb_joint_pass_list(world, &listed);
+    for (int k = 0; k < listed; ++k) {
+        int slot = joints[k];
         const rb_joint *joint = &world->joints[slot];
         if (joint->type != RB_JOINT_REVOLUTE || !joint->plain_pin || joint->in_tree) {
             continue;

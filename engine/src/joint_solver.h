@@ -31,24 +31,36 @@
  * zeroed). */
 rb_status rb_joints_collect_active(rb_world *world);
 
+/* The joints the passes below visit this step, in the order they visit
+ * them: the active ones less the plain pins the trees solve whole
+ * (joint_tree.h), in creation order, or in the soft step's order once
+ * rb_joints_order_for_soft_step has run. */
+const int *rb_joint_pass_list(const rb_world *world, int *count);
+/* The soft step's order (joint_order.c): from now until the next
+ * rb_joints_collect_active, the passes visit the joints from the deepest
+ * (the most joints away from a body they cannot move) to those at the
+ * supports, colour by colour within a depth. After the trees are found,
+ * before rb_pins_gather. */
+void rb_joints_order_for_soft_step(rb_world *world);
+
 /* At the start of each substep, before any warm start: records every
  * body's angular velocity, from which the pins' drift is computed. */
 void rb_joints_prepare(rb_world *world);
-/* Visits each joint once a substep of length h, in creation order or
- * (backwards) the reverse: prepares what moves with the bodies (the
+/* Visits each joint once a substep of length h, in the pass list's order
+ * (rb_joint_pass_list) or (backwards) the reverse: prepares what moves with the bodies (the
  * anchors turned into the world at the poses now, the pins' mass matrices
  * and drift, the distance joints' axes), then warm starts it with its
  * accumulated impulses. One pass where two passes over every joint would
  * each read it from memory. */
 void rb_joints_warm_start(rb_world *world, double h, bool backwards);
-/* One pass over the joints, in creation order or (backwards) the reverse,
- * but for the plain pins their trees solve (joint_tree.h), which both
+/* One pass over the joints, in the pass list's order or (backwards) the
+ * reverse, but for the plain pins their trees solve (joint_tree.h), which both
  * passes leave to the trees. NGS and Baumgarte alternate: in a chain an
  * impulse travels one joint per pass in the pass's direction, so
  * alternating sweeps (symmetric Gauss-Seidel) carry both ends'
  * information in half the passes; a 10-link chain's worst gap at 60 Hz
  * drops from 8.3 to 5.6 mm at the same cost. The soft step sweeps one way
- * only (solver_soft_step.c). */
+ * only, in its own order (solver_soft_step.c, joint_order.c). */
 void rb_joints_solve_velocities(rb_world *world, double h, bool backwards);
 /* One NGS pass, in either order; returns whether every joint was within
  * its tolerance. */
@@ -311,7 +323,7 @@ double rb_point_constraint_correct(rb_world *world, rb_joint *joint, const doubl
 
 /* At the first substep, once the trees are found: gathers the active
  * plain pins that no tree solves into world->pin_rows, in the order of
- * the active joints, with their masses, anchors and impulses; from then
+ * the pass list (rb_joint_pass_list), with their masses, anchors and impulses; from then
  * on the phases below read the rows for them, not the joints. */
 void rb_pins_gather(rb_world *world);
 /* Row `row`'s substep: its anchors in the world at the poses now, its

@@ -397,6 +397,7 @@ void rb_joint_tree_build(rb_world *world)
     rb_joint_tree *tree = &world->joint_tree;
     tree->pose_factors = false;
     if (!found_from_the_same(world)) {
+        ++tree->finds;
         if (find_trees(world)) {
             record_keys(world);
         } else {

@@ -20,7 +20,7 @@
  *       integrate velocities
  *       prepare                cables at the poses now, the bodies' spin
  *                              for the joints (and at the first substep,
- *                              find the joint trees)
+ *                              find the joint trees and the joints' order)
  *       warm start             the accumulated impulses again, each joint
  *                              prepared at the poses now in the same visit
  *       solve                  velocity_iterations passes with the springs'
@@ -55,23 +55,15 @@ static rb_rigid_response spring_for(double hertz, double damping_ratio, double h
     return rb_make_rigid_softness(fmin(hertz, MAX_HERTZ_PER_SUBSTEP_RATE / h), damping_ratio, h);
 }
 
-/* Every pass sweeps the joints in one direction, from the last made to
- * the first, and the contacts forward, colour by colour. Swept back and
- * forth, the springs' bias re-solved last in one pass what it solved
- * first in the one before: a bottom box of the base-100 pyramid at 6
- * substeps of 2 passes rocked harder each step until it flew (forward
- * only, no box moves 0.25 m), and at Box2D v3's budget, where the biased
- * pass and the relax pass then ran in opposite directions, the
- * 100 × 100 joint grid stretched to 2.79 m (relax against the biased
- * pass the other way round: 4.68 m). One direction throughout holds it
- * within 0.86 m forward and 0.63 m backward (Box2D v3: 0.62 m, its
- * joints solved colour by colour in the same order every pass): the
- * scenes are built from their supports outward, and a backward sweep
- * carries the free ends' motion towards the supports within the pass.
- * The joints' warm start sweeps the same way: forward, under backward
- * passes, the grid stretched to 0.648 m instead of 0.634 m (the 100:1
- * chains' gaps are the same to 4 digits either way). */
-#define JOINTS_BACKWARDS true
+/* Every pass sweeps the joints and the contacts forward: the joints
+ * from the free ends to the supports (joint_order.c), the contacts colour
+ * by colour; the joints' warm start too. Swept back and forth, the
+ * springs' bias re-solved last in one pass what it solved first in the
+ * one before: a bottom box of the base-100 pyramid at 6 substeps of 2
+ * passes rocked harder each step until it flew, and at Box2D v3's budget,
+ * where the biased pass and the relax pass then ran in opposite
+ * directions, the 100 x 100 joint grid stretched to 2.79 m. */
+#define JOINTS_BACKWARDS false
 
 /* One pass over cables, joints and contacts. */
 static void solve_pass(rb_world *world, double h, const rb_contact_softness *contacts)
@@ -126,7 +118,8 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
         rb_joints_prepare(world);
         if (substep == 0) {
             rb_joint_tree_build(world);
-            rb_pins_gather(world); /* the plain pins the trees leave, into their rows */
+            rb_joints_order_for_soft_step(world);
+            rb_pins_gather(world); /* the plain pins the trees leave, into their rows, in that order */
         }
         rb_cables_warm_start(world);
         rb_joints_warm_start(world, h, JOINTS_BACKWARDS);

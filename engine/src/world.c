@@ -155,6 +155,16 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->pin_rows, &world->pin_row_capacity, sizeof *world->pin_rows);
     rb_free_array((void **)&world->pin_anchors, &world->pin_anchor_capacity, sizeof *world->pin_anchors);
     rb_free_array((void **)&world->pin_row_of, &world->pin_row_of_capacity, sizeof *world->pin_row_of);
+    rb_free_array((void **)&world->ordered_joints, &world->ordered_joint_capacity, sizeof *world->ordered_joints);
+    rb_free_array((void **)&world->joint_order_scratch, &world->joint_order_scratch_capacity,
+                  sizeof *world->joint_order_scratch);
+    rb_free_array((void **)&world->joint_keys, &world->joint_key_capacity, sizeof *world->joint_keys);
+    rb_free_array((void **)&world->body_depth, &world->body_depth_capacity, sizeof *world->body_depth);
+    rb_free_array((void **)&world->body_queue, &world->body_queue_capacity, sizeof *world->body_queue);
+    rb_free_array((void **)&world->joint_ends, &world->joint_end_capacity, sizeof *world->joint_ends);
+    rb_free_array((void **)&world->body_edge_start, &world->body_edge_start_capacity, sizeof *world->body_edge_start);
+    rb_free_array((void **)&world->body_edges, &world->body_edge_capacity, sizeof *world->body_edges);
+    rb_colouring_free(&world->joint_colouring);
     rb_free_array((void **)&world->sweep, &world->sweep_capacity, sizeof *world->sweep);
     rb_free_array((void **)&world->refits, &world->refit_capacity, sizeof *world->refits);
     rb_free_array((void **)&world->wide_shapes, &world->wide_shape_capacity, sizeof *world->wide_shapes);
@@ -276,6 +286,15 @@ size_t rb_world_bytes_in_use(const rb_world *world)
            (size_t)world->pin_row_capacity * sizeof *world->pin_rows +
            (size_t)world->pin_anchor_capacity * sizeof *world->pin_anchors +
            (size_t)world->pin_row_of_capacity * sizeof *world->pin_row_of +
+           (size_t)world->ordered_joint_capacity * sizeof *world->ordered_joints +
+           (size_t)world->joint_order_scratch_capacity * sizeof *world->joint_order_scratch +
+           (size_t)world->joint_key_capacity * sizeof *world->joint_keys +
+           (size_t)world->body_depth_capacity * sizeof *world->body_depth +
+           (size_t)world->body_queue_capacity * sizeof *world->body_queue +
+           (size_t)world->joint_end_capacity * sizeof *world->joint_ends +
+           (size_t)world->body_edge_start_capacity * sizeof *world->body_edge_start +
+           (size_t)world->body_edge_capacity * sizeof *world->body_edges +
+           (size_t)world->joint_colouring.body_capacity * sizeof *world->joint_colouring.body_colours +
            (size_t)world->cable_capacity * sizeof *world->cables + rb_contact_events_bytes(world);
 }
 

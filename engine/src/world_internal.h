@@ -461,6 +461,7 @@ typedef struct rb_joint_tree {
      * the same: found is set once they are found and keys recorded, with
      * the world's body slots, the solver's mass ratio and enabled then. */
     bool found;
+    unsigned finds; /* how many times the trees were looked for anew */
     rb_tree_key *keys;
     int key_count, key_capacity;
     int found_body_slots;
@@ -614,13 +615,37 @@ struct rb_world {
     int active_joint_count, active_joint_capacity;
     double *substep_omega; /* per body slot: rad/s at the substep's start, before any warm start (rb_joints_prepare) */
     int substep_omega_capacity;
-    rb_pin_row *pin_rows; /* this step's plain pins, in the order of the active joints (joint_pin.c) */
+    rb_pin_row *pin_rows; /* this step's plain pins, in the order of the pass list (joint_pin.c) */
     int pin_row_count, pin_row_capacity;
     rb_pin_anchors *pin_anchors; /* beside pin_rows */
     int pin_anchor_capacity;
     int *pin_row_of; /* per joint slot: its row in pin_rows this step, or -1 */
     int pin_row_of_capacity;
     bool pin_rows_live; /* the rows, not the joints, hold the pins' impulses (within a step) */
+    /* The soft step's pass list in its order, while joints_ordered
+     * (joint_order.c), and the scratch that finds it: the list in colour
+     * order, a key per listed joint, each body's depth from the supports,
+     * the search's queue (body_slots + 1) and the bodies' links. */
+    int *ordered_joints;
+    int ordered_joint_count, ordered_joint_capacity;
+    int *joint_order_scratch;
+    int joint_order_scratch_capacity;
+    int *joint_keys;
+    int joint_key_capacity;
+    int *body_depth;
+    int body_depth_capacity;
+    int *body_queue;
+    int body_queue_capacity;
+    int *joint_ends; /* per joint slot: its bodies, a then b */
+    int joint_end_capacity;
+    int *body_edge_start; /* body_slots + 1: where each body's joints' other bodies start in body_edges */
+    int body_edge_start_capacity;
+    int *body_edges;
+    int body_edge_capacity;
+    rb_colouring joint_colouring;
+    bool joints_ordered;
+    bool joint_order_kept;      /* ordered_joints holds the order for the trees' last search... */
+    unsigned joint_order_finds; /* ...this one (rb_joint_tree.finds) */
     int joint_slots;
     int joint_free;
     int joint_count;
