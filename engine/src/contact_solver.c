@@ -752,11 +752,10 @@ static inline void surface_points_now(const rb_contact_constraint *c, const rb_c
  * with K the effective mass at the anchors as they are now. A face's
  * normal is the same at both points of a contact until a correction
  * turns its body, so it is turned once and again only after one (the
- * same numbers as current_geometry's for each point). This is the
- * reference, one contact's points in turn; *deepest is lowered by each
- * point's separation before its correction. */
-static void correct_contact_positions(rb_world *world, const rb_contact_constraint *c, double *deepest)
+ * same numbers as current_geometry's for each point). */
+void rb_contact_solver_correct_contact_positions(rb_world *world, int index, double *deepest)
 {
+    const rb_contact_constraint *c = &world->constraints[index];
     const rb_solver_settings *settings = &world->settings;
     rb_body_state *a = &world->states[c->body_a];
     rb_body_state *b = &world->states[c->body_b];
@@ -803,7 +802,7 @@ bool rb_contact_solver_correct_positions(rb_world *world)
     while (i < count) {
         i = rb_contact_solver_skip_resting(world, i, &deepest);
         if (i < count) {
-            correct_contact_positions(world, &world->constraints[i], &deepest);
+            rb_contact_solver_correct_contact_positions(world, i, &deepest);
             ++i;
         }
     }
