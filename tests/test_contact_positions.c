@@ -13,9 +13,9 @@
  * The poses are a settled base-20 pyramid (590 contacts of two points)
  * with balls beside it (contacts of one point, which the lanes do not
  * take), some of its boxes pushed down into the ones below by up to a few
- * slops, so that contacts needing a correction fall among resting ones
- * in every arrangement: alone, in pairs, at the start and the end of a
- * run. */
+ * slops, so that contacts needing a correction fall here and there among
+ * resting ones (a few boxes pushed) or make up much of the pass (every
+ * box pushed). */
 #include <string.h>
 
 #include "contact_solver.h"
