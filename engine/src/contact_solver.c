@@ -753,8 +753,9 @@ static inline void surface_points_now(const rb_contact_constraint *c, const rb_c
  * normal is the same at both points of a contact until a correction
  * turns its body, so it is turned once and again only after one (the
  * same numbers as current_geometry's for each point). */
-void rb_contact_solver_correct_contact_positions(rb_world *world, int index, double *deepest)
+bool rb_contact_solver_correct_contact_positions(rb_world *world, int index, double *deepest)
 {
+    bool corrected = false;
     const rb_contact_constraint *c = &world->constraints[index];
     const rb_solver_settings *settings = &world->settings;
     rb_body_state *a = &world->states[c->body_a];
@@ -785,24 +786,33 @@ void rb_contact_solver_correct_contact_positions(rb_world *world, int index, dou
         rb_vec2 impulse = rb_scale(-error * mass, normal);
         displace(a, -c->inv_mass_a, -c->inv_inertia_a, ra, impulse);
         displace(b, c->inv_mass_b, c->inv_inertia_b, rb, impulse);
+        corrected = true;
         if (face) {
             face_normal = turned_normal(c, a, b);
         }
     }
+    return corrected;
 }
 
 /* The contacts in order; the runs of them that need no correction are
  * measured two at a time and passed over (contact_positions_wide.c), the
- * others corrected by the reference. */
+ * others corrected by the reference. Where contacts needing a correction
+ * come one after another, as in a pile still settling, the lanes'
+ * measure would mostly be thrown away (the base-100 pyramid's step took
+ * 0.3 % more instructions with it): after a correction the reference
+ * carries on until it finds a contact with none to make. */
 bool rb_contact_solver_correct_positions(rb_world *world)
 {
     double deepest = 0.0;
     int count = world->constraint_count;
     int i = 0;
+    bool resting = true; /* the last contact needed no correction */
     while (i < count) {
-        i = rb_contact_solver_skip_resting(world, i, &deepest);
+        if (resting) {
+            i = rb_contact_solver_skip_resting(world, i, &deepest);
+        }
         if (i < count) {
-            rb_contact_solver_correct_contact_positions(world, i, &deepest);
+            resting = !rb_contact_solver_correct_contact_positions(world, i, &deepest);
             ++i;
         }
     }

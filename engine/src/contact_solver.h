@@ -211,8 +211,9 @@ void rb_contact_solver_solve_soft_range(rb_world *world, const rb_contact_softne
 bool rb_contact_solver_correct_positions(rb_world *world);
 /* The pass's work on constraint `index` alone, the reference: its points
  * measured and corrected in turn, *deepest (m, <= 0) lowered by each
- * point's separation before its correction. */
-void rb_contact_solver_correct_contact_positions(rb_world *world, int index, double *deepest);
+ * point's separation before its correction. Returns whether a correction
+ * moved the bodies. */
+bool rb_contact_solver_correct_contact_positions(rb_world *world, int index, double *deepest);
 /* The first constraint from `begin` on that the pass above must measure
  * and correct one at a time: those before it (runs of two-point
  * contacts, two at a time where the processor allows) need no correction
