@@ -753,47 +753,70 @@ static inline void surface_points_now(const rb_contact_constraint *c, const rb_c
  * normal is the same at both points of a contact until a correction
  * turns its body, so it is turned once and again only after one (the
  * same numbers as current_geometry's for each point). */
-bool rb_contact_solver_correct_positions(rb_world *world)
+bool rb_contact_solver_correct_contact_positions(rb_world *world, int index, double *deepest)
 {
+    bool corrected = false;
+    const rb_contact_constraint *c = &world->constraints[index];
     const rb_solver_settings *settings = &world->settings;
-    double deepest = 0.0;
-    for (int i = 0; i < world->constraint_count; ++i) {
-        const rb_contact_constraint *c = &world->constraints[i];
-        rb_body_state *a = &world->states[c->body_a];
-        rb_body_state *b = &world->states[c->body_b];
-        bool face = c->normal_follows != RB_NORMAL_FROM_CENTERS;
-        rb_vec2 face_normal = face ? turned_normal(c, a, b) : c->normal;
-        for (int j = 0; j < c->point_count; ++j) {
-            const rb_constraint_point *p = &c->points[j];
-            rb_vec2 normal = face_normal;
-            rb_vec2 pa;
-            rb_vec2 pb;
-            if (face) {
-                surface_points_now(c, p, a, b, normal, &pa, &pb);
-            } else {
-                current_geometry(c, p, a, b, &normal, &pa, &pb);
-            }
-            double s = rb_dot(normal, rb_sub(pb, pa));
-            deepest = rb_min(deepest, s);
-            double error = rb_min(
-                rb_max(settings->baumgarte * (s + settings->linear_slop), -settings->max_linear_correction), 0.0);
-            if (error == 0.0) {
-                continue;
-            }
-            rb_vec2 ra;
-            rb_vec2 rb;
-            anchors_at_midpoint(a, b, pa, pb, &ra, &rb);
-            double mass =
-                effective_mass(c->inv_mass_a + c->inv_mass_b, c->inv_inertia_a, c->inv_inertia_b, ra, rb, normal);
-            rb_vec2 impulse = rb_scale(-error * mass, normal);
-            displace(a, -c->inv_mass_a, -c->inv_inertia_a, ra, impulse);
-            displace(b, c->inv_mass_b, c->inv_inertia_b, rb, impulse);
-            if (face) {
-                face_normal = turned_normal(c, a, b);
-            }
+    rb_body_state *a = &world->states[c->body_a];
+    rb_body_state *b = &world->states[c->body_b];
+    bool face = c->normal_follows != RB_NORMAL_FROM_CENTERS;
+    rb_vec2 face_normal = face ? turned_normal(c, a, b) : c->normal;
+    for (int j = 0; j < c->point_count; ++j) {
+        const rb_constraint_point *p = &c->points[j];
+        rb_vec2 normal = face_normal;
+        rb_vec2 pa;
+        rb_vec2 pb;
+        if (face) {
+            surface_points_now(c, p, a, b, normal, &pa, &pb);
+        } else {
+            current_geometry(c, p, a, b, &normal, &pa, &pb);
+        }
+        double s = rb_dot(normal, rb_sub(pb, pa));
+        *deepest = rb_min(*deepest, s);
+        double error =
+            rb_min(rb_max(settings->baumgarte * (s + settings->linear_slop), -settings->max_linear_correction), 0.0);
+        if (error == 0.0) {
+            continue;
+        }
+        rb_vec2 ra;
+        rb_vec2 rb;
+        anchors_at_midpoint(a, b, pa, pb, &ra, &rb);
+        double mass = effective_mass(c->inv_mass_a + c->inv_mass_b, c->inv_inertia_a, c->inv_inertia_b, ra, rb, normal);
+        rb_vec2 impulse = rb_scale(-error * mass, normal);
+        displace(a, -c->inv_mass_a, -c->inv_inertia_a, ra, impulse);
+        displace(b, c->inv_mass_b, c->inv_inertia_b, rb, impulse);
+        corrected = true;
+        if (face) {
+            face_normal = turned_normal(c, a, b);
         }
     }
-    return deepest >= -NGS_TOLERANCE_SLOPS * settings->linear_slop;
+    return corrected;
+}
+
+/* The contacts in order; the runs of them that need no correction are
+ * measured two at a time and passed over (contact_positions_wide.c), the
+ * others corrected by the reference. Where contacts needing a correction
+ * come one after another, as in a pile still settling, the lanes'
+ * measure would mostly be thrown away (the base-100 pyramid's step took
+ * 0.3 % more instructions with it): after a correction the reference
+ * carries on until it finds a contact with none to make. */
+bool rb_contact_solver_correct_positions(rb_world *world)
+{
+    double deepest = 0.0;
+    int count = world->constraint_count;
+    int i = 0;
+    bool resting = true; /* the last contact needed no correction */
+    while (i < count) {
+        if (resting) {
+            i = rb_contact_solver_skip_resting(world, i, &deepest);
+        }
+        if (i < count) {
+            resting = !rb_contact_solver_correct_contact_positions(world, i, &deepest);
+            ++i;
+        }
+    }
+    return deepest >= -NGS_TOLERANCE_SLOPS * world->settings.linear_slop;
 }
 
 /* Restitution after the step (as Box2D v3 does): a point whose surfaces

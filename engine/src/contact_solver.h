@@ -216,6 +216,18 @@ void rb_contact_solver_solve_soft_range(rb_world *world, const rb_contact_softne
 /* One non-linear Gauss-Seidel pass over the contacts; returns whether no
  * point was deeper than the tolerance before it. */
 bool rb_contact_solver_correct_positions(rb_world *world);
+/* The pass's work on constraint `index` alone, the reference: its points
+ * measured and corrected in turn, *deepest (m, <= 0) lowered by each
+ * point's separation before its correction. Returns whether a correction
+ * moved the bodies. */
+bool rb_contact_solver_correct_contact_positions(rb_world *world, int index, double *deepest);
+/* The first constraint from `begin` on that the pass above must measure
+ * and correct one at a time: those before it (runs of two-point
+ * contacts, two at a time where the processor allows) need no correction
+ * at the poses now, and their separations (m, < 0 overlapping) have
+ * lowered *deepest as the one-at-a-time pass would have
+ * (contact_positions_wide.c). Returns `begin` when it cannot tell. */
+int rb_contact_solver_skip_resting(const rb_world *world, int begin, double *deepest);
 void rb_contact_solver_apply_restitution(rb_world *world, double h);
 /* Writes the impulses back to the manifolds for the next step; returns
  * the deepest penetration left (m, >= 0). */
