@@ -222,9 +222,9 @@ static void solve_limits(rb_world *world, rb_joint *joint, rb_body_state *a, rb_
     }
     if (lower_nearer || upper_nearer) {
         rb_angular_row row = limit_row(world, r, lower_nearer, angle, h);
-        rb_point_constraint_solve(world, joint, &r->point_impulse, &row);
+        rb_point_constraint_solve(world, joint, a, b, &r->point_impulse, &row);
     } else {
-        rb_point_constraint_solve(world, joint, &r->point_impulse, NULL);
+        rb_point_constraint_solve(world, joint, a, b, &r->point_impulse, NULL);
     }
 }
 
@@ -260,7 +260,7 @@ void rb_revolute_solve(rb_world *world, rb_joint *joint, double h)
         }
         return;
     }
-    rb_point_constraint_solve(world, joint, &r->point_impulse, NULL);
+    rb_point_constraint_solve(world, joint, a, b, &r->point_impulse, NULL);
 }
 
 /* How far the joint angle lies beyond an enabled limit (rad, >= 0). */

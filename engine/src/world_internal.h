@@ -250,6 +250,9 @@ typedef struct rb_joint_frame {
 typedef struct rb_point_block {
     rb_block_matrix mass;
     double c11, c12, c13, c22, c23, c33, det;
+    /* 1/c33 when c33 > 0, else 0: c33 = k11·k22 - k12² is also the pin
+     * alone's determinant, which a limit that lets go solves with. */
+    double inverse_c33;
 } rb_point_block;
 
 /* A plain pin (a revolute joint with no limit, motor or spring, which no
