@@ -52,7 +52,6 @@ static void make_cofactors(rb_point_block *p)
     p->c22 = k->k11 * k->k33 - k->k13 * k->k13;
     p->c23 = k->k13 * k->k12 - k->k11 * k->k23;
     p->c33 = k->k11 * k->k22 - k->k12 * k->k12;
-    p->inverse_c33 = p->c33 > 0.0 ? 1.0 / p->c33 : 0.0;
 }
 
 /* The joint's point block, kept by the world beside the joints. */
@@ -72,14 +71,16 @@ static bool solves_with_a_row(const rb_joint *joint)
 }
 
 /* The inverse of K's upper-left 2x2, the pin alone, or all 0 when that
- * is singular: (inverse11, inverse12, inverse22). */
-static void point_inverse(const rb_block_matrix *k, double *inverse11, double *inverse12, double *inverse22)
+ * is singular: (inverse11, inverse12, inverse22); returns 1/det (0 when
+ * singular). */
+static double point_inverse(const rb_block_matrix *k, double *inverse11, double *inverse12, double *inverse22)
 {
     double det = k->k11 * k->k22 - k->k12 * k->k12;
     double inverse_det = det > 0.0 ? 1.0 / det : 0.0;
     *inverse11 = inverse_det * k->k22;
     *inverse12 = -inverse_det * k->k12;
     *inverse22 = inverse_det * k->k11;
+    return inverse_det;
 }
 
 void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h)
@@ -87,9 +88,10 @@ void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double 
     rb_joint_frame *f = &joint->frame;
     rb_point_block *p = point_block(world, joint);
     p->mass = make_mass_matrix(f->inv_mass_a, f->inv_inertia_a, f->inv_mass_b, f->inv_inertia_b, f->ra, f->rb);
-    point_inverse(&p->mass, &f->point_inverse11, &f->point_inverse12, &f->point_inverse22);
+    const double inverse_det = point_inverse(&p->mass, &f->point_inverse11, &f->point_inverse12, &f->point_inverse22);
     if (solves_with_a_row(joint)) {
         make_cofactors(p);
+        p->inverse_c33 = inverse_det; /* c33 is that 2x2's determinant, made by the same expression */
     }
     rb_point_constraint_prepare_drift(world, joint, h);
 }
