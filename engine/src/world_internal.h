@@ -373,8 +373,8 @@ typedef struct rb_cable {
     int share_count;
     rb_cable_share shares[RB_MAX_CABLE_POINTS];
     int moving_count;
-    int moving[RB_MAX_CABLE_POINTS]; /* places in shares */
-    double inverse_mass;             /* 1/kg: how fast a unit impulse shortens the path */
+    rb_cable_share moving[RB_MAX_CABLE_POINTS]; /* copies of those shares, which the passes push in turn */
+    double inverse_mass;                        /* 1/kg: how fast a unit impulse shortens the path */
 } rb_cable;
 
 /* Ordered by use: what every velocity pass reads (the type, the bodies,
