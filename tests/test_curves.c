@@ -13,6 +13,8 @@
 #include <criterion/criterion.h>
 #include <gsl/gsl_interp.h>
 #include <math.h>
+#include <stdbool.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -458,6 +460,92 @@ Test(curves, hinted_look_ups_equal_plain_ones)
         }
         mu_curves_destroy(curves);
     }
+}
+
+/* The same double to the bit (-0 and +0 differ). */
+static bool same_bits(double a, double b)
+{
+    uint64_t x = 0;
+    uint64_t y = 0;
+    memcpy(&x, &a, sizeof x);
+    memcpy(&y, &b, sizeof y);
+    return x == y;
+}
+
+Test(curves, velocity_and_slope_in_one_look_up_equal_the_two_look_ups_bit_for_bit)
+{
+    /* The muscle's law reads f_V and its slope at one ṽ with one look-up;
+     * both must be the bits of the separate plain look-ups (which the
+     * test above holds to GSL's interpolants) for every set, along a walk
+     * that jumps back and forth across the table and beyond it, at the
+     * velocity table's knots (read from the seed file), at Vmax and at the
+     * ends. */
+    const mu_analytic_curves p = mu_default_analytic_curves();
+    mu_curves *sets[3] = {seed_tables(MU_INTERPOLATION_LINEAR), seed_tables(MU_INTERPOLATION_STEFFEN), analytic(&p)};
+    double points[2200];
+    size_t count = 0;
+    double x = 0.0;
+    for (int n = 0; n < 2000; n++) {
+        x = fmod(x + 0.137 + 0.5 * sin(n), 4.0);
+        points[count++] = 0.8 * x - 2.0; /* -2 .. 1.2: the velocity table and beyond */
+    }
+    const double special[] = {-1.0, -1.0025, nextafter(-1.0, 0.0), 0.0, -0.0, 1e-12, -1e-12, 1.0, 2.0, -3.0};
+    for (size_t i = 0; i < sizeof special / sizeof special[0]; i++) {
+        points[count++] = special[i];
+    }
+    for (size_t s = 0; s < 3; s++) {
+        mu_curve_hint hint = {0};
+        for (size_t i = 0; i < count; i++) {
+            double slope = -1.0;
+            const double value = mu_curve_velocity_and_slope_hinted(sets[s], &hint, points[i], &slope);
+            cr_expect(same_bits(value, mu_curve_velocity(sets[s], points[i])), "set %zu: f_V(%.17g) = %.17g", s,
+                      points[i], value);
+            cr_expect(same_bits(slope, mu_curve_velocity_slope(sets[s], points[i])), "set %zu: f_V'(%.17g) = %.17g", s,
+                      points[i], slope);
+        }
+        mu_curves_destroy(sets[s]);
+    }
+}
+
+Test(curves, velocity_and_slope_at_the_knots_equal_the_two_look_ups)
+{
+    /* At every knot of the f_V table (read from the seed file), the
+     * doubles on either side of it and the midpoints, where a straight
+     * line's interval changes, for both interpolations. */
+    const knots k = read_seed_knots("force_velocity");
+    const mu_interpolation interpolations[2] = {MU_INTERPOLATION_LINEAR, MU_INTERPOLATION_STEFFEN};
+    for (size_t s = 0; s < 2; s++) {
+        mu_curves *curves = seed_tables(interpolations[s]);
+        mu_curve_hint hint = {0};
+        for (size_t i = 0; i < k.count; i++) {
+            const double mid = i + 1 < k.count ? 0.5 * (k.x[i] + k.x[i + 1]) : k.x[i] + 1.0;
+            const double at[4] = {k.x[i], nextafter(k.x[i], -INFINITY), nextafter(k.x[i], INFINITY), mid};
+            for (int j = 0; j < 4; j++) {
+                double slope = 0.0;
+                const double value = mu_curve_velocity_and_slope_hinted(curves, &hint, at[j], &slope);
+                cr_expect(same_bits(value, mu_curve_velocity(curves, at[j])), "set %zu: f_V(%.17g)", s, at[j]);
+                cr_expect(same_bits(slope, mu_curve_velocity_slope(curves, at[j])), "set %zu: f_V'(%.17g)", s, at[j]);
+            }
+        }
+        mu_curves_destroy(curves);
+    }
+}
+
+Test(curves, velocity_and_slope_refuse_nan_null_curves_and_null_slope)
+{
+    mu_curves *curves = seed_tables(MU_INTERPOLATION_LINEAR);
+    mu_curve_hint hint = {0};
+    double slope = 0.0;
+    cr_expect(isnan(mu_curve_velocity_and_slope_hinted(curves, &hint, NAN, &slope)));
+    cr_expect(isnan(slope), "the slope of NaN is NaN");
+    cr_expect(strstr(rb_last_error(), "normalized_velocity is NaN") != NULL, "%s", rb_last_error());
+    slope = 0.0;
+    cr_expect(isnan(mu_curve_velocity_and_slope_hinted(NULL, &hint, 0.0, &slope)));
+    cr_expect(isnan(slope), "NULL curves give a NaN slope");
+    cr_expect(strstr(rb_last_error(), "curves is NULL") != NULL, "%s", rb_last_error());
+    cr_expect(isnan(mu_curve_velocity_and_slope_hinted(curves, &hint, 0.0, NULL)));
+    cr_expect(strstr(rb_last_error(), "slope is NULL") != NULL, "%s", rb_last_error());
+    mu_curves_destroy(curves);
 }
 
 Test(curves, straight_lines_equal_gsl_linear_interpolant_bit_for_bit)

@@ -316,6 +316,14 @@ static void storm_curves_evaluate(void)
     REFUSED_NAN(mu_curve_velocity_hinted(curves, &hint, NAN), "mu_curve_velocity_hinted", "normalized_velocity");
     REFUSED_NAN(mu_curve_velocity_slope_hinted(curves, &hint, NAN), "mu_curve_velocity_slope_hinted",
                 "normalized_velocity");
+    double slope = 0.0;
+    REFUSED_NAN(mu_curve_velocity_and_slope_hinted(NULL, &hint, 0.0, &slope), "mu_curve_velocity_and_slope_hinted",
+                "curves");
+    cr_expect(isnan(slope), "a refused look-up's slope is NaN");
+    REFUSED_NAN(mu_curve_velocity_and_slope_hinted(curves, &hint, NAN, &slope), "mu_curve_velocity_and_slope_hinted",
+                "normalized_velocity");
+    REFUSED_NAN(mu_curve_velocity_and_slope_hinted(curves, &hint, 0.0, NULL), "mu_curve_velocity_and_slope_hinted",
+                "slope");
     /* A hint whose intervals are garbage is only a hint: the look-up is
      * the plain one's. */
     mu_curve_hint garbage = {{(size_t)-1, 123456789, 99}};
@@ -323,6 +331,8 @@ static void storm_curves_evaluate(void)
     cr_expect_eq(mu_curve_passive_length_hinted(curves, &garbage, 1.4), mu_curve_passive_length(curves, 1.4));
     cr_expect_eq(mu_curve_velocity_hinted(curves, &garbage, -0.3), mu_curve_velocity(curves, -0.3));
     cr_expect_eq(mu_curve_velocity_slope_hinted(curves, &garbage, -0.3), mu_curve_velocity_slope(curves, -0.3));
+    cr_expect_eq(mu_curve_velocity_and_slope_hinted(curves, &garbage, -0.3, &slope), mu_curve_velocity(curves, -0.3));
+    cr_expect_eq(slope, mu_curve_velocity_slope(curves, -0.3));
     mu_curves_destroy(curves);
 }
 
@@ -1066,7 +1076,7 @@ static const api_storm storms[] = {
      storm_curves_create},
     {"mu_curve_active_length mu_curve_passive_length mu_curve_velocity mu_curve_velocity_slope "
      "mu_curve_active_length_hinted mu_curve_passive_length_hinted mu_curve_velocity_hinted "
-     "mu_curve_velocity_slope_hinted",
+     "mu_curve_velocity_slope_hinted mu_curve_velocity_and_slope_hinted",
      storm_curves_evaluate},
     {"mu_lengths_from_geometry", storm_geometry_lengths},
     {"mu_model_create mu_model_destroy", storm_model_create},

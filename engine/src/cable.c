@@ -153,9 +153,10 @@ rb_status rb_cable_set_tension_law(rb_world *world, rb_cable_id id, double base_
     cable->damping = damping;
     /* A law is set by something that drives the bodies (a muscle, every
      * substep), as a motor does: it wakes them and restarts their time at
-     * rest, so they never sleep between two laws. */
-    for (int i = 0; i < cable->point_count; ++i) {
-        rb_body_wake(world, cable->bodies[i]);
+     * rest, so they never sleep between two laws. Each of the path's
+     * distinct bodies once: waking again changes nothing. */
+    for (int b = 0; b < cable->body_count; ++b) {
+        rb_body_wake(world, cable->path_bodies[b]);
     }
     return RB_OK;
 }
@@ -298,12 +299,10 @@ void rb_cables_prepare(rb_world *world)
             continue;
         }
         /* Each point's pull, u_i - u_{i-1}, added to its body's share. */
-        rb_vec2 linear[RB_MAX_CABLE_POINTS];
-        double angular[RB_MAX_CABLE_POINTS];
-        for (int b = 0; b < cable->body_count; ++b) {
-            linear[b] = rb_v2(0.0, 0.0);
-            angular[b] = 0.0;
-        }
+        /* Zeroed whole: a fixed size is a few stores, where zeroing the
+         * path's bodies alone took two calls to memset. */
+        rb_vec2 linear[RB_MAX_CABLE_POINTS] = {{0.0, 0.0}};
+        double angular[RB_MAX_CABLE_POINTS] = {0.0};
         const rb_vec2 *points = cable->points;
         rb_vec2 previous = rb_v2(0.0, 0.0); /* u_{i-1}; none before the origin */
         for (int i = 0; i < cable->point_count; ++i) {
@@ -329,16 +328,17 @@ void rb_cables_prepare(rb_world *world)
             if (body->type == RB_BODY_STATIC) {
                 continue;
             }
-            if (inv_mass > 0.0 || inv_inertia > 0.0) {
-                cable->moving[cable->moving_count++] = cable->share_count;
-            }
-            cable->shares[cable->share_count++] = (rb_cable_share){
+            const rb_cable_share share = {
                 .body = cable->path_bodies[b],
                 .linear = linear[b],
                 .angular = angular[b],
                 .inv_mass = inv_mass,
                 .inv_inertia = inv_inertia,
             };
+            if (inv_mass > 0.0 || inv_inertia > 0.0) {
+                cable->moving[cable->moving_count++] = share;
+            }
+            cable->shares[cable->share_count++] = share;
         }
         cable->inverse_mass = k;
     }
@@ -349,7 +349,7 @@ void rb_cables_prepare(rb_world *world)
 static inline void apply(const rb_cable *cable, rb_world *world, double impulse)
 {
     for (int m = 0; m < cable->moving_count; ++m) {
-        const rb_cable_share *share = &cable->shares[cable->moving[m]];
+        const rb_cable_share *share = &cable->moving[m];
         rb_body_state *s = &world->states[share->body];
         s->linear_velocity = rb_mul_add(s->linear_velocity, impulse * share->inv_mass, share->linear);
         s->angular_velocity += impulse * share->inv_inertia * share->angular;

@@ -71,14 +71,16 @@ static bool solves_with_a_row(const rb_joint *joint)
 }
 
 /* The inverse of K's upper-left 2x2, the pin alone, or all 0 when that
- * is singular: (inverse11, inverse12, inverse22). */
-static void point_inverse(const rb_block_matrix *k, double *inverse11, double *inverse12, double *inverse22)
+ * is singular: (inverse11, inverse12, inverse22); returns 1/det (0 when
+ * singular). */
+static double point_inverse(const rb_block_matrix *k, double *inverse11, double *inverse12, double *inverse22)
 {
     double det = k->k11 * k->k22 - k->k12 * k->k12;
     double inverse_det = det > 0.0 ? 1.0 / det : 0.0;
     *inverse11 = inverse_det * k->k22;
     *inverse12 = -inverse_det * k->k12;
     *inverse22 = inverse_det * k->k11;
+    return inverse_det;
 }
 
 void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h)
@@ -86,9 +88,10 @@ void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double 
     rb_joint_frame *f = &joint->frame;
     rb_point_block *p = point_block(world, joint);
     p->mass = make_mass_matrix(f->inv_mass_a, f->inv_inertia_a, f->inv_mass_b, f->inv_inertia_b, f->ra, f->rb);
-    point_inverse(&p->mass, &f->point_inverse11, &f->point_inverse12, &f->point_inverse22);
+    const double inverse_det = point_inverse(&p->mass, &f->point_inverse11, &f->point_inverse12, &f->point_inverse22);
     if (solves_with_a_row(joint)) {
         make_cofactors(p);
+        p->inverse_c33 = inverse_det; /* c33 is that 2x2's determinant, made by the same expression */
     }
     rb_point_constraint_prepare_drift(world, joint, h);
 }
@@ -103,52 +106,63 @@ void rb_point_constraint_prepare_drift(const rb_world *world, rb_joint *joint, d
  * take the row's sign s = ±1. Flipping them flips the cofactors c13 and
  * c23 and leaves the others and the determinant as they are (each keeps
  * its terms' products of two flipped factors), so K's cofactors serve
- * both signs, to the bit: negation is exact. False when K is singular
- * (a body that cannot turn makes an angle row redundant). */
-static bool solve_with_row(const rb_point_block *p, double sign, rb_vec2 v, double w, rb_vec2 *x, double *z)
+ * both signs, to the bit: negation is exact. The row's z comes first, by
+ * itself: whether a limit holds depends on z alone, and a limit that lets
+ * go discards x (solve_point). */
+static double row_part(const rb_point_block *p, double sign, rb_vec2 v, double w)
 {
-    double det = p->det;
-    if (!(fabs(det) > 1e-300)) {
+    return (sign * p->c13 * v.x + sign * p->c23 * v.y + p->c33 * w) / p->det;
+}
+
+static rb_vec2 point_part(const rb_point_block *p, double sign, rb_vec2 v, double w)
+{
+    const double c13 = sign * p->c13;
+    const double c23 = sign * p->c23;
+    return rb_v2((p->c11 * v.x + p->c12 * v.y + c13 * w) / p->det, (p->c12 * v.x + p->c22 * v.y + c23 * w) / p->det);
+}
+
+/* The pin alone, K2·x = v, with K2's determinant c33 and its inverse
+ * made once a substep: rb_block_solve2's arithmetic without its division. */
+static bool solve_pin_alone(const rb_point_block *p, rb_vec2 v, rb_vec2 *x)
+{
+    if (!(p->c33 > 0.0)) {
         return false;
     }
-    double c13 = sign * p->c13;
-    double c23 = sign * p->c23;
-    *x = rb_v2((p->c11 * v.x + p->c12 * v.y + c13 * w) / det, (p->c12 * v.x + p->c22 * v.y + c23 * w) / det);
-    *z = (c13 * v.x + c23 * v.y + p->c33 * w) / det;
+    const rb_block_matrix *k = &p->mass;
+    *x = rb_v2((k->k22 * v.x - k->k12 * v.y) * p->inverse_c33, (k->k11 * v.y - k->k12 * v.x) * p->inverse_c33);
     return true;
 }
 
-void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumulated, const rb_angular_row *row)
+void rb_point_constraint_solve(const rb_world *world, const rb_joint *joint, rb_body_state *a, rb_body_state *b,
+                               rb_vec2 *accumulated, const rb_angular_row *row)
 {
-    rb_body_state *a = rb_joint_state_a(world, joint);
-    rb_body_state *b = rb_joint_state_b(world, joint);
     const rb_rigid_response *response = &world->joint_response;
     rb_vec2 cdot = rb_point_frame_velocity_error(world, &joint->frame, a, b);
 
-    rb_vec2 impulse;
-    if (row != NULL) {
+    const rb_point_block *p = NULL;
+    if (row != NULL && fabs((p = point_block(world, joint))->det) > 1e-300) {
         /* The row is s·(ωB - ωA) + bias = 0 with s = ±1; in K its coupling
-         * terms take the sign s. */
-        double wdot = row->sign * (b->angular_velocity - a->angular_velocity) + row->bias;
-        double angular;
-        const rb_point_block *p = point_block(world, joint);
-        if (solve_with_row(p, row->sign, rb_neg(cdot), -wdot, &impulse, &angular)) {
-            impulse = rb_soften(response, impulse, *accumulated);
-            angular = response->mass_scale * angular - response->impulse_scale * *row->accumulated;
-            if (row->one_sided && *row->accumulated + angular < 0.0) {
-                /* The limit would pull: release it and hold the pin alone,
-                 * net of the release's effect on the point. */
-                angular = -*row->accumulated;
-                const rb_block_matrix k = p->mass;
-                rb_vec2 rhs = rb_neg(rb_add(cdot, rb_scale(angular, rb_v2(row->sign * k.k13, row->sign * k.k23))));
-                impulse =
-                    rb_block_solve2(&k, rhs, &impulse) ? rb_soften(response, impulse, *accumulated) : rb_v2(0.0, 0.0);
-            }
-            *row->accumulated += angular;
-            *accumulated = rb_add(*accumulated, impulse);
-            apply(joint, a, b, impulse, row->sign * angular);
-            return;
+         * terms take the sign s. A singular K (a body that cannot turn
+         * makes the row redundant) leaves the pin alone. */
+        const double wdot = row->sign * (b->angular_velocity - a->angular_velocity) + row->bias;
+        const rb_vec2 v = rb_neg(cdot);
+        double angular =
+            response->mass_scale * row_part(p, row->sign, v, -wdot) - response->impulse_scale * *row->accumulated;
+        rb_vec2 impulse;
+        if (row->one_sided && *row->accumulated + angular < 0.0) {
+            /* The limit would pull: release it and hold the pin alone,
+             * net of the release's effect on the point. */
+            angular = -*row->accumulated;
+            const rb_block_matrix *k = &p->mass;
+            rb_vec2 rhs = rb_neg(rb_add(cdot, rb_scale(angular, rb_v2(row->sign * k->k13, row->sign * k->k23))));
+            impulse = solve_pin_alone(p, rhs, &impulse) ? rb_soften(response, impulse, *accumulated) : rb_v2(0.0, 0.0);
+        } else {
+            impulse = rb_soften(response, point_part(p, row->sign, v, -wdot), *accumulated);
         }
+        *row->accumulated += angular;
+        *accumulated = rb_add(*accumulated, impulse);
+        apply(joint, a, b, impulse, row->sign * angular);
+        return;
     }
     rb_point_alone_solve(world, &joint->frame, a, b, cdot, accumulated);
 }

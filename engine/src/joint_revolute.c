@@ -222,9 +222,9 @@ static void solve_limits(rb_world *world, rb_joint *joint, rb_body_state *a, rb_
     }
     if (lower_nearer || upper_nearer) {
         rb_angular_row row = limit_row(world, r, lower_nearer, angle, h);
-        rb_point_constraint_solve(world, joint, &r->point_impulse, &row);
+        rb_point_constraint_solve(world, joint, a, b, &r->point_impulse, &row);
     } else {
-        rb_point_constraint_solve(world, joint, &r->point_impulse, NULL);
+        rb_point_constraint_solve(world, joint, a, b, &r->point_impulse, NULL);
     }
 }
 
@@ -235,10 +235,13 @@ void rb_revolute_solve(rb_world *world, rb_joint *joint, double h)
     if (joint->in_block && !r->enable_spring && !r->enable_motor) {
         return; /* the pin and its limits are its block's (joint_block.h) */
     }
-    rb_body_state *a = rb_joint_state_a(world, joint);
-    rb_body_state *b = rb_joint_state_b(world, joint);
+    /* A revolute joint always links two bodies (rb_joint_state_a's NULL is
+     * a mouse joint's), and its angle is theirs less the reference, as
+     * rb_joint_relative_angle gives it. */
+    rb_body_state *a = &world->states[joint->body_a];
+    rb_body_state *b = &world->states[joint->body_b];
     if (r->axial_mass > 0.0) {
-        double angle = rb_joint_relative_angle(world, joint, r->reference_angle);
+        double angle = b->angle - a->angle - r->reference_angle;
         if (r->enable_spring && r->spring_hertz > 0.0) {
             rb_softness soft = rb_make_softness(r->spring_hertz, r->spring_damping_ratio, r->axial_mass, h);
             double cdot = b->angular_velocity - a->angular_velocity;
@@ -260,7 +263,7 @@ void rb_revolute_solve(rb_world *world, rb_joint *joint, double h)
         }
         return;
     }
-    rb_point_constraint_solve(world, joint, &r->point_impulse, NULL);
+    rb_point_constraint_solve(world, joint, a, b, &r->point_impulse, NULL);
 }
 
 /* How far the joint angle lies beyond an enabled limit (rad, >= 0). */

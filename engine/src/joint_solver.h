@@ -124,7 +124,8 @@ static inline double rb_one_sided_row_total(const rb_world *world, double mass, 
                                             double accumulated)
 {
     double impulse = c > 0.0 ? -mass * (cdot + c / h) : rb_rigid_row_impulse(world, mass, cdot, c, accumulated);
-    return fmax(accumulated + impulse, 0.0);
+    const double total = accumulated + impulse;
+    return total > 0.0 ? total : 0.0; /* fmax(total, 0), NaN and -0 included, without libm's call */
 }
 
 rb_body_state *rb_joint_state_a(rb_world *world, const rb_joint *joint); /* NULL for a mouse joint */
@@ -312,8 +313,10 @@ static inline rb_vec2 rb_point_drift(const rb_world *world, int body_a, int body
  * (joint_tree.h). */
 void rb_point_constraint_prepare_drift(const rb_world *world, rb_joint *joint, double h);
 /* Velocity solve of the pin (and the row, if not NULL) under the pass's
- * response; the row's bias is its own. */
-void rb_point_constraint_solve(rb_world *world, rb_joint *joint, rb_vec2 *accumulated, const rb_angular_row *row);
+ * response; the row's bias is its own. a and b are the joint's body
+ * states, which the caller has already looked up. */
+void rb_point_constraint_solve(const rb_world *world, const rb_joint *joint, rb_body_state *a, rb_body_state *b,
+                               rb_vec2 *accumulated, const rb_angular_row *row);
 /* One NGS pass that moves the bodies to close the gap and, when
  * angle_error is not NULL, to remove that much relative angle (rad,
  * angle(B) - angle(A) - target) at the same time; returns the gap before. */

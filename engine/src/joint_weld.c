@@ -125,14 +125,14 @@ void rb_weld_solve(rb_world *world, rb_joint *joint, double h)
             .accumulated = &w->angular_impulse,
             .one_sided = false,
         };
-        rb_point_constraint_solve(world, joint, &w->point_impulse, &row);
+        rb_point_constraint_solve(world, joint, a, b, &w->point_impulse, &row);
         return;
     }
     solve_angle(world, joint, a, b, h);
     if (w->linear_hertz > 0.0) {
         solve_soft_point(joint, a, b, h);
     } else {
-        rb_point_constraint_solve(world, joint, &w->point_impulse, NULL);
+        rb_point_constraint_solve(world, joint, a, b, &w->point_impulse, NULL);
     }
 }
 

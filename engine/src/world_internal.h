@@ -252,6 +252,9 @@ typedef struct rb_joint_frame {
 typedef struct rb_point_block {
     rb_block_matrix mass;
     double c11, c12, c13, c22, c23, c33, det;
+    /* 1/c33 when c33 > 0, else 0: c33 = k11·k22 - k12² is also the pin
+     * alone's determinant, which a limit that lets go solves with. */
+    double inverse_c33;
 } rb_point_block;
 
 /* A plain pin (a revolute joint with no limit, motor or spring, which no
@@ -372,8 +375,8 @@ typedef struct rb_cable {
     int share_count;
     rb_cable_share shares[RB_MAX_CABLE_POINTS];
     int moving_count;
-    int moving[RB_MAX_CABLE_POINTS]; /* places in shares */
-    double inverse_mass;             /* 1/kg: how fast a unit impulse shortens the path */
+    rb_cable_share moving[RB_MAX_CABLE_POINTS]; /* copies of those shares, which the passes push in turn */
+    double inverse_mass;                        /* 1/kg: how fast a unit impulse shortens the path */
 } rb_cable;
 
 /* Ordered by use: what every velocity pass reads (the type, the bodies,

@@ -457,6 +457,30 @@ static double velocity_slope(const mu_curves *curves, mu_curve_hint *hint, doubl
     return analytic_velocity_slope(curves, normalized_velocity);
 }
 
+/* f_V and its slope at one ṽ, as velocity() and velocity_slope() give
+ * them. A straight-line table finds the interval once: the slope inside
+ * the table is the line's between the knots the value used, and outside
+ * it (or at its ends) 0, while the value is clamped to the end's. */
+static double velocity_and_slope(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity,
+                                 double *slope)
+{
+    const mu_curve_table *table = &curves->tables[MU_CURVE_VELOCITY];
+    const double x = normalized_velocity;
+    if (x <= VMAX_SHORTENING || !curves->tabulated || !curves->linear ||
+        !(x > table->x[0] && x < table->x[table->count - 1])) {
+        const double value = velocity(curves, hint, x);
+        *slope = velocity_slope(curves, hint, x);
+        return value;
+    }
+    const size_t i = linear_interval(curves, MU_CURVE_VELOCITY, hint, x);
+    const double rise = table->y[i + 1] - table->y[i];
+    const double run = table->x[i + 1] - table->x[i];
+    const double line_slope = rise / run;
+    const double value = table->y[i] + (x - table->x[i]) / run * rise; /* linear_value's order */
+    *slope = line_slope < 0.0 ? 0.0 : line_slope;
+    return value < 0.0 ? 0.0 : value;
+}
+
 double mu_curve_active_length_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_length)
 {
     return refuse_lookup("mu_curve_active_length_hinted", curves, "normalized_length", normalized_length)
@@ -511,4 +535,18 @@ double mu_curve_velocity_slope(const mu_curves *curves, double normalized_veloci
     return refuse_lookup("mu_curve_velocity_slope", curves, "normalized_velocity", normalized_velocity)
                ? NAN
                : velocity_slope(curves, NULL, normalized_velocity);
+}
+
+double mu_curve_velocity_and_slope_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity,
+                                          double *slope)
+{
+    if (slope == NULL) {
+        rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_curve_velocity_and_slope_hinted: slope is NULL");
+        return NAN;
+    }
+    if (refuse_lookup("mu_curve_velocity_and_slope_hinted", curves, "normalized_velocity", normalized_velocity)) {
+        *slope = NAN;
+        return NAN;
+    }
+    return velocity_and_slope(curves, hint, normalized_velocity, slope);
 }

@@ -425,12 +425,11 @@ static void prepare_rigid(mu_muscle *muscle, const path_reading *reading)
     const double l = reading->normalized;
     const double v = speed * cosine / muscle->max_velocity;
     const double fl = mu_curve_active_length_hinted(muscle->curves, &muscle->hint, l);
-    const double active = muscle->max_force * muscle->activation * fl *
-                          mu_curve_velocity_hinted(muscle->curves, &muscle->hint, v) * cosine;
+    double fv_slope = 0.0;
+    const double fv = mu_curve_velocity_and_slope_hinted(muscle->curves, &muscle->hint, v, &fv_slope);
+    const double active = muscle->max_force * muscle->activation * fl * fv * cosine;
     const double passive = reading->passive;
-    muscle->damping = muscle->max_force * muscle->activation * fl *
-                      mu_curve_velocity_slope_hinted(muscle->curves, &muscle->hint, v) / muscle->max_velocity * cosine *
-                      cosine;
+    muscle->damping = muscle->max_force * muscle->activation * fl * fv_slope / muscle->max_velocity * cosine * cosine;
     muscle->base_tension = active + passive - muscle->damping * speed;
 }
 

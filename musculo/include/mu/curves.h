@@ -94,6 +94,11 @@ MU_API double mu_curve_active_length_hinted(const mu_curves *curves, mu_curve_hi
 MU_API double mu_curve_passive_length_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_length);
 MU_API double mu_curve_velocity_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity);
 MU_API double mu_curve_velocity_slope_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity);
+/** mu_curve_velocity_hinted and mu_curve_velocity_slope_hinted at one
+ * ṽ, to the bit, in one look-up: returns f_V and sets *slope (NaN for
+ * both on a NaN input or NULL curves; NULL slope is refused with NaN). */
+MU_API double mu_curve_velocity_and_slope_hinted(const mu_curves *curves, mu_curve_hint *hint,
+                                                 double normalized_velocity, double *slope);
 
 #ifdef __cplusplus
 }
