@@ -22,16 +22,8 @@
 #include "contact_solver.h"
 
 #if defined(__SSE2__)
-#include <emmintrin.h>
+#include "contact_lanes_two.h"
 
-/* A pair of doubles, lane 0 for the first contact, lane 1 for the second. */
-typedef __m128d lanes;
-
-static inline lanes pair(double first, double second) { return _mm_set_pd(second, first); }
-static inline lanes both(double value) { return _mm_set1_pd(value); }
-static inline lanes add(lanes a, lanes b) { return _mm_add_pd(a, b); }
-static inline lanes sub(lanes a, lanes b) { return _mm_sub_pd(a, b); }
-static inline lanes mul(lanes a, lanes b) { return _mm_mul_pd(a, b); }
 static inline double first_of(lanes a) { return _mm_cvtsd_f64(a); }
 static inline double second_of(lanes a) { return _mm_cvtsd_f64(_mm_unpackhi_pd(a, a)); }
 
@@ -98,12 +90,8 @@ static int resting_of_two(const rb_contact_constraint *c0, const rb_contact_cons
     /* the normal turned with the body whose face it is (turned_normal) */
     const rb_body_state *turns0 = c0->normal_follows == RB_NORMAL_TURNS_WITH_A ? a0 : b0;
     const rb_body_state *turns1 = c1->normal_follows == RB_NORMAL_TURNS_WITH_A ? a1 : b1;
-    lanes qc = pair(turns0->rotation.c, turns1->rotation.c);
-    lanes qs = pair(turns0->rotation.s, turns1->rotation.s);
-    lanes lx = pair(c0->local_normal.x, c1->local_normal.x);
-    lanes ly = pair(c0->local_normal.y, c1->local_normal.y);
-    lanes nx = sub(mul(qc, lx), mul(qs, ly));
-    lanes ny = add(mul(qs, lx), mul(qc, ly));
+    lanes nx, ny;
+    turned_normals_of_two(c0, c1, turns0, turns1, &nx, &ny);
     pose_lanes a = poses(a0, a1);
     pose_lanes b = poses(b0, b1);
     lanes s1 = separation(c0, c1, 0, &a, &b, nx, ny);

@@ -15,16 +15,8 @@
 #include "contact_solver.h"
 
 #if defined(__SSE2__)
-#include <emmintrin.h>
+#include "contact_lanes_two.h"
 
-/* A pair of doubles, lane 0 for the first contact, lane 1 for the second. */
-typedef __m128d lanes;
-
-static inline lanes pair(double first, double second) { return _mm_set_pd(second, first); }
-static inline lanes both(double value) { return _mm_set1_pd(value); }
-static inline lanes add(lanes a, lanes b) { return _mm_add_pd(a, b); }
-static inline lanes sub(lanes a, lanes b) { return _mm_sub_pd(a, b); }
-static inline lanes mul(lanes a, lanes b) { return _mm_mul_pd(a, b); }
 static inline lanes negate(lanes a) { return _mm_xor_pd(a, _mm_set1_pd(-0.0)); }
 /* a > b ? a : b and a < b ? a : b in each lane, as rb_max and rb_min. */
 static inline lanes max(lanes a, lanes b) { return _mm_max_pd(a, b); }
@@ -138,12 +130,8 @@ static void prepare_two(rb_contact_constraint *c0, rb_contact_constraint *c1, co
     const rb_body_state *b1 = &states[c1->body_b];
     const rb_body_state *turns0 = c0->normal_follows == RB_NORMAL_TURNS_WITH_A ? a0 : b0;
     const rb_body_state *turns1 = c1->normal_follows == RB_NORMAL_TURNS_WITH_A ? a1 : b1;
-    lanes qc = pair(turns0->rotation.c, turns1->rotation.c);
-    lanes qs = pair(turns0->rotation.s, turns1->rotation.s);
-    lanes lx = pair(c0->local_normal.x, c1->local_normal.x);
-    lanes ly = pair(c0->local_normal.y, c1->local_normal.y);
-    lanes nx = sub(mul(qc, lx), mul(qs, ly));
-    lanes ny = add(mul(qs, lx), mul(qc, ly));
+    lanes nx, ny;
+    turned_normals_of_two(c0, c1, turns0, turns1, &nx, &ny);
     _mm_storel_pd(&c0->normal.x, nx);
     _mm_storeh_pd(&c1->normal.x, nx);
     _mm_storel_pd(&c0->normal.y, ny);

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: MIT
+/* Two contacts side by side in SSE2's 2 × double registers (part of every
+ * x86-64 processor): lane 0 holds the first contact's value, lane 1 the
+ * second's. Each operation is one instruction on both lanes and rounds
+ * each lane exactly as the scalar operation would, so code written with
+ * these in the one-at-a-time reference's order of sums and products gives
+ * that reference's doubles, lane by lane. Used by the contact points'
+ * preparation (contact_solver_wide.c) and the position pass's test for
+ * resting contacts (contact_positions_wide.c). Include only where
+ * __SSE2__ is defined. */
+#ifndef SINEW_CONTACT_LANES_TWO_H
+#define SINEW_CONTACT_LANES_TWO_H
+
+#include <emmintrin.h>
+
+#include "contact_solver.h"
+
+typedef __m128d lanes;
+
+static inline lanes pair(double first, double second) { return _mm_set_pd(second, first); }
+static inline lanes both(double value) { return _mm_set1_pd(value); }
+static inline lanes add(lanes a, lanes b) { return _mm_add_pd(a, b); }
+static inline lanes sub(lanes a, lanes b) { return _mm_sub_pd(a, b); }
+static inline lanes mul(lanes a, lanes b) { return _mm_mul_pd(a, b); }
+
+/* Both contacts' normals as their faces' bodies now turn them (the
+ * reference's turned_normal): n = q·n_local, q the rotation of the body
+ * whose face the normal is. Neither contact's normal may come from the
+ * centres. */
+static inline void turned_normals_of_two(const rb_contact_constraint *c0, const rb_contact_constraint *c1,
+                                         const rb_body_state *turns0, const rb_body_state *turns1, lanes *nx, lanes *ny)
+{
+    lanes qc = pair(turns0->rotation.c, turns1->rotation.c);
+    lanes qs = pair(turns0->rotation.s, turns1->rotation.s);
+    lanes lx = pair(c0->local_normal.x, c1->local_normal.x);
+    lanes ly = pair(c0->local_normal.y, c1->local_normal.y);
+    *nx = sub(mul(qc, lx), mul(qs, ly));
+    *ny = add(mul(qs, lx), mul(qc, ly));
+}
+
+#endif
