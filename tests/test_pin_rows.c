@@ -116,6 +116,20 @@ static int count_different(rb_world *worlds[2], rb_body_id grids[2][SIDE][SIDE])
     return different;
 }
 
+/* Expects the two worlds' grids in the same bits, and moved (a test of
+ * bodies at rest would prove nothing); then destroys both worlds. */
+static void expect_same_moved_grids_and_destroy(rb_world *worlds[2], rb_body_id grids[2][SIDE][SIDE],
+                                                rb_solver_type solver, const char *what)
+{
+    int different = count_different(worlds, grids);
+    cr_expect_eq(different, 0, "solver %d: %d of the grid's %d bodies differ %s", solver, different, SIDE * SIDE, what);
+    rb_vec2 corner = rb_body_position(worlds[0], grids[0][SIDE - 1][SIDE - 1]);
+    cr_expect(hypot(corner.x - (SIDE - 1.0), corner.y + (SIDE - 1.0)) > 1.0, "the grid's corner stayed at (%g, %g)",
+              corner.x, corner.y);
+    rb_world_destroy(worlds[1]);
+    destroy_world_and_expect_no_leak(worlds[0]);
+}
+
 /* The grid alone, and the grid after a distance joint between two bodies
  * far away (created first, so that no pin's row is its joint's place in
  * the active list), under `solver`: the grid's bodies end in the same
@@ -145,15 +159,7 @@ static void expect_same_grid(rb_solver_type solver)
         make_grid(worlds[w], grids[w], pins);
         step_world(worlds[w], TEST_DT, 90);
     }
-    int different = count_different(worlds, grids);
-    cr_expect_eq(different, 0, "solver %d: %d of the grid's %d bodies differ with a joint beside the pins", solver,
-                 different, SIDE * SIDE);
-    /* The grid moved: a test of bodies at rest would prove nothing. */
-    rb_vec2 corner = rb_body_position(worlds[0], grids[0][SIDE - 1][SIDE - 1]);
-    cr_expect(hypot(corner.x - (SIDE - 1.0), corner.y + (SIDE - 1.0)) > 1.0, "the grid's corner stayed at (%g, %g)",
-              corner.x, corner.y);
-    rb_world_destroy(worlds[1]);
-    destroy_world_and_expect_no_leak(worlds[0]);
+    expect_same_moved_grids_and_destroy(worlds, grids, solver, "with a joint beside the pins");
 }
 
 Test(pin_rows, same_bits_with_and_without_another_joint_under_ngs) { expect_same_grid(RB_SOLVER_NGS); }
@@ -188,14 +194,7 @@ static void expect_rows_as_joints(rb_solver_type solver)
     for (int w = 0; w < 2; ++w) {
         step_world(worlds[w], TEST_DT, 90);
     }
-    int different = count_different(worlds, grids);
-    cr_expect_eq(different, 0, "solver %d: %d of the grid's %d bodies differ between rows and joints", solver,
-                 different, SIDE * SIDE);
-    rb_vec2 corner = rb_body_position(worlds[0], grids[0][SIDE - 1][SIDE - 1]);
-    cr_expect(hypot(corner.x - (SIDE - 1.0), corner.y + (SIDE - 1.0)) > 1.0, "the grid's corner stayed at (%g, %g)",
-              corner.x, corner.y);
-    rb_world_destroy(worlds[1]);
-    destroy_world_and_expect_no_leak(worlds[0]);
+    expect_same_moved_grids_and_destroy(worlds, grids, solver, "between rows and joints");
 }
 
 Test(pin_rows, same_bits_as_the_joints_general_passes_under_ngs) { expect_rows_as_joints(RB_SOLVER_NGS); }
