@@ -586,13 +586,48 @@ static void solve_rows(rb_world *world, bool backwards)
     }
 }
 
-void rb_joints_solve_velocities(rb_world *world, double h, bool backwards)
+/* Whether the velocity passes leave the joint to its block: a pin and
+ * its limits are the block's, a spring or motor on it stays a joint's
+ * (rb_revolute_solve). */
+static bool block_solves(const rb_joint *joint)
+{
+    return joint->in_block && !joint->as.revolute.enable_spring && !joint->as.revolute.enable_motor;
+}
+
+/* The joints the velocity passes visit: the pass list less those their
+ * blocks solve, made at the step's first velocity pass (once the trees
+ * and the order are found) and again when a block gives its joints back
+ * (rb_joint_blocks_factor). The leg's four limited pins are all its
+ * block's: without this list each pass would visit them only to return.
+ * Out of memory, the passes visit the whole pass list, which solves the
+ * same: rb_revolute_solve leaves a block's pins alone. */
+static pass_list velocity_joints(rb_world *world)
 {
     const pass_list list = pass_joints(world);
-    if (all_rows(world, list)) {
+    if (!world->velocity_joints_fresh) {
+        if (rb_grow_array((void **)&world->velocity_joints, &world->velocity_joint_capacity, list.count,
+                          sizeof *world->velocity_joints) != 0) {
+            return list;
+        }
+        int count = 0;
+        for (int k = 0; k < list.count; ++k) {
+            if (!block_solves(&world->joints[list.joints[k]])) {
+                world->velocity_joints[count++] = list.joints[k];
+            }
+        }
+        world->velocity_joint_count = count;
+        world->velocity_joints_fresh = true;
+    }
+    return (pass_list){world->velocity_joints, world->velocity_joint_count};
+}
+
+void rb_joints_solve_velocities(rb_world *world, double h, bool backwards)
+{
+    if (all_rows(world, pass_joints(world))) {
         solve_rows(world, backwards);
         return;
     }
+    const pass_list list = velocity_joints(world);
     for (int k = 0; k < list.count; ++k) {
         int row = pass_row(world, list, k, backwards);
         if (row >= 0) {
