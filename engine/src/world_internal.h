@@ -275,6 +275,14 @@ typedef struct rb_pin_row {
     rb_vec2 impulse; /* N·s, accumulated; the joint's point_impulse while the step runs */
 } rb_pin_row;
 
+/* A joint of the velocity passes, with what its visit needs found once
+ * a step: a plain pin's row, or NULL (joint.c). Both stay put while the
+ * step runs, as no joint is made or destroyed. */
+typedef struct rb_velocity_visit {
+    struct rb_joint *joint;
+    rb_pin_row *row;
+} rb_velocity_visit;
+
 /* A pin row's anchors in the body frames, which only the preparation
  * and the position passes read: kept beside the rows, not in them. */
 typedef struct rb_pin_anchors {
@@ -620,7 +628,7 @@ struct rb_world {
     int active_joint_count, active_joint_capacity;
     /* The joints the velocity passes visit: the pass list less the pins
      * their blocks solve (joint.c); made again when it is not fresh. */
-    int *velocity_joints;
+    rb_velocity_visit *velocity_joints;
     int velocity_joint_count, velocity_joint_capacity;
     bool velocity_joints_fresh; /* cleared when the pass list or a joint's block may change */
     double *substep_omega; /* per body slot: rad/s at the substep's start, before any warm start (rb_joints_prepare) */
