@@ -652,15 +652,18 @@ static void solve_joint(rb_world *world, rb_velocity_visit visit, double h)
 
 void rb_joints_solve_velocities(rb_world *world, double h, bool backwards)
 {
+    if (!world->velocity_joints_fresh) {
+        make_velocity_joints(world);
+    }
+    const int count = world->velocity_joint_count;
+    if (count == 0) {
+        return; /* the leg's four pins are all its block's */
+    }
     if (all_rows(world, pass_joints(world))) {
         solve_rows(world, backwards);
         return;
     }
-    if (!world->velocity_joints_fresh) {
-        make_velocity_joints(world);
-    }
     /* One loop for both directions: the joint's visit is then inlined once. */
-    const int count = world->velocity_joint_count;
     const rb_velocity_visit *visit = backwards ? world->velocity_joints + count - 1 : world->velocity_joints;
     const int step = backwards ? -1 : 1;
     for (int k = 0; k < count; ++k, visit += step) {
