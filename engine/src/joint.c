@@ -607,6 +607,12 @@ static bool block_solves(const rb_joint *joint)
 static void make_velocity_joints(rb_world *world)
 {
     const pass_list list = pass_joints(world);
+    world->velocity_joints_fresh = true;
+    world->velocity_rows_only = all_rows(world, list);
+    if (world->velocity_rows_only) {
+        world->velocity_joint_count = 0;
+        return; /* the rows are the list (solve_rows) */
+    }
     int count = 0;
     for (int k = 0; k < list.count; ++k) {
         rb_joint *joint = &world->joints[list.joints[k]];
@@ -617,7 +623,6 @@ static void make_velocity_joints(rb_world *world)
         }
     }
     world->velocity_joint_count = count;
-    world->velocity_joints_fresh = true;
 }
 
 /* One joint's velocity pass. */
@@ -655,14 +660,11 @@ void rb_joints_solve_velocities(rb_world *world, double h, bool backwards)
     if (!world->velocity_joints_fresh) {
         make_velocity_joints(world);
     }
-    const int count = world->velocity_joint_count;
-    if (count == 0) {
-        return; /* the leg's four pins are all its block's */
-    }
-    if (all_rows(world, pass_joints(world))) {
+    if (world->velocity_rows_only) {
         solve_rows(world, backwards);
         return;
     }
+    const int count = world->velocity_joint_count; /* 0 on the leg: its four pins are all its block's */
     /* One loop for both directions: the joint's visit is then inlined once. */
     const rb_velocity_visit *visit = backwards ? world->velocity_joints + count - 1 : world->velocity_joints;
     const int step = backwards ? -1 : 1;

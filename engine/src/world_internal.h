@@ -631,6 +631,7 @@ struct rb_world {
     rb_velocity_visit *velocity_joints;
     int velocity_joint_count, velocity_joint_capacity;
     bool velocity_joints_fresh; /* cleared when the pass list or a joint's block may change */
+    bool velocity_rows_only;    /* every joint of the pass list a plain pin in its row: no list made */
     double *substep_omega; /* per body slot: rad/s at the substep's start, before any warm start (rb_joints_prepare) */
     int substep_omega_capacity;
     rb_pin_row *pin_rows; /* this step's plain pins, in the order of the pass list (joint_pin.c) */
