@@ -664,7 +664,10 @@ void rb_joints_solve_velocities(rb_world *world, double h, bool backwards)
         solve_rows(world, backwards);
         return;
     }
-    const int count = world->velocity_joint_count; /* 0 on the leg: its four pins are all its block's */
+    const int count = world->velocity_joint_count;
+    if (count == 0) {
+        return; /* the leg: its four pins are all its block's */
+    }
     /* One loop for both directions: the joint's visit is then inlined once. */
     const rb_velocity_visit *visit = backwards ? world->velocity_joints + count - 1 : world->velocity_joints;
     const int step = backwards ? -1 : 1;
