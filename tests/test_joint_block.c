@@ -264,3 +264,48 @@ Test(joint_block, two_limits_reached_in_a_loop_leave_one_out_and_release_it)
               "one limit released: ankle %g, toe %g N·m·s", ankle->lower_impulse, toe->upper_impulse);
     destroy_world_and_expect_no_leak(world);
 }
+
+/* The velocity passes one joint at a time (rb_joints_solve_velocities)
+ * leave a block's pins to their block: they visit the joints of a list
+ * made once a step without them. A step whose blocks are gone must make
+ * the list again and solve the pins: the last pin a forward pass visits,
+ * the toe's, then moves its anchors together up to the centripetal drift
+ * it asks for (its limits, 90° away, do not act). */
+Test(joint_block, the_joint_passes_leave_a_blocks_pins_to_it_and_take_them_back_without_it)
+{
+    limb l = make_limb(20000.0);
+    rb_world *world = l.world;
+    for (int i = 0; i < 3; ++i) {
+        cr_assert_eq(rb_body_set_linear_velocity(world, l.bodies[i], rb_v2(sin(1.7 * i + 0.3), cos(2.3 * i))), RB_OK);
+        cr_assert_eq(rb_body_set_angular_velocity(world, l.bodies[i], 1.0 - i), RB_OK);
+    }
+    double h = 1.0 / 600.0;
+    prepare(world, h);
+    cr_assert_eq(world->joint_blocks.count, 1);
+    rb_body_state before[3];
+    for (int i = 0; i < 3; ++i) {
+        before[i] = world->states[l.bodies[i].index];
+    }
+    rb_joints_solve_velocities(world, h, false);
+    for (int i = 0; i < 3; ++i) {
+        const rb_body_state *s = &world->states[l.bodies[i].index];
+        cr_expect(s->linear_velocity.x == before[i].linear_velocity.x &&
+                      s->linear_velocity.y == before[i].linear_velocity.y &&
+                      s->angular_velocity == before[i].angular_velocity,
+                  "body %d untouched by the joint passes: its pins are the block's", i);
+    }
+
+    rb_solver_settings settings = rb_world_solver_settings(world);
+    settings.tree_pins = false; /* no blocks: every pin is Gauss-Seidel's */
+    cr_assert_eq(rb_world_set_solver_settings(world, &settings), RB_OK, "%s", rb_last_error());
+    prepare(world, h);
+    cr_assert_eq(world->joint_blocks.count, 0);
+    rb_joints_solve_velocities(world, h, false);
+    rb_joint *toe = joint_of(world, l.hinges[3]);
+    rb_vec2 cdot = rb_joint_relative_velocity(toe, rb_joint_state_a(world, toe), rb_joint_state_b(world, toe));
+    expect_vec_near(cdot, toe->frame.point_drift, 1e-10, "the toe's anchor velocity after the pass");
+    cr_expect_gt(rb_length(cdot) +
+                     rb_length(rb_sub(world->states[l.bodies[2].index].linear_velocity, before[2].linear_velocity)),
+                 1e-3, "the pass moved the foot");
+    destroy_world_and_expect_no_leak(world);
+}

@@ -287,7 +287,7 @@ static rb_vec2 unit_along(rb_vec2 segment, double length)
     return length < 1e-300 ? rb_v2(0.0, 0.0) : rb_scale(1.0 / length, segment);
 }
 
-void rb_cables_prepare(rb_world *world)
+void rb_cables_prepare(rb_world *world, double h)
 {
     if (!world->cable_points_fresh) {
         rb_cables_locate(world);
@@ -341,6 +341,10 @@ void rb_cables_prepare(rb_world *world)
             cable->shares[cable->share_count++] = share;
         }
         cable->inverse_mass = k;
+        /* The tension law's terms that hold for the whole substep: the
+         * substep callback set the damping before (rb_cables_solve). */
+        cable->damping_rate = cable->damping * k;
+        cable->implicit_scale = 1.0 + h * cable->damping_rate;
     }
 }
 
@@ -388,8 +392,8 @@ void rb_cables_solve(rb_world *world, double h)
             cable->impulse = h * fmax(cable->base_tension + cable->damping * speed, 0.0);
             continue;
         }
-        double c_k = cable->damping * cable->inverse_mass;
-        double total = h * (cable->base_tension + cable->damping * speed + c_k * cable->impulse) / (1.0 + h * c_k);
+        double total = h * (cable->base_tension + cable->damping * speed + cable->damping_rate * cable->impulse) /
+                       cable->implicit_scale;
         total = total > 0.0 ? total : 0.0; /* fmax(total, 0), NaN and -0 included, without libm's call */
         apply(cable, world, total - cable->impulse);
         cable->impulse = total;

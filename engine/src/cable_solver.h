@@ -12,10 +12,11 @@
  * rb_cables_prepare then use these points instead of turning each
  * anchor into the world again. */
 void rb_cables_locate(rb_world *world);
-/* The path at the poses now: each body's share of a unit tension. Uses
- * the located points, and says they are no longer fresh: the positions
- * move next. */
-void rb_cables_prepare(rb_world *world);
+/* The path at the poses now: each body's share of a unit tension, and
+ * the tension law's terms fixed for a substep of h seconds. Uses the
+ * located points, and says they are no longer fresh: the positions move
+ * next. */
+void rb_cables_prepare(rb_world *world, double h);
 void rb_cables_warm_start(rb_world *world);
 /* One pass of the implicit tension law over the cables. */
 void rb_cables_solve(rb_world *world, double h);

@@ -20,8 +20,11 @@ static rb_status allocate_joint_slot(rb_world *world, int *index, const char *fu
         world->joint_free = world->joints[*index].next_free;
         return RB_OK;
     }
+    /* The velocity passes' list has room for every joint (make_velocity_joints). */
     if (rb_grow_array((void **)&world->joints, &world->joint_capacity, world->joint_slots + 1, sizeof *world->joints) !=
-        0) {
+            0 ||
+        rb_grow_array((void **)&world->velocity_joints, &world->velocity_joint_capacity, world->joint_slots + 1,
+                      sizeof *world->velocity_joints) != 0) {
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "%s: out of memory", function);
     }
     *index = world->joint_slots++;
@@ -586,40 +589,90 @@ static void solve_rows(rb_world *world, bool backwards)
     }
 }
 
-void rb_joints_solve_velocities(rb_world *world, double h, bool backwards)
+/* Whether the velocity passes leave the joint to its block: a pin and
+ * its limits are the block's, a spring or motor on it stays a joint's
+ * (rb_revolute_solve). */
+static bool block_solves(const rb_joint *joint)
+{
+    return joint->in_block && !joint->as.revolute.enable_spring && !joint->as.revolute.enable_motor;
+}
+
+/* The joints the velocity passes visit: the pass list less those their
+ * blocks solve, each with its row, made at the step's first velocity
+ * pass (once the trees, the rows and the order are found) and again when
+ * a block gives its joints back (rb_joint_blocks_factor). The leg's four
+ * limited pins are all its block's: the passes would visit them only for
+ * them to return. The list has room for every joint slot
+ * (allocate_joint_slot). */
+static void make_velocity_joints(rb_world *world)
 {
     const pass_list list = pass_joints(world);
-    if (all_rows(world, list)) {
+    world->velocity_joints_fresh = true;
+    world->velocity_rows_only = all_rows(world, list);
+    if (world->velocity_rows_only) {
+        world->velocity_joint_count = 0;
+        return; /* the rows are the list (solve_rows) */
+    }
+    int count = 0;
+    for (int k = 0; k < list.count; ++k) {
+        rb_joint *joint = &world->joints[list.joints[k]];
+        int row = world->pin_row_of[list.joints[k]];
+        if (!block_solves(joint)) {
+            world->velocity_joints[count++] =
+                (rb_velocity_visit){.joint = joint, .row = row >= 0 ? &world->pin_rows[row] : NULL};
+        }
+    }
+    world->velocity_joint_count = count;
+}
+
+/* One joint's velocity pass. */
+static void solve_joint(rb_world *world, rb_velocity_visit visit, double h)
+{
+    if (visit.row != NULL) {
+        rb_pin_solve(world, visit.row);
+        return;
+    }
+    rb_joint *joint = visit.joint;
+    switch (joint->type) {
+    case RB_JOINT_REVOLUTE:
+        rb_revolute_solve(world, joint, h);
+        break;
+    case RB_JOINT_WELD:
+        rb_weld_solve(world, joint, h);
+        break;
+    case RB_JOINT_DISTANCE:
+        rb_distance_solve(world, joint, h);
+        break;
+    case RB_JOINT_MOUSE:
+        rb_mouse_solve(world, joint, h);
+        break;
+    case RB_JOINT_PRISMATIC:
+        rb_prismatic_solve(world, joint, h);
+        break;
+    case RB_JOINT_PULLEY:
+        rb_pulley_solve(world, joint, h);
+        break;
+    }
+}
+
+void rb_joints_solve_velocities(rb_world *world, double h, bool backwards)
+{
+    if (!world->velocity_joints_fresh) {
+        make_velocity_joints(world);
+    }
+    if (world->velocity_rows_only) {
         solve_rows(world, backwards);
         return;
     }
-    for (int k = 0; k < list.count; ++k) {
-        int row = pass_row(world, list, k, backwards);
-        if (row >= 0) {
-            rb_pin_solve(world, &world->pin_rows[row]);
-            continue;
-        }
-        rb_joint *joint = &world->joints[pass_slot(list, k, backwards)];
-        switch (joint->type) {
-        case RB_JOINT_REVOLUTE:
-            rb_revolute_solve(world, joint, h);
-            break;
-        case RB_JOINT_WELD:
-            rb_weld_solve(world, joint, h);
-            break;
-        case RB_JOINT_DISTANCE:
-            rb_distance_solve(world, joint, h);
-            break;
-        case RB_JOINT_MOUSE:
-            rb_mouse_solve(world, joint, h);
-            break;
-        case RB_JOINT_PRISMATIC:
-            rb_prismatic_solve(world, joint, h);
-            break;
-        case RB_JOINT_PULLEY:
-            rb_pulley_solve(world, joint, h);
-            break;
-        }
+    const int count = world->velocity_joint_count;
+    if (count == 0) {
+        return; /* the leg: its four pins are all its block's */
+    }
+    /* One loop for both directions: the joint's visit is then inlined once. */
+    const rb_velocity_visit *visit = backwards ? world->velocity_joints + count - 1 : world->velocity_joints;
+    const int step = backwards ? -1 : 1;
+    for (int k = 0; k < count; ++k, visit += step) {
+        solve_joint(world, *visit, h);
     }
 }
 

@@ -105,6 +105,7 @@ void rb_joint_blocks_build(rb_world *world)
 {
     rb_joint_blocks *blocks = &world->joint_blocks;
     blocks->count = 0;
+    world->velocity_joints_fresh = false; /* the velocity passes' list follows the blocks (joint.c) */
     for (int k = 0; k < world->active_joint_count; ++k) {
         world->joints[world->active_joints[k]].in_block = false;
     }
@@ -400,7 +401,11 @@ void rb_joint_blocks_factor(rb_world *world, double h)
             release_row(world, block, &block->rows[--block->row_count]);
         }
         for (int j = 0; j < block->joint_count; ++j) {
-            world->joints[block->joints[j]].in_block = block->factored;
+            rb_joint *joint = &world->joints[block->joints[j]];
+            if (joint->in_block != block->factored) {
+                world->velocity_joints_fresh = false; /* the velocity passes take the joint back, or leave it */
+            }
+            joint->in_block = block->factored;
         }
     }
 }

@@ -230,11 +230,10 @@ static void solve_limits(rb_world *world, rb_joint *joint, rb_body_state *a, rb_
 
 void rb_revolute_solve(rb_world *world, rb_joint *joint, double h)
 {
-    /* A plain pin is solved in its row (joint_pin.c) or with its tree. */
+    /* A plain pin is solved in its row (joint_pin.c) or with its tree, a
+     * pin with limits alone in a block with its block (joint_block.h): the
+     * velocity passes do not visit them (rb_joints_solve_velocities). */
     rb_revolute_data *r = &joint->as.revolute;
-    if (joint->in_block && !r->enable_spring && !r->enable_motor) {
-        return; /* the pin and its limits are its block's (joint_block.h) */
-    }
     /* A revolute joint always links two bodies (rb_joint_state_a's NULL is
      * a mouse joint's), and its angle is theirs less the reference, as
      * rb_joint_relative_angle gives it. */

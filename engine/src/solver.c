@@ -133,7 +133,7 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
     profile->integrate_velocities += rb_world_clock(world) - t;
 
     t = rb_world_clock(world);
-    rb_cables_prepare(world);
+    rb_cables_prepare(world, h);
     rb_joints_prepare(world);
     if (substep == 0) {
         rb_joint_tree_build(world);

@@ -114,7 +114,7 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
         profile->integrate_velocities += rb_world_clock(world) - t;
 
         t = rb_world_clock(world);
-        rb_cables_prepare(world);
+        rb_cables_prepare(world, h);
         rb_joints_prepare(world);
         if (substep == 0) {
             rb_joint_tree_build(world);

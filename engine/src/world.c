@@ -150,6 +150,7 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->ended_pairs, &world->ended_pair_capacity, sizeof *world->ended_pairs);
     rb_free_array((void **)&world->pair_bucket, &world->pair_bucket_capacity, sizeof *world->pair_bucket);
     rb_free_array((void **)&world->active_joints, &world->active_joint_capacity, sizeof *world->active_joints);
+    rb_free_array((void **)&world->velocity_joints, &world->velocity_joint_capacity, sizeof *world->velocity_joints);
     rb_free_array((void **)&world->substep_omega, &world->substep_omega_capacity, sizeof *world->substep_omega);
     rb_free_array((void **)&world->point_blocks, &world->point_block_capacity, sizeof *world->point_blocks);
     rb_free_array((void **)&world->pin_rows, &world->pin_row_capacity, sizeof *world->pin_rows);

@@ -275,6 +275,14 @@ typedef struct rb_pin_row {
     rb_vec2 impulse; /* N·s, accumulated; the joint's point_impulse while the step runs */
 } rb_pin_row;
 
+/* A joint of the velocity passes, with what its visit needs found once
+ * a step: a plain pin's row, or NULL (joint.c). Both stay put while the
+ * step runs, as no joint is made or destroyed. */
+typedef struct rb_velocity_visit {
+    struct rb_joint *joint;
+    rb_pin_row *row;
+} rb_velocity_visit;
+
 /* A pin row's anchors in the body frames, which only the preparation
  * and the position passes read: kept beside the rows, not in them. */
 typedef struct rb_pin_anchors {
@@ -377,6 +385,8 @@ typedef struct rb_cable {
     int moving_count;
     rb_cable_share moving[RB_MAX_CABLE_POINTS]; /* copies of those shares, which the passes push in turn */
     double inverse_mass;                        /* 1/kg: how fast a unit impulse shortens the path */
+    double damping_rate;                        /* 1/s: damping · inverse_mass, c·k in the tension law */
+    double implicit_scale;                      /* 1 + h·c·k, the implicit law's denominator this substep */
 } rb_cable;
 
 /* Ordered by use: what every velocity pass reads (the type, the bodies,
@@ -616,6 +626,12 @@ struct rb_world {
     rb_point_block *point_blocks; /* per joint slot, for the pins with an angular row (joint_point.c) */
     int point_block_capacity;
     int active_joint_count, active_joint_capacity;
+    /* The joints the velocity passes visit: the pass list less the pins
+     * their blocks solve (joint.c); made again when it is not fresh. */
+    rb_velocity_visit *velocity_joints;
+    int velocity_joint_count, velocity_joint_capacity;
+    bool velocity_joints_fresh; /* cleared when the pass list or a joint's block may change */
+    bool velocity_rows_only;    /* every joint of the pass list a plain pin in its row: no list made */
     double *substep_omega; /* per body slot: rad/s at the substep's start, before any warm start (rb_joints_prepare) */
     int substep_omega_capacity;
     rb_pin_row *pin_rows; /* this step's plain pins, in the order of the pass list (joint_pin.c) */
