@@ -523,3 +523,39 @@ Test(broad_phase, a_swinging_chain_crossing_bands_allocates_nothing)
                  (unsigned long long)(rb_allocation_count() - allocations));
     destroy_world_and_expect_no_leak(world);
 }
+
+/* The sweep is kept sorted by insertion, which gives up past eight
+ * shifts an entry and heapsorts instead. Boxes made from right to left
+ * come into the sweep in the reverse of its order, n·(n - 1)/2 shifts for
+ * n of them (1,770 for 60, against 480 allowed), so the first full search
+ * heapsorts the whole sweep, swapping its 40-byte entries. Each entry
+ * must then hold its own shape's fat box, in strictly increasing
+ * (lower x, shape) order, and the pairs must be brute force's. */
+Test(broad_phase, a_sweep_made_in_reverse_is_heapsorted_whole)
+{
+    enum { BOXES = 60 };
+    rb_world *world = make_world(rb_v2(0.0, 0.0));
+    for (int k = 0; k < BOXES; ++k) {
+        /* 0.3 m apart, 0.4 m wide, alternately 0.1 m up and down: every
+         * box overlaps its neighbours. */
+        rb_body_id body = make_body(world, RB_BODY_DYNAMIC, rb_v2(0.3 * (BOXES - 1 - k), 0.1 * (k % 2)), 0.0);
+        add_box(world, body, 0.2, 0.2, 1.0);
+    }
+    step_and_check(world, 0);
+    cr_assert_eq(world->sweep_count, BOXES, "every box is in the sweep");
+    for (int k = 0; k < world->sweep_count; ++k) {
+        const struct rb_sweep_entry *entry = &world->sweep[k];
+        const rb_aabb fat = world->shapes[entry->shape].fat_aabb;
+        cr_assert(entry->box.lower.x == fat.lower.x && entry->box.lower.y == fat.lower.y &&
+                      entry->box.upper.x == fat.upper.x && entry->box.upper.y == fat.upper.y,
+                  "entry %d holds shape %d's fat box", k, entry->shape);
+        if (k > 0) {
+            const struct rb_sweep_entry *before = &world->sweep[k - 1];
+            cr_assert(before->box.lower.x < entry->box.lower.x ||
+                          (before->box.lower.x == entry->box.lower.x && before->shape < entry->shape),
+                      "entries %d and %d (shapes %d, %d) are out of order", k - 1, k, before->shape, entry->shape);
+        }
+    }
+    cr_assert_gt(world->contact_count, BOXES - 2, "neighbours overlap: %d pairs", world->contact_count);
+    destroy_world_and_expect_no_leak(world);
+}

@@ -30,7 +30,9 @@
  *     next.
  * Every list of pairs is put in (body, shape) order, so the contacts, and
  * every run, meet the pairs in the same order. */
+#include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "allocator.h"
 #include "broad_phase.h"
@@ -121,9 +123,22 @@ static rb_status push_pair(const rb_world *world, rb_pair **list, int *count, in
     return RB_OK;
 }
 
+/* Swaps two elements eight bytes at a time, then byte by byte: every
+ * element sorted here (a sweep entry, a refit, a pair) is a multiple of
+ * eight bytes, which a swap byte by byte took some 160 instructions to
+ * move, most of a heapsort's time. */
 static void swap_bytes(unsigned char *a, unsigned char *b, size_t size)
 {
-    for (size_t i = 0; i < size; ++i) {
+    size_t i = 0;
+    for (; i + sizeof(uint64_t) <= size; i += sizeof(uint64_t)) {
+        uint64_t s;
+        uint64_t t;
+        memcpy(&s, a + i, sizeof s);
+        memcpy(&t, b + i, sizeof t);
+        memcpy(a + i, &t, sizeof t);
+        memcpy(b + i, &s, sizeof s);
+    }
+    for (; i < size; ++i) {
         unsigned char t = a[i];
         a[i] = b[i];
         b[i] = t;

@@ -366,9 +366,6 @@ static bool is_active(const rb_world *world, const rb_joint *joint)
     return b_moves || (a->type == RB_BODY_DYNAMIC && a->awake);
 }
 
-/* The k-th joint of this step's active list. */
-static rb_joint *active_joint(rb_world *world, int k) { return &world->joints[world->active_joints[k]]; }
-
 /* What the step cannot change: while the world is locked no body changes
  * its mass, centre or type, falls asleep or wakes, and no joint its
  * settings. */
@@ -391,28 +388,25 @@ static void prepare_frame_for_step(rb_world *world, rb_joint *joint)
     }
 }
 
-static void prepare_for_step(rb_world *world)
+static void prepare_for_step(rb_world *world, rb_joint *joint)
 {
-    for (int k = 0; k < world->active_joint_count; ++k) {
-        rb_joint *joint = active_joint(world, k);
-        prepare_frame_for_step(world, joint);
-        switch (joint->type) {
-        case RB_JOINT_REVOLUTE:
-            rb_revolute_prepare_step(joint);
-            break;
-        case RB_JOINT_WELD:
-            rb_weld_prepare_step(joint);
-            break;
-        case RB_JOINT_DISTANCE:
-            rb_distance_prepare_step(joint);
-            break;
-        case RB_JOINT_PRISMATIC:
-            rb_prismatic_prepare_step(joint);
-            break;
-        case RB_JOINT_MOUSE:
-        case RB_JOINT_PULLEY:
-            break; /* nothing fixed beyond the frame */
-        }
+    prepare_frame_for_step(world, joint);
+    switch (joint->type) {
+    case RB_JOINT_REVOLUTE:
+        rb_revolute_prepare_step(joint);
+        break;
+    case RB_JOINT_WELD:
+        rb_weld_prepare_step(joint);
+        break;
+    case RB_JOINT_DISTANCE:
+        rb_distance_prepare_step(joint);
+        break;
+    case RB_JOINT_PRISMATIC:
+        rb_prismatic_prepare_step(joint);
+        break;
+    case RB_JOINT_MOUSE:
+    case RB_JOINT_PULLEY:
+        break; /* nothing fixed beyond the frame */
     }
 }
 
@@ -450,15 +444,17 @@ rb_status rb_joints_collect_active(rb_world *world)
         world->active_joint_count = 0;
         return rb_report_error(RB_ERR_OUT_OF_MEMORY, "rb_world_step: out of memory for the joint list");
     }
+    /* Each joint prepared as it is listed, while its bodies are at hand. */
     int count = 0;
     for (int i = 0; i < world->joint_slots; ++i) {
-        if (world->joints[i].in_use && is_active(world, &world->joints[i])) {
+        rb_joint *joint = &world->joints[i];
+        if (joint->in_use && is_active(world, joint)) {
             world->active_joints[count++] = i;
+            prepare_for_step(world, joint);
         }
     }
     world->active_joint_count = count;
     world->joints_ordered = false; /* until the soft step orders them (joint_order.c) */
-    prepare_for_step(world);
     return RB_OK;
 }
 

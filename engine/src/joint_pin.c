@@ -38,15 +38,17 @@ void rb_pins_gather(rb_world *world)
          * (rb_joints_collect_active); each substep's warm start prepares
          * the rest (warm_start_row). */
         const rb_joint_frame *f = &joint->frame;
-        world->pin_rows[count] = (rb_pin_row){
-            .body_a = joint->body_a,
-            .body_b = joint->body_b,
-            .inv_mass_a = f->inv_mass_a,
-            .inv_inertia_a = f->inv_inertia_a,
-            .inv_mass_b = f->inv_mass_b,
-            .inv_inertia_b = f->inv_inertia_b,
-            .impulse = joint->as.revolute.point_impulse,
-        };
+        /* Field by field: a whole row written as one compound literal
+         * zeroes its 128 bytes first (a `rep stos` of 16 words a pin), for
+         * fields the warm start writes before any pass reads them. */
+        rb_pin_row *row = &world->pin_rows[count];
+        row->body_a = joint->body_a;
+        row->body_b = joint->body_b;
+        row->inv_mass_a = f->inv_mass_a;
+        row->inv_inertia_a = f->inv_inertia_a;
+        row->inv_mass_b = f->inv_mass_b;
+        row->inv_inertia_b = f->inv_inertia_b;
+        row->impulse = joint->as.revolute.point_impulse;
         world->pin_anchors[count] = (rb_pin_anchors){f->local_a, f->local_b};
         world->pin_row_of[slot] = count++;
     }
