@@ -95,6 +95,17 @@ static void make_grid(rb_world *world, rb_body_id bodies[SIDE][SIDE], rb_joint_i
     }
 }
 
+/* A world under gravity G whose bodies never sleep, solved by `solver`. */
+static rb_world *make_awake_world(rb_solver_type solver)
+{
+    rb_world *world = make_world(rb_v2(0.0, -G));
+    rb_world_enable_sleep(world, false);
+    rb_solver_settings settings = rb_world_solver_settings(world);
+    settings.type = solver;
+    cr_assert_eq(rb_world_set_solver_settings(world, &settings), RB_OK, "%s", rb_last_error());
+    return world;
+}
+
 /* Whether two worlds' grids end in the same bits: positions, velocities
  * and angles; the number of bodies that differ. */
 static int count_different(rb_world *worlds[2], rb_body_id grids[2][SIDE][SIDE])
@@ -139,11 +150,7 @@ static void expect_same_grid(rb_solver_type solver)
     rb_world *worlds[2];
     rb_body_id grids[2][SIDE][SIDE];
     for (int w = 0; w < 2; ++w) {
-        worlds[w] = make_world(rb_v2(0.0, -G));
-        rb_world_enable_sleep(worlds[w], false);
-        rb_solver_settings settings = rb_world_solver_settings(worlds[w]);
-        settings.type = solver;
-        cr_assert_eq(rb_world_set_solver_settings(worlds[w], &settings), RB_OK, "%s", rb_last_error());
+        worlds[w] = make_awake_world(solver);
         if (w == 1) {
             rb_body_id a = make_body(worlds[w], RB_BODY_DYNAMIC, rb_v2(-1000.0, 0.0), 0.0);
             rb_body_id b = make_body(worlds[w], RB_BODY_DYNAMIC, rb_v2(-1001.0, 0.0), 0.0);
@@ -181,11 +188,7 @@ static void expect_rows_as_joints(rb_solver_type solver)
     rb_body_id grids[2][SIDE][SIDE];
     rb_joint_id pins[2][PINS];
     for (int w = 0; w < 2; ++w) {
-        worlds[w] = make_world(rb_v2(0.0, -G));
-        rb_world_enable_sleep(worlds[w], false);
-        rb_solver_settings settings = rb_world_solver_settings(worlds[w]);
-        settings.type = solver;
-        cr_assert_eq(rb_world_set_solver_settings(worlds[w], &settings), RB_OK, "%s", rb_last_error());
+        worlds[w] = make_awake_world(solver);
         make_grid(worlds[w], grids[w], pins[w]);
     }
     for (int k = 0; k < PINS; ++k) {

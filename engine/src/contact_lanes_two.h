@@ -25,11 +25,15 @@ static inline lanes mul(lanes a, lanes b) { return _mm_mul_pd(a, b); }
 
 /* Both contacts' normals as their faces' bodies now turn them (the
  * reference's turned_normal): n = q·n_local, q the rotation of the body
- * whose face the normal is. Neither contact's normal may come from the
+ * whose face the normal is, of a0 or b0 for the first contact and of a1
+ * or b1 for the second. Neither contact's normal may come from the
  * centres. */
 static inline void turned_normals_of_two(const rb_contact_constraint *c0, const rb_contact_constraint *c1,
-                                         const rb_body_state *turns0, const rb_body_state *turns1, lanes *nx, lanes *ny)
+                                         const rb_body_state *a0, const rb_body_state *b0, const rb_body_state *a1,
+                                         const rb_body_state *b1, lanes *nx, lanes *ny)
 {
+    const rb_body_state *turns0 = c0->normal_follows == RB_NORMAL_TURNS_WITH_A ? a0 : b0;
+    const rb_body_state *turns1 = c1->normal_follows == RB_NORMAL_TURNS_WITH_A ? a1 : b1;
     lanes qc = pair(turns0->rotation.c, turns1->rotation.c);
     lanes qs = pair(turns0->rotation.s, turns1->rotation.s);
     lanes lx = pair(c0->local_normal.x, c1->local_normal.x);

@@ -87,11 +87,8 @@ static int resting_of_two(const rb_contact_constraint *c0, const rb_contact_cons
     const rb_body_state *b0 = &states[c0->body_b];
     const rb_body_state *a1 = &states[c1->body_a];
     const rb_body_state *b1 = &states[c1->body_b];
-    /* the normal turned with the body whose face it is (turned_normal) */
-    const rb_body_state *turns0 = c0->normal_follows == RB_NORMAL_TURNS_WITH_A ? a0 : b0;
-    const rb_body_state *turns1 = c1->normal_follows == RB_NORMAL_TURNS_WITH_A ? a1 : b1;
     lanes nx, ny;
-    turned_normals_of_two(c0, c1, turns0, turns1, &nx, &ny);
+    turned_normals_of_two(c0, c1, a0, b0, a1, b1, &nx, &ny);
     pose_lanes a = poses(a0, a1);
     pose_lanes b = poses(b0, b1);
     lanes s1 = separation(c0, c1, 0, &a, &b, nx, ny);

@@ -128,10 +128,8 @@ static void prepare_two(rb_contact_constraint *c0, rb_contact_constraint *c1, co
     const rb_body_state *b0 = &states[c0->body_b];
     const rb_body_state *a1 = &states[c1->body_a];
     const rb_body_state *b1 = &states[c1->body_b];
-    const rb_body_state *turns0 = c0->normal_follows == RB_NORMAL_TURNS_WITH_A ? a0 : b0;
-    const rb_body_state *turns1 = c1->normal_follows == RB_NORMAL_TURNS_WITH_A ? a1 : b1;
     lanes nx, ny;
-    turned_normals_of_two(c0, c1, turns0, turns1, &nx, &ny);
+    turned_normals_of_two(c0, c1, a0, b0, a1, b1, &nx, &ny);
     _mm_storel_pd(&c0->normal.x, nx);
     _mm_storeh_pd(&c1->normal.x, nx);
     _mm_storel_pd(&c0->normal.y, ny);
