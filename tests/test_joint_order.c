@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* The order in which the soft step visits the joints (engine/src/joint_order.c):
- * from the free ends to the supports, colour by colour within a depth.
+/* The order in which the soft step visits the joints, and NGS and
+ * Baumgarte the plain pins (engine/src/joint_order.c): from the free ends
+ * to the supports, colour by colour within a depth.
  *
  * Three truths. A body cut free falls freely, whatever order the passes
  * kept from the steps before. The physics of a chain does not depend on
@@ -37,6 +38,22 @@ static rb_world *make_v3_budget_world(void)
     cr_assert_eq(rb_world_create(&def, &world), RB_OK, "rb_world_create: %s", rb_last_error());
     return world;
 }
+
+/* The defaults' world (NGS), with the pins left to the passes: the trees
+ * (joint_tree.h) would solve a chain of plain pins whole, in no order. */
+static rb_world *make_ngs_world_without_trees(void)
+{
+    rb_world_def def = rb_default_world_def();
+    def.gravity = rb_v2(0.0, PEER_GRAVITY);
+    def.enable_sleep = false;
+    def.solver.tree_pins = false;
+    rb_world *world = NULL;
+    cr_assert_eq(rb_world_create(&def, &world), RB_OK, "rb_world_create: %s", rb_last_error());
+    cr_assert_eq(def.solver.type, RB_SOLVER_NGS, "the defaults' solver is NGS");
+    return world;
+}
+
+typedef rb_world *(*world_maker)(void);
 
 #define CHAIN_LINKS 20
 #define LINK_HALF_LENGTH 0.25 /* m */
@@ -94,9 +111,9 @@ static rb_vec2 lower_centre(const rb_world *world, const rb_body_id links[CHAIN_
     return rb_scale(1.0 / (CHAIN_LINKS - CUT_ABOVE), sum);
 }
 
-Test(joint_order, a_chain_cut_between_steps_comes_apart)
+static void expect_a_cut_chain_to_come_apart(world_maker make)
 {
-    rb_world *world = make_v3_budget_world();
+    rb_world *world = make();
     rb_body_id links[CHAIN_LINKS];
     rb_joint_id joints[CHAIN_LINKS];
     make_chain(world, 1.0, false, links, joints);
@@ -110,8 +127,9 @@ Test(joint_order, a_chain_cut_between_steps_comes_apart)
     for (int step = 0; step < steps; ++step) {
         cr_assert_eq(rb_world_step(world, TEST_DT), RB_OK, "%s", rb_last_error());
     }
-    const double h = TEST_DT / V3_SUBSTEPS;
-    const double n = (double)steps * V3_SUBSTEPS;
+    const int substeps = rb_world_solver_settings(world).substeps;
+    const double h = TEST_DT / substeps;
+    const double n = (double)steps * substeps;
     const double expected_y = start.y + start_velocity.y * n * h + PEER_GRAVITY * h * h * n * (n + 1.0) / 2.0;
     const double expected_x = start.x + start_velocity.x * n * h;
     const rb_vec2 end = lower_centre(world, links, false);
@@ -121,7 +139,14 @@ Test(joint_order, a_chain_cut_between_steps_comes_apart)
     destroy_world_and_expect_no_leak(world);
 }
 
-Test(joint_order, a_chain_moves_the_same_whichever_way_its_joints_were_made)
+Test(joint_order, a_chain_cut_between_steps_comes_apart) { expect_a_cut_chain_to_come_apart(make_v3_budget_world); }
+
+Test(joint_order, a_chain_of_plain_pins_cut_between_steps_comes_apart_under_ngs)
+{
+    expect_a_cut_chain_to_come_apart(make_ngs_world_without_trees);
+}
+
+static void expect_a_chain_to_move_the_same_whichever_way_made(world_maker make)
 {
     const double heavies[] = {1.0, 50.0}; /* the last link as dense as the others, and 50 times */
     for (size_t h = 0; h < sizeof heavies / sizeof heavies[0]; ++h) {
@@ -129,7 +154,7 @@ Test(joint_order, a_chain_moves_the_same_whichever_way_its_joints_were_made)
         rb_body_id links[2][CHAIN_LINKS];
         rb_joint_id joints[2][CHAIN_LINKS];
         for (int w = 0; w < 2; ++w) {
-            worlds[w] = make_v3_budget_world();
+            worlds[w] = make();
             make_chain(worlds[w], heavies[h], w == 1, links[w], joints[w]);
         }
         for (int step = 0; step < 120; ++step) {
@@ -148,6 +173,16 @@ Test(joint_order, a_chain_moves_the_same_whichever_way_its_joints_were_made)
         rb_world_destroy(worlds[0]);
         destroy_world_and_expect_no_leak(worlds[1]); /* the last world: nothing left */
     }
+}
+
+Test(joint_order, a_chain_moves_the_same_whichever_way_its_joints_were_made)
+{
+    expect_a_chain_to_move_the_same_whichever_way_made(make_v3_budget_world);
+}
+
+Test(joint_order, a_chain_of_plain_pins_moves_the_same_whichever_way_made_under_ngs)
+{
+    expect_a_chain_to_move_the_same_whichever_way_made(make_ngs_world_without_trees);
 }
 
 #define GRID 30

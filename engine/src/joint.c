@@ -454,7 +454,7 @@ rb_status rb_joints_collect_active(rb_world *world)
         }
     }
     world->active_joint_count = count;
-    world->joints_ordered = false; /* until the soft step orders them (joint_order.c) */
+    world->joints_ordered = false; /* until the solver orders them (joint_order.c) */
     return RB_OK;
 }
 

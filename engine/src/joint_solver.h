@@ -33,15 +33,16 @@ rb_status rb_joints_collect_active(rb_world *world);
 
 /* The joints the passes below visit this step, in the order they visit
  * them: the active ones less the plain pins the trees solve whole
- * (joint_tree.h), in creation order, or in the soft step's order once
- * rb_joints_order_for_soft_step has run. */
+ * (joint_tree.h), in creation order, or in the order of
+ * rb_joints_order has run. */
 const int *rb_joint_pass_list(const rb_world *world, int *count);
-/* The soft step's order (joint_order.c): from now until the next
- * rb_joints_collect_active, the passes visit the joints from the deepest
- * (the most joints away from a body they cannot move) to those at the
- * supports, colour by colour within a depth. After the trees are found,
- * before rb_pins_gather. */
-void rb_joints_order_for_soft_step(rb_world *world);
+/* The passes' order (joint_order.c): from now until the next
+ * rb_joints_collect_active, the passes visit the joints `scope` names
+ * from the deepest (the most joints away from a body they cannot move)
+ * to those at the supports, colour by colour within a depth; with
+ * RB_ORDER_PLAIN_PINS the other joints come first, in the order they
+ * were made. After the trees are found, before rb_pins_gather. */
+void rb_joints_order(rb_world *world, rb_joint_order_scope scope);
 
 /* At the start of each substep, before any warm start: records every
  * body's angular velocity, from which the pins' drift is computed. */

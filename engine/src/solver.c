@@ -137,7 +137,8 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
     rb_joints_prepare(world);
     if (substep == 0) {
         rb_joint_tree_build(world);
-        rb_pins_gather(world); /* the plain pins the trees leave, into their rows */
+        rb_joints_order(world, RB_ORDER_PLAIN_PINS);
+        rb_pins_gather(world); /* the plain pins the trees leave, into their rows, in that order */
     }
     rb_contact_solver_prepare_substep(world, h,
                                       (rb_substep_rows){.first_substep = substep == 0,

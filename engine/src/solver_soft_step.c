@@ -118,7 +118,7 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
         rb_joints_prepare(world);
         if (substep == 0) {
             rb_joint_tree_build(world);
-            rb_joints_order_for_soft_step(world);
+            rb_joints_order(world, RB_ORDER_EVERY_JOINT);
             rb_pins_gather(world); /* the plain pins the trees leave, into their rows, in that order */
         }
         rb_cables_warm_start(world);

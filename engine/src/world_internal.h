@@ -178,6 +178,12 @@ typedef struct rb_event_arrays {
     int pending_sensor_end_count, pending_sensor_end_capacity;
 } rb_event_arrays;
 
+/* Which joints the passes visit by depth and colour (joint_order.c). */
+typedef enum rb_joint_order_scope {
+    RB_ORDER_EVERY_JOINT, /* the soft step */
+    RB_ORDER_PLAIN_PINS,  /* NGS and Baumgarte: the other joints first, as they were made */
+} rb_joint_order_scope;
+
 typedef struct rb_contact_constraint rb_contact_constraint;
 typedef struct rb_contact_block rb_contact_block;           /* contact_solver.h */
 typedef struct rb_contact_block_tail rb_contact_block_tail; /* contact_solver.h */
@@ -641,7 +647,7 @@ struct rb_world {
     int *pin_row_of; /* per joint slot: its row in pin_rows this step, or -1 */
     int pin_row_of_capacity;
     bool pin_rows_live; /* the rows, not the joints, hold the pins' impulses (within a step) */
-    /* The soft step's pass list in its order, while joints_ordered
+    /* The pass list in its order, while joints_ordered
      * (joint_order.c), and the scratch that finds it: the list in colour
      * order, a key per listed joint, each body's depth from the supports,
      * the search's queue (body_slots + 1) and the bodies' links. */
@@ -663,8 +669,9 @@ struct rb_world {
     int body_edge_capacity;
     rb_colouring joint_colouring;
     bool joints_ordered;
-    bool joint_order_kept;      /* ordered_joints holds the order for the trees' last search... */
-    unsigned joint_order_finds; /* ...this one (rb_joint_tree.finds) */
+    bool joint_order_kept;                  /* ordered_joints holds the order for the trees' last search... */
+    unsigned joint_order_finds;             /* ...this one (rb_joint_tree.finds)... */
+    rb_joint_order_scope joint_order_scope; /* ...and ordering this */
     int joint_slots;
     int joint_free;
     int joint_count;
