@@ -44,8 +44,11 @@ const int *rb_joint_pass_list(const rb_world *world, int *count);
  * were made. After the trees are found, before rb_pins_gather. */
 void rb_joints_order(rb_world *world, rb_joint_order_scope scope);
 
-/* At the start of each substep, before any warm start: records every
- * body's angular velocity, from which the pins' drift is computed. */
+/* At the step's first substep, after its velocities are integrated and
+ * before any warm start: records every body's angular velocity, from
+ * which the pins' drift is computed. In later substeps the integration
+ * records the moving bodies' (rb_solver_integrate_velocities); the
+ * others' cannot change within a step. */
 void rb_joints_prepare(rb_world *world);
 /* Visits each joint once a substep of length h, in the pass list's order
  * (rb_joint_pass_list) or (backwards) the reverse: prepares what moves with the bodies (the

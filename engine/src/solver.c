@@ -72,11 +72,21 @@ void rb_solver_integrate_velocities(rb_world *world, double h)
     if (world->moving_bodies_stale) {
         list_moving_bodies(world);
     }
+    /* The substep's starting angular velocities, recorded while each body
+     * is at hand: a pass of their own over every body, every substep,
+     * cost the joint grid 3 % of its cache misses. The bodies that do not
+     * move keep theirs from the step's first substep (rb_joints_prepare). */
+    double *omega = world->substep_omega;
     for (int k = 0; k < world->moving_dynamic_count; ++k) {
         const rb_moving_body *body = &world->moving_bodies[k];
         rb_body_state *state = &world->states[body->index];
         state->linear_velocity = rb_mul_add(state->linear_velocity, h, body->acceleration);
         state->angular_velocity += h * body->inv_inertia * body->torque;
+        omega[body->index] = state->angular_velocity;
+    }
+    for (int k = world->moving_dynamic_count; k < world->moving_body_count; ++k) { /* kinematic */
+        int index = world->moving_bodies[k].index;
+        omega[index] = world->states[index].angular_velocity;
     }
 }
 
@@ -134,8 +144,8 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
 
     t = rb_world_clock(world);
     rb_cables_prepare(world, h);
-    rb_joints_prepare(world);
     if (substep == 0) {
+        rb_joints_prepare(world);
         rb_joint_tree_build(world);
         rb_joints_order(world, RB_ORDER_PLAIN_PINS);
         rb_pins_gather(world); /* the plain pins the trees leave, into their rows, in that order */

@@ -34,7 +34,9 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt);
 
 /* The user's substep callback, if any, with the world opened to cable laws. */
 void rb_solver_call_substep_callback(rb_world *world, int substep, double h);
-/* v += h·(g·gravity_scale + F/m), ω += h·τ/I for the awake dynamic bodies. */
+/* v += h·(g·gravity_scale + F/m), ω += h·τ/I for the awake dynamic bodies;
+ * records each moving body's ω as the substep's starting one, which the
+ * pins' drift reads (rb_point_drift). */
 void rb_solver_integrate_velocities(rb_world *world, double h);
 /* v /= 1 + h·c, then x += h·v, θ += h·ω (semi-implicit Euler). */
 void rb_solver_damp_and_integrate_positions(rb_world *world, double h);

@@ -115,8 +115,8 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
 
         t = rb_world_clock(world);
         rb_cables_prepare(world, h);
-        rb_joints_prepare(world);
         if (substep == 0) {
+            rb_joints_prepare(world);
             rb_joint_tree_build(world);
             rb_joints_order(world, RB_ORDER_EVERY_JOINT);
             rb_pins_gather(world); /* the plain pins the trees leave, into their rows, in that order */

@@ -395,16 +395,19 @@ typedef struct rb_cable {
     double implicit_scale;                      /* 1 + h·c·k, the implicit law's denominator this substep */
 } rb_cable;
 
-/* Ordered by use: what every velocity pass reads (the type, the bodies,
- * the frame's first fields, the type's first fields) in the first lines,
+/* Ordered by use: what every velocity pass and every walk over the slots
+ * reads (the type, whether in use, the bodies, the frame's first fields,
+ * the type's first fields) in the first lines,
  * the bookkeeping of the pool and the bodies' lists last. */
 typedef struct rb_joint {
     rb_joint_type type;
+    bool in_use;    /* read first by every walk over the slots (the islands, the statistics) */
     bool in_tree;   /* this step, a pin solved with its tree (joint_tree.h) */
     bool in_block;  /* this substep, a pin and its limits solved with its block (joint_block.h) */
     bool plain_pin; /* this step, a revolute joint with no limit, motor or spring: the point constraint alone */
     int body_a;     /* -1 for a mouse joint */
     int body_b;
+    uint32_t generation; /* of the last object made in the slot; RB_RETIRED_GENERATION retires it */
     rb_joint_frame frame;
     union {
         rb_revolute_data revolute;
@@ -417,8 +420,6 @@ typedef struct rb_joint {
     rb_vec2 local_anchor_a, local_anchor_b; /* m, from each body's origin, in its frame */
     int next_on_a, next_on_b;               /* the next joint in body A's and body B's lists */
     int next_free;
-    uint32_t generation; /* of the last object made in the slot; RB_RETIRED_GENERATION retires it */
-    bool in_use;
     bool collide_connected;
     void *user_data;
 } rb_joint;
