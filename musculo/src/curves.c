@@ -227,21 +227,18 @@ static void end_lookup(mu_curve_kind kind, mu_curve_hint *hint, const gsl_interp
     }
 }
 
-/* The interval [x_i, x_i+1) that holds x, for x_0 <= x < x_last, found
- * from the hint's interval `start` when x is still in it (a muscle moves
- * little between two look-ups), else by bisection on the side of it where
- * x lies, keeping x_lo <= x < x_hi. The knots rise strictly, so the
- * interval is unique: it is the one GSL's accelerated search finds, and a
- * hint serves both. */
-static size_t find_interval(const mu_curve_table *table, size_t start, double x)
+/* The interval [x_i, x_i+1) that holds x, for x_0 <= x < x_last, by
+ * bisection on the side of the hint's interval `start` where x lies,
+ * keeping x_lo <= x < x_hi. The knots rise strictly, so the interval is
+ * unique: it is the one GSL's accelerated search finds, and a hint serves
+ * both. */
+static size_t search_interval(const mu_curve_table *table, size_t start, double x)
 {
     size_t lo = 0;
     size_t hi = table->count - 1;
     if (start + 1 < table->count) {
         if (x < table->x[start]) {
             hi = start;
-        } else if (x < table->x[start + 1]) {
-            return start;
         } else {
             lo = start;
         }
@@ -257,11 +254,24 @@ static size_t find_interval(const mu_curve_table *table, size_t start, double x)
     return lo;
 }
 
+/* The interval that holds x (x_0 <= x < x_last): the hint's interval
+ * `start` when x is still in it, as it mostly is (a muscle moves little
+ * between two look-ups), at the cost of two comparisons; else the
+ * search. */
+static inline __attribute__((always_inline)) size_t find_interval(const mu_curve_table *table, size_t start, double x)
+{
+    if (start + 1 < table->count && x >= table->x[start] && x < table->x[start + 1]) {
+        return start;
+    }
+    return search_interval(table, start, x);
+}
+
 /* The straight line between the knots around x (x_0 <= x < x_last), and
  * its slope, in the hint's interval, which it updates. The value is
  * y_i + (x - x_i)/(x_i+1 - x_i)·(y_i+1 - y_i), evaluated in that order,
  * as GSL's linear interpolant does, so both give the same bits. */
-static size_t linear_interval(const mu_curves *curves, mu_curve_kind kind, mu_curve_hint *hint, double x)
+static inline __attribute__((always_inline)) size_t linear_interval(const mu_curves *curves, mu_curve_kind kind,
+                                                                    mu_curve_hint *hint, double x)
 {
     const size_t interval = find_interval(&curves->tables[kind], hint != NULL ? hint->interval[kind] : 0, x);
     if (hint != NULL) {
@@ -270,7 +280,8 @@ static size_t linear_interval(const mu_curves *curves, mu_curve_kind kind, mu_cu
     return interval;
 }
 
-static double linear_value(const mu_curves *curves, mu_curve_kind kind, mu_curve_hint *hint, double x)
+static inline __attribute__((always_inline)) double linear_value(const mu_curves *curves, mu_curve_kind kind,
+                                                                 mu_curve_hint *hint, double x)
 {
     const mu_curve_table *table = &curves->tables[kind];
     const size_t i = linear_interval(curves, kind, hint, x);
@@ -293,7 +304,8 @@ static double linear_slope(const mu_curves *curves, mu_curve_kind kind, mu_curve
  * ends no longer develop active force (Gordon, Huxley and Julian, "The
  * variation in isometric tension with sarcomere length in vertebrate
  * muscle fibres", 1966). */
-static double tabulated_value(const mu_curves *curves, mu_curve_kind kind, mu_curve_hint *hint, double x)
+static inline __attribute__((always_inline)) double tabulated_value(const mu_curves *curves, mu_curve_kind kind,
+                                                                    mu_curve_hint *hint, double x)
 {
     const mu_curve_table *table = &curves->tables[kind];
     const size_t last = table->count - 1;
@@ -395,7 +407,8 @@ static bool refuse_lookup(const char *function, const mu_curves *curves, const c
     return false;
 }
 
-static double active_length(const mu_curves *curves, mu_curve_hint *hint, double normalized_length)
+static inline __attribute__((always_inline)) double active_length(const mu_curves *curves, mu_curve_hint *hint,
+                                                                  double normalized_length)
 {
     if (curves->tabulated) {
         return tabulated_value(curves, MU_CURVE_ACTIVE_LENGTH, hint, normalized_length);
@@ -406,7 +419,8 @@ static double active_length(const mu_curves *curves, mu_curve_hint *hint, double
     return exp(-z * z);
 }
 
-static double passive_length(const mu_curves *curves, mu_curve_hint *hint, double normalized_length)
+static inline __attribute__((always_inline)) double passive_length(const mu_curves *curves, mu_curve_hint *hint,
+                                                                   double normalized_length)
 {
     if (curves->tabulated) {
         return tabulated_value(curves, MU_CURVE_PASSIVE_LENGTH, hint, normalized_length);
@@ -461,8 +475,8 @@ static double velocity_slope(const mu_curves *curves, mu_curve_hint *hint, doubl
  * them. A straight-line table finds the interval once: the slope inside
  * the table is the line's between the knots the value used, and outside
  * it (or at its ends) 0, while the value is clamped to the end's. */
-static double velocity_and_slope(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity,
-                                 double *slope)
+static inline __attribute__((always_inline)) double velocity_and_slope(const mu_curves *curves, mu_curve_hint *hint,
+                                                                       double normalized_velocity, double *slope)
 {
     const mu_curve_table *table = &curves->tables[MU_CURVE_VELOCITY];
     const double x = normalized_velocity;
