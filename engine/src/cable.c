@@ -85,7 +85,9 @@ rb_status rb_cable_create(rb_world *world, const rb_cable_def *def, rb_cable_id 
     return RB_OK;
 }
 
-static rb_status find_cable(const rb_world *world, rb_cable_id id, const char *function, int *index)
+/* Why an id names no cable of the world, reported in the name of
+ * `function`. */
+static rb_status report_bad_cable(const rb_world *world, rb_cable_id id, const char *function)
 {
     if (world == NULL) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: world is NULL", function);
@@ -93,8 +95,17 @@ static rb_status find_cable(const rb_world *world, rb_cable_id id, const char *f
     if (id.generation == 0 || id.world != world->serial || id.index < 0 || id.index >= world->cable_slots) {
         return rb_report_error(RB_ERR_FOREIGN_ID, "%s: the cable id is null or belongs to another world", function);
     }
-    if (!world->cables[id.index].in_use || world->cables[id.index].generation != id.generation) {
-        return rb_report_error(RB_ERR_STALE_ID, "%s: the cable id refers to a destroyed cable", function);
+    return rb_report_error(RB_ERR_STALE_ID, "%s: the cable id refers to a destroyed cable", function);
+}
+
+/* The slot of a live cable of the world; a muscle asks twice a substep,
+ * so the test is inline and the report is not. The generation of a slot
+ * in use is never 0, so a matching one also refuses the null id. */
+static inline rb_status find_cable(const rb_world *world, rb_cable_id id, const char *function, int *index)
+{
+    if (world == NULL || id.world != world->serial || id.index < 0 || id.index >= world->cable_slots ||
+        !world->cables[id.index].in_use || world->cables[id.index].generation != id.generation) {
+        return report_bad_cable(world, id, function);
     }
     *index = id.index;
     return RB_OK;
@@ -172,26 +183,38 @@ static rb_vec2 point_velocity(const rb_world *world, int body, rb_vec2 point)
 
 /* Length and lengthening speed in one pass over the path: L is the sum
  * of the segments, L' = Σ u·(v_{i+1} - v_i) with each point's velocity
- * v + ω × r from its body. */
+ * v + ω × r from its body. In the substep callback nothing moves, so the
+ * points and segments rb_cables_locate found serve; elsewhere they are
+ * found here, the same way. */
 static void measure(const rb_world *world, const rb_cable *cable, double *length, double *speed)
 {
-    *length = 0.0;
-    *speed = 0.0;
-    bool located = world->in_substep_callback && world->cable_points_fresh; /* nothing moves in it */
-    rb_vec2 p = located ? cable->points[0] : world_point(world, cable, 0);
-    rb_vec2 vp = point_velocity(world, cable->bodies[0], p);
-    for (int i = 0; i + 1 < cable->point_count; ++i) {
-        rb_vec2 q = located ? cable->points[i + 1] : world_point(world, cable, i + 1);
-        rb_vec2 vq = point_velocity(world, cable->bodies[i + 1], q);
-        rb_vec2 segment = rb_sub(q, p);
-        double segment_length = located ? cable->segment_lengths[i] : rb_length(segment);
-        *length += segment_length;
-        if (segment_length > 0.0) {
-            *speed += rb_dot(segment, rb_sub(vq, vp)) / segment_length;
+    rb_vec2 found_points[RB_MAX_CABLE_POINTS];
+    double found_lengths[RB_MAX_CABLE_POINTS - 1];
+    const rb_vec2 *points = cable->points;
+    const double *segment_lengths = cable->segment_lengths;
+    if (!(world->in_substep_callback && world->cable_points_fresh)) {
+        for (int i = 0; i < cable->point_count; ++i) {
+            found_points[i] = world_point(world, cable, i);
         }
-        p = q;
+        for (int i = 0; i + 1 < cable->point_count; ++i) {
+            found_lengths[i] = rb_length(rb_sub(found_points[i + 1], found_points[i]));
+        }
+        points = found_points;
+        segment_lengths = found_lengths;
+    }
+    double total = 0.0;
+    double rate = 0.0;
+    rb_vec2 vp = point_velocity(world, cable->bodies[0], points[0]);
+    for (int i = 0; i + 1 < cable->point_count; ++i) {
+        rb_vec2 vq = point_velocity(world, cable->bodies[i + 1], points[i + 1]);
+        total += segment_lengths[i];
+        if (segment_lengths[i] > 0.0) {
+            rate += rb_dot(rb_sub(points[i + 1], points[i]), rb_sub(vq, vp)) / segment_lengths[i];
+        }
         vp = vq; /* each point's velocity is made once */
     }
+    *length = total;
+    *speed = rate;
 }
 
 rb_status rb_cable_state(const rb_world *world, rb_cable_id id, double *length, double *lengthening_speed)
