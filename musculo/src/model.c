@@ -551,7 +551,7 @@ static double mechanical_energy(const mu_model *model)
     double energy = 0.0;
     for (int b = 0; b < model->body_count; ++b) {
         const rb_mass_data mass = rb_body_mass_data(model->world, model->bodies[b]);
-        if (rb_body_mass(model->world, model->bodies[b]) == 0.0) {
+        if (mass.mass == 0.0) {
             continue; /* static: neither moves nor falls */
         }
         const rb_vec2 v = rb_body_linear_velocity(model->world, model->bodies[b]);
