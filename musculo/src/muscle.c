@@ -430,12 +430,9 @@ typedef struct path_reading {
 
 static rb_status read_path(mu_muscle *muscle, const rb_world *world, path_reading *reading)
 {
-    *reading = (path_reading){0};
     rb_cable_reading cable;
     rb_status status = rb_cable_read(world, muscle->cable, &cable);
-    reading->path = cable.length;
-    reading->speed = cable.lengthening_speed;
-    reading->tension = cable.tension;
+    *reading = (path_reading){.path = cable.length, .speed = cable.lengthening_speed, .tension = cable.tension};
     if (status == RB_OK && !muscle->compliant) {
         reading->fibre_length = rigid_fibre_length(muscle, reading->path);
         reading->cosine = pennation_cosine(reading->fibre_length, muscle->width);
@@ -550,7 +547,7 @@ static void measure_at(mu_muscle *muscle, const path_reading *reading)
     record_measure(muscle, path, reading->fibre_length, speed * reading->cosine, active, passive, total);
 }
 
-static rb_status check_prepare(const mu_muscle *muscle, const rb_world *world, double h, const char *function)
+static inline rb_status check_prepare(const mu_muscle *muscle, const rb_world *world, double h, const char *function)
 {
     if (mu_refuse_null(function, "muscle", muscle) || mu_refuse_null(function, "world", world)) {
         return RB_ERR_INVALID_ARGUMENT;
