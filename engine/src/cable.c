@@ -321,11 +321,13 @@ void rb_cables_prepare(rb_world *world, double h)
         if (!cable->in_use) {
             continue;
         }
-        /* Each point's pull, u_i - u_{i-1}, added to its body's share. */
-        /* Zeroed whole: a fixed size is a few stores, where zeroing the
-         * path's bodies alone took two calls to memset. */
-        rb_vec2 linear[RB_MAX_CABLE_POINTS] = {{0.0, 0.0}};
-        double angular[RB_MAX_CABLE_POINTS] = {0.0};
+        /* Each point's pull, u_i - u_{i-1}, added to its body's share. A
+         * body's share starts at its first point, which comes in the order
+         * of point_places, as 0 + pull: the sum from 0 of the zeroed arrays
+         * it replaces, -0 made +0 included, without zeroing them. */
+        rb_vec2 linear[RB_MAX_CABLE_POINTS];
+        double angular[RB_MAX_CABLE_POINTS];
+        int started = 0; /* the shares started so far */
         const rb_vec2 *points = cable->points;
         rb_vec2 previous = rb_v2(0.0, 0.0); /* u_{i-1}; none before the origin */
         for (int i = 0; i < cable->point_count; ++i) {
@@ -334,23 +336,31 @@ void rb_cables_prepare(rb_world *world, double h)
                                : rb_v2(0.0, 0.0);
             rb_vec2 pull = rb_sub(next, previous);
             int b = cable->point_places[i];
-            linear[b] = rb_add(linear[b], pull);
-            angular[b] += rb_cross(rb_sub(points[i], world->states[cable->path_bodies[b]].center), pull);
+            double turn = rb_cross(rb_sub(points[i], world->states[cable->path_bodies[b]].center), pull);
+            if (b == started) {
+                linear[b] = rb_add(rb_v2(0.0, 0.0), pull);
+                angular[b] = 0.0 + turn;
+                ++started;
+            } else {
+                linear[b] = rb_add(linear[b], pull);
+                angular[b] += turn;
+            }
             previous = next;
         }
-        /* k = Σ J·M⁻¹·Jᵀ over the bodies the impulse moves. */
+        /* k = Σ J·M⁻¹·Jᵀ over the bodies the impulse moves. A static body
+         * would add 0·(its finite terms), +0, which leaves k as it is. */
         double k = 0.0;
         cable->share_count = 0;
         cable->moving_count = 0;
         for (int b = 0; b < cable->body_count; ++b) {
             const rb_body *body = &world->bodies[cable->path_bodies[b]];
+            if (body->type == RB_BODY_STATIC) {
+                continue;
+            }
             bool moves = body->type == RB_BODY_DYNAMIC && body->awake;
             double inv_mass = moves ? body->inv_mass : 0.0;
             double inv_inertia = moves ? body->inv_inertia : 0.0;
             k += inv_mass * rb_dot(linear[b], linear[b]) + inv_inertia * angular[b] * angular[b];
-            if (body->type == RB_BODY_STATIC) {
-                continue;
-            }
             const rb_cable_share share = {
                 .body = cable->path_bodies[b],
                 .linear = linear[b],
