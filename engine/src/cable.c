@@ -362,7 +362,7 @@ void rb_cables_prepare(rb_world *world, double h)
             double inv_inertia = moves ? body->inv_inertia : 0.0;
             k += inv_mass * rb_dot(linear[b], linear[b]) + inv_inertia * angular[b] * angular[b];
             const rb_cable_share share = {
-                .body = cable->path_bodies[b],
+                .state = &world->states[cable->path_bodies[b]],
                 .linear = linear[b],
                 .angular = angular[b],
                 .inv_mass = inv_mass,
@@ -383,11 +383,11 @@ void rb_cables_prepare(rb_world *world, double h)
 
 /* Applies the impulse to the bodies it moves: a muscle's origin is often
  * on a fixed bone, which it would only add zeros to. */
-static inline void apply(const rb_cable *cable, rb_world *world, double impulse)
+static inline void apply(const rb_cable *cable, double impulse)
 {
     for (int m = 0; m < cable->moving_count; ++m) {
         const rb_cable_share *share = &cable->moving[m];
-        rb_body_state *s = &world->states[share->body];
+        rb_body_state *s = share->state;
         s->linear_velocity = rb_mul_add(s->linear_velocity, impulse * share->inv_mass, share->linear);
         s->angular_velocity += impulse * share->inv_inertia * share->angular;
     }
@@ -397,7 +397,7 @@ void rb_cables_warm_start(rb_world *world)
 {
     for (int c = 0; c < world->cable_slots; ++c) {
         if (world->cables[c].in_use) {
-            apply(&world->cables[c], world, world->cables[c].impulse);
+            apply(&world->cables[c], world->cables[c].impulse);
         }
     }
 }
@@ -415,7 +415,7 @@ void rb_cables_solve(rb_world *world, double h)
         double speed = 0.0;
         for (int b = 0; b < cable->share_count; ++b) {
             const rb_cable_share *share = &cable->shares[b];
-            const rb_body_state *s = &world->states[share->body];
+            const rb_body_state *s = share->state;
             speed -= rb_dot(share->linear, s->linear_velocity) + share->angular * s->angular_velocity;
         }
         if (cable->inverse_mass <= 0.0) {
@@ -428,7 +428,7 @@ void rb_cables_solve(rb_world *world, double h)
         double total = h * (cable->base_tension + cable->damping * speed + cable->damping_rate * cable->impulse) /
                        cable->implicit_scale;
         total = total > 0.0 ? total : 0.0; /* fmax(total, 0), NaN and -0 included, without libm's call */
-        apply(cable, world, total - cable->impulse);
+        apply(cable, total - cable->impulse);
         cable->impulse = total;
     }
 }
