@@ -258,7 +258,7 @@ static size_t search_interval(const mu_curve_table *table, size_t start, double 
  * `start` when x is still in it, as it mostly is (a muscle moves little
  * between two look-ups), at the cost of two comparisons; else the
  * search. */
-static inline __attribute__((always_inline)) size_t find_interval(const mu_curve_table *table, size_t start, double x)
+static inline size_t find_interval(const mu_curve_table *table, size_t start, double x)
 {
     if (start + 1 < table->count && x >= table->x[start] && x < table->x[start + 1]) {
         return start;
@@ -270,8 +270,7 @@ static inline __attribute__((always_inline)) size_t find_interval(const mu_curve
  * its slope, in the hint's interval, which it updates. The value is
  * y_i + (x - x_i)/(x_i+1 - x_i)·(y_i+1 - y_i), evaluated in that order,
  * as GSL's linear interpolant does, so both give the same bits. */
-static inline __attribute__((always_inline)) size_t linear_interval(const mu_curves *curves, mu_curve_kind kind,
-                                                                    mu_curve_hint *hint, double x)
+static size_t linear_interval(const mu_curves *curves, mu_curve_kind kind, mu_curve_hint *hint, double x)
 {
     const size_t interval = find_interval(&curves->tables[kind], hint != NULL ? hint->interval[kind] : 0, x);
     if (hint != NULL) {
@@ -280,8 +279,7 @@ static inline __attribute__((always_inline)) size_t linear_interval(const mu_cur
     return interval;
 }
 
-static inline __attribute__((always_inline)) double linear_value(const mu_curves *curves, mu_curve_kind kind,
-                                                                 mu_curve_hint *hint, double x)
+static double linear_value(const mu_curves *curves, mu_curve_kind kind, mu_curve_hint *hint, double x)
 {
     const mu_curve_table *table = &curves->tables[kind];
     const size_t i = linear_interval(curves, kind, hint, x);
@@ -304,8 +302,7 @@ static double linear_slope(const mu_curves *curves, mu_curve_kind kind, mu_curve
  * ends no longer develop active force (Gordon, Huxley and Julian, "The
  * variation in isometric tension with sarcomere length in vertebrate
  * muscle fibres", 1966). */
-static inline __attribute__((always_inline)) double tabulated_value(const mu_curves *curves, mu_curve_kind kind,
-                                                                    mu_curve_hint *hint, double x)
+static double tabulated_value(const mu_curves *curves, mu_curve_kind kind, mu_curve_hint *hint, double x)
 {
     const mu_curve_table *table = &curves->tables[kind];
     const size_t last = table->count - 1;
@@ -407,8 +404,7 @@ static bool refuse_lookup(const char *function, const mu_curves *curves, const c
     return false;
 }
 
-static inline __attribute__((always_inline)) double active_length(const mu_curves *curves, mu_curve_hint *hint,
-                                                                  double normalized_length)
+static double active_length(const mu_curves *curves, mu_curve_hint *hint, double normalized_length)
 {
     if (curves->tabulated) {
         return tabulated_value(curves, MU_CURVE_ACTIVE_LENGTH, hint, normalized_length);
@@ -419,8 +415,7 @@ static inline __attribute__((always_inline)) double active_length(const mu_curve
     return exp(-z * z);
 }
 
-static inline __attribute__((always_inline)) double passive_length(const mu_curves *curves, mu_curve_hint *hint,
-                                                                   double normalized_length)
+static double passive_length(const mu_curves *curves, mu_curve_hint *hint, double normalized_length)
 {
     if (curves->tabulated) {
         return tabulated_value(curves, MU_CURVE_PASSIVE_LENGTH, hint, normalized_length);
@@ -486,8 +481,8 @@ static inline double line_and_slope(const mu_curve_table *table, size_t i, doubl
  * them. A straight-line table finds the interval once: the slope inside
  * the table is the line's between the knots the value used, and outside
  * it (or at its ends) 0, while the value is clamped to the end's. */
-static inline __attribute__((always_inline)) double velocity_and_slope(const mu_curves *curves, mu_curve_hint *hint,
-                                                                       double normalized_velocity, double *slope)
+static double velocity_and_slope(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity,
+                                 double *slope)
 {
     const mu_curve_table *table = &curves->tables[MU_CURVE_VELOCITY];
     const double x = normalized_velocity;
