@@ -531,6 +531,33 @@ Test(curves, velocity_and_slope_at_the_knots_equal_the_two_look_ups)
     }
 }
 
+Test(curves, hinted_length_look_ups_at_the_knots_equal_the_plain_ones)
+{
+    /* Walked upwards with one hint, each midpoint and the doubles beside a
+     * knot fall inside the interval the previous look-up left in the hint
+     * (the hinted look-up's shortcut), the knots themselves on its edge
+     * (the full look-up): every one must give the plain look-up's bits. */
+    const char *rows[2] = {"active_force_length", "passive_force_length"};
+    for (size_t t = 0; t < 2; t++) {
+        const knots k = read_seed_knots(rows[t]);
+        mu_curves *curves = seed_tables(MU_INTERPOLATION_LINEAR);
+        mu_curve_hint hint = {0};
+        for (size_t i = 0; i < k.count; i++) {
+            const double mid = i + 1 < k.count ? 0.5 * (k.x[i] + k.x[i + 1]) : k.x[i] + 1.0;
+            const double at[4] = {nextafter(k.x[i], -INFINITY), k.x[i], nextafter(k.x[i], INFINITY), mid};
+            for (int j = 0; j < 4; j++) {
+                const double hinted = t == 0 ? mu_curve_active_length_hinted(curves, &hint, at[j])
+                                             : mu_curve_passive_length_hinted(curves, &hint, at[j]);
+                const double plain =
+                    t == 0 ? mu_curve_active_length(curves, at[j]) : mu_curve_passive_length(curves, at[j]);
+                cr_expect(same_bits(hinted, plain), "%s(%.17g): %.17g hinted, %.17g plain", rows[t], at[j], hinted,
+                          plain);
+            }
+        }
+        mu_curves_destroy(curves);
+    }
+}
+
 Test(curves, velocity_and_slope_refuse_nan_null_curves_and_null_slope)
 {
     mu_curves *curves = seed_tables(MU_INTERPOLATION_LINEAR);

@@ -843,6 +843,7 @@ static void storm_muscle_use(void)
     REFUSED_STATUS(mu_muscle_advance(rig.muscle, NULL, h), "mu_muscle_advance", "world");
     REFUSED_NAN(mu_muscle_read(NULL).total_force, "mu_muscle_read", "muscle");
     REFUSED_NAN(mu_muscle_path_speed(NULL), "mu_muscle_path_speed", "muscle");
+    REFUSED_NAN(mu_muscle_tension(NULL), "mu_muscle_tension", "muscle");
     double active = 0.0, passive = 0.0;
     REFUSED_STATUS(mu_muscle_isometric_forces(NULL, rig.world, 1.0, &active, &passive), "mu_muscle_isometric_forces",
                    "muscle");
@@ -1123,7 +1124,7 @@ static const api_storm storms[] = {
     {"mu_muscle_create mu_muscle_destroy", storm_muscle_create},
     {"mu_muscle_set_activation mu_muscle_set_target_tension mu_muscle_solve_equilibrium mu_muscle_max_force "
      "mu_muscle_tendon_length mu_muscle_cable mu_muscle_prepare mu_muscle_measure mu_muscle_advance mu_muscle_read "
-     "mu_muscle_path_speed mu_muscle_isometric_forces mu_muscle_forces_at_speed",
+     "mu_muscle_path_speed mu_muscle_tension mu_muscle_isometric_forces mu_muscle_forces_at_speed",
      storm_muscle_use},
     {"mu_max_force_from_pcsa mu_pcsa_from_volume mu_pcsa_from_anatomical mu_fibre_length_from_sarcomeres "
      "mu_fibre_length_normalized",

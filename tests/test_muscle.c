@@ -273,6 +273,38 @@ Test(muscle, advance_is_measure_then_prepare)
     mu_curves_destroy(curves);
 }
 
+Test(muscle, tension_is_what_the_cable_carried_in_the_substep_measured)
+{
+    /* mu_muscle_tension is the readout's total force without the rest of
+     * the readout: both are the engine's own tension of the cable over
+     * the substep the muscle last measured, to the bit, and the readout
+     * made later from the kept measure still says what it said then. */
+    mu_curves *curves = tables();
+    hanging s = make_hanging(curves);
+    const double h = 1.0 / 600.0;
+    cr_assert_eq(mu_muscle_set_activation(s.muscle, 0.7), RB_OK);
+    cr_assert_eq(mu_muscle_prepare(s.muscle, s.world, h), RB_OK);
+    double strongest = 0.0;
+    for (int n = 0; n < 200; ++n) {
+        step_world(s.world, h, 1);
+        cr_assert_eq(mu_muscle_measure(s.muscle, s.world), RB_OK, "%s", rb_last_error());
+        const double carried = rb_cable_tension(s.world, mu_muscle_cable(s.muscle));
+        const mu_muscle_readout before = mu_muscle_read(s.muscle);
+        cr_expect_eq(mu_muscle_tension(s.muscle), carried, "substep %d", n);
+        cr_expect_eq(before.total_force, carried, "substep %d", n);
+        cr_assert_eq(mu_muscle_set_activation(s.muscle, n % 2 == 0 ? 0.2 : 0.7), RB_OK);
+        cr_assert_eq(mu_muscle_prepare(s.muscle, s.world, h), RB_OK);
+        const mu_muscle_readout after = mu_muscle_read(s.muscle);
+        cr_expect_eq(after.activation, before.activation, "substep %d: the readout is the measure's", n);
+        cr_expect_eq(after.normalized_length, before.normalized_length, "substep %d", n);
+        strongest = fmax(strongest, carried);
+    }
+    cr_expect(strongest > 1.0, "the muscle pulled (%g N at most)", strongest);
+    mu_muscle_destroy(s.muscle, s.world);
+    destroy_world_and_expect_no_leak(s.world);
+    mu_curves_destroy(curves);
+}
+
 Test(muscle, path_speed_is_the_lengthening_speed_of_the_last_measure)
 {
     /* The model's energy account takes L' from the muscle instead of

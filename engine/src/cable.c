@@ -85,7 +85,9 @@ rb_status rb_cable_create(rb_world *world, const rb_cable_def *def, rb_cable_id 
     return RB_OK;
 }
 
-static rb_status find_cable(const rb_world *world, rb_cable_id id, const char *function, int *index)
+/* Why an id names no cable of the world, reported in the name of
+ * `function`. */
+static rb_status report_bad_cable(const rb_world *world, rb_cable_id id, const char *function)
 {
     if (world == NULL) {
         return rb_report_error(RB_ERR_INVALID_ARGUMENT, "%s: world is NULL", function);
@@ -93,8 +95,17 @@ static rb_status find_cable(const rb_world *world, rb_cable_id id, const char *f
     if (id.generation == 0 || id.world != world->serial || id.index < 0 || id.index >= world->cable_slots) {
         return rb_report_error(RB_ERR_FOREIGN_ID, "%s: the cable id is null or belongs to another world", function);
     }
-    if (!world->cables[id.index].in_use || world->cables[id.index].generation != id.generation) {
-        return rb_report_error(RB_ERR_STALE_ID, "%s: the cable id refers to a destroyed cable", function);
+    return rb_report_error(RB_ERR_STALE_ID, "%s: the cable id refers to a destroyed cable", function);
+}
+
+/* The slot of a live cable of the world; a muscle asks twice a substep,
+ * so the test is inline and the report is not. The generation of a slot
+ * in use is never 0, so a matching one also refuses the null id. */
+static inline rb_status find_cable(const rb_world *world, rb_cable_id id, const char *function, int *index)
+{
+    if (world == NULL || id.world != world->serial || id.index < 0 || id.index >= world->cable_slots ||
+        !world->cables[id.index].in_use || world->cables[id.index].generation != id.generation) {
+        return report_bad_cable(world, id, function);
     }
     *index = id.index;
     return RB_OK;
@@ -172,26 +183,38 @@ static rb_vec2 point_velocity(const rb_world *world, int body, rb_vec2 point)
 
 /* Length and lengthening speed in one pass over the path: L is the sum
  * of the segments, L' = Σ u·(v_{i+1} - v_i) with each point's velocity
- * v + ω × r from its body. */
+ * v + ω × r from its body. In the substep callback nothing moves, so the
+ * points and segments rb_cables_locate found serve; elsewhere they are
+ * found here, the same way. */
 static void measure(const rb_world *world, const rb_cable *cable, double *length, double *speed)
 {
-    *length = 0.0;
-    *speed = 0.0;
-    bool located = world->in_substep_callback && world->cable_points_fresh; /* nothing moves in it */
-    rb_vec2 p = located ? cable->points[0] : world_point(world, cable, 0);
-    rb_vec2 vp = point_velocity(world, cable->bodies[0], p);
-    for (int i = 0; i + 1 < cable->point_count; ++i) {
-        rb_vec2 q = located ? cable->points[i + 1] : world_point(world, cable, i + 1);
-        rb_vec2 vq = point_velocity(world, cable->bodies[i + 1], q);
-        rb_vec2 segment = rb_sub(q, p);
-        double segment_length = located ? cable->segment_lengths[i] : rb_length(segment);
-        *length += segment_length;
-        if (segment_length > 0.0) {
-            *speed += rb_dot(segment, rb_sub(vq, vp)) / segment_length;
+    rb_vec2 found_points[RB_MAX_CABLE_POINTS];
+    double found_lengths[RB_MAX_CABLE_POINTS - 1];
+    const rb_vec2 *points = cable->points;
+    const double *segment_lengths = cable->segment_lengths;
+    if (!(world->in_substep_callback && world->cable_points_fresh)) {
+        for (int i = 0; i < cable->point_count; ++i) {
+            found_points[i] = world_point(world, cable, i);
         }
-        p = q;
+        for (int i = 0; i + 1 < cable->point_count; ++i) {
+            found_lengths[i] = rb_length(rb_sub(found_points[i + 1], found_points[i]));
+        }
+        points = found_points;
+        segment_lengths = found_lengths;
+    }
+    double total = 0.0;
+    double rate = 0.0;
+    rb_vec2 vp = point_velocity(world, cable->bodies[0], points[0]);
+    for (int i = 0; i + 1 < cable->point_count; ++i) {
+        rb_vec2 vq = point_velocity(world, cable->bodies[i + 1], points[i + 1]);
+        total += segment_lengths[i];
+        if (segment_lengths[i] > 0.0) {
+            rate += rb_dot(rb_sub(points[i + 1], points[i]), rb_sub(vq, vp)) / segment_lengths[i];
+        }
         vp = vq; /* each point's velocity is made once */
     }
+    *length = total;
+    *speed = rate;
 }
 
 rb_status rb_cable_state(const rb_world *world, rb_cable_id id, double *length, double *lengthening_speed)
@@ -298,11 +321,13 @@ void rb_cables_prepare(rb_world *world, double h)
         if (!cable->in_use) {
             continue;
         }
-        /* Each point's pull, u_i - u_{i-1}, added to its body's share. */
-        /* Zeroed whole: a fixed size is a few stores, where zeroing the
-         * path's bodies alone took two calls to memset. */
-        rb_vec2 linear[RB_MAX_CABLE_POINTS] = {{0.0, 0.0}};
-        double angular[RB_MAX_CABLE_POINTS] = {0.0};
+        /* Each point's pull, u_i - u_{i-1}, added to its body's share. A
+         * body's share starts at its first point, which comes in the order
+         * of point_places, as 0 + pull: the sum from 0 of the zeroed arrays
+         * it replaces, -0 made +0 included, without zeroing them. */
+        rb_vec2 linear[RB_MAX_CABLE_POINTS];
+        double angular[RB_MAX_CABLE_POINTS];
+        int started = 0; /* the shares started so far */
         const rb_vec2 *points = cable->points;
         rb_vec2 previous = rb_v2(0.0, 0.0); /* u_{i-1}; none before the origin */
         for (int i = 0; i < cable->point_count; ++i) {
@@ -311,25 +336,33 @@ void rb_cables_prepare(rb_world *world, double h)
                                : rb_v2(0.0, 0.0);
             rb_vec2 pull = rb_sub(next, previous);
             int b = cable->point_places[i];
-            linear[b] = rb_add(linear[b], pull);
-            angular[b] += rb_cross(rb_sub(points[i], world->states[cable->path_bodies[b]].center), pull);
+            double turn = rb_cross(rb_sub(points[i], world->states[cable->path_bodies[b]].center), pull);
+            if (b == started) {
+                linear[b] = rb_add(rb_v2(0.0, 0.0), pull);
+                angular[b] = 0.0 + turn;
+                ++started;
+            } else {
+                linear[b] = rb_add(linear[b], pull);
+                angular[b] += turn;
+            }
             previous = next;
         }
-        /* k = Σ J·M⁻¹·Jᵀ over the bodies the impulse moves. */
+        /* k = Σ J·M⁻¹·Jᵀ over the bodies the impulse moves. A static body
+         * would add 0·(its finite terms), +0, which leaves k as it is. */
         double k = 0.0;
         cable->share_count = 0;
         cable->moving_count = 0;
         for (int b = 0; b < cable->body_count; ++b) {
             const rb_body *body = &world->bodies[cable->path_bodies[b]];
+            if (body->type == RB_BODY_STATIC) {
+                continue;
+            }
             bool moves = body->type == RB_BODY_DYNAMIC && body->awake;
             double inv_mass = moves ? body->inv_mass : 0.0;
             double inv_inertia = moves ? body->inv_inertia : 0.0;
             k += inv_mass * rb_dot(linear[b], linear[b]) + inv_inertia * angular[b] * angular[b];
-            if (body->type == RB_BODY_STATIC) {
-                continue;
-            }
             const rb_cable_share share = {
-                .body = cable->path_bodies[b],
+                .state = &world->states[cable->path_bodies[b]],
                 .linear = linear[b],
                 .angular = angular[b],
                 .inv_mass = inv_mass,
@@ -350,11 +383,11 @@ void rb_cables_prepare(rb_world *world, double h)
 
 /* Applies the impulse to the bodies it moves: a muscle's origin is often
  * on a fixed bone, which it would only add zeros to. */
-static inline void apply(const rb_cable *cable, rb_world *world, double impulse)
+static inline void apply(const rb_cable *cable, double impulse)
 {
     for (int m = 0; m < cable->moving_count; ++m) {
         const rb_cable_share *share = &cable->moving[m];
-        rb_body_state *s = &world->states[share->body];
+        rb_body_state *s = share->state;
         s->linear_velocity = rb_mul_add(s->linear_velocity, impulse * share->inv_mass, share->linear);
         s->angular_velocity += impulse * share->inv_inertia * share->angular;
     }
@@ -364,7 +397,7 @@ void rb_cables_warm_start(rb_world *world)
 {
     for (int c = 0; c < world->cable_slots; ++c) {
         if (world->cables[c].in_use) {
-            apply(&world->cables[c], world, world->cables[c].impulse);
+            apply(&world->cables[c], world->cables[c].impulse);
         }
     }
 }
@@ -382,7 +415,7 @@ void rb_cables_solve(rb_world *world, double h)
         double speed = 0.0;
         for (int b = 0; b < cable->share_count; ++b) {
             const rb_cable_share *share = &cable->shares[b];
-            const rb_body_state *s = &world->states[share->body];
+            const rb_body_state *s = share->state;
             speed -= rb_dot(share->linear, s->linear_velocity) + share->angular * s->angular_velocity;
         }
         if (cable->inverse_mass <= 0.0) {
@@ -395,7 +428,7 @@ void rb_cables_solve(rb_world *world, double h)
         double total = h * (cable->base_tension + cable->damping * speed + cable->damping_rate * cable->impulse) /
                        cable->implicit_scale;
         total = total > 0.0 ? total : 0.0; /* fmax(total, 0), NaN and -0 included, without libm's call */
-        apply(cable, world, total - cable->impulse);
+        apply(cable, total - cable->impulse);
         cable->impulse = total;
     }
 }

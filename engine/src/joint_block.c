@@ -454,68 +454,74 @@ static void solve_subset(const rb_joint_block *block, const bool *free, const do
     }
 }
 
+/* One velocity pass over a factored block. Out of line: its frame (some
+ * 3 kB of rows and right-hand sides) is then set up only for a block, not
+ * in every pass of a world that has none. */
+static __attribute__((noinline)) void solve_block_velocities(rb_world *world, const rb_joint_block *block)
+{
+    double v[3 * (RB_BLOCK_MAX_BODIES + 1)] = {0};
+    for (int b = 0; b < block->body_count; ++b) {
+        const rb_body_state *s = &world->states[block->bodies[b]];
+        v[3 * b] = s->linear_velocity.x;
+        v[3 * b + 1] = s->linear_velocity.y;
+        v[3 * b + 2] = s->angular_velocity;
+    }
+    int rows = block->row_count;
+    double rhs[RB_BLOCK_MAX_ROWS], x[RB_BLOCK_MAX_ROWS];
+    bool free[RB_BLOCK_MAX_ROWS];
+    for (int i = 0; i < rows; ++i) {
+        rhs[i] = -row_rate(&block->rows[i], v);
+        x[i] = rhs[i];
+        free[i] = true;
+    }
+    solve_factored(block->factor, rows, block->first, x);
+    /* Release the limit that would pull hardest, then solve the rest
+     * again, until none pulls (the limits' rows follow the pins'). */
+    for (;;) {
+        int worst = -1;
+        double most = 0.0;
+        for (int i = block->pin_rows; i < rows; ++i) {
+            const rb_block_row *row = &block->rows[i];
+            double total = *row->accumulated + x[i];
+            if (row->one_sided && free[i] && total < most) {
+                most = total;
+                worst = i;
+            }
+        }
+        if (worst < 0) {
+            break;
+        }
+        free[worst] = false;
+        x[worst] = -*block->rows[worst].accumulated;
+        solve_subset(block, free, rhs, x);
+    }
+    for (int i = 0; i < rows; ++i) {
+        const rb_block_row *row = &block->rows[i];
+        const double xi = x[i];
+        *row->accumulated += xi;
+        /* A and B are two places (a fixed body's wa, wb are 0). */
+        double *restrict va = v + 3 * row->slot_a;
+        double *restrict vb = v + 3 * row->slot_b;
+        va[0] += row->wa[0] * xi;
+        va[1] += row->wa[1] * xi;
+        va[2] += row->wa[2] * xi;
+        vb[0] += row->wb[0] * xi;
+        vb[1] += row->wb[1] * xi;
+        vb[2] += row->wb[2] * xi;
+    }
+    for (int b = 0; b < block->body_count; ++b) {
+        rb_body_state *s = &world->states[block->bodies[b]];
+        s->linear_velocity = rb_v2(v[3 * b], v[3 * b + 1]);
+        s->angular_velocity = v[3 * b + 2];
+    }
+}
+
 void rb_joint_blocks_solve_velocities(rb_world *world)
 {
     rb_joint_blocks *blocks = &world->joint_blocks;
     for (int n = 0; n < blocks->count; ++n) {
-        const rb_joint_block *block = &blocks->blocks[n];
-        if (!block->factored) {
-            continue;
-        }
-        double v[3 * (RB_BLOCK_MAX_BODIES + 1)] = {0};
-        for (int b = 0; b < block->body_count; ++b) {
-            const rb_body_state *s = &world->states[block->bodies[b]];
-            v[3 * b] = s->linear_velocity.x;
-            v[3 * b + 1] = s->linear_velocity.y;
-            v[3 * b + 2] = s->angular_velocity;
-        }
-        int rows = block->row_count;
-        double rhs[RB_BLOCK_MAX_ROWS], x[RB_BLOCK_MAX_ROWS];
-        bool free[RB_BLOCK_MAX_ROWS];
-        for (int i = 0; i < rows; ++i) {
-            rhs[i] = -row_rate(&block->rows[i], v);
-            x[i] = rhs[i];
-            free[i] = true;
-        }
-        solve_factored(block->factor, rows, block->first, x);
-        /* Release the limit that would pull hardest, then solve the rest
-         * again, until none pulls (the limits' rows follow the pins'). */
-        for (;;) {
-            int worst = -1;
-            double most = 0.0;
-            for (int i = block->pin_rows; i < rows; ++i) {
-                const rb_block_row *row = &block->rows[i];
-                double total = *row->accumulated + x[i];
-                if (row->one_sided && free[i] && total < most) {
-                    most = total;
-                    worst = i;
-                }
-            }
-            if (worst < 0) {
-                break;
-            }
-            free[worst] = false;
-            x[worst] = -*block->rows[worst].accumulated;
-            solve_subset(block, free, rhs, x);
-        }
-        for (int i = 0; i < rows; ++i) {
-            const rb_block_row *row = &block->rows[i];
-            const double xi = x[i];
-            *row->accumulated += xi;
-            /* A and B are two places (a fixed body's wa, wb are 0). */
-            double *restrict va = v + 3 * row->slot_a;
-            double *restrict vb = v + 3 * row->slot_b;
-            va[0] += row->wa[0] * xi;
-            va[1] += row->wa[1] * xi;
-            va[2] += row->wa[2] * xi;
-            vb[0] += row->wb[0] * xi;
-            vb[1] += row->wb[1] * xi;
-            vb[2] += row->wb[2] * xi;
-        }
-        for (int b = 0; b < block->body_count; ++b) {
-            rb_body_state *s = &world->states[block->bodies[b]];
-            s->linear_velocity = rb_v2(v[3 * b], v[3 * b + 1]);
-            s->angular_velocity = v[3 * b + 2];
+        if (blocks->blocks[n].factored) {
+            solve_block_velocities(world, &blocks->blocks[n]);
         }
     }
 }

@@ -358,7 +358,9 @@ typedef struct rb_pulley_data {
 /* A body's share of a cable's unit tension this substep: the direction
  * of the impulse on it and, when the impulse moves it, its inverse mass. */
 typedef struct rb_cable_share {
-    int body;
+    /* The body's state: the passes reach it without an index, and the
+     * states do not move within a step (no body is made in one). */
+    rb_body_state *state;
     rb_vec2 linear;  /* Σ (u_i - u_{i-1}) over the body's points */
     double angular;  /* m, Σ r_i × (u_i - u_{i-1}) */
     double inv_mass; /* 1/kg, 0 when the impulse does not move the body (kinematic, asleep) */

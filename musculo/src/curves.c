@@ -227,21 +227,18 @@ static void end_lookup(mu_curve_kind kind, mu_curve_hint *hint, const gsl_interp
     }
 }
 
-/* The interval [x_i, x_i+1) that holds x, for x_0 <= x < x_last, found
- * from the hint's interval `start` when x is still in it (a muscle moves
- * little between two look-ups), else by bisection on the side of it where
- * x lies, keeping x_lo <= x < x_hi. The knots rise strictly, so the
- * interval is unique: it is the one GSL's accelerated search finds, and a
- * hint serves both. */
-static size_t find_interval(const mu_curve_table *table, size_t start, double x)
+/* The interval [x_i, x_i+1) that holds x, for x_0 <= x < x_last, by
+ * bisection on the side of the hint's interval `start` where x lies,
+ * keeping x_lo <= x < x_hi. The knots rise strictly, so the interval is
+ * unique: it is the one GSL's accelerated search finds, and a hint serves
+ * both. */
+static size_t search_interval(const mu_curve_table *table, size_t start, double x)
 {
     size_t lo = 0;
     size_t hi = table->count - 1;
     if (start + 1 < table->count) {
         if (x < table->x[start]) {
             hi = start;
-        } else if (x < table->x[start + 1]) {
-            return start;
         } else {
             lo = start;
         }
@@ -255,6 +252,18 @@ static size_t find_interval(const mu_curve_table *table, size_t start, double x)
         }
     }
     return lo;
+}
+
+/* The interval that holds x (x_0 <= x < x_last): the hint's interval
+ * `start` when x is still in it, as it mostly is (a muscle moves little
+ * between two look-ups), at the cost of two comparisons; else the
+ * search. */
+static inline size_t find_interval(const mu_curve_table *table, size_t start, double x)
+{
+    if (start + 1 < table->count && x >= table->x[start] && x < table->x[start + 1]) {
+        return start;
+    }
+    return search_interval(table, start, x);
 }
 
 /* The straight line between the knots around x (x_0 <= x < x_last), and
@@ -457,6 +466,17 @@ static double velocity_slope(const mu_curves *curves, mu_curve_hint *hint, doubl
     return analytic_velocity_slope(curves, normalized_velocity);
 }
 
+/* The line of interval i at x and its slope, each clamped at 0. */
+static inline double line_and_slope(const mu_curve_table *table, size_t i, double x, double *slope)
+{
+    const double rise = table->y[i + 1] - table->y[i];
+    const double run = table->x[i + 1] - table->x[i];
+    const double line_slope = rise / run;
+    const double value = table->y[i] + (x - table->x[i]) / run * rise; /* linear_value's order */
+    *slope = line_slope < 0.0 ? 0.0 : line_slope;
+    return value < 0.0 ? 0.0 : value;
+}
+
 /* f_V and its slope at one ṽ, as velocity() and velocity_slope() give
  * them. A straight-line table finds the interval once: the slope inside
  * the table is the line's between the knots the value used, and outside
@@ -472,17 +492,41 @@ static double velocity_and_slope(const mu_curves *curves, mu_curve_hint *hint, d
         *slope = velocity_slope(curves, hint, x);
         return value;
     }
-    const size_t i = linear_interval(curves, MU_CURVE_VELOCITY, hint, x);
-    const double rise = table->y[i + 1] - table->y[i];
-    const double run = table->x[i + 1] - table->x[i];
-    const double line_slope = rise / run;
-    const double value = table->y[i] + (x - table->x[i]) / run * rise; /* linear_value's order */
-    *slope = line_slope < 0.0 ? 0.0 : line_slope;
-    return value < 0.0 ? 0.0 : value;
+    return line_and_slope(table, linear_interval(curves, MU_CURVE_VELOCITY, hint, x), x, slope);
+}
+
+/* The hinted look-up's common case: a straight-line table and x strictly
+ * inside the hint's interval, x_i < x < x_i+1, where a muscle's next
+ * look-up mostly falls. Then x_0 < x < x_last, so no end of the table
+ * (nor f_L's zero outside it) applies, and the value is the line's,
+ * clamped at 0, as tabulated_value gives it; the tests of the ends, and
+ * the check for NaN (which fails x_i < x), are skipped. Any other x, a
+ * knot itself included, takes the full look-up. */
+static inline bool within_hint(const mu_curves *curves, mu_curve_kind kind, const mu_curve_hint *hint, double x)
+{
+    if (curves == NULL || hint == NULL || !curves->linear) {
+        return false;
+    }
+    const mu_curve_table *table = &curves->tables[kind];
+    const size_t i = hint->interval[kind];
+    return i + 1 < table->count && x > table->x[i] && x < table->x[i + 1];
+}
+
+/* The line of the hint's interval at x (within_hint holds), clamped at 0. */
+static inline double hinted_line(const mu_curves *curves, mu_curve_kind kind, const mu_curve_hint *hint, double x)
+{
+    const mu_curve_table *table = &curves->tables[kind];
+    const size_t i = hint->interval[kind];
+    const double y =
+        table->y[i] + (x - table->x[i]) / (table->x[i + 1] - table->x[i]) * (table->y[i + 1] - table->y[i]);
+    return y < 0.0 ? 0.0 : y;
 }
 
 double mu_curve_active_length_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_length)
 {
+    if (within_hint(curves, MU_CURVE_ACTIVE_LENGTH, hint, normalized_length)) {
+        return hinted_line(curves, MU_CURVE_ACTIVE_LENGTH, hint, normalized_length);
+    }
     return refuse_lookup("mu_curve_active_length_hinted", curves, "normalized_length", normalized_length)
                ? NAN
                : active_length(curves, hint, normalized_length);
@@ -497,6 +541,9 @@ double mu_curve_active_length(const mu_curves *curves, double normalized_length)
 
 double mu_curve_passive_length_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_length)
 {
+    if (within_hint(curves, MU_CURVE_PASSIVE_LENGTH, hint, normalized_length)) {
+        return hinted_line(curves, MU_CURVE_PASSIVE_LENGTH, hint, normalized_length);
+    }
     return refuse_lookup("mu_curve_passive_length_hinted", curves, "normalized_length", normalized_length)
                ? NAN
                : passive_length(curves, hint, normalized_length);
@@ -540,6 +587,11 @@ double mu_curve_velocity_slope(const mu_curves *curves, double normalized_veloci
 double mu_curve_velocity_and_slope_hinted(const mu_curves *curves, mu_curve_hint *hint, double normalized_velocity,
                                           double *slope)
 {
+    if (slope != NULL && normalized_velocity > VMAX_SHORTENING &&
+        within_hint(curves, MU_CURVE_VELOCITY, hint, normalized_velocity)) {
+        return line_and_slope(&curves->tables[MU_CURVE_VELOCITY], hint->interval[MU_CURVE_VELOCITY],
+                              normalized_velocity, slope);
+    }
     if (slope == NULL) {
         rb_report_error(RB_ERR_INVALID_ARGUMENT, "mu_curve_velocity_and_slope_hinted: slope is NULL");
         return NAN;

@@ -551,7 +551,7 @@ static double mechanical_energy(const mu_model *model)
     double energy = 0.0;
     for (int b = 0; b < model->body_count; ++b) {
         const rb_mass_data mass = rb_body_mass_data(model->world, model->bodies[b]);
-        if (rb_body_mass(model->world, model->bodies[b]) == 0.0) {
+        if (mass.mass == 0.0) {
             continue; /* static: neither moves nor falls */
         }
         const rb_vec2 v = rb_body_linear_velocity(model->world, model->bodies[b]);
@@ -576,7 +576,7 @@ static double work_rate(const mu_model *model)
     double rate = 0.0;
     for (int i = 0; i < model->built_muscle_count; ++i) {
         const mu_muscle *muscle = model->muscles[model->built_muscles[i]];
-        rate -= mu_muscle_read(muscle).total_force * mu_muscle_path_speed(muscle);
+        rate -= mu_muscle_tension(muscle) * mu_muscle_path_speed(muscle);
     }
     for (int t = 0; t < model->built_torque_muscle_count; ++t) {
         rate += mu_torque_actuator_power(model->actuators[t], model->world);

@@ -40,6 +40,18 @@
  * balance never meets a vanishing fibre. */
 #define MIN_FIBRE_FRACTION 0.01
 
+/* What a measure finds, kept as found: the readout (mu_muscle_read) is
+ * made from it when asked, not in each of the substeps that overwrite it
+ * unread. The state the measure saw is kept with it, for the prepare that
+ * follows changes the activation. */
+typedef struct measured {
+    double path;                   /* m */
+    double fibre_length;           /* m */
+    double velocity;               /* m/s, the fibre's */
+    double active, passive, total; /* N along the path */
+    double activation, excitation, target_tension, calcium;
+} measured;
+
 struct mu_muscle {
     rb_cable_id cable;
     double rest_length, max_force, max_velocity, tendon_length, tension_gain;
@@ -62,7 +74,7 @@ struct mu_muscle {
     double target_tension;        /* < 0: activation control */
     double base_tension, damping; /* the law handed to the cable this substep */
     double path_speed;            /* m/s: the path's lengthening speed at the last measure */
-    mu_muscle_readout readout;
+    measured last;                /* what the last measure found: the readout's inputs */
 };
 
 mu_muscle_def mu_default_muscle_def(void)
@@ -188,37 +200,56 @@ static double rigid_fibre_length(const mu_muscle *muscle, double path)
     return muscle->width > 0.0 ? mu_pennation_fibre_length(belly, muscle->width) : belly;
 }
 
-static void fill_readout(mu_muscle *muscle, double path, double fibre_length, double velocity, double active,
-                         double passive, double total)
+static void record_measure(mu_muscle *muscle, double path, double fibre_length, double velocity, double active,
+                           double passive, double total)
 {
-    const double contraction = muscle->rest_length - fibre_length;
-    const double tendon = muscle->compliant ? path - belly_extent(fibre_length, muscle->width) : muscle->tendon_length;
-    muscle->readout = (mu_muscle_readout){
-        .activation = muscle->activation,
-        .target_tension = muscle->target_tension,
-        .length = path - tendon,
-        .normalized_length = fibre_length / muscle->rest_length,
-        .velocity = velocity,
-        .normalized_velocity = velocity / muscle->max_velocity,
-        .contraction = contraction,
-        .normalized_contraction = contraction / muscle->rest_length,
-        .active_force = active,
-        .passive_force = passive,
-        .total_force = total,
-        .excitation = muscle->excitation,
+    muscle->last = (measured){
+        .path = path,
         .fibre_length = fibre_length,
-        .tendon_length = tendon,
-        .pennation_angle = muscle->width > 0.0 ? mu_pennation_angle(fibre_length, muscle->width) : 0.0,
-        .calcium = muscle->activation_model == MU_ACTIVATION_CALCIUM_FORCE ? muscle->calcium : muscle->activation,
+        .velocity = velocity,
+        .active = active,
+        .passive = passive,
+        .total = total,
+        .activation = muscle->activation,
+        .excitation = muscle->excitation,
+        .target_tension = muscle->target_tension,
+        .calcium = muscle->calcium,
     };
 }
 
-/* A compliant muscle's readout at its fibre state, carrying `total`. */
-static void fill_compliant_readout(mu_muscle *muscle, double path, double total)
+/* The readout of the last measure. */
+static mu_muscle_readout readout_of(const mu_muscle *muscle)
+{
+    const measured *m = &muscle->last;
+    const double contraction = muscle->rest_length - m->fibre_length;
+    const double tendon =
+        muscle->compliant ? m->path - belly_extent(m->fibre_length, muscle->width) : muscle->tendon_length;
+    return (mu_muscle_readout){
+        .activation = m->activation,
+        .target_tension = m->target_tension,
+        .length = m->path - tendon,
+        .normalized_length = m->fibre_length / muscle->rest_length,
+        .velocity = m->velocity,
+        .normalized_velocity = m->velocity / muscle->max_velocity,
+        .contraction = contraction,
+        .normalized_contraction = contraction / muscle->rest_length,
+        .active_force = m->active,
+        .passive_force = m->passive,
+        .total_force = m->total,
+        .excitation = m->excitation,
+        .fibre_length = m->fibre_length,
+        .tendon_length = tendon,
+        .pennation_angle = muscle->width > 0.0 ? mu_pennation_angle(m->fibre_length, muscle->width) : 0.0,
+        .calcium = muscle->activation_model == MU_ACTIVATION_CALCIUM_FORCE ? m->calcium : m->activation,
+    };
+}
+
+/* A compliant muscle's measure at its fibre state, carrying `total`. */
+static void record_compliant_measure(mu_muscle *muscle, double path, double total)
 {
     const mu_fibre_forces forces =
         mu_fibre_forces_at(&muscle->unit, muscle->fibre_length, muscle->fibre_velocity, muscle->activation);
-    fill_readout(muscle, path, muscle->fibre_length, muscle->fibre_velocity, forces.active, forces.passive, total);
+    record_measure(muscle, path, muscle->fibre_length, muscle->fibre_velocity, forces.active, forces.passive, total);
 }
 
 /* The compliant tendon's fibre-tendon pair, once the muscle's lengths are
@@ -245,7 +276,7 @@ static rb_status set_up_compliant(mu_muscle *muscle, const mu_muscle_def *def, d
     };
     muscle->fibre_length = mu_fibre_tendon_static_length(&muscle->unit, path, muscle->activation);
     muscle->fibre_velocity = 0.0;
-    fill_compliant_readout(muscle, path, mu_fibre_tendon_tension(&muscle->unit, path, muscle->fibre_length));
+    record_compliant_measure(muscle, path, mu_fibre_tendon_tension(&muscle->unit, path, muscle->fibre_length));
     return RB_OK;
 }
 
@@ -371,7 +402,7 @@ rb_cable_id mu_muscle_cable(const mu_muscle *muscle)
  * substep, on the excitation when there is one. */
 static void control_tension(mu_muscle *muscle)
 {
-    const double error = muscle->target_tension - muscle->readout.active_force;
+    const double error = muscle->target_tension - muscle->last.active;
     const double change = muscle->tension_gain * error / muscle->max_force;
     if (muscle->activation_dynamics) {
         muscle->excitation = fmin(fmax(muscle->excitation + change, 0.0), 1.0);
@@ -399,12 +430,9 @@ typedef struct path_reading {
 
 static rb_status read_path(mu_muscle *muscle, const rb_world *world, path_reading *reading)
 {
-    *reading = (path_reading){0};
     rb_cable_reading cable;
     rb_status status = rb_cable_read(world, muscle->cable, &cable);
-    reading->path = cable.length;
-    reading->speed = cable.lengthening_speed;
-    reading->tension = cable.tension;
+    *reading = (path_reading){.path = cable.length, .speed = cable.lengthening_speed, .tension = cable.tension};
     if (status == RB_OK && !muscle->compliant) {
         reading->fibre_length = rigid_fibre_length(muscle, reading->path);
         reading->cosine = pennation_cosine(reading->fibre_length, muscle->width);
@@ -508,7 +536,7 @@ static void measure_at(mu_muscle *muscle, const path_reading *reading)
         if (muscle->substep > 0.0) {
             advance_fibre(muscle, path, total);
         }
-        fill_compliant_readout(muscle, path, total);
+        record_compliant_measure(muscle, path, total);
         return;
     }
     const double passive = reading->passive;
@@ -516,10 +544,10 @@ static void measure_at(mu_muscle *muscle, const path_reading *reading)
      * comparison (the same value, NaN and -0 included), without libm's call
      * once a substep. */
     const double active = total - passive > 0.0 ? total - passive : 0.0;
-    fill_readout(muscle, path, reading->fibre_length, speed * reading->cosine, active, passive, total);
+    record_measure(muscle, path, reading->fibre_length, speed * reading->cosine, active, passive, total);
 }
 
-static rb_status check_prepare(const mu_muscle *muscle, const rb_world *world, double h, const char *function)
+static inline rb_status check_prepare(const mu_muscle *muscle, const rb_world *world, double h, const char *function)
 {
     if (mu_refuse_null(function, "muscle", muscle) || mu_refuse_null(function, "world", world)) {
         return RB_ERR_INVALID_ARGUMENT;
@@ -583,7 +611,7 @@ rb_status mu_muscle_solve_equilibrium(mu_muscle *muscle, const rb_world *world)
         muscle->fibre_length = mu_fibre_tendon_static_length(&muscle->unit, path, muscle->activation);
         muscle->fibre_velocity = 0.0;
         muscle->substep = 0.0;
-        fill_compliant_readout(muscle, path, mu_fibre_tendon_tension(&muscle->unit, path, muscle->fibre_length));
+        record_compliant_measure(muscle, path, mu_fibre_tendon_tension(&muscle->unit, path, muscle->fibre_length));
         return RB_OK;
     }
     const double fibre_length = rigid_fibre_length(muscle, path);
@@ -592,7 +620,7 @@ rb_status mu_muscle_solve_equilibrium(mu_muscle *muscle, const rb_world *world)
     const double active = muscle->max_force * muscle->activation * mu_curve_active_length(muscle->curves, l) *
                           mu_curve_velocity(muscle->curves, 0.0) * cosine;
     const double passive = muscle->max_force * mu_curve_passive_length(muscle->curves, l) * cosine;
-    fill_readout(muscle, path, fibre_length, 0.0, active, passive, active + passive);
+    record_measure(muscle, path, fibre_length, 0.0, active, passive, active + passive);
     return RB_OK;
 }
 
@@ -601,9 +629,14 @@ double mu_muscle_path_speed(const mu_muscle *muscle)
     return mu_refuse_null("mu_muscle_path_speed", "muscle", muscle) ? NAN : muscle->path_speed;
 }
 
+double mu_muscle_tension(const mu_muscle *muscle)
+{
+    return mu_refuse_null("mu_muscle_tension", "muscle", muscle) ? NAN : muscle->last.total;
+}
+
 mu_muscle_readout mu_muscle_read(const mu_muscle *muscle)
 {
-    return mu_refuse_null("mu_muscle_read", "muscle", muscle) ? mu_nan_readout() : muscle->readout;
+    return mu_refuse_null("mu_muscle_read", "muscle", muscle) ? mu_nan_readout() : readout_of(muscle);
 }
 
 rb_status mu_muscle_isometric_forces(const mu_muscle *muscle, const rb_world *world, double activation, double *active,

@@ -181,6 +181,9 @@ MU_API mu_muscle_readout mu_muscle_read(const mu_muscle *muscle);
  * the bodies, −T·L', without reading the path again. 0 before the first
  * measure. */
 MU_API double mu_muscle_path_speed(const mu_muscle *muscle);
+/** N: the tension the path carried in the substep last measured, the
+ * readout's total_force, without making the whole readout. */
+MU_API double mu_muscle_tension(const mu_muscle *muscle);
 
 #ifdef __cplusplus
 }
