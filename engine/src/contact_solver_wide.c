@@ -17,20 +17,6 @@
 #if defined(__SSE2__)
 #include "contact_lanes_two.h"
 
-static inline lanes negate(lanes a) { return _mm_xor_pd(a, _mm_set1_pd(-0.0)); }
-/* a > b ? a : b and a < b ? a : b in each lane, as rb_max and rb_min. */
-static inline lanes max(lanes a, lanes b) { return _mm_max_pd(a, b); }
-static inline lanes min(lanes a, lanes b) { return _mm_min_pd(a, b); }
-/* In each lane, `yes` where the mask is all ones, `no` where it is zero. */
-static inline lanes select(lanes mask, lanes yes, lanes no)
-{
-    return _mm_or_pd(_mm_and_pd(mask, yes), _mm_andnot_pd(mask, no));
-}
-static inline lanes mask_of(bool first, bool second)
-{
-    return _mm_castsi128_pd(_mm_set_epi64x(second ? -1 : 0, first ? -1 : 0));
-}
-
 /* 1/k where k > 0, else 0, as mass_from_arms: the effective mass of a row
  * of lever arms a, b about the two centres. */
 static inline lanes mass_from_arms(lanes inv_mass_sum, lanes ia, lanes ib, lanes a, lanes b)
@@ -47,17 +33,16 @@ static inline void store_pair(double *first, double *second, lanes a)
 }
 
 /* Point j of both contacts, as rb_contact_solver_prepare_points_range
- * prepares it, with the normal (nx, ny) as the bodies now turn it.
- * Inlined whatever its size, so that the two points share their bodies'
- * loads (a call for each point read them twice). */
-static inline __attribute__((always_inline)) void prepare_point(rb_contact_constraint *c0, rb_contact_constraint *c1,
-                                                                int j, const rb_body_state *a0, const rb_body_state *b0,
-                                                                const rb_body_state *a1, const rb_body_state *b1,
-                                                                lanes nx, lanes ny, const rb_solver_settings *settings,
-                                                                double inv_h, rb_substep_rows rows)
+ * prepares it, with the normal (nx, ny) as the bodies now turn it, into
+ * q. Inlined whatever its size, so that the two points share their
+ * bodies' loads (a call for each point read them twice). */
+static inline __attribute__((always_inline)) void
+prepare_point(const rb_contact_constraint *c0, const rb_contact_constraint *c1, int j, const rb_body_state *a0,
+              const rb_body_state *b0, const rb_body_state *a1, const rb_body_state *b1, lanes nx, lanes ny,
+              const rb_solver_settings *settings, double inv_h, rb_substep_rows rows, rb_row_point *q)
 {
-    rb_constraint_point *p0 = &c0->points[j];
-    rb_constraint_point *p1 = &c1->points[j];
+    const rb_constraint_point *p0 = &c0->points[j];
+    const rb_constraint_point *p1 = &c1->points[j];
     lanes cax = pair(a0->center.x, a1->center.x);
     lanes cay = pair(a0->center.y, a1->center.y);
     lanes cbx = pair(b0->center.x, b1->center.x);
@@ -90,19 +75,16 @@ static inline __attribute__((always_inline)) void prepare_point(rb_contact_const
     /* the lever arms r×n and r×t, with t = (ny, -nx) */
     lanes tx = ny;
     lanes ty = negate(nx);
-    lanes normal_arm_a = sub(mul(rax, ny), mul(ray, nx));
-    lanes normal_arm_b = sub(mul(rbx, ny), mul(rby, nx));
     lanes tangent_arm_a = sub(mul(rax, ty), mul(ray, tx));
     lanes tangent_arm_b = sub(mul(rbx, ty), mul(rby, tx));
-    store_pair(&p0->normal_arm_a, &p1->normal_arm_a, normal_arm_a);
-    store_pair(&p0->normal_arm_b, &p1->normal_arm_b, normal_arm_b);
-    store_pair(&p0->tangent_arm_a, &p1->tangent_arm_a, tangent_arm_a);
-    store_pair(&p0->tangent_arm_b, &p1->tangent_arm_b, tangent_arm_b);
+    store(&q->normal_arm_a, sub(mul(rax, ny), mul(ray, nx)));
+    store(&q->normal_arm_b, sub(mul(rbx, ny), mul(rby, nx)));
+    store(&q->tangent_arm_a, tangent_arm_a);
+    store(&q->tangent_arm_b, tangent_arm_b);
     lanes inv_mass_sum = add(pair(c0->inv_mass_a, c1->inv_mass_a), pair(c0->inv_mass_b, c1->inv_mass_b));
     lanes ia = pair(c0->inv_inertia_a, c1->inv_inertia_a);
     lanes ib = pair(c0->inv_inertia_b, c1->inv_inertia_b);
-    store_pair(&p0->tangent_mass, &p1->tangent_mass,
-               mass_from_arms(inv_mass_sum, ia, ib, tangent_arm_a, tangent_arm_b));
+    store(&q->tangent_mass, mass_from_arms(inv_mass_sum, ia, ib, tangent_arm_a, tangent_arm_b));
     /* The lower bound of the normal velocity: close an open gap within
      * the substep; push overlap out (Baumgarte) or only stop approach. */
     lanes closing = mul(negate(s), both(inv_h));
@@ -113,16 +95,18 @@ static inline __attribute__((always_inline)) void prepare_point(rb_contact_const
         bound = mul(push, both(inv_h));
     }
     lanes open = _mm_cmpgt_pd(s, _mm_setzero_pd());
-    store_pair(&p0->min_normal_velocity, &p1->min_normal_velocity, select(open, closing, bound));
+    store(&q->min_normal_velocity, select(open, closing, bound));
 }
 
-/* Both contacts' points, as the reference prepares them: the normal
- * turned with the body whose face it is, then each point, then the 2x2
- * block (prepare_block) and the points' own normal masses where the block
- * does not replace them, each kept as it was where the reference leaves
- * it. */
-static void prepare_two(rb_contact_constraint *c0, rb_contact_constraint *c1, const rb_body_state *states,
-                        const rb_solver_settings *settings, double inv_h, rb_substep_rows rows)
+/* Both contacts' points, as the reference prepares them, into `row`: the
+ * normal turned with the body whose face it is, then each point, then the
+ * 2x2 block (prepare_block), its inverse kept as the constraint had it
+ * where the block is not used. Returns which of the two use the block:
+ * bit 0 the first, bit 1 the second. The points' own normal masses, which
+ * the reference finds where the block does not replace them, are left to
+ * give_back. */
+static int prepare_two(const rb_contact_constraint *c0, const rb_contact_constraint *c1, const rb_body_state *states,
+                       const rb_solver_settings *settings, double inv_h, rb_substep_rows rows, rb_contact_row *row)
 {
     const rb_body_state *a0 = &states[c0->body_a];
     const rb_body_state *b0 = &states[c0->body_b];
@@ -130,77 +114,190 @@ static void prepare_two(rb_contact_constraint *c0, rb_contact_constraint *c1, co
     const rb_body_state *b1 = &states[c1->body_b];
     lanes nx, ny;
     turned_normals_of_two(c0, c1, a0, b0, a1, b1, &nx, &ny);
-    _mm_storel_pd(&c0->normal.x, nx);
-    _mm_storeh_pd(&c1->normal.x, nx);
-    _mm_storel_pd(&c0->normal.y, ny);
-    _mm_storeh_pd(&c1->normal.y, ny);
-    prepare_point(c0, c1, 0, a0, b0, a1, b1, nx, ny, settings, inv_h, rows);
-    prepare_point(c0, c1, 1, a0, b0, a1, b1, nx, ny, settings, inv_h, rows);
+    store(&row->normal_x, nx);
+    store(&row->normal_y, ny);
+    prepare_point(c0, c1, 0, a0, b0, a1, b1, nx, ny, settings, inv_h, rows, &row->points[0]);
+    prepare_point(c0, c1, 1, a0, b0, a1, b1, nx, ny, settings, inv_h, rows, &row->points[1]);
 
-    lanes inv_mass_sum = add(pair(c0->inv_mass_a, c1->inv_mass_a), pair(c0->inv_mass_b, c1->inv_mass_b));
+    lanes ma = pair(c0->inv_mass_a, c1->inv_mass_a);
+    lanes mb = pair(c0->inv_mass_b, c1->inv_mass_b);
     lanes ia = pair(c0->inv_inertia_a, c1->inv_inertia_a);
     lanes ib = pair(c0->inv_inertia_b, c1->inv_inertia_b);
-    lanes rn1a = pair(c0->points[0].normal_arm_a, c1->points[0].normal_arm_a);
-    lanes rn1b = pair(c0->points[0].normal_arm_b, c1->points[0].normal_arm_b);
-    lanes rn2a = pair(c0->points[1].normal_arm_a, c1->points[1].normal_arm_a);
-    lanes rn2b = pair(c0->points[1].normal_arm_b, c1->points[1].normal_arm_b);
-    lanes use_block = mask_of(c0->use_block, c1->use_block);
+    store(&row->inv_mass_a, ma);
+    store(&row->inv_mass_b, mb);
+    store(&row->inv_inertia_a, ia);
+    store(&row->inv_inertia_b, ib);
+    if (!rows.block_normals) {
+        return (int)c0->use_block | (int)c1->use_block << 1;
+    }
+    lanes inv_mass_sum = add(ma, mb);
+    lanes rn1a = load(&row->points[0].normal_arm_a);
+    lanes rn1b = load(&row->points[0].normal_arm_b);
+    lanes rn2a = load(&row->points[1].normal_arm_a);
+    lanes rn2b = load(&row->points[1].normal_arm_b);
+    lanes k11 = add(add(inv_mass_sum, mul(mul(ia, rn1a), rn1a)), mul(mul(ib, rn1b), rn1b));
+    lanes k22 = add(add(inv_mass_sum, mul(mul(ia, rn2a), rn2a)), mul(mul(ib, rn2b), rn2b));
+    lanes k12 = add(add(inv_mass_sum, mul(mul(ia, rn1a), rn2a)), mul(mul(ib, rn1b), rn2b));
+    store(&row->k11, k11);
+    store(&row->k22, k22);
+    store(&row->k12, k12);
+    lanes det = sub(mul(k11, k22), mul(k12, k12));
+    lanes use_block = _mm_cmplt_pd(mul(k11, k11), mul(both(MAX_BLOCK_CONDITION), det));
+    lanes inv_det = divide(both(1.0), det);
+    store(&row->inv_k11, select(use_block, mul(inv_det, k22), pair(c0->inv_k11, c1->inv_k11)));
+    store(&row->inv_k22, select(use_block, mul(inv_det, k11), pair(c0->inv_k22, c1->inv_k22)));
+    store(&row->inv_k12, select(use_block, mul(negate(inv_det), k12), pair(c0->inv_k12, c1->inv_k12)));
+    return _mm_movemask_pd(use_block);
+}
+
+static inline void give_back_field(double *first, double *second, const rb_lanes2 *field)
+{
+    *first = field->v[0];
+    *second = field->v[1];
+}
+
+/* What prepare_two put in `row`, given to the two constraints, with the
+ * points' own normal masses where the block (`block`, as prepare_two
+ * returned it) does not replace them: the constraints as the reference
+ * leaves them. */
+static void give_back(const rb_contact_row *row, int block, rb_contact_constraint *c0, rb_contact_constraint *c1,
+                      rb_substep_rows rows)
+{
+    give_back_field(&c0->normal.x, &c1->normal.x, &row->normal_x);
+    give_back_field(&c0->normal.y, &c1->normal.y, &row->normal_y);
+    for (int j = 0; j < 2; ++j) {
+        const rb_row_point *q = &row->points[j];
+        rb_constraint_point *p0 = &c0->points[j];
+        rb_constraint_point *p1 = &c1->points[j];
+        give_back_field(&p0->normal_arm_a, &p1->normal_arm_a, &q->normal_arm_a);
+        give_back_field(&p0->normal_arm_b, &p1->normal_arm_b, &q->normal_arm_b);
+        give_back_field(&p0->tangent_arm_a, &p1->tangent_arm_a, &q->tangent_arm_a);
+        give_back_field(&p0->tangent_arm_b, &p1->tangent_arm_b, &q->tangent_arm_b);
+        give_back_field(&p0->tangent_mass, &p1->tangent_mass, &q->tangent_mass);
+        give_back_field(&p0->min_normal_velocity, &p1->min_normal_velocity, &q->min_normal_velocity);
+    }
     if (rows.block_normals) {
-        lanes k11 = add(add(inv_mass_sum, mul(mul(ia, rn1a), rn1a)), mul(mul(ib, rn1b), rn1b));
-        lanes k22 = add(add(inv_mass_sum, mul(mul(ia, rn2a), rn2a)), mul(mul(ib, rn2b), rn2b));
-        lanes k12 = add(add(inv_mass_sum, mul(mul(ia, rn1a), rn2a)), mul(mul(ib, rn1b), rn2b));
-        store_pair(&c0->k11, &c1->k11, k11);
-        store_pair(&c0->k22, &c1->k22, k22);
-        store_pair(&c0->k12, &c1->k12, k12);
-        lanes det = sub(mul(k11, k22), mul(k12, k12));
-        use_block = _mm_cmplt_pd(mul(k11, k11), mul(both(MAX_BLOCK_CONDITION), det));
-        lanes inv_det = _mm_div_pd(both(1.0), det);
-        store_pair(&c0->inv_k11, &c1->inv_k11, select(use_block, mul(inv_det, k22), pair(c0->inv_k11, c1->inv_k11)));
-        store_pair(&c0->inv_k22, &c1->inv_k22, select(use_block, mul(inv_det, k11), pair(c0->inv_k22, c1->inv_k22)));
-        store_pair(&c0->inv_k12, &c1->inv_k12,
-                   select(use_block, mul(negate(inv_det), k12), pair(c0->inv_k12, c1->inv_k12)));
-        int block = _mm_movemask_pd(use_block);
+        give_back_field(&c0->k11, &c1->k11, &row->k11);
+        give_back_field(&c0->k12, &c1->k12, &row->k12);
+        give_back_field(&c0->k22, &c1->k22, &row->k22);
+        give_back_field(&c0->inv_k11, &c1->inv_k11, &row->inv_k11);
+        give_back_field(&c0->inv_k12, &c1->inv_k12, &row->inv_k12);
+        give_back_field(&c0->inv_k22, &c1->inv_k22, &row->inv_k22);
         c0->use_block = (block & 1) != 0;
         c1->use_block = (block & 2) != 0;
     }
     /* Two blocks need no points' masses: their divisions, which bound
-     * this function's time, are left out. */
-    if (_mm_movemask_pd(use_block) == 3) {
+     * the preparation's time, are left out. */
+    if (block == 3) {
         return;
     }
-    store_pair(&c0->points[0].normal_mass, &c1->points[0].normal_mass,
-               select(use_block, pair(c0->points[0].normal_mass, c1->points[0].normal_mass),
-                      mass_from_arms(inv_mass_sum, ia, ib, rn1a, rn1b)));
-    store_pair(&c0->points[1].normal_mass, &c1->points[1].normal_mass,
-               select(use_block, pair(c0->points[1].normal_mass, c1->points[1].normal_mass),
-                      mass_from_arms(inv_mass_sum, ia, ib, rn2a, rn2b)));
+    lanes use_block = mask_of(block & 1, block & 2);
+    lanes inv_mass_sum = add(load(&row->inv_mass_a), load(&row->inv_mass_b));
+    lanes ia = load(&row->inv_inertia_a);
+    lanes ib = load(&row->inv_inertia_b);
+    for (int j = 0; j < 2; ++j) {
+        const rb_row_point *q = &row->points[j];
+        lanes mass = mass_from_arms(inv_mass_sum, ia, ib, load(&q->normal_arm_a), load(&q->normal_arm_b));
+        store_pair(&c0->points[j].normal_mass, &c1->points[j].normal_mass,
+                   select(use_block, pair(c0->points[j].normal_mass, c1->points[j].normal_mass), mass));
+    }
 }
 
-/* Whether a constraint's points can be prepared in a lane: two points
- * and a normal that turns with a body (circles' normals follow their
- * centres, and their contacts have one point anyway). */
-static bool fits_a_lane(const rb_contact_constraint *c)
+/* The rest of a row whose two contacts both use the block: their bodies,
+ * friction and impulses, and where their constraints are. */
+static void complete_row(rb_contact_row *row, const rb_contact_constraint *constraints, int i0, int i1,
+                         rb_body_state *states)
 {
-    return c->point_count == 2 && c->normal_follows != RB_NORMAL_FROM_CENTERS;
+    const rb_contact_constraint *c0 = &constraints[i0];
+    const rb_contact_constraint *c1 = &constraints[i1];
+    row->body_a[0] = &states[c0->body_a];
+    row->body_a[1] = &states[c1->body_a];
+    row->body_b[0] = &states[c0->body_b];
+    row->body_b[1] = &states[c1->body_b];
+    store(&row->friction, pair(c0->friction, c1->friction));
+    for (int j = 0; j < 2; ++j) {
+        store(&row->points[j].normal_impulse, pair(c0->points[j].normal_impulse, c1->points[j].normal_impulse));
+        store(&row->points[j].tangent_impulse, pair(c0->points[j].tangent_impulse, c1->points[j].tangent_impulse));
+    }
+    row->constraints[0] = i0;
+    row->constraints[1] = i1;
 }
 
-/* Each constraint's points depend on its own bodies alone, so any two
- * neighbours can be prepared together, whatever their colours. */
+/* Whether a constraint can be prepared in a lane: two points and a normal
+ * that turns with a body (circles' normals follow their centres, and
+ * their contacts have one point anyway); and then solved in a row: no
+ * restitution, whose pass reads the largest push of the step, which the
+ * rows do not keep. */
+static bool fits_a_row(const rb_contact_constraint *c)
+{
+    return c->point_count == 2 && c->normal_follows != RB_NORMAL_FROM_CENTERS && c->restitution == 0.0;
+}
+
+/* Each constraint's points depend on its own bodies alone, so any two can
+ * be prepared together; the rows take two of one colour, which share no
+ * moving body, so that the passes may solve them at once. The overflow
+ * colour's constraints, which may share bodies, are solved one at a
+ * time in their order, as are the constraints that do not fit a row and
+ * pairs of which one does not use the block. */
 void rb_contact_solver_prepare_points(rb_world *world, double h, rb_substep_rows rows)
 {
+    rb_contact_rows *laid = &world->contact_rows;
+    if (laid->live) {
+        rb_contact_rows_store_impulses(world);
+    }
     double inv_h = 1.0 / h;
     rb_contact_constraint *constraints = world->constraints;
     int count = world->constraint_count;
-    int i = 0;
-    while (i < count) {
-        if (i + 1 < count && fits_a_lane(&constraints[i]) && fits_a_lane(&constraints[i + 1])) {
-            prepare_two(&constraints[i], &constraints[i + 1], world->states, &world->settings, inv_h, rows);
-            i += 2;
-        } else {
-            rb_contact_solver_prepare_points_range(world, h, rows, i, i + 1);
-            i += 1;
+    /* the soft step makes no room for rows: its constraints are only
+     * prepared, two at a time where they fit */
+    bool room = laid->row_capacity >= count / 2 && laid->single_capacity >= count;
+    rb_contact_row scratch;
+    int row_count = 0;
+    int single_count = 0;
+    for (int colour = 0; colour <= RB_COLOUR_COUNT; ++colour) {
+        laid->row_start[colour] = row_count;
+        laid->single_start[colour] = single_count;
+        bool pairs = colour != RB_OVERFLOW_COLOUR || !room;
+        int waiting = -1; /* a constraint that fits a row, waiting for another */
+        for (int i = laid->colour_start[colour]; i < laid->colour_start[colour + 1]; ++i) {
+            rb_contact_constraint *c = &constraints[i];
+            if (!pairs || !fits_a_row(c)) {
+                rb_contact_solver_prepare_points_range(world, h, rows, i, i + 1);
+                if (room) {
+                    laid->singles[single_count++] = i;
+                }
+                continue;
+            }
+            if (waiting < 0) {
+                waiting = i;
+                continue;
+            }
+            rb_contact_row *row = room ? &laid->rows[row_count] : &scratch;
+            int block = prepare_two(&constraints[waiting], c, world->states, &world->settings, inv_h, rows, row);
+            if (room && block == 3) {
+                complete_row(row, constraints, waiting, i, world->states);
+                ++row_count;
+            } else {
+                give_back(row, block, &constraints[waiting], c, rows);
+                if (room) {
+                    laid->singles[single_count++] = waiting;
+                    laid->singles[single_count++] = i;
+                }
+            }
+            waiting = -1;
+        }
+        if (waiting >= 0) {
+            rb_contact_solver_prepare_points_range(world, h, rows, waiting, waiting + 1);
+            if (room) {
+                laid->singles[single_count++] = waiting;
+            }
         }
     }
+    laid->row_start[RB_COLOUR_COUNT + 1] = row_count;
+    laid->single_start[RB_COLOUR_COUNT + 1] = single_count;
+    laid->row_count = row_count;
+    laid->single_count = single_count;
+    laid->live = room;
 }
 
 #else
