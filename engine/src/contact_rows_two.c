@@ -128,69 +128,57 @@ static inline velocity_lanes select_velocities(lanes mask, const velocity_lanes 
     };
 }
 
-/* What a pass reads of a row but never writes, loaded once (as
- * constraint_rows in contact_solver.c): the normal, the tangent
- * t = (ny, -nx), and the inverse masses. */
-typedef struct row_lanes {
-    lanes nx, ny, tx, ty;
-    lanes inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
-} row_lanes;
-
-static inline row_lanes load_rows(const rb_contact_row *row)
-{
-    lanes nx = load(&row->normal_x);
-    lanes ny = load(&row->normal_y);
-    return (row_lanes){nx,
-                       ny,
-                       ny,
-                       negate(nx),
-                       load(&row->inv_mass_a),
-                       load(&row->inv_inertia_a),
-                       load(&row->inv_mass_b),
-                       load(&row->inv_inertia_b)};
-}
+/* A row's values are read where they are used, not copied out first:
+ * SSE2's operations take one operand straight from an aligned address,
+ * and the sixteen registers are held by the velocities and the values
+ * being worked out (copied out, the row's constants were stored to the
+ * stack and read back). The normal is (normal_x, normal_y) and the
+ * tangent (normal_y, tangent_y). */
 
 /* row_velocity: d·(vB - vA) + ωB·arm_b - ωA·arm_a along the direction
  * (dx, dy). */
-static inline lanes row_velocity(lanes dx, lanes dy, lanes arm_a, lanes arm_b, const velocity_lanes *v)
+static inline lanes row_velocity(const rb_lanes2 *dx, const rb_lanes2 *dy, const rb_lanes2 *arm_a,
+                                 const rb_lanes2 *arm_b, const velocity_lanes *v)
 {
-    lanes dot = add(mul(dx, sub(v->vbx, v->vax)), mul(dy, sub(v->vby, v->vay)));
-    return sub(add(dot, mul(v->wb, arm_b)), mul(v->wa, arm_a));
+    lanes dot = add(mul(load(dx), sub(v->vbx, v->vax)), mul(load(dy), sub(v->vby, v->vay)));
+    return sub(add(dot, mul(v->wb, load(arm_b))), mul(v->wa, load(arm_a)));
 }
 
 /* apply_row_impulse: -λ·d to A, +λ·d to B, at lever arms arm_a, arm_b. */
-static inline void apply_row_impulse(const row_lanes *m, lanes dx, lanes dy, lanes arm_a, lanes arm_b, lanes lambda,
-                                     velocity_lanes *v)
+static inline void apply_row_impulse(const rb_contact_row *row, const rb_lanes2 *dx, const rb_lanes2 *dy,
+                                     const rb_lanes2 *arm_a, const rb_lanes2 *arm_b, lanes lambda, velocity_lanes *v)
 {
-    lanes ix = mul(lambda, dx);
-    lanes iy = mul(lambda, dy);
-    v->vax = sub(v->vax, mul(m->inv_mass_a, ix));
-    v->vay = sub(v->vay, mul(m->inv_mass_a, iy));
-    v->wa = sub(v->wa, mul(mul(m->inv_inertia_a, lambda), arm_a));
-    v->vbx = add(v->vbx, mul(m->inv_mass_b, ix));
-    v->vby = add(v->vby, mul(m->inv_mass_b, iy));
-    v->wb = add(v->wb, mul(mul(m->inv_inertia_b, lambda), arm_b));
+    lanes ix = mul(lambda, load(dx));
+    lanes iy = mul(lambda, load(dy));
+    v->vax = sub(v->vax, mul(load(&row->inv_mass_a), ix));
+    v->vay = sub(v->vay, mul(load(&row->inv_mass_a), iy));
+    v->wa = sub(v->wa, mul(mul(load(&row->inv_inertia_a), lambda), load(arm_a)));
+    v->vbx = add(v->vbx, mul(load(&row->inv_mass_b), ix));
+    v->vby = add(v->vby, mul(load(&row->inv_mass_b), iy));
+    v->wb = add(v->wb, mul(mul(load(&row->inv_inertia_b), lambda), load(arm_b)));
 }
 
 /* warm_start_point: the normal's impulse, then the tangent's. */
-static inline void warm_start_point(const row_lanes *m, const rb_row_point *q, velocity_lanes *v)
+static inline void warm_start_point(const rb_contact_row *row, const rb_row_point *q, velocity_lanes *v)
 {
-    apply_row_impulse(m, m->nx, m->ny, load(&q->normal_arm_a), load(&q->normal_arm_b), load(&q->normal_impulse), v);
-    apply_row_impulse(m, m->tx, m->ty, load(&q->tangent_arm_a), load(&q->tangent_arm_b), load(&q->tangent_impulse), v);
+    apply_row_impulse(row, &row->normal_x, &row->normal_y, &q->normal_arm_a, &q->normal_arm_b, load(&q->normal_impulse),
+                      v);
+    apply_row_impulse(row, &row->normal_y, &row->tangent_y, &q->tangent_arm_a, &q->tangent_arm_b,
+                      load(&q->tangent_impulse), v);
 }
 
 static void warm_start_row(const rb_contact_row *row)
 {
     velocity_lanes v = load_velocities(row);
-    row_lanes m = load_rows(row);
-    warm_start_point(&m, &row->points[0], &v);
-    warm_start_point(&m, &row->points[1], &v);
+    warm_start_point(row, &row->points[0], &v);
+    warm_start_point(row, &row->points[1], &v);
     store_velocities(&v, row);
 }
 
 /* solve_point_friction, in both lanes: a lane whose point has neither a
  * normal nor a tangent impulse is left as it is. */
-static inline void solve_point_friction(const row_lanes *m, lanes friction, rb_row_point *q, velocity_lanes *v)
+static inline __attribute__((always_inline)) void solve_point_friction(const rb_contact_row *row, rb_row_point *q,
+                                                                       velocity_lanes *v)
 {
     lanes normal_impulse = load(&q->normal_impulse);
     lanes tangent_impulse = load(&q->tangent_impulse);
@@ -200,20 +188,18 @@ static inline void solve_point_friction(const row_lanes *m, lanes friction, rb_r
     if (lanes_active == 0) {
         return;
     }
-    lanes arm_a = load(&q->tangent_arm_a);
-    lanes arm_b = load(&q->tangent_arm_b);
-    lanes vt = row_velocity(m->tx, m->ty, arm_a, arm_b, v);
-    lanes limit = mul(friction, normal_impulse);
+    lanes vt = row_velocity(&row->normal_y, &row->tangent_y, &q->tangent_arm_a, &q->tangent_arm_b, v);
+    lanes limit = mul(load(&row->friction), normal_impulse);
     lanes accumulated =
         min(max(sub(tangent_impulse, mul(load(&q->tangent_mass), vt)), negate(limit)), limit); /* rb_clamp */
     lanes delta = sub(accumulated, tangent_impulse);
     if (lanes_active == 3) {
         store(&q->tangent_impulse, accumulated);
-        apply_row_impulse(m, m->tx, m->ty, arm_a, arm_b, delta, v);
+        apply_row_impulse(row, &row->normal_y, &row->tangent_y, &q->tangent_arm_a, &q->tangent_arm_b, delta, v);
         return;
     }
     velocity_lanes before = *v;
-    apply_row_impulse(m, m->tx, m->ty, arm_a, arm_b, delta, v);
+    apply_row_impulse(row, &row->normal_y, &row->tangent_y, &q->tangent_arm_a, &q->tangent_arm_b, delta, v);
     *v = select_velocities(active, v, &before);
     store(&q->tangent_impulse, select(active, accumulated, tangent_impulse));
 }
@@ -221,41 +207,39 @@ static inline void solve_point_friction(const row_lanes *m, lanes friction, rb_r
 /* solve_normal_block, in both lanes: the 2x2 complementarity problem's
  * four cases in the reference's order, each lane taking the first that
  * holds in it, or keeping its impulses and velocities where none does. */
-static inline void solve_normal_block(const rb_contact_row *row, const row_lanes *m, rb_row_point *q1, rb_row_point *q2,
-                                      velocity_lanes *v)
+static inline __attribute__((always_inline)) void solve_normal_block(rb_contact_row *row, velocity_lanes *v)
 {
+    rb_row_point *q1 = &row->points[0];
+    rb_row_point *q2 = &row->points[1];
     lanes zero = _mm_setzero_pd();
     lanes x1_old = load(&q1->normal_impulse);
     lanes x2_old = load(&q2->normal_impulse);
-    lanes arm1_a = load(&q1->normal_arm_a);
-    lanes arm1_b = load(&q1->normal_arm_b);
-    lanes arm2_a = load(&q2->normal_arm_a);
-    lanes arm2_b = load(&q2->normal_arm_b);
-    lanes k11 = load(&row->k11);
-    lanes k12 = load(&row->k12);
-    lanes k22 = load(&row->k22);
-    lanes w1 = sub(row_velocity(m->nx, m->ny, arm1_a, arm1_b, v), load(&q1->min_normal_velocity));
-    lanes w2 = sub(row_velocity(m->nx, m->ny, arm2_a, arm2_b, v), load(&q2->min_normal_velocity));
-    lanes b1 = sub(w1, add(mul(k11, x1_old), mul(k12, x2_old)));
-    lanes b2 = sub(w2, add(mul(k12, x1_old), mul(k22, x2_old)));
+    lanes w1 = sub(row_velocity(&row->normal_x, &row->normal_y, &q1->normal_arm_a, &q1->normal_arm_b, v),
+                   load(&q1->min_normal_velocity));
+    lanes w2 = sub(row_velocity(&row->normal_x, &row->normal_y, &q2->normal_arm_a, &q2->normal_arm_b, v),
+                   load(&q2->min_normal_velocity));
+    lanes b1 = sub(w1, add(mul(load(&row->k11), x1_old), mul(load(&row->k12), x2_old)));
+    lanes b2 = sub(w2, add(mul(load(&row->k12), x1_old), mul(load(&row->k22), x2_old)));
 
     /* Case 1: both push, w = 0. */
-    lanes inv_k12 = load(&row->inv_k12);
-    lanes x1 = negate(add(mul(load(&row->inv_k11), b1), mul(inv_k12, b2)));
-    lanes x2 = negate(add(mul(inv_k12, b1), mul(load(&row->inv_k22), b2)));
+    lanes x1 = negate(add(mul(load(&row->inv_k11), b1), mul(load(&row->inv_k12), b2)));
+    lanes x2 = negate(add(mul(load(&row->inv_k12), b1), mul(load(&row->inv_k22), b2)));
     lanes both_push = _mm_and_pd(_mm_cmpge_pd(x1, zero), _mm_cmpge_pd(x2, zero));
     if (_mm_movemask_pd(both_push) == 3) {
         store(&q1->normal_impulse, x1);
         store(&q2->normal_impulse, x2);
-        apply_row_impulse(m, m->nx, m->ny, arm1_a, arm1_b, sub(x1, x1_old), v);
-        apply_row_impulse(m, m->nx, m->ny, arm2_a, arm2_b, sub(x2, x2_old), v);
+        apply_row_impulse(row, &row->normal_x, &row->normal_y, &q1->normal_arm_a, &q1->normal_arm_b, sub(x1, x1_old),
+                          v);
+        apply_row_impulse(row, &row->normal_x, &row->normal_y, &q2->normal_arm_a, &q2->normal_arm_b, sub(x2, x2_old),
+                          v);
         return;
     }
     /* Case 2: only the first pushes. */
-    lanes first_x1 = divide(negate(b1), k11);
+    lanes k12 = load(&row->k12);
+    lanes first_x1 = divide(negate(b1), load(&row->k11));
     lanes first_only = _mm_and_pd(_mm_cmpge_pd(first_x1, zero), _mm_cmpge_pd(add(mul(k12, first_x1), b2), zero));
     /* Case 3: only the second pushes. */
-    lanes second_x2 = divide(negate(b2), k22);
+    lanes second_x2 = divide(negate(b2), load(&row->k22));
     lanes second_only = _mm_and_pd(_mm_cmpge_pd(second_x2, zero), _mm_cmpge_pd(add(mul(k12, second_x2), b1), zero));
     /* Case 4: neither pushes; valid when both separate. */
     lanes neither = _mm_and_pd(_mm_cmpge_pd(b1, zero), _mm_cmpge_pd(b2, zero));
@@ -265,8 +249,8 @@ static inline void solve_normal_block(const rb_contact_row *row, const row_lanes
     x2 = select(both_push, x2, select(first_only, zero, select(second_only, second_x2, zero)));
     lanes solved = _mm_or_pd(_mm_or_pd(both_push, first_only), _mm_or_pd(second_only, neither));
     velocity_lanes before = *v;
-    apply_row_impulse(m, m->nx, m->ny, arm1_a, arm1_b, sub(x1, x1_old), v);
-    apply_row_impulse(m, m->nx, m->ny, arm2_a, arm2_b, sub(x2, x2_old), v);
+    apply_row_impulse(row, &row->normal_x, &row->normal_y, &q1->normal_arm_a, &q1->normal_arm_b, sub(x1, x1_old), v);
+    apply_row_impulse(row, &row->normal_x, &row->normal_y, &q2->normal_arm_a, &q2->normal_arm_b, sub(x2, x2_old), v);
     *v = select_velocities(solved, v, &before);
     store(&q1->normal_impulse, select(solved, x1, x1_old));
     store(&q2->normal_impulse, select(solved, x2, x2_old));
@@ -277,11 +261,9 @@ static inline void solve_normal_block(const rb_contact_row *row, const row_lanes
 static void solve_row(rb_contact_row *row)
 {
     velocity_lanes v = load_velocities(row);
-    row_lanes m = load_rows(row);
-    lanes friction = load(&row->friction);
-    solve_point_friction(&m, friction, &row->points[0], &v);
-    solve_point_friction(&m, friction, &row->points[1], &v);
-    solve_normal_block(row, &m, &row->points[0], &row->points[1], &v);
+    solve_point_friction(row, &row->points[0], &v);
+    solve_point_friction(row, &row->points[1], &v);
+    solve_normal_block(row, &v);
     store_velocities(&v, row);
 }
 

@@ -137,7 +137,8 @@ typedef struct rb_row_point {
 struct rb_contact_row {
     rb_body_state *body_a[2];
     rb_body_state *body_b[2];
-    rb_lanes2 normal_x, normal_y;
+    rb_lanes2 normal_x, normal_y; /* unit, world, from A to B, this substep */
+    rb_lanes2 tangent_y;          /* -normal_x: the tangent is (normal_y, -normal_x) */
     rb_lanes2 inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
     rb_lanes2 friction;
     rb_row_point points[2];

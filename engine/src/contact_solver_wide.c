@@ -116,6 +116,7 @@ static int prepare_two(const rb_contact_constraint *c0, const rb_contact_constra
     turned_normals_of_two(c0, c1, a0, b0, a1, b1, &nx, &ny);
     store(&row->normal_x, nx);
     store(&row->normal_y, ny);
+    store(&row->tangent_y, negate(nx));
     prepare_point(c0, c1, 0, a0, b0, a1, b1, nx, ny, settings, inv_h, rows, &row->points[0]);
     prepare_point(c0, c1, 1, a0, b0, a1, b1, nx, ny, settings, inv_h, rows, &row->points[1]);
 
