@@ -42,6 +42,18 @@ static inline lanes mask_of(bool first, bool second)
 static inline lanes load(const rb_lanes2 *field) { return _mm_load_pd(field->v); }
 static inline void store(rb_lanes2 *field, lanes a) { _mm_store_pd(field->v, a); }
 
+/* The bodies' poses a point is carried by, lane by lane. */
+typedef struct pose_lanes {
+    lanes cx, cy; /* m, centre of mass */
+    lanes qc, qs; /* cosine and sine of the angle */
+} pose_lanes;
+
+static inline pose_lanes poses(const rb_body_state *first, const rb_body_state *second)
+{
+    return (pose_lanes){pair(first->center.x, second->center.x), pair(first->center.y, second->center.y),
+                        pair(first->rotation.c, second->rotation.c), pair(first->rotation.s, second->rotation.s)};
+}
+
 /* Both contacts' normals as their faces' bodies now turn them (the
  * reference's turned_normal): n = q·n_local, q the rotation of the body
  * whose face the normal is, of a0 or b0 for the first contact and of a1

@@ -248,6 +248,15 @@ static inline __attribute__((always_inline)) void solve_normal_block(rb_contact_
     x1 = select(both_push, x1, select(first_only, first_x1, zero));
     x2 = select(both_push, x2, select(first_only, zero, select(second_only, second_x2, zero)));
     lanes solved = _mm_or_pd(_mm_or_pd(both_push, first_only), _mm_or_pd(second_only, neither));
+    if (_mm_movemask_pd(solved) == 3) {
+        store(&q1->normal_impulse, x1);
+        store(&q2->normal_impulse, x2);
+        apply_row_impulse(row, &row->normal_x, &row->normal_y, &q1->normal_arm_a, &q1->normal_arm_b, sub(x1, x1_old),
+                          v);
+        apply_row_impulse(row, &row->normal_x, &row->normal_y, &q2->normal_arm_a, &q2->normal_arm_b, sub(x2, x2_old),
+                          v);
+        return;
+    }
     velocity_lanes before = *v;
     apply_row_impulse(row, &row->normal_x, &row->normal_y, &q1->normal_arm_a, &q1->normal_arm_b, sub(x1, x1_old), v);
     apply_row_impulse(row, &row->normal_x, &row->normal_y, &q2->normal_arm_a, &q2->normal_arm_b, sub(x2, x2_old), v);

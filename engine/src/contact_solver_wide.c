@@ -32,33 +32,45 @@ static inline void store_pair(double *first, double *second, lanes a)
     _mm_storeh_pd(second, a);
 }
 
+/* What the preparation of two contacts reads of their constraints and
+ * bodies besides each point's surface points, read once before anything
+ * is stored: the stores into the row are doubles, as these are, so the
+ * compiler could not tell that they leave these unchanged and would read
+ * them again after every one. */
+typedef struct two_contacts {
+    pose_lanes a, b;          /* the bodies' poses */
+    lanes nx, ny;             /* the normal as the bodies now turn it */
+    lanes radius_a, radius_b; /* m, of a circle side; 0 for a polygon's */
+    lanes inv_mass_a, inv_mass_b, inv_inertia_a, inv_inertia_b;
+} two_contacts;
+
 /* Point j of both contacts, as rb_contact_solver_prepare_points_range
- * prepares it, with the normal (nx, ny) as the bodies now turn it, into
- * q. Inlined whatever its size, so that the two points share their
- * bodies' loads (a call for each point read them twice). */
+ * prepares it, into q. Inlined whatever its size, so that the two points
+ * share what they read. */
 static inline __attribute__((always_inline)) void
-prepare_point(const rb_contact_constraint *c0, const rb_contact_constraint *c1, int j, const rb_body_state *a0,
-              const rb_body_state *b0, const rb_body_state *a1, const rb_body_state *b1, lanes nx, lanes ny,
+prepare_point(const rb_contact_constraint *c0, const rb_contact_constraint *c1, int j, const two_contacts *t,
               const rb_solver_settings *settings, double inv_h, rb_substep_rows rows, rb_row_point *q)
 {
     const rb_constraint_point *p0 = &c0->points[j];
     const rb_constraint_point *p1 = &c1->points[j];
-    lanes cax = pair(a0->center.x, a1->center.x);
-    lanes cay = pair(a0->center.y, a1->center.y);
-    lanes cbx = pair(b0->center.x, b1->center.x);
-    lanes cby = pair(b0->center.y, b1->center.y);
-    lanes qac = pair(a0->rotation.c, a1->rotation.c);
-    lanes qas = pair(a0->rotation.s, a1->rotation.s);
-    lanes qbc = pair(b0->rotation.c, b1->rotation.c);
-    lanes qbs = pair(b0->rotation.s, b1->rotation.s);
+    lanes cax = t->a.cx;
+    lanes cay = t->a.cy;
+    lanes cbx = t->b.cx;
+    lanes cby = t->b.cy;
+    lanes qac = t->a.qc;
+    lanes qas = t->a.qs;
+    lanes qbc = t->b.qc;
+    lanes qbs = t->b.qs;
+    lanes nx = t->nx;
+    lanes ny = t->ny;
     lanes lax = pair(p0->local_surface_a.x, p1->local_surface_a.x);
     lanes lay = pair(p0->local_surface_a.y, p1->local_surface_a.y);
     lanes lbx = pair(p0->local_surface_b.x, p1->local_surface_b.x);
     lanes lby = pair(p0->local_surface_b.y, p1->local_surface_b.y);
     /* current_geometry: each surface point carried by its body, moved out
      * along the normal by a circle's radius. */
-    lanes radius_a = pair(c0->radius_a, c1->radius_a);
-    lanes radius_b = pair(c0->radius_b, c1->radius_b);
+    lanes radius_a = t->radius_a;
+    lanes radius_b = t->radius_b;
     lanes pax = add(add(cax, sub(mul(qac, lax), mul(qas, lay))), mul(radius_a, nx));
     lanes pay = add(add(cay, add(mul(qas, lax), mul(qac, lay))), mul(radius_a, ny));
     lanes pbx = sub(add(cbx, sub(mul(qbc, lbx), mul(qbs, lby))), mul(radius_b, nx));
@@ -81,10 +93,9 @@ prepare_point(const rb_contact_constraint *c0, const rb_contact_constraint *c1, 
     store(&q->normal_arm_b, sub(mul(rbx, ny), mul(rby, nx)));
     store(&q->tangent_arm_a, tangent_arm_a);
     store(&q->tangent_arm_b, tangent_arm_b);
-    lanes inv_mass_sum = add(pair(c0->inv_mass_a, c1->inv_mass_a), pair(c0->inv_mass_b, c1->inv_mass_b));
-    lanes ia = pair(c0->inv_inertia_a, c1->inv_inertia_a);
-    lanes ib = pair(c0->inv_inertia_b, c1->inv_inertia_b);
-    store(&q->tangent_mass, mass_from_arms(inv_mass_sum, ia, ib, tangent_arm_a, tangent_arm_b));
+    lanes inv_mass_sum = add(t->inv_mass_a, t->inv_mass_b);
+    store(&q->tangent_mass,
+          mass_from_arms(inv_mass_sum, t->inv_inertia_a, t->inv_inertia_b, tangent_arm_a, tangent_arm_b));
     /* The lower bound of the normal velocity: close an open gap within
      * the substep; push overlap out (Baumgarte) or only stop approach. */
     lanes closing = mul(negate(s), both(inv_h));
@@ -112,24 +123,37 @@ static int prepare_two(const rb_contact_constraint *c0, const rb_contact_constra
     const rb_body_state *b0 = &states[c0->body_b];
     const rb_body_state *a1 = &states[c1->body_a];
     const rb_body_state *b1 = &states[c1->body_b];
-    lanes nx, ny;
-    turned_normals_of_two(c0, c1, a0, b0, a1, b1, &nx, &ny);
-    store(&row->normal_x, nx);
-    store(&row->normal_y, ny);
-    store(&row->tangent_y, negate(nx));
-    prepare_point(c0, c1, 0, a0, b0, a1, b1, nx, ny, settings, inv_h, rows, &row->points[0]);
-    prepare_point(c0, c1, 1, a0, b0, a1, b1, nx, ny, settings, inv_h, rows, &row->points[1]);
+    two_contacts t = {.a = poses(a0, a1),
+                      .b = poses(b0, b1),
+                      .radius_a = pair(c0->radius_a, c1->radius_a),
+                      .radius_b = pair(c0->radius_b, c1->radius_b),
+                      .inv_mass_a = pair(c0->inv_mass_a, c1->inv_mass_a),
+                      .inv_mass_b = pair(c0->inv_mass_b, c1->inv_mass_b),
+                      .inv_inertia_a = pair(c0->inv_inertia_a, c1->inv_inertia_a),
+                      .inv_inertia_b = pair(c0->inv_inertia_b, c1->inv_inertia_b)};
+    turned_normals_of_two(c0, c1, a0, b0, a1, b1, &t.nx, &t.ny);
+    /* the 2x2 block's inverse as the constraints have it, kept where the
+     * block is not used */
+    lanes old_inv_k11 = pair(c0->inv_k11, c1->inv_k11);
+    lanes old_inv_k12 = pair(c0->inv_k12, c1->inv_k12);
+    lanes old_inv_k22 = pair(c0->inv_k22, c1->inv_k22);
+    int kept_block = (int)c0->use_block | (int)c1->use_block << 1;
+    store(&row->normal_x, t.nx);
+    store(&row->normal_y, t.ny);
+    store(&row->tangent_y, negate(t.nx));
+    prepare_point(c0, c1, 0, &t, settings, inv_h, rows, &row->points[0]);
+    prepare_point(c0, c1, 1, &t, settings, inv_h, rows, &row->points[1]);
 
-    lanes ma = pair(c0->inv_mass_a, c1->inv_mass_a);
-    lanes mb = pair(c0->inv_mass_b, c1->inv_mass_b);
-    lanes ia = pair(c0->inv_inertia_a, c1->inv_inertia_a);
-    lanes ib = pair(c0->inv_inertia_b, c1->inv_inertia_b);
+    lanes ma = t.inv_mass_a;
+    lanes mb = t.inv_mass_b;
+    lanes ia = t.inv_inertia_a;
+    lanes ib = t.inv_inertia_b;
     store(&row->inv_mass_a, ma);
     store(&row->inv_mass_b, mb);
     store(&row->inv_inertia_a, ia);
     store(&row->inv_inertia_b, ib);
     if (!rows.block_normals) {
-        return (int)c0->use_block | (int)c1->use_block << 1;
+        return kept_block;
     }
     lanes inv_mass_sum = add(ma, mb);
     lanes rn1a = load(&row->points[0].normal_arm_a);
@@ -145,9 +169,9 @@ static int prepare_two(const rb_contact_constraint *c0, const rb_contact_constra
     lanes det = sub(mul(k11, k22), mul(k12, k12));
     lanes use_block = _mm_cmplt_pd(mul(k11, k11), mul(both(MAX_BLOCK_CONDITION), det));
     lanes inv_det = divide(both(1.0), det);
-    store(&row->inv_k11, select(use_block, mul(inv_det, k22), pair(c0->inv_k11, c1->inv_k11)));
-    store(&row->inv_k22, select(use_block, mul(inv_det, k11), pair(c0->inv_k22, c1->inv_k22)));
-    store(&row->inv_k12, select(use_block, mul(negate(inv_det), k12), pair(c0->inv_k12, c1->inv_k12)));
+    store(&row->inv_k11, select(use_block, mul(inv_det, k22), old_inv_k11));
+    store(&row->inv_k22, select(use_block, mul(inv_det, k11), old_inv_k22));
+    store(&row->inv_k12, select(use_block, mul(negate(inv_det), k12), old_inv_k12));
     return _mm_movemask_pd(use_block);
 }
 
