@@ -236,6 +236,104 @@ static cases_met expect_passes_agree(rb_world *world, rb_substep_rows rows, doub
     return met;
 }
 
+/* Moves every dynamic body by its velocity over h, as a substep's end
+ * does (without damping). */
+static void move_bodies(rb_world *world, double h)
+{
+    for (int i = 0; i < world->body_slots; ++i) {
+        if (world->bodies[i].in_use && world->bodies[i].type == RB_BODY_DYNAMIC) {
+            rb_body_state *s = &world->states[i];
+            s->center = rb_mul_add(s->center, h, s->linear_velocity);
+            s->angle += h * s->angular_velocity;
+            s->rotation = rb_rot_from_angle(s->angle);
+        }
+    }
+}
+
+/* Every ninth two-point constraint given restitution, so that it leaves
+ * the rows in the next substep's preparation. */
+static void bounce_some(rb_world *world)
+{
+    for (int i = 0; i < world->constraint_count; i += 9) {
+        world->constraints[i].restitution = 0.5;
+    }
+}
+
+/* Three substeps' preparations, warm starts and velocity passes both
+ * ways, the bodies moved between them, and before the third some
+ * contacts leaving the rows: the second substep's rows pair the same
+ * contacts as the first's and keep their impulses; the third's differ
+ * from the first contact that left on, and the rows before it keep
+ * theirs while the others give them back and take them anew. */
+static void expect_substeps_agree(rb_world *world, rb_substep_rows rows, double push, uint64_t seed)
+{
+    cr_assert_geq(rb_contact_solver_prepare(world), 0, "out of memory");
+    int count = world->constraint_count;
+    disturb(world, push, 0.0, seed);
+    double h = TEST_DT / SUBSTEPS;
+    size_t state_bytes = (size_t)world->body_slots * sizeof *world->states;
+    size_t constraint_bytes = (size_t)count * sizeof *world->constraints;
+    rb_body_state *start_states = malloc(state_bytes);
+    rb_body_state *reference_states = malloc(state_bytes);
+    rb_contact_constraint *start_constraints = malloc(constraint_bytes);
+    rb_contact_constraint *reference = malloc(constraint_bytes);
+    cr_assert(start_states && reference_states && start_constraints && reference);
+    memcpy(start_states, world->states, state_bytes);
+    memcpy(start_constraints, world->constraints, constraint_bytes);
+    for (int substep = 0; substep < 3; ++substep) {
+        if (substep == 2) {
+            bounce_some(world);
+        }
+        rb_contact_solver_prepare_points_range(world, h, rows, 0, count);
+        rb_contact_solver_warm_start_range(world, 0, count);
+        for (int pass = 0; pass < PASSES; ++pass) {
+            rb_contact_solver_solve_velocities_range(world, pass % 2 == 1, 0, count);
+        }
+        move_bodies(world, h);
+    }
+    memcpy(reference_states, world->states, state_bytes);
+    memcpy(reference, world->constraints, constraint_bytes);
+
+    memcpy(world->states, start_states, state_bytes);
+    memcpy(world->constraints, start_constraints, constraint_bytes);
+    int row_counts[3];
+    for (int substep = 0; substep < 3; ++substep) {
+        if (substep == 2) {
+            bounce_some(world);
+        }
+        rb_contact_solver_prepare_points(world, h, rows);
+        row_counts[substep] = world->contact_rows.row_count;
+        rb_contact_solver_warm_start(world);
+        for (int pass = 0; pass < PASSES; ++pass) {
+            rb_contact_solver_solve_velocities(world, pass % 2 == 1);
+        }
+        move_bodies(world, h);
+    }
+    rb_contact_rows_store_impulses(world);
+    cr_expect(row_counts[0] == row_counts[1] && row_counts[2] < row_counts[1],
+              "the rows stay while no contact leaves them, and fewer after some leave (%d, %d, %d)", row_counts[0],
+              row_counts[1], row_counts[2]);
+
+    for (int i = 0; i < world->body_slots; ++i) {
+        cr_expect(memcmp(&reference_states[i], &world->states[i], sizeof *world->states) == 0,
+                  "body %d: state after three substeps differs one at a time and in rows", i);
+    }
+    for (int i = 0; i < count; ++i) {
+        for (int j = 0; j < reference[i].point_count; ++j) {
+            const rb_constraint_point *r = &reference[i].points[j];
+            const rb_constraint_point *w = &world->constraints[i].points[j];
+            cr_expect(r->normal_impulse == w->normal_impulse && r->tangent_impulse == w->tangent_impulse,
+                      "constraint %d point %d: impulses (%.17g, %.17g) one at a time, (%.17g, %.17g) in rows after "
+                      "three substeps",
+                      i, j, r->normal_impulse, r->tangent_impulse, w->normal_impulse, w->tangent_impulse);
+        }
+    }
+    free(start_states);
+    free(reference_states);
+    free(start_constraints);
+    free(reference);
+}
+
 /* A settled base-20 pyramid with nine balls beside it, every seventh box
  * bouncing, in a world of the given solver. */
 static rb_world *settled_pile(rb_solver_type type)
@@ -301,5 +399,14 @@ Test(contact_rows, baumgarte_rows_give_the_reference_velocities_and_impulses)
     rb_substep_rows rows = {.baumgarte_bias = true, .block_normals = true};
     cases_met met = expect_passes_agree(world, rows, 1.0, 4.0 * slop, 7u);
     cr_expect_gt(met.rows, 400, "most of the pyramid's contacts are solved in rows (%d)", met.rows);
+    destroy_world_and_expect_no_leak(world);
+}
+
+/* The rows kept from one substep to the next, and laid out anew when
+ * contacts leave them. */
+Test(contact_rows, rows_carry_their_impulses_from_substep_to_substep)
+{
+    rb_world *world = settled_pile(RB_SOLVER_NGS);
+    expect_substeps_agree(world, (rb_substep_rows){.block_normals = true}, 1.0, 21u);
     destroy_world_and_expect_no_leak(world);
 }

@@ -60,8 +60,14 @@ size_t rb_contact_rows_bytes(const rb_contact_rows *rows)
 
 void rb_contact_rows_store_impulses(rb_world *world)
 {
-    rb_contact_rows *laid = &world->contact_rows;
-    for (int k = 0; k < laid->row_count; ++k) {
+    rb_contact_rows_store_range(world, 0, world->contact_rows.row_count);
+    world->contact_rows.live = false;
+}
+
+void rb_contact_rows_store_range(rb_world *world, int begin, int end)
+{
+    const rb_contact_rows *laid = &world->contact_rows;
+    for (int k = begin; k < end; ++k) {
         const rb_contact_row *row = &laid->rows[k];
         for (int lane = 0; lane < 2; ++lane) {
             rb_contact_constraint *c = &world->constraints[row->constraints[lane]];
@@ -71,7 +77,6 @@ void rb_contact_rows_store_impulses(rb_world *world)
             }
         }
     }
-    laid->live = false;
 }
 
 #if defined(__SSE2__)

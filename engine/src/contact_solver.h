@@ -210,6 +210,9 @@ void rb_contact_solver_solve_velocities_range(rb_world *world, bool backwards, i
 /* Gives the rows' impulses back to their constraints and leaves the rows
  * unused until the next preparation lays them out again. */
 void rb_contact_rows_store_impulses(rb_world *world);
+/* The impulses of rows begin .. end - 1 given back to their constraints,
+ * the rows left as they are. */
+void rb_contact_rows_store_range(rb_world *world, int begin, int end);
 void rb_contact_rows_free(rb_contact_rows *rows);
 size_t rb_contact_rows_bytes(const rb_contact_rows *rows);
 

@@ -263,13 +263,22 @@ static bool fits_a_row(const rb_contact_constraint *c)
  * moving body, so that the passes may solve them at once. The overflow
  * colour's constraints, which may share bodies, are solved one at a
  * time in their order, as are the constraints that do not fit a row and
- * pairs of which one does not use the block. */
+ * pairs of which one does not use the block.
+ *
+ * The impulses stay in the rows from one substep to the next: the rows
+ * are laid out in the same order each time, so while each new row pairs
+ * the same two contacts as the row it replaces, the impulses are already
+ * in place. From the first row that differs (a contact's block became
+ * ill-conditioned, or well again), the rows left over from the last
+ * substep give their impulses back to their constraints, and the new
+ * rows take theirs from the constraints. */
 void rb_contact_solver_prepare_points(rb_world *world, double h, rb_substep_rows rows)
 {
     rb_contact_rows *laid = &world->contact_rows;
-    if (laid->live) {
-        rb_contact_rows_store_impulses(world);
-    }
+    /* rows held_from .. held_to - 1 still hold the last substep's
+     * impulses */
+    int held_from = 0;
+    int held_to = laid->live ? laid->row_count : 0;
     double inv_h = 1.0 / h;
     rb_contact_constraint *constraints = world->constraints;
     int count = world->constraint_count;
@@ -300,7 +309,13 @@ void rb_contact_solver_prepare_points(rb_world *world, double h, rb_substep_rows
             rb_contact_row *row = room ? &laid->rows[row_count] : &scratch;
             int block = prepare_two(&constraints[waiting], c, world->states, &world->settings, inv_h, rows, row);
             if (room && block == 3) {
-                complete_row(row, constraints, waiting, i, world->states);
+                if (row_count < held_to && row->constraints[0] == waiting && row->constraints[1] == i) {
+                    held_from = row_count + 1; /* the same two contacts: their impulses are in place */
+                } else {
+                    rb_contact_rows_store_range(world, row_count, held_to);
+                    held_to = 0;
+                    complete_row(row, constraints, waiting, i, world->states);
+                }
                 ++row_count;
             } else {
                 give_back(row, block, &constraints[waiting], c, rows);
@@ -318,6 +333,7 @@ void rb_contact_solver_prepare_points(rb_world *world, double h, rb_substep_rows
             }
         }
     }
+    rb_contact_rows_store_range(world, held_from, held_to);
     laid->row_start[RB_COLOUR_COUNT + 1] = row_count;
     laid->single_start[RB_COLOUR_COUNT + 1] = single_count;
     laid->row_count = row_count;
