@@ -130,17 +130,21 @@ typedef struct rb_row_point {
  * solving its normal rows as a 2x2 block, laid side by side for the
  * sequential solvers' warm start and velocity passes
  * (contact_rows_two.c): what those passes read, 264 bytes a contact, in
- * the order they read it. Written by the substep's preparation
- * (contact_solver_wide.c), which also carries the impulses in from the
- * constraints; the rows hold them until rb_contact_rows_store_impulses
- * gives them back. */
+ * the order they read it. Written by each substep's preparation
+ * (contact_solver_wide.c). The rows hold their contacts' impulses: taken
+ * from the constraints when a row is made, kept from one substep to the
+ * next while the row pairs the same contacts, and given back by
+ * rb_contact_rows_store_impulses (when the step stores them) or
+ * rb_contact_rows_store_range (when the rows change). Their largest
+ * pushes are not kept: only restitution reads them, and no row's
+ * contact has it. */
 struct rb_contact_row {
     rb_body_state *body_a[2];
     rb_body_state *body_b[2];
     rb_lanes2 normal_x, normal_y; /* unit, world, from A to B, this substep */
     rb_lanes2 tangent_y;          /* -normal_x: the tangent is (normal_y, -normal_x) */
-    rb_lanes2 inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
-    rb_lanes2 friction;
+    rb_lanes2 inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b; /* 1/kg, 1/(kg·m²); 0 for a body that cannot move */
+    rb_lanes2 friction;                                             /* Coulomb's coefficient */
     rb_row_point points[2];
     rb_lanes2 k11, k12, k22;             /* 1/kg, the normal mass matrix K */
     rb_lanes2 inv_k11, inv_k12, inv_k22; /* kg, its inverse */
