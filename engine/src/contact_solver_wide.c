@@ -132,11 +132,6 @@ static int prepare_two(const rb_contact_constraint *c0, const rb_contact_constra
                       .inv_inertia_a = pair(c0->inv_inertia_a, c1->inv_inertia_a),
                       .inv_inertia_b = pair(c0->inv_inertia_b, c1->inv_inertia_b)};
     turned_normals_of_two(c0, c1, a0, b0, a1, b1, &t.nx, &t.ny);
-    /* the 2x2 block's inverse as the constraints have it, kept where the
-     * block is not used */
-    lanes old_inv_k11 = pair(c0->inv_k11, c1->inv_k11);
-    lanes old_inv_k12 = pair(c0->inv_k12, c1->inv_k12);
-    lanes old_inv_k22 = pair(c0->inv_k22, c1->inv_k22);
     int kept_block = (int)c0->use_block | (int)c1->use_block << 1;
     store(&row->normal_x, t.nx);
     store(&row->normal_y, t.ny);
@@ -169,10 +164,21 @@ static int prepare_two(const rb_contact_constraint *c0, const rb_contact_constra
     lanes det = sub(mul(k11, k22), mul(k12, k12));
     lanes use_block = _mm_cmplt_pd(mul(k11, k11), mul(both(MAX_BLOCK_CONDITION), det));
     lanes inv_det = divide(both(1.0), det);
-    store(&row->inv_k11, select(use_block, mul(inv_det, k22), old_inv_k11));
-    store(&row->inv_k22, select(use_block, mul(inv_det, k11), old_inv_k22));
-    store(&row->inv_k12, select(use_block, mul(negate(inv_det), k12), old_inv_k12));
-    return _mm_movemask_pd(use_block);
+    lanes inv_k11 = mul(inv_det, k22);
+    lanes inv_k22 = mul(inv_det, k11);
+    lanes inv_k12 = mul(negate(inv_det), k12);
+    int block = _mm_movemask_pd(use_block);
+    if (block != 3) {
+        /* the inverse as the constraints have it, kept where the block is
+         * not used */
+        inv_k11 = select(use_block, inv_k11, pair(c0->inv_k11, c1->inv_k11));
+        inv_k22 = select(use_block, inv_k22, pair(c0->inv_k22, c1->inv_k22));
+        inv_k12 = select(use_block, inv_k12, pair(c0->inv_k12, c1->inv_k12));
+    }
+    store(&row->inv_k11, inv_k11);
+    store(&row->inv_k22, inv_k22);
+    store(&row->inv_k12, inv_k12);
+    return block;
 }
 
 static inline void give_back_field(double *first, double *second, const rb_lanes2 *field)
