@@ -288,7 +288,7 @@ void rb_contact_solver_warm_start(rb_world *world)
         rb_contact_solver_warm_start_range(world, 0, world->constraint_count);
         return;
     }
-    for (int colour = 0; colour <= RB_COLOUR_COUNT; ++colour) {
+    for (int colour = 0; colour < laid->colour_count; ++colour) {
         for (int k = laid->row_start[colour]; k < laid->row_start[colour + 1]; ++k) {
             warm_start_row(&laid->rows[k]);
         }
@@ -309,8 +309,8 @@ void rb_contact_solver_solve_velocities(rb_world *world, bool backwards)
         rb_contact_solver_solve_velocities_range(world, backwards, 0, world->constraint_count);
         return;
     }
-    for (int n = 0; n <= RB_COLOUR_COUNT; ++n) {
-        int colour = backwards ? RB_COLOUR_COUNT - n : n;
+    for (int n = 0; n < laid->colour_count; ++n) {
+        int colour = backwards ? laid->colour_count - 1 - n : n;
         for (int k = laid->row_start[colour]; k < laid->row_start[colour + 1]; ++k) {
             solve_row(&laid->rows[k]);
         }

@@ -226,6 +226,13 @@ int rb_contact_solver_prepare(rb_world *world)
     rows->live = false;
     memcpy(rows->colour_start, start, sizeof start);
     rows->colour_start[RB_COLOUR_COUNT + 1] = count;
+    /* the colours up to the last that has constraints: colours fill from
+     * the lowest, and most scenes use a few */
+    rows->colour_count = RB_COLOUR_COUNT + 1;
+    while (rows->colour_count > 0 &&
+           rows->colour_start[rows->colour_count - 1] == rows->colour_start[rows->colour_count]) {
+        --rows->colour_count;
+    }
     /* Room for the sequential solvers' rows (contact_solver_wide.c): at
      * most one a pair of constraints, and each constraint a single. */
     if (world->settings.type != RB_SOLVER_SOFT_STEP &&

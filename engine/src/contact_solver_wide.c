@@ -294,7 +294,8 @@ void rb_contact_solver_prepare_points(rb_world *world, double h, rb_substep_rows
     rb_contact_row scratch;
     int row_count = 0;
     int single_count = 0;
-    for (int colour = 0; colour <= RB_COLOUR_COUNT; ++colour) {
+    int colours = laid->colour_count;
+    for (int colour = 0; colour < colours; ++colour) {
         laid->row_start[colour] = row_count;
         laid->single_start[colour] = single_count;
         bool pairs = colour != RB_OVERFLOW_COLOUR || !room;
@@ -340,8 +341,8 @@ void rb_contact_solver_prepare_points(rb_world *world, double h, rb_substep_rows
         }
     }
     rb_contact_rows_store_range(world, held_from, held_to);
-    laid->row_start[RB_COLOUR_COUNT + 1] = row_count;
-    laid->single_start[RB_COLOUR_COUNT + 1] = single_count;
+    laid->row_start[colours] = row_count;
+    laid->single_start[colours] = single_count;
     laid->row_count = row_count;
     laid->single_count = single_count;
     laid->live = room;

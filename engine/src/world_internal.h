@@ -221,7 +221,8 @@ typedef struct rb_contact_rows {
      * the overflow colour's (k = RB_COLOUR_COUNT) last; the last entry is
      * the constraint count */
     int colour_start[RB_COLOUR_COUNT + 2];
-    int row_start[RB_COLOUR_COUNT + 2];    /* colour k's rows begin here; the last entry is row_count */
+    int colour_count;                      /* colours 0 .. colour_count - 1 hold every constraint */
+    int row_start[RB_COLOUR_COUNT + 2];    /* colour k's rows begin here; entry colour_count is row_count */
     int single_start[RB_COLOUR_COUNT + 2]; /* and its singles here */
     /* the rows hold their contacts' impulses, which their constraints
      * get back from rb_contact_rows_store_impulses */
