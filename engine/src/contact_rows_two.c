@@ -20,7 +20,10 @@
  * one out) one at a time by the reference,
  * rb_contact_solver_solve_velocities_range. The overflow colour, whose
  * constraints may share a body, has no rows: it goes to the reference in
- * its order.
+ * its order. The rows hold their contacts' impulses while the passes run
+ * and from one substep to the next (contact_solver_wide.c), and give them
+ * back to the constraints when the step stores them
+ * (rb_contact_rows_store_impulses).
  *
  * Same bits. Each lane does the reference's sums and products in the
  * reference's order (contact_solver.c: row_velocity, apply_row_impulse,

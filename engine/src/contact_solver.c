@@ -934,12 +934,14 @@ static inline __attribute__((always_inline)) double carried_overlap(const rb_wor
 double rb_contact_solver_store_impulses(rb_world *world)
 {
     double trusted = TRUSTED_OVERLAP_SLOPS * world->settings.linear_slop;
-    /* The soft step's last pass wrote the impulses of the contacts in its
-     * blocks to their manifolds, and after a relax pass measured their
-     * deepest overlap too: those constraints need not be read again. */
+    /* The sequential solvers' rows hold their contacts' impulses
+     * (contact_rows_two.c): first back into the constraints. */
     if (world->contact_rows.live) {
         rb_contact_rows_store_impulses(world);
     }
+    /* The soft step's last pass wrote the impulses of the contacts in its
+     * blocks to their manifolds, and after a relax pass measured their
+     * deepest overlap too: those constraints need not be read again. */
     rb_contact_batches *batches = &world->contact_batches;
     bool lanes_measured = batches->overlap_measured;
     double deepest = lanes_measured ? batches->deepest_overlap : 0.0;
