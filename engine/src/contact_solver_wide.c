@@ -10,7 +10,11 @@
  * reference is done for both contacts by one instruction, in the
  * reference's order, and its branches become per-lane choices (select),
  * so the constraints come out byte for byte as the reference leaves them
- * (tests/test_contact_lanes.c). Without SSE2 the reference prepares them
+ * (tests/test_contact_lanes.c). For NGS and Baumgarte, the pairs of one
+ * colour that use the 2x2 block are prepared into rows
+ * (rb_contact_row), which their warm start and velocity passes solve two
+ * at a time (contact_rows_two.c), instead of their constraints
+ * (tests/test_contact_rows.c). Without SSE2 the reference prepares them
  * all. */
 #include "contact_solver.h"
 
