@@ -50,15 +50,15 @@
 void rb_contact_rows_free(rb_contact_rows *rows)
 {
     rb_free_array((void **)&rows->rows, &rows->row_capacity, sizeof *rows->rows);
-    rb_free_array((void **)&rows->singles, &rows->single_capacity, sizeof *rows->singles);
+    rb_free_array((void **)&rows->runs, &rows->run_capacity, sizeof *rows->runs);
     rows->row_count = 0;
-    rows->single_count = 0;
+    rows->run_count = 0;
     rows->live = false;
 }
 
 size_t rb_contact_rows_bytes(const rb_contact_rows *rows)
 {
-    return (size_t)rows->row_capacity * sizeof *rows->rows + (size_t)rows->single_capacity * sizeof *rows->singles;
+    return (size_t)rows->row_capacity * sizeof *rows->rows + (size_t)rows->run_capacity * sizeof *rows->runs;
 }
 
 void rb_contact_rows_store_impulses(rb_world *world)
@@ -287,7 +287,7 @@ static void solve_row(rb_contact_row *row)
 void rb_contact_solver_warm_start(rb_world *world)
 {
     const rb_contact_rows *laid = &world->contact_rows;
-    if (!laid->live) {
+    if (!laid->live || laid->row_count == 0) {
         rb_contact_solver_warm_start_range(world, 0, world->constraint_count);
         return;
     }
@@ -295,20 +295,20 @@ void rb_contact_solver_warm_start(rb_world *world)
         for (int k = laid->row_start[colour]; k < laid->row_start[colour + 1]; ++k) {
             warm_start_row(&laid->rows[k]);
         }
-        for (int k = laid->single_start[colour]; k < laid->single_start[colour + 1]; ++k) {
-            int i = laid->singles[k];
-            rb_contact_solver_warm_start_range(world, i, i + 1);
+        for (int k = laid->run_start[colour]; k < laid->run_start[colour + 1]; ++k) {
+            rb_contact_solver_warm_start_range(world, laid->runs[k].begin, laid->runs[k].end);
         }
     }
 }
 
 /* Colour by colour, forwards or backwards; within a colour the rows, then
  * the others one at a time (in reverse when backwards, which matters only
- * in the overflow colour). */
+ * in the overflow colour). Without rows, that is the reference's sweep
+ * over all the constraints. */
 void rb_contact_solver_solve_velocities(rb_world *world, bool backwards)
 {
     const rb_contact_rows *laid = &world->contact_rows;
-    if (!laid->live) {
+    if (!laid->live || laid->row_count == 0) {
         rb_contact_solver_solve_velocities_range(world, backwards, 0, world->constraint_count);
         return;
     }
@@ -317,11 +317,11 @@ void rb_contact_solver_solve_velocities(rb_world *world, bool backwards)
         for (int k = laid->row_start[colour]; k < laid->row_start[colour + 1]; ++k) {
             solve_row(&laid->rows[k]);
         }
-        int first = laid->single_start[colour];
-        int last = laid->single_start[colour + 1] - 1;
+        int first = laid->run_start[colour];
+        int last = laid->run_start[colour + 1] - 1;
         for (int k = first; k <= last; ++k) {
-            int i = laid->singles[backwards ? first + last - k : k];
-            rb_contact_solver_solve_velocities_range(world, false, i, i + 1);
+            const rb_constraint_run *run = &laid->runs[backwards ? first + last - k : k];
+            rb_contact_solver_solve_velocities_range(world, backwards, run->begin, run->end);
         }
     }
 }

@@ -234,10 +234,10 @@ int rb_contact_solver_prepare(rb_world *world)
         --rows->colour_count;
     }
     /* Room for the sequential solvers' rows (contact_solver_wide.c): at
-     * most one a pair of constraints, and each constraint a single. */
+     * most one a pair of constraints, and a run each of the others. */
     if (world->settings.type != RB_SOLVER_SOFT_STEP &&
         (rb_grow_array((void **)&rows->rows, &rows->row_capacity, count / 2, sizeof *rows->rows) != 0 ||
-         rb_grow_array((void **)&rows->singles, &rows->single_capacity, count, sizeof *rows->singles) != 0)) {
+         rb_grow_array((void **)&rows->runs, &rows->run_capacity, count, sizeof *rows->runs) != 0)) {
         world->constraint_count = 0;
         return -1;
     }

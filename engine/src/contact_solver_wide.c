@@ -268,6 +268,17 @@ static bool fits_a_row(const rb_contact_constraint *c)
     return c->point_count == 2 && c->normal_follows != RB_NORMAL_FROM_CENTERS && c->restitution == 0.0;
 }
 
+/* Constraint i, which the rows leave, to its colour's runs: to the last
+ * run if it follows on from it. */
+static inline void leave_to_runs(rb_contact_rows *laid, int colour, int *run_count, int i)
+{
+    if (*run_count > laid->run_start[colour] && laid->runs[*run_count - 1].end == i) {
+        laid->runs[*run_count - 1].end = i + 1;
+    } else {
+        laid->runs[(*run_count)++] = (rb_constraint_run){i, i + 1};
+    }
+}
+
 /* Each constraint's points depend on its own bodies alone, so any two can
  * be prepared together; the rows take two of one colour, which share no
  * moving body, so that the passes may solve them at once. The overflow
@@ -294,24 +305,30 @@ void rb_contact_solver_prepare_points(rb_world *world, double h, rb_substep_rows
     int count = world->constraint_count;
     /* the soft step makes no room for rows: its constraints are only
      * prepared, two at a time where they fit */
-    bool room = laid->row_capacity >= count / 2 && laid->single_capacity >= count;
+    bool room = laid->row_capacity >= count / 2 && laid->run_capacity >= count;
     rb_contact_row scratch;
     int row_count = 0;
-    int single_count = 0;
+    int run_count = 0;
     int colours = laid->colour_count;
     for (int colour = 0; colour < colours; ++colour) {
         laid->row_start[colour] = row_count;
-        laid->single_start[colour] = single_count;
+        laid->run_start[colour] = run_count;
         bool pairs = colour != RB_OVERFLOW_COLOUR || !room;
         int waiting = -1; /* a constraint that fits a row, waiting for another */
-        for (int i = laid->colour_start[colour]; i < laid->colour_start[colour + 1]; ++i) {
+        int loose = -1;   /* the first of a run of constraints that fit no row, not yet prepared */
+        int end = laid->colour_start[colour + 1];
+        for (int i = laid->colour_start[colour]; i < end; ++i) {
             rb_contact_constraint *c = &constraints[i];
             if (!pairs || !fits_a_row(c)) {
-                rb_contact_solver_prepare_points_range(world, h, rows, i, i + 1);
+                loose = loose < 0 ? i : loose;
                 if (room) {
-                    laid->singles[single_count++] = i;
+                    leave_to_runs(laid, colour, &run_count, i);
                 }
                 continue;
+            }
+            if (loose >= 0) {
+                rb_contact_solver_prepare_points_range(world, h, rows, loose, i);
+                loose = -1;
             }
             if (waiting < 0) {
                 waiting = i;
@@ -331,24 +348,27 @@ void rb_contact_solver_prepare_points(rb_world *world, double h, rb_substep_rows
             } else {
                 give_back(row, block, &constraints[waiting], c, rows);
                 if (room) {
-                    laid->singles[single_count++] = waiting;
-                    laid->singles[single_count++] = i;
+                    leave_to_runs(laid, colour, &run_count, waiting);
+                    leave_to_runs(laid, colour, &run_count, i);
                 }
             }
             waiting = -1;
         }
+        if (loose >= 0) {
+            rb_contact_solver_prepare_points_range(world, h, rows, loose, end);
+        }
         if (waiting >= 0) {
             rb_contact_solver_prepare_points_range(world, h, rows, waiting, waiting + 1);
             if (room) {
-                laid->singles[single_count++] = waiting;
+                leave_to_runs(laid, colour, &run_count, waiting);
             }
         }
     }
     rb_contact_rows_store_range(world, held_from, held_to);
     laid->row_start[colours] = row_count;
-    laid->single_start[colours] = single_count;
+    laid->run_start[colours] = run_count;
     laid->row_count = row_count;
-    laid->single_count = single_count;
+    laid->run_count = run_count;
     laid->live = room;
 }
 

@@ -207,6 +207,11 @@ typedef struct rb_contact_batches {
 
 typedef struct rb_contact_row rb_contact_row; /* contact_solver.h */
 
+/* Constraints begin .. end - 1 of world->constraints. */
+typedef struct rb_constraint_run {
+    int begin, end;
+} rb_constraint_run;
+
 /* The sequential solvers' (NGS's, Baumgarte's) contacts as their warm
  * start and velocity passes take them, colour by colour: rows of two
  * two-point contacts solved side by side, and the colour's other
@@ -215,15 +220,16 @@ typedef struct rb_contact_row rb_contact_row; /* contact_solver.h */
 typedef struct rb_contact_rows {
     rb_contact_row *rows;
     int row_count, row_capacity;
-    int *singles; /* indices in world->constraints */
-    int single_count, single_capacity;
+    /* the other constraints, solved one at a time, as runs of neighbours */
+    rb_constraint_run *runs;
+    int run_count, run_capacity;
     /* colour k's constraints begin at colour_start[k] in world->constraints,
      * the overflow colour's (k = RB_COLOUR_COUNT) last; the last entry is
      * the constraint count */
     int colour_start[RB_COLOUR_COUNT + 2];
-    int colour_count;                      /* colours 0 .. colour_count - 1 hold every constraint */
-    int row_start[RB_COLOUR_COUNT + 2];    /* colour k's rows begin here; entry colour_count is row_count */
-    int single_start[RB_COLOUR_COUNT + 2]; /* and its singles here */
+    int colour_count;                   /* colours 0 .. colour_count - 1 hold every constraint */
+    int row_start[RB_COLOUR_COUNT + 2]; /* colour k's rows begin here; entry colour_count is row_count */
+    int run_start[RB_COLOUR_COUNT + 2]; /* and its runs here */
     /* the rows hold their contacts' impulses, which their constraints
      * get back from rb_contact_rows_store_impulses */
     bool live;
