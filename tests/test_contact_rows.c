@@ -21,7 +21,11 @@
  * contact pushes while the other lets go (the 2x2 block's cases 2 and 3),
  * both let go (case 4), and friction slides at the cone. The test counts
  * that each of these happened in the reference's results, so that a wrong
- * choice in any of them could not go unseen. */
+ * choice in any of them could not go unseen. Two choices cannot be forced
+ * from real contacts: friction's skip of a point with no impulse at all
+ * (a lane that did not skip would apply a zero impulse, which can only
+ * change the sign of a zero), and the block keeping its impulses where
+ * round-off defeats all four cases. */
 #include <string.h>
 
 #include "contact_solver.h"
