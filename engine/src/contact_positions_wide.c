@@ -43,18 +43,6 @@ static inline lanes correction(lanes s, const rb_solver_settings *settings)
     return _mm_min_pd(_mm_max_pd(scaled, both(-settings->max_linear_correction)), _mm_setzero_pd());
 }
 
-/* The bodies' poses a point is carried by, lane by lane. */
-typedef struct pose_lanes {
-    lanes cx, cy; /* m, centre of mass */
-    lanes qc, qs; /* cosine and sine of the angle */
-} pose_lanes;
-
-static inline pose_lanes poses(const rb_body_state *first, const rb_body_state *second)
-{
-    return (pose_lanes){pair(first->center.x, second->center.x), pair(first->center.y, second->center.y),
-                        pair(first->rotation.c, second->rotation.c), pair(first->rotation.s, second->rotation.s)};
-}
-
 /* Point j's separation in both contacts along the normal (nx, ny): each
  * surface point carried by its body, then moved out along the normal by
  * its circle's radius (0 here, but added as the reference adds it, for

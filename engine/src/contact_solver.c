@@ -222,6 +222,25 @@ int rb_contact_solver_prepare(rb_world *world)
         return -1;
     }
     world->constraint_count = count;
+    rb_contact_rows *rows = &world->contact_rows;
+    rows->live = false;
+    memcpy(rows->colour_start, start, sizeof start);
+    rows->colour_start[RB_COLOUR_COUNT + 1] = count;
+    /* the colours up to the last that has constraints: colours fill from
+     * the lowest, and most scenes use a few */
+    rows->colour_count = RB_COLOUR_COUNT + 1;
+    while (rows->colour_count > 0 &&
+           rows->colour_start[rows->colour_count - 1] == rows->colour_start[rows->colour_count]) {
+        --rows->colour_count;
+    }
+    /* Room for the sequential solvers' rows (contact_solver_wide.c): at
+     * most one a pair of constraints, and a run each of the others. */
+    if (world->settings.type != RB_SOLVER_SOFT_STEP &&
+        (rb_grow_array((void **)&rows->rows, &rows->row_capacity, count / 2, sizeof *rows->rows) != 0 ||
+         rb_grow_array((void **)&rows->runs, &rows->run_capacity, count, sizeof *rows->runs) != 0)) {
+        world->constraint_count = 0;
+        return -1;
+    }
     if (world->settings.type == RB_SOLVER_SOFT_STEP && rb_contact_blocks_build(world, start) == 0) {
         return count; /* the constraints and the blocks in one pass (contact_blocks.c) */
     }
@@ -526,11 +545,6 @@ void rb_contact_solver_warm_start_range(rb_world *world, int begin, int end)
     }
 }
 
-void rb_contact_solver_warm_start(rb_world *world)
-{
-    rb_contact_solver_warm_start_range(world, 0, world->constraint_count);
-}
-
 static inline void solve_point_friction(const constraint_rows *m, double friction, rb_constraint_point *p,
                                         body_velocities *v)
 {
@@ -630,13 +644,12 @@ static inline void solve_normal_block(rb_contact_constraint *c, const constraint
     apply_normal_impulse(m, p2, x2 - x2_old, v);
 }
 
-void rb_contact_solver_solve_velocities(rb_world *world, bool backwards)
+void rb_contact_solver_solve_velocities_range(rb_world *world, bool backwards, int begin, int end)
 {
-    int n = world->constraint_count;
     /* the sweep's first constraint and the step to the next one */
-    int i = backwards ? n - 1 : 0;
+    int i = backwards ? end - 1 : begin;
     int next = backwards ? -1 : 1;
-    for (int k = 0; k < n; ++k, i += next) {
+    for (int k = begin; k < end; ++k, i += next) {
         rb_contact_constraint *c = &world->constraints[i];
         rb_body_state *a = &world->states[c->body_a];
         rb_body_state *b = &world->states[c->body_b];
@@ -921,6 +934,11 @@ static inline __attribute__((always_inline)) double carried_overlap(const rb_wor
 double rb_contact_solver_store_impulses(rb_world *world)
 {
     double trusted = TRUSTED_OVERLAP_SLOPS * world->settings.linear_slop;
+    /* The sequential solvers' rows hold their contacts' impulses
+     * (contact_rows_two.c): first back into the constraints. */
+    if (world->contact_rows.live) {
+        rb_contact_rows_store_impulses(world);
+    }
     /* The soft step's last pass wrote the impulses of the contacts in its
      * blocks to their manifolds, and after a relax pass measured their
      * deepest overlap too: those constraints need not be read again. */

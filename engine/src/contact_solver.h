@@ -110,6 +110,47 @@ struct rb_contact_block_tail {
     rb_lanes4 local_normal_x, local_normal_y;
 };
 
+/* Two values side by side, the first contact's in v[0] and the second's
+ * in v[1], aligned so that one SSE2 load or store moves both. */
+typedef struct rb_lanes2 {
+    _Alignas(16) double v[2];
+} rb_lanes2;
+
+/* A point of a row of contacts (rb_contact_row): what the sequential
+ * solvers' warm start and velocity passes read and write of
+ * rb_constraint_point, lane by lane. */
+typedef struct rb_row_point {
+    rb_lanes2 normal_arm_a, normal_arm_b, tangent_arm_a, tangent_arm_b; /* m */
+    rb_lanes2 tangent_mass;                                             /* kg */
+    rb_lanes2 min_normal_velocity;                                      /* m/s */
+    rb_lanes2 normal_impulse, tangent_impulse;                          /* N·s, accumulated */
+} rb_row_point;
+
+/* Two two-point contacts of one colour, neither with restitution, each
+ * solving its normal rows as a 2x2 block, laid side by side for the
+ * sequential solvers' warm start and velocity passes
+ * (contact_rows_two.c): what those passes read, 264 bytes a contact, in
+ * the order they read it. Written by each substep's preparation
+ * (contact_solver_wide.c). The rows hold their contacts' impulses: taken
+ * from the constraints when a row is made, kept from one substep to the
+ * next while the row pairs the same contacts, and given back by
+ * rb_contact_rows_store_impulses (when the step stores them) or
+ * rb_contact_rows_store_range (when the rows change). Their largest
+ * pushes are not kept: only restitution reads them, and no row's
+ * contact has it. */
+struct rb_contact_row {
+    rb_body_state *body_a[2];
+    rb_body_state *body_b[2];
+    rb_lanes2 normal_x, normal_y; /* unit, world, from A to B, this substep */
+    rb_lanes2 tangent_y;          /* -normal_x: the tangent is (normal_y, -normal_x) */
+    rb_lanes2 inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b; /* 1/kg, 1/(kg·m²); 0 for a body that cannot move */
+    rb_lanes2 friction;                                             /* Coulomb's coefficient */
+    rb_row_point points[2];
+    rb_lanes2 k11, k12, k22;             /* 1/kg, the normal mass matrix K */
+    rb_lanes2 inv_k11, inv_k12, inv_k22; /* kg, its inverse */
+    int constraints[2];                  /* indices in world->constraints */
+};
+
 /* Builds one constraint per touching, non-sensor contact that has a
  * dynamic body, fixing each point's surface points in the bodies' frames;
  * carries the impulses of the last step if warm starting. The constraints
@@ -142,9 +183,15 @@ void rb_contact_solver_prepare_substep(rb_world *world, double h, rb_substep_row
 /* Its part for each point (anchors, lever arms, masses, bounds), two
  * contacts at a time where the processor allows (contact_solver_wide.c),
  * the others by rb_contact_solver_prepare_points_range, the reference, one
- * at a time over constraints begin .. end - 1 (contact_solver.c). */
+ * at a time over constraints begin .. end - 1 (contact_solver.c). Where
+ * the processor allows, the pairs of one colour that fit a row are
+ * prepared into the rows (world->contact_rows), not their constraints,
+ * the impulses first given back from the last substep's rows. */
 void rb_contact_solver_prepare_points(rb_world *world, double h, rb_substep_rows rows);
 void rb_contact_solver_prepare_points_range(rb_world *world, double h, rb_substep_rows rows, int begin, int end);
+/* The warm start: over the rows, two contacts at a time, and the other
+ * constraints one at a time, colour by colour, where the substep's
+ * preparation laid out rows (contact_rows_two.c); else the reference. */
 void rb_contact_solver_warm_start(rb_world *world);
 /* What rb_contact_solver_warm_start does, over the constraints begin ..
  * end - 1: the reference the blocks' warm start agrees with. */
@@ -157,6 +204,21 @@ void rb_contact_solver_warm_start_range(rb_world *world, int begin, int end);
  * and sweep forward only: alternated, the pyramid blew apart (measured,
  * as for the soft step, solver_soft_step.c). */
 void rb_contact_solver_solve_velocities(rb_world *world, bool backwards);
+/* That pass one constraint at a time over constraints begin .. end - 1,
+ * in order or, `backwards`, in reverse: the reference
+ * (contact_solver.c). rb_contact_solver_solve_velocities takes the rows,
+ * where the preparation laid them out, two contacts at a time, and runs
+ * this on the other constraints (contact_rows_two.c); without rows, this
+ * over them all. */
+void rb_contact_solver_solve_velocities_range(rb_world *world, bool backwards, int begin, int end);
+/* Gives the rows' impulses back to their constraints and leaves the rows
+ * unused until the next preparation lays them out again. */
+void rb_contact_rows_store_impulses(rb_world *world);
+/* The impulses of rows begin .. end - 1 given back to their constraints,
+ * the rows left as they are. */
+void rb_contact_rows_store_range(rb_world *world, int begin, int end);
+void rb_contact_rows_free(rb_contact_rows *rows);
+size_t rb_contact_rows_bytes(const rb_contact_rows *rows);
 
 /* How the soft step's contacts answer overlap in one pass
  * (solver_soft_step.c). */

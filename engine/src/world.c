@@ -178,6 +178,7 @@ void rb_world_destroy(rb_world *world)
     rb_free_array((void **)&world->constraints, &world->constraint_capacity, sizeof *world->constraints);
     rb_colouring_free(&world->contact_colouring);
     rb_contact_batches_free(&world->contact_batches);
+    rb_contact_rows_free(&world->contact_rows);
     rb_joint_tree_free(world);
     rb_free_array((void **)&world->joints, &world->joint_capacity, sizeof *world->joints);
     rb_free_array((void **)&world->cables, &world->cable_capacity, sizeof *world->cables);
@@ -282,7 +283,8 @@ size_t rb_world_bytes_in_use(const rb_world *world)
            (size_t)world->moving_body_capacity * sizeof *world->moving_bodies +
            (size_t)world->constraint_capacity * sizeof *world->constraints +
            (size_t)world->contact_colouring.body_capacity * sizeof *world->contact_colouring.body_colours +
-           rb_contact_batches_bytes(&world->contact_batches) + (size_t)world->joint_capacity * sizeof *world->joints +
+           rb_contact_batches_bytes(&world->contact_batches) + rb_contact_rows_bytes(&world->contact_rows) +
+           (size_t)world->joint_capacity * sizeof *world->joints +
            (size_t)world->point_block_capacity * sizeof *world->point_blocks +
            (size_t)world->pin_row_capacity * sizeof *world->pin_rows +
            (size_t)world->pin_anchor_capacity * sizeof *world->pin_anchors +

@@ -211,6 +211,36 @@ typedef struct rb_contact_batches {
     double deepest_overlap; /* m, >= 0 */
 } rb_contact_batches;
 
+typedef struct rb_contact_row rb_contact_row; /* contact_solver.h */
+
+/* Constraints begin .. end - 1 of world->constraints. */
+typedef struct rb_constraint_run {
+    int begin, end;
+} rb_constraint_run;
+
+/* The sequential solvers' (NGS's, Baumgarte's) contacts as their warm
+ * start and velocity passes take them, colour by colour: rows of two
+ * two-point contacts solved side by side, and the colour's other
+ * constraints one at a time (contact_rows_two.c). Laid out again by each
+ * substep's preparation (contact_solver_wide.c). */
+typedef struct rb_contact_rows {
+    rb_contact_row *rows;
+    int row_count, row_capacity;
+    /* the other constraints, solved one at a time, as runs of neighbours */
+    rb_constraint_run *runs;
+    int run_count, run_capacity;
+    /* colour k's constraints begin at colour_start[k] in world->constraints,
+     * the overflow colour's (k = RB_COLOUR_COUNT) last; the last entry is
+     * the constraint count */
+    int colour_start[RB_COLOUR_COUNT + 2];
+    int colour_count;                   /* colours 0 .. colour_count - 1 hold every constraint */
+    int row_start[RB_COLOUR_COUNT + 2]; /* colour k's rows begin here; entry colour_count is row_count */
+    int run_start[RB_COLOUR_COUNT + 2]; /* and its runs here */
+    /* the rows hold their contacts' impulses, which their constraints
+     * get back from rb_contact_rows_store_impulses */
+    bool live;
+} rb_contact_rows;
+
 /* A symmetric 3x3 block K = J·M⁻¹·Jᵀ of three of a joint's rows, whose
  * upper-left 2x2 is solved alone when the third row is not active
  * (joint_solver.h). */
@@ -628,6 +658,7 @@ struct rb_world {
     int bouncing_constraint_count; /* constraints with restitution > 0 this step */
     rb_colouring contact_colouring;
     rb_contact_batches contact_batches;
+    rb_contact_rows contact_rows;
 
     rb_joint *joints;
     int joint_capacity;
