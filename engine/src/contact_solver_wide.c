@@ -296,6 +296,12 @@ static inline void leave_to_runs(rb_contact_rows *laid, int colour, int *run_cou
 void rb_contact_solver_prepare_points(rb_world *world, double h, rb_substep_rows rows)
 {
     rb_contact_rows *laid = &world->contact_rows;
+    if (world->constraint_count == 0) { /* a world of joints and muscles: no rows, nothing to give back */
+        laid->row_count = 0;
+        laid->run_count = 0;
+        laid->live = false;
+        return;
+    }
     /* rows held_from .. held_to - 1 still hold the last substep's
      * impulses */
     int held_from = 0;
