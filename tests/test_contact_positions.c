@@ -19,8 +19,7 @@
 #include <string.h>
 
 #include "contact_solver.h"
-#include "scenes/scenes.h"
-#include "test_support.h"
+#include "pile_support.h"
 
 /* A deterministic value in [0, 1) (a linear congruential generator,
  * Knuth's MMIX constants). */
@@ -99,18 +98,8 @@ static int expect_passes_agree(rb_world *world, const scene_pyramid *pyramid, in
 
 Test(contact_positions, the_pass_leaves_the_poses_the_reference_leaves)
 {
-    rb_world_def def = rb_default_world_def();
-    def.gravity = rb_v2(0.0, -10.0);
-    def.enable_sleep = false;
-    def.solver.type = RB_SOLVER_NGS;
-    rb_world *world = NULL;
-    cr_assert_eq(rb_world_create(&def, &world), RB_OK, "%s", rb_last_error());
     scene_pyramid pyramid;
-    cr_assert_eq(scene_pyramid_create(world, 20, &pyramid), RB_OK, "%s", rb_last_error());
-    for (int k = 0; k < 9; ++k) {
-        rb_body_id ball = make_body(world, RB_BODY_DYNAMIC, rb_v2(12.0 + 1.5 * k, 0.5), 0.0);
-        add_circle(world, ball, rb_v2(0.0, 0.0), 0.5, 1.0);
-    }
+    rb_world *world = make_pile(RB_SOLVER_NGS, &pyramid);
     step_world(world, TEST_DT, 60);
 
     size_t bytes = (size_t)world->body_slots * sizeof *world->states;

@@ -29,8 +29,7 @@
 #include <string.h>
 
 #include "contact_solver.h"
-#include "scenes/scenes.h"
-#include "test_support.h"
+#include "pile_support.h"
 
 #define SUBSTEPS 6
 #define PASSES 4
@@ -159,6 +158,43 @@ static void disturb(rb_world *world, double push, double shift, uint64_t seed)
  * direction for NGS, forwards only for Baumgarte, as the solvers run
  * them); expects the same results and returns the cases the reference
  * met. */
+/* The states and constraints the passes start from, to run them again,
+ * and as the reference left them. */
+typedef struct copies {
+    size_t state_bytes, constraint_bytes;
+    rb_body_state *start_states, *reference_states;
+    rb_contact_constraint *start_constraints, *reference;
+} copies;
+
+static copies copy_start(const rb_world *world, int count)
+{
+    copies c = {.state_bytes = (size_t)world->body_slots * sizeof *world->states,
+                .constraint_bytes = (size_t)count * sizeof *world->constraints};
+    c.start_states = malloc(c.state_bytes);
+    c.reference_states = malloc(c.state_bytes);
+    c.start_constraints = malloc(c.constraint_bytes);
+    c.reference = malloc(c.constraint_bytes);
+    cr_assert(c.start_states && c.reference_states && c.start_constraints && c.reference);
+    memcpy(c.start_states, world->states, c.state_bytes);
+    memcpy(c.start_constraints, world->constraints, c.constraint_bytes);
+    return c;
+}
+
+/* The world as it was when the copies were made. */
+static void restart(rb_world *world, const copies *c)
+{
+    memcpy(world->states, c->start_states, c->state_bytes);
+    memcpy(world->constraints, c->start_constraints, c->constraint_bytes);
+}
+
+static void free_copies(copies *c)
+{
+    free(c->start_states);
+    free(c->reference_states);
+    free(c->start_constraints);
+    free(c->reference);
+}
+
 static cases_met expect_passes_agree(rb_world *world, rb_substep_rows rows, double push, double shift, uint64_t seed)
 {
     cr_assert_geq(rb_contact_solver_prepare(world), 0, "out of memory");
@@ -168,19 +204,11 @@ static cases_met expect_passes_agree(rb_world *world, rb_substep_rows rows, doub
     double h = TEST_DT / SUBSTEPS;
     bool alternate = !rows.baumgarte_bias;
 
-    size_t state_bytes = (size_t)world->body_slots * sizeof *world->states;
-    size_t constraint_bytes = (size_t)count * sizeof *world->constraints;
-    rb_body_state *start_states = malloc(state_bytes);
-    rb_body_state *reference_states = malloc(state_bytes);
-    rb_contact_constraint *start_constraints = malloc(constraint_bytes);
-    rb_contact_constraint *reference = malloc(constraint_bytes);
-    cr_assert(start_states && reference_states && start_constraints && reference);
-    memcpy(start_states, world->states, state_bytes);
-    memcpy(start_constraints, world->constraints, constraint_bytes);
+    copies c = copy_start(world, count);
 
     /* the reference: one contact at a time, in order */
     rb_contact_solver_prepare_points_range(world, h, rows, 0, count);
-    memcpy(reference, world->constraints, constraint_bytes);
+    memcpy(c.reference, world->constraints, c.constraint_bytes);
     rb_contact_solver_warm_start_range(world, 0, count);
     double *normal_before = malloc((size_t)count * 2 * sizeof *normal_before);
     cr_assert(normal_before);
@@ -193,17 +221,16 @@ static cases_met expect_passes_agree(rb_world *world, rb_substep_rows rows, doub
     free(normal_before);
     cases_met met = count_cases(world);
     met.sliding = sliding;
-    memcpy(reference_states, world->states, state_bytes);
+    memcpy(c.reference_states, world->states, c.state_bytes);
     for (int i = 0; i < count; ++i) {
-        memcpy(reference[i].points, world->constraints[i].points, sizeof reference[i].points);
+        memcpy(c.reference[i].points, world->constraints[i].points, sizeof c.reference[i].points);
     }
 
     /* the rows */
-    memcpy(world->states, start_states, state_bytes);
-    memcpy(world->constraints, start_constraints, constraint_bytes);
+    restart(world, &c);
     rb_contact_solver_prepare_points(world, h, rows);
     cr_assert(world->contact_rows.live, "the preparation laid out rows");
-    expect_rows_hold_the_reference(world, reference);
+    expect_rows_hold_the_reference(world, c.reference);
     met.rows = 2 * world->contact_rows.row_count;
     met.singles = count - met.rows;
     rb_contact_solver_warm_start(world);
@@ -213,7 +240,7 @@ static cases_met expect_passes_agree(rb_world *world, rb_substep_rows rows, doub
     rb_contact_rows_store_impulses(world);
 
     for (int i = 0; i < world->body_slots; ++i) {
-        const rb_body_state *r = &reference_states[i];
+        const rb_body_state *r = &c.reference_states[i];
         const rb_body_state *w = &world->states[i];
         cr_expect(memcmp(r, w, sizeof *r) == 0,
                   "body %d: velocity (%.17g, %.17g, %.17g) one at a time, (%.17g, %.17g, %.17g) in rows (push %g, "
@@ -222,7 +249,7 @@ static cases_met expect_passes_agree(rb_world *world, rb_substep_rows rows, doub
                   w->linear_velocity.y, w->angular_velocity, push, (unsigned long long)seed);
     }
     for (int i = 0; i < count; ++i) {
-        const rb_contact_constraint *r = &reference[i];
+        const rb_contact_constraint *r = &c.reference[i];
         const rb_contact_constraint *w = &world->constraints[i];
         for (int j = 0; j < r->point_count; ++j) {
             double expected[2] = {r->points[j].normal_impulse, r->points[j].tangent_impulse};
@@ -233,10 +260,7 @@ static cases_met expect_passes_agree(rb_world *world, rb_substep_rows rows, doub
                       i, j, expected[0], expected[1], found[0], found[1], push, (unsigned long long)seed);
         }
     }
-    free(start_states);
-    free(reference_states);
-    free(start_constraints);
-    free(reference);
+    free_copies(&c);
     return met;
 }
 
@@ -275,15 +299,7 @@ static void expect_substeps_agree(rb_world *world, rb_substep_rows rows, double 
     int count = world->constraint_count;
     disturb(world, push, 0.0, seed);
     double h = TEST_DT / SUBSTEPS;
-    size_t state_bytes = (size_t)world->body_slots * sizeof *world->states;
-    size_t constraint_bytes = (size_t)count * sizeof *world->constraints;
-    rb_body_state *start_states = malloc(state_bytes);
-    rb_body_state *reference_states = malloc(state_bytes);
-    rb_contact_constraint *start_constraints = malloc(constraint_bytes);
-    rb_contact_constraint *reference = malloc(constraint_bytes);
-    cr_assert(start_states && reference_states && start_constraints && reference);
-    memcpy(start_states, world->states, state_bytes);
-    memcpy(start_constraints, world->constraints, constraint_bytes);
+    copies c = copy_start(world, count);
     for (int substep = 0; substep < 3; ++substep) {
         if (substep == 2) {
             bounce_some(world);
@@ -295,11 +311,10 @@ static void expect_substeps_agree(rb_world *world, rb_substep_rows rows, double 
         }
         move_bodies(world, h);
     }
-    memcpy(reference_states, world->states, state_bytes);
-    memcpy(reference, world->constraints, constraint_bytes);
+    memcpy(c.reference_states, world->states, c.state_bytes);
+    memcpy(c.reference, world->constraints, c.constraint_bytes);
 
-    memcpy(world->states, start_states, state_bytes);
-    memcpy(world->constraints, start_constraints, constraint_bytes);
+    restart(world, &c);
     int row_counts[3];
     for (int substep = 0; substep < 3; ++substep) {
         if (substep == 2) {
@@ -319,12 +334,12 @@ static void expect_substeps_agree(rb_world *world, rb_substep_rows rows, double 
               row_counts[1], row_counts[2]);
 
     for (int i = 0; i < world->body_slots; ++i) {
-        cr_expect(memcmp(&reference_states[i], &world->states[i], sizeof *world->states) == 0,
+        cr_expect(memcmp(&c.reference_states[i], &world->states[i], sizeof *world->states) == 0,
                   "body %d: state after three substeps differs one at a time and in rows", i);
     }
     for (int i = 0; i < count; ++i) {
-        for (int j = 0; j < reference[i].point_count; ++j) {
-            const rb_constraint_point *r = &reference[i].points[j];
+        for (int j = 0; j < c.reference[i].point_count; ++j) {
+            const rb_constraint_point *r = &c.reference[i].points[j];
             const rb_constraint_point *w = &world->constraints[i].points[j];
             cr_expect(r->normal_impulse == w->normal_impulse && r->tangent_impulse == w->tangent_impulse,
                       "constraint %d point %d: impulses (%.17g, %.17g) one at a time, (%.17g, %.17g) in rows after "
@@ -332,28 +347,15 @@ static void expect_substeps_agree(rb_world *world, rb_substep_rows rows, double 
                       i, j, r->normal_impulse, r->tangent_impulse, w->normal_impulse, w->tangent_impulse);
         }
     }
-    free(start_states);
-    free(reference_states);
-    free(start_constraints);
-    free(reference);
+    free_copies(&c);
 }
 
 /* A settled base-20 pyramid with nine balls beside it, every seventh box
  * bouncing, in a world of the given solver. */
 static rb_world *settled_pile(rb_solver_type type)
 {
-    rb_world_def def = rb_default_world_def();
-    def.gravity = rb_v2(0.0, -10.0);
-    def.enable_sleep = false;
-    def.solver.type = type;
-    rb_world *world = NULL;
-    cr_assert_eq(rb_world_create(&def, &world), RB_OK, "%s", rb_last_error());
     scene_pyramid pyramid;
-    cr_assert_eq(scene_pyramid_create(world, 20, &pyramid), RB_OK, "%s", rb_last_error());
-    for (int k = 0; k < 9; ++k) {
-        rb_body_id ball = make_body(world, RB_BODY_DYNAMIC, rb_v2(12.0 + 1.5 * k, 0.5), 0.0);
-        add_circle(world, ball, rb_v2(0.0, 0.0), 0.5, 1.0);
-    }
+    rb_world *world = make_pile(type, &pyramid);
     for (int k = 0; k < pyramid.box_count; k += 7) {
         rb_shape_id shape;
         cr_assert_eq(rb_body_shapes(world, scene_body_at(pyramid.first_box, k), &shape, 1), 1);

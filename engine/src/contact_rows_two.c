@@ -212,6 +212,16 @@ static inline __attribute__((always_inline)) void solve_point_friction(const rb_
     store(&q->tangent_impulse, select(active, accumulated, tangent_impulse));
 }
 
+/* The changes of both points' normal impulses, applied in the
+ * reference's order: the first point's, then the second's. */
+static inline void apply_normal_changes(const rb_contact_row *row, lanes change1, lanes change2, velocity_lanes *v)
+{
+    apply_row_impulse(row, &row->normal_x, &row->normal_y, &row->points[0].normal_arm_a, &row->points[0].normal_arm_b,
+                      change1, v);
+    apply_row_impulse(row, &row->normal_x, &row->normal_y, &row->points[1].normal_arm_a, &row->points[1].normal_arm_b,
+                      change2, v);
+}
+
 /* solve_normal_block, in both lanes: the 2x2 complementarity problem's
  * four cases in the reference's order, each lane taking the first that
  * holds in it, or keeping its impulses and velocities where none does. */
@@ -236,10 +246,7 @@ static inline __attribute__((always_inline)) void solve_normal_block(rb_contact_
     if (_mm_movemask_pd(both_push) == 3) {
         store(&q1->normal_impulse, x1);
         store(&q2->normal_impulse, x2);
-        apply_row_impulse(row, &row->normal_x, &row->normal_y, &q1->normal_arm_a, &q1->normal_arm_b, sub(x1, x1_old),
-                          v);
-        apply_row_impulse(row, &row->normal_x, &row->normal_y, &q2->normal_arm_a, &q2->normal_arm_b, sub(x2, x2_old),
-                          v);
+        apply_normal_changes(row, sub(x1, x1_old), sub(x2, x2_old), v);
         return;
     }
     /* Case 2: only the first pushes. */
@@ -259,15 +266,11 @@ static inline __attribute__((always_inline)) void solve_normal_block(rb_contact_
     if (_mm_movemask_pd(solved) == 3) {
         store(&q1->normal_impulse, x1);
         store(&q2->normal_impulse, x2);
-        apply_row_impulse(row, &row->normal_x, &row->normal_y, &q1->normal_arm_a, &q1->normal_arm_b, sub(x1, x1_old),
-                          v);
-        apply_row_impulse(row, &row->normal_x, &row->normal_y, &q2->normal_arm_a, &q2->normal_arm_b, sub(x2, x2_old),
-                          v);
+        apply_normal_changes(row, sub(x1, x1_old), sub(x2, x2_old), v);
         return;
     }
     velocity_lanes before = *v;
-    apply_row_impulse(row, &row->normal_x, &row->normal_y, &q1->normal_arm_a, &q1->normal_arm_b, sub(x1, x1_old), v);
-    apply_row_impulse(row, &row->normal_x, &row->normal_y, &q2->normal_arm_a, &q2->normal_arm_b, sub(x2, x2_old), v);
+    apply_normal_changes(row, sub(x1, x1_old), sub(x2, x2_old), v);
     *v = select_velocities(solved, v, &before);
     store(&q1->normal_impulse, select(solved, x1, x1_old));
     store(&q2->normal_impulse, select(solved, x2, x2_old));
