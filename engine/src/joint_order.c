@@ -179,6 +179,10 @@ static void find_order(rb_world *world, rb_joint_order_scope scope)
 {
     int listed = 0;
     const int *joints = rb_joint_pass_list(world, &listed);
+    world->ordered_joint_count = listed;
+    if (listed == 0) {
+        return; /* and the list may not even be allocated (NULL + 0 is undefined) */
+    }
     int first = 0; /* where the ordered joints start */
     int count = listed;
     if (scope == RB_ORDER_PLAIN_PINS) {
@@ -216,7 +220,6 @@ static void find_order(rb_world *world, rb_joint_order_scope scope)
     for (int k = 0; k < count; ++k) {
         world->ordered_joints[start[world->joint_keys[k]]++] = world->joint_order_scratch[k];
     }
-    world->ordered_joint_count = listed;
 }
 
 void rb_joints_order(rb_world *world, rb_joint_order_scope scope)
