@@ -199,6 +199,9 @@ static void find_order(rb_world *world, rb_joint_order_scope scope)
         }
         joints = world->ordered_joints + first;
         count = pins;
+        if (count == 0) {
+            return; /* no pin to order (the muscle models' limbs): the others as they were made */
+        }
     }
     int deepest = find_depths(world);
     sort_by_colour(world, joints, count);

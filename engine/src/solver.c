@@ -130,27 +130,17 @@ void rb_solver_call_substep_callback(rb_world *world, int substep, double h)
     }
 }
 
-/* Adds the time since `start` to a phase of the profile, and only while
- * profiling: a world that does not profile then pays a test a phase, not
- * an addition of 0 ms. */
-static inline void add_phase_time(const rb_world *world, double *phase, double start)
-{
-    if (world->profiling) {
-        *phase += rb_world_clock(world) - start;
-    }
-}
-
 void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool contact_bias)
 {
     rb_profile *profile = &world->profile;
     double t = rb_world_clock(world);
     rb_solver_call_substep_callback(world, substep, h);
-    add_phase_time(world, &profile->substep_callback, t);
+    rb_world_add_phase_time(world, &profile->substep_callback, t);
     world->last_substep = h; /* after the callback, which reads the previous substep's forces */
 
     t = rb_world_clock(world);
     rb_solver_integrate_velocities(world, h);
-    add_phase_time(world, &profile->integrate_velocities, t);
+    rb_world_add_phase_time(world, &profile->integrate_velocities, t);
 
     t = rb_world_clock(world);
     rb_cables_prepare(world, h);
@@ -169,7 +159,7 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
     rb_joint_tree_start_substep(world);
     rb_joint_blocks_factor(world, h);
     rb_contact_solver_warm_start(world);
-    add_phase_time(world, &profile->warm_start, t);
+    rb_world_add_phase_time(world, &profile->warm_start, t);
 
     t = rb_world_clock(world);
     for (int iteration = 0; iteration < world->settings.velocity_iterations; ++iteration) {
@@ -180,11 +170,11 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
         rb_joint_blocks_solve_velocities(world);
         rb_contact_solver_solve_velocities(world, backwards && !contact_bias);
     }
-    add_phase_time(world, &profile->solve_velocities, t);
+    rb_world_add_phase_time(world, &profile->solve_velocities, t);
 
     t = rb_world_clock(world);
     rb_solver_damp_and_integrate_positions(world, h);
-    add_phase_time(world, &profile->integrate_positions, t);
+    rb_world_add_phase_time(world, &profile->integrate_positions, t);
 }
 
 rb_status rb_solver_step(rb_world *world, double dt)

@@ -106,12 +106,12 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
     for (int substep = 0; substep < substeps; ++substep) {
         t = rb_world_clock(world);
         rb_solver_call_substep_callback(world, substep, h);
-        profile->substep_callback += rb_world_clock(world) - t;
+        rb_world_add_phase_time(world, &profile->substep_callback, t);
         world->last_substep = h; /* after the callback, which reads the previous substep's forces */
 
         t = rb_world_clock(world);
         rb_solver_integrate_velocities(world, h);
-        profile->integrate_velocities += rb_world_clock(world) - t;
+        rb_world_add_phase_time(world, &profile->integrate_velocities, t);
 
         t = rb_world_clock(world);
         rb_cables_prepare(world, h);
@@ -124,7 +124,7 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
         rb_cables_warm_start(world);
         rb_joints_warm_start(world, h, JOINTS_BACKWARDS);
         rb_contact_solver_warm_start_blocks(world, substep == 0);
-        profile->warm_start += rb_world_clock(world) - t;
+        rb_world_add_phase_time(world, &profile->warm_start, t);
 
         t = rb_world_clock(world);
         world->joint_response = joint_spring;
@@ -132,18 +132,18 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
             bool is_last = !last_relaxes && substep == substeps - 1 && iteration == settings->velocity_iterations - 1;
             solve_pass(world, h, is_last ? &last : &springs);
         }
-        profile->solve_velocities += rb_world_clock(world) - t;
+        rb_world_add_phase_time(world, &profile->solve_velocities, t);
 
         t = rb_world_clock(world);
         rb_solver_damp_and_integrate_positions(world, h);
         rb_joint_tree_poses_moved(world);
-        profile->integrate_positions += rb_world_clock(world) - t;
+        rb_world_add_phase_time(world, &profile->integrate_positions, t);
 
         t = rb_world_clock(world);
         for (int iteration = 0; iteration < settings->position_iterations; ++iteration) {
             rb_joint_tree_correct_positions(world);
         }
-        profile->correct_positions += rb_world_clock(world) - t;
+        rb_world_add_phase_time(world, &profile->correct_positions, t);
 
         t = rb_world_clock(world);
         world->joint_response = joint_rigid;
@@ -151,7 +151,7 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
             bool is_last = substep == substeps - 1 && iteration == settings->relax_iterations - 1;
             solve_pass(world, h, is_last ? &last : &relax);
         }
-        profile->relax += rb_world_clock(world) - t;
+        rb_world_add_phase_time(world, &profile->relax, t);
     }
 
     t = rb_world_clock(world);
