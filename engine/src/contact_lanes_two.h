@@ -13,31 +13,9 @@
 #ifndef SINEW_CONTACT_LANES_TWO_H
 #define SINEW_CONTACT_LANES_TWO_H
 
-#include <emmintrin.h>
-
 #include "contact_solver.h"
+#include "lanes_two.h"
 
-typedef __m128d lanes;
-
-static inline lanes pair(double first, double second) { return _mm_set_pd(second, first); }
-static inline lanes both(double value) { return _mm_set1_pd(value); }
-static inline lanes add(lanes a, lanes b) { return _mm_add_pd(a, b); }
-static inline lanes sub(lanes a, lanes b) { return _mm_sub_pd(a, b); }
-static inline lanes mul(lanes a, lanes b) { return _mm_mul_pd(a, b); }
-static inline lanes divide(lanes a, lanes b) { return _mm_div_pd(a, b); }
-static inline lanes negate(lanes a) { return _mm_xor_pd(a, _mm_set1_pd(-0.0)); }
-/* a > b ? a : b and a < b ? a : b in each lane, as rb_max and rb_min. */
-static inline lanes max(lanes a, lanes b) { return _mm_max_pd(a, b); }
-static inline lanes min(lanes a, lanes b) { return _mm_min_pd(a, b); }
-/* In each lane, `yes` where the mask is all ones, `no` where it is zero. */
-static inline lanes select(lanes mask, lanes yes, lanes no)
-{
-    return _mm_or_pd(_mm_and_pd(mask, yes), _mm_andnot_pd(mask, no));
-}
-static inline lanes mask_of(bool first, bool second)
-{
-    return _mm_castsi128_pd(_mm_set_epi64x(second ? -1 : 0, first ? -1 : 0));
-}
 /* Both values of a row's field (contact_solver.h) in one load, and back. */
 static inline lanes load(const rb_lanes2 *field) { return _mm_load_pd(field->v); }
 static inline void store(rb_lanes2 *field, lanes a) { _mm_store_pd(field->v, a); }

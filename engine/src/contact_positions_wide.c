@@ -24,9 +24,6 @@
 #if defined(__SSE2__)
 #include "contact_lanes_two.h"
 
-static inline double first_of(lanes a) { return _mm_cvtsd_f64(a); }
-static inline double second_of(lanes a) { return _mm_cvtsd_f64(_mm_unpackhi_pd(a, a)); }
-
 /* Whether a constraint can be measured in a lane: two points (so two
  * polygons, radii 0) and a normal that turns with one body. */
 static inline bool fits_a_lane(const rb_contact_constraint *c)

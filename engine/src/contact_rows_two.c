@@ -106,24 +106,18 @@ static inline velocity_lanes load_velocities(const rb_contact_row *row)
     };
 }
 
-static inline void store_lanes(double *first, double *second, lanes a)
-{
-    _mm_storel_pd(first, a);
-    _mm_storeh_pd(second, a);
-}
-
 static inline void store_velocities(const velocity_lanes *v, const rb_contact_row *row)
 {
     rb_body_state *a0 = row->body_a[0];
     rb_body_state *a1 = row->body_a[1];
     rb_body_state *b0 = row->body_b[0];
     rb_body_state *b1 = row->body_b[1];
-    store_lanes(&a0->linear_velocity.x, &a1->linear_velocity.x, v->vax);
-    store_lanes(&a0->linear_velocity.y, &a1->linear_velocity.y, v->vay);
-    store_lanes(&a0->angular_velocity, &a1->angular_velocity, v->wa);
-    store_lanes(&b0->linear_velocity.x, &b1->linear_velocity.x, v->vbx);
-    store_lanes(&b0->linear_velocity.y, &b1->linear_velocity.y, v->vby);
-    store_lanes(&b0->angular_velocity, &b1->angular_velocity, v->wb);
+    store_pair(&a0->linear_velocity.x, &a1->linear_velocity.x, v->vax);
+    store_pair(&a0->linear_velocity.y, &a1->linear_velocity.y, v->vay);
+    store_pair(&a0->angular_velocity, &a1->angular_velocity, v->wa);
+    store_pair(&b0->linear_velocity.x, &b1->linear_velocity.x, v->vbx);
+    store_pair(&b0->linear_velocity.y, &b1->linear_velocity.y, v->vby);
+    store_pair(&b0->angular_velocity, &b1->angular_velocity, v->wb);
 }
 
 /* In each lane, the velocities `yes` where the mask is all ones, else

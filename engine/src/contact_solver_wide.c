@@ -29,13 +29,6 @@ static inline lanes mass_from_arms(lanes inv_mass_sum, lanes ia, lanes ib, lanes
     return select(_mm_cmpgt_pd(k, _mm_setzero_pd()), _mm_div_pd(both(1.0), k), _mm_setzero_pd());
 }
 
-/* Stores lane 0 in *first and lane 1 in *second. */
-static inline void store_pair(double *first, double *second, lanes a)
-{
-    _mm_storel_pd(first, a);
-    _mm_storeh_pd(second, a);
-}
-
 /* What the preparation of two contacts reads of their constraints and
  * bodies besides each point's surface points, read once before anything
  * is stored: the stores into the row are doubles, as these are, so the

@@ -575,9 +575,7 @@ static void solve_rows(rb_world *world, bool backwards)
     const int count = world->pin_row_count;
     const rb_rigid_response *response = &world->joint_response;
     if (response->mass_scale == 1.0 && response->impulse_scale == 0.0 && response->bias_rate == 0.0) {
-        for (int k = 0; k < count; ++k) {
-            rb_pin_solve_rigid(world->states, &world->pin_rows[pass_index(count, k, backwards)]);
-        }
+        rb_pins_solve_rigid(world, backwards);
         return;
     }
     for (int k = 0; k < count; ++k) {

@@ -146,33 +146,6 @@ static double slop_squared(const rb_world *world) { return world->settings.linea
 
 bool rb_pin_correct(rb_world *world, int row) { return correct_row(world, row, slop_squared(world)); }
 
-/* The k-th row of a pass, counted from the end when sweeping backwards. */
-static int row_at(int count, int k, bool backwards) { return backwards ? count - 1 - k : k; }
-
-/* The whole passes are kept out of joint.c's passes, which call them:
- * inlined there under link-time optimisation they would be compiled with
- * joint.c's options, not with those engine/CMakeLists.txt gives this
- * file. */
-__attribute__((noinline)) void rb_pins_warm_start(rb_world *world, double h, bool backwards)
-{
-    const int count = world->pin_row_count;
-    const double drift_cap = rb_point_drift_cap(world, h);
-    for (int k = 0; k < count; ++k) {
-        warm_start_row(world, row_at(count, k, backwards), h, drift_cap);
-    }
-}
-
-__attribute__((noinline)) bool rb_pins_correct_positions(rb_world *world, bool backwards)
-{
-    const int count = world->pin_row_count;
-    const double slop = slop_squared(world);
-    bool all_within = true;
-    for (int k = 0; k < count; ++k) {
-        all_within = correct_row(world, row_at(count, k, backwards), slop) && all_within;
-    }
-    return all_within;
-}
-
 void rb_pins_scatter(rb_world *world)
 {
     if (!world->pin_rows_live) {
