@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-/* The plain pins' NGS position pass and rigid velocity pass, two pins at
- * a time where they can be (joint_pin.c gives the rows, joint_solver.h
- * the one-at-a-time reference: rb_pin_correct, rb_pin_solve_rigid).
+/* The plain pins' warm start, rigid velocity pass and NGS position pass,
+ * two rows at a time where they can be (joint_pin.c gives the rows and
+ * the one-row reference: rb_pin_warm_start, rb_pin_correct;
+ * joint_solver.h rb_pin_solve_rigid).
  *
  * A pass visits the rows in order (or in reverse), each row reading the
  * poses or velocities the rows before it wrote. Two consecutive rows
@@ -12,18 +13,23 @@
  * products in the reference's order. The order the pins are visited in
  * (joint_order.c: depth by depth, colour by colour, no two pins of a
  * colour sharing a body) makes almost every consecutive pair such a pair:
- * all but the 99 pairs along the fixed top row of the 100 × 100 joint
- * grid. A row that cannot be paired (it shares a body with the next,
- * even a fixed one) goes through the reference on its own.
+ * the 100 × 100 joint grid's 19,794 rows make 9,894 pairs and leave 6
+ * alone. A row that shares a body with the next, even a fixed one, goes
+ * through the reference on its own.
  *
  * Where the reference branches, the pair takes the common branch in both
- * lanes or leaves the pair to the reference:
- * - a pin between two bodies that cannot move (K singular) leaves both
- *   rows to the reference, before either has written anything;
+ * lanes or hands the branch to the reference:
+ * - a pin between two bodies that cannot move (K singular): its inverse
+ *   is 0 in the warm start, as the reference makes it, and the position
+ *   pass leaves both rows to the reference before either has written
+ *   anything;
+ * - a drift beyond its cap (rb_point_drift) is made again by the
+ *   reference, for both rows;
  * - a body turns by its Taylor series while |Δθ| <= 1/32 rad
  *   (rb_body_state_turn): where a lane's turn is larger, or its body
  *   cannot turn (inverse inertia 0, where the reference does not touch
- *   its angle), that body turns, or not, through the reference.
+ *   its angle), each lane's body turns, or not, through the reference.
+ * Without SSE2 every row goes through the reference.
  * tests/test_pin_lanes.c compares both ways byte for byte. */
 #include "joint_solver.h"
 
