@@ -7,6 +7,7 @@
 #include "contact.h"
 #include "contact_events.h"
 #include "error.h"
+#include "manifold_internal.h"
 
 static int compare_pair_keys(const rb_pair *p, const rb_pair *q)
 {
@@ -223,7 +224,10 @@ static rb_manifold compute_manifold(const rb_world *world, const rb_contact *con
             rb_collide_polygon_and_circle(&b->geometry.polygon, xfb, &a->geometry.circle, xfa, speculative_distance),
             false);
     }
-    return rb_collide_polygons(&a->geometry.polygon, xfa, &b->geometry.polygon, xfb, speculative_distance);
+    /* rb_collide_polygons, with shape A's test for a box made once. */
+    return a->box
+               ? rb_collide_box_and_polygon(&a->geometry.polygon, xfa, &b->geometry.polygon, xfb, speculative_distance)
+               : rb_collide_convex_polygons(&a->geometry.polygon, xfa, &b->geometry.polygon, xfb, speculative_distance);
 }
 
 double rb_contact_deepest_overlap_now(const rb_world *world, const rb_contact *contact)

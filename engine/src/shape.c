@@ -7,6 +7,7 @@
 #include "allocator.h"
 #include "contact.h"
 #include "error.h"
+#include "manifold_internal.h"
 #include "world_internal.h"
 
 rb_filter rb_default_filter(void) { return (rb_filter){.category_bits = 1u, .mask_bits = 0xffffffffu}; }
@@ -140,6 +141,7 @@ static rb_status create_shape(rb_world *world, rb_body_id body_id, const rb_shap
         break;
     case RB_SHAPE_POLYGON:
         shape->geometry.polygon = *(const rb_polygon *)geometry;
+        shape->box = rb_polygon_is_box(&shape->geometry.polygon);
         break;
     case RB_SHAPE_SEGMENT:
         shape->geometry.segment = *(const rb_segment *)geometry;

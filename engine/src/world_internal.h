@@ -105,6 +105,7 @@ typedef struct rb_shape {
     int body;
     int next_in_body;
     rb_shape_type type;
+    bool box; /* a polygon on an axis-aligned rectangle of its frame (rb_polygon_is_box), found once */
     union {
         rb_circle circle;
         rb_polygon polygon;
