@@ -339,13 +339,20 @@ static met compare_every_way(rb_world *world, pass_kind kind, uint64_t seed)
     return in_order;
 }
 
+/* The rows of a body that cannot turn and of bodies that cannot move
+ * met in pairs. */
+static void expect_fixed_bodies_paired(met m)
+{
+    cr_expect_gt(m.cannot_turn, 0, "paired rows with a body that cannot turn: %d", m.cannot_turn);
+    cr_expect_gt(m.cannot_move, 0, "paired rows whose bodies cannot move: %d", m.cannot_move);
+}
+
 Test(pin_lanes, the_warm_start_two_rows_at_a_time_is_the_reference)
 {
     rb_world *world = make_swung_grid();
     met m = compare_every_way(world, WARM_START, 11u);
     cr_expect_gt(m.capped, 0, "capped drifts in pairs: %d", m.capped);
-    cr_expect_gt(m.cannot_turn, 0, "paired rows with a body that cannot turn: %d", m.cannot_turn);
-    cr_expect_gt(m.cannot_move, 0, "paired rows whose bodies cannot move: %d", m.cannot_move);
+    expect_fixed_bodies_paired(m);
     destroy_world_and_expect_no_leak(world);
 }
 
@@ -361,7 +368,6 @@ Test(pin_lanes, the_position_pass_two_rows_at_a_time_is_the_reference)
     rb_world *world = make_swung_grid();
     met m = compare_every_way(world, CORRECT, 37u);
     cr_expect_gt(m.wide_turns, 10, "turns beyond 1/32 rad in pairs: %d", m.wide_turns);
-    cr_expect_gt(m.cannot_turn, 0, "paired rows with a body that cannot turn: %d", m.cannot_turn);
-    cr_expect_gt(m.cannot_move, 0, "paired rows whose bodies cannot move: %d", m.cannot_move);
+    expect_fixed_bodies_paired(m);
     destroy_world_and_expect_no_leak(world);
 }

@@ -46,6 +46,20 @@ static inline bool apart(const rb_pin_row *first, const rb_pin_row *second)
            first->body_b != second->body_b;
 }
 
+/* The rows the pass visits at its k-th place: *first, and *second too
+ * when the two move four distinct bodies (returns 2), else 1. */
+static inline int rows_at(const rb_world *world, int count, int k, bool backwards, int *first, int *second)
+{
+    *first = row_at(count, k, backwards);
+    if (k + 1 < count) {
+        *second = row_at(count, k + 1, backwards);
+        if (apart(&world->pin_rows[*first], &world->pin_rows[*second])) {
+            return 2;
+        }
+    }
+    return 1;
+}
+
 /* A pair of bodies' states, lane by lane. */
 typedef struct state_pair {
     rb_body_state *s[2];
@@ -104,6 +118,53 @@ static inline void turn_two(state_pair bodies, lanes delta, lanes inv_inertia, l
     store_pair(&bodies.s[0]->rotation.s, &bodies.s[1]->rotation.s, add(mul(qs, cosine), mul(qc, sine)));
 }
 
+/* A pair's rotations and its anchors turned into the world at the poses
+ * now: rA = R(θA)·localA, rB likewise, as rb_rotate turns them. */
+typedef struct arm_lanes {
+    lanes qac, qas, qbc, qbs; /* cosines and sines of A's and B's angles */
+    lanes rax, ray, rbx, rby; /* m */
+} arm_lanes;
+
+static inline arm_lanes arms_now(const rb_world *world, int i0, int i1, state_pair a, state_pair b)
+{
+    const rb_pin_anchors *n0 = &world->pin_anchors[i0];
+    const rb_pin_anchors *n1 = &world->pin_anchors[i1];
+    arm_lanes arms = {
+        .qac = pair(a.s[0]->rotation.c, a.s[1]->rotation.c),
+        .qas = pair(a.s[0]->rotation.s, a.s[1]->rotation.s),
+        .qbc = pair(b.s[0]->rotation.c, b.s[1]->rotation.c),
+        .qbs = pair(b.s[0]->rotation.s, b.s[1]->rotation.s),
+    };
+    const lanes lax = pair(n0->local_a.x, n1->local_a.x);
+    const lanes lay = pair(n0->local_a.y, n1->local_a.y);
+    const lanes lbx = pair(n0->local_b.x, n1->local_b.x);
+    const lanes lby = pair(n0->local_b.y, n1->local_b.y);
+    arms.rax = sub(mul(arms.qac, lax), mul(arms.qas, lay));
+    arms.ray = add(mul(arms.qas, lax), mul(arms.qac, lay));
+    arms.rbx = sub(mul(arms.qbc, lbx), mul(arms.qbs, lby));
+    arms.rby = add(mul(arms.qbs, lbx), mul(arms.qbc, lby));
+    return arms;
+}
+
+/* The pin's 2 × 2 mass matrix K at those anchors (joint_point.c gives
+ * it), and its determinant. */
+typedef struct mass_lanes {
+    lanes k11, k12, k22, det;
+} mass_lanes;
+
+static inline mass_lanes mass_of(lanes inv_mass_a, lanes inv_inertia_a, lanes inv_mass_b, lanes inv_inertia_b,
+                                 const arm_lanes *r)
+{
+    const lanes m = add(inv_mass_a, inv_mass_b);
+    mass_lanes k = {
+        .k11 = add(add(m, mul(mul(inv_inertia_a, r->ray), r->ray)), mul(mul(inv_inertia_b, r->rby), r->rby)),
+        .k12 = sub(mul(mul(negate(inv_inertia_a), r->rax), r->ray), mul(mul(inv_inertia_b, r->rbx), r->rby)),
+        .k22 = add(add(m, mul(mul(inv_inertia_a, r->rax), r->rax)), mul(mul(inv_inertia_b, r->rbx), r->rbx)),
+    };
+    k.det = sub(mul(k.k11, k.k22), mul(k.k12, k.k12));
+    return k;
+}
+
 /* rb_pin_warm_start (joint_pin.c) on rows i0 and i1 at once: each row's
  * anchors at the poses now, the inverse of its K, its drift, and its
  * impulse applied. */
@@ -111,22 +172,10 @@ static void warm_start_two(rb_world *world, int i0, int i1, double h, double dri
 {
     rb_pin_row *r0 = &world->pin_rows[i0];
     rb_pin_row *r1 = &world->pin_rows[i1];
-    const rb_pin_anchors *n0 = &world->pin_anchors[i0];
-    const rb_pin_anchors *n1 = &world->pin_anchors[i1];
     const state_pair a = {{&world->states[r0->body_a], &world->states[r1->body_a]}};
     const state_pair b = {{&world->states[r0->body_b], &world->states[r1->body_b]}};
-    const lanes qac = pair(a.s[0]->rotation.c, a.s[1]->rotation.c);
-    const lanes qas = pair(a.s[0]->rotation.s, a.s[1]->rotation.s);
-    const lanes qbc = pair(b.s[0]->rotation.c, b.s[1]->rotation.c);
-    const lanes qbs = pair(b.s[0]->rotation.s, b.s[1]->rotation.s);
-    const lanes lax = pair(n0->local_a.x, n1->local_a.x);
-    const lanes lay = pair(n0->local_a.y, n1->local_a.y);
-    const lanes lbx = pair(n0->local_b.x, n1->local_b.x);
-    const lanes lby = pair(n0->local_b.y, n1->local_b.y);
-    const lanes rax = sub(mul(qac, lax), mul(qas, lay));
-    const lanes ray = add(mul(qas, lax), mul(qac, lay));
-    const lanes rbx = sub(mul(qbc, lbx), mul(qbs, lby));
-    const lanes rby = add(mul(qbs, lbx), mul(qbc, lby));
+    const arm_lanes arms = arms_now(world, i0, i1, a, b);
+    const lanes rax = arms.rax, ray = arms.ray, rbx = arms.rbx, rby = arms.rby;
     store_pair(&r0->ra.x, &r1->ra.x, rax);
     store_pair(&r0->ra.y, &r1->ra.y, ray);
     store_pair(&r0->rb.x, &r1->rb.x, rbx);
@@ -137,16 +186,12 @@ static void warm_start_two(rb_world *world, int i0, int i1, double h, double dri
     const lanes iia = pair(r0->inv_inertia_a, r1->inv_inertia_a);
     const lanes imb = pair(r0->inv_mass_b, r1->inv_mass_b);
     const lanes iib = pair(r0->inv_inertia_b, r1->inv_inertia_b);
-    const lanes m = add(ima, imb);
-    const lanes k11 = add(add(m, mul(mul(iia, ray), ray)), mul(mul(iib, rby), rby));
-    const lanes k12 = sub(mul(mul(negate(iia), rax), ray), mul(mul(iib, rbx), rby));
-    const lanes k22 = add(add(m, mul(mul(iia, rax), rax)), mul(mul(iib, rbx), rbx));
-    const lanes det = sub(mul(k11, k22), mul(k12, k12));
+    const mass_lanes k = mass_of(ima, iia, imb, iib, &arms);
     const lanes inverse_det =
-        _mm_and_pd(_mm_cmpgt_pd(det, _mm_setzero_pd()), divide(both(1.0), det)); /* 1/det where det > 0, else +0 */
-    store_pair(&r0->point_inverse11, &r1->point_inverse11, mul(inverse_det, k22));
-    store_pair(&r0->point_inverse12, &r1->point_inverse12, mul(negate(inverse_det), k12));
-    store_pair(&r0->point_inverse22, &r1->point_inverse22, mul(inverse_det, k11));
+        _mm_and_pd(_mm_cmpgt_pd(k.det, _mm_setzero_pd()), divide(both(1.0), k.det)); /* 1/det where det > 0, else +0 */
+    store_pair(&r0->point_inverse11, &r1->point_inverse11, mul(inverse_det, k.k22));
+    store_pair(&r0->point_inverse12, &r1->point_inverse12, mul(negate(inverse_det), k.k12));
+    store_pair(&r0->point_inverse22, &r1->point_inverse22, mul(inverse_det, k.k11));
 
     /* The drift (rb_point_drift), capped through the reference's
      * arithmetic in the rare lane that needs it. */
@@ -176,8 +221,6 @@ static bool correct_two(rb_world *world, int i0, int i1, lanes slop_squared)
 {
     const rb_pin_row *r0 = &world->pin_rows[i0];
     const rb_pin_row *r1 = &world->pin_rows[i1];
-    const rb_pin_anchors *n0 = &world->pin_anchors[i0];
-    const rb_pin_anchors *n1 = &world->pin_anchors[i1];
     const state_pair a = {{&world->states[r0->body_a], &world->states[r1->body_a]}};
     const state_pair b = {{&world->states[r0->body_b], &world->states[r1->body_b]}};
     const lanes inv_mass_a = pair(r0->inv_mass_a, r1->inv_mass_a);
@@ -185,19 +228,9 @@ static bool correct_two(rb_world *world, int i0, int i1, lanes slop_squared)
     const lanes inv_mass_b = pair(r0->inv_mass_b, r1->inv_mass_b);
     const lanes inv_inertia_b = pair(r0->inv_inertia_b, r1->inv_inertia_b);
 
-    /* rA = R(θA)·localA, rB likewise; the gap C = (cB + rB) - (cA + rA). */
-    const lanes qac = pair(a.s[0]->rotation.c, a.s[1]->rotation.c);
-    const lanes qas = pair(a.s[0]->rotation.s, a.s[1]->rotation.s);
-    const lanes qbc = pair(b.s[0]->rotation.c, b.s[1]->rotation.c);
-    const lanes qbs = pair(b.s[0]->rotation.s, b.s[1]->rotation.s);
-    const lanes lax = pair(n0->local_a.x, n1->local_a.x);
-    const lanes lay = pair(n0->local_a.y, n1->local_a.y);
-    const lanes lbx = pair(n0->local_b.x, n1->local_b.x);
-    const lanes lby = pair(n0->local_b.y, n1->local_b.y);
-    const lanes rax = sub(mul(qac, lax), mul(qas, lay));
-    const lanes ray = add(mul(qas, lax), mul(qac, lay));
-    const lanes rbx = sub(mul(qbc, lbx), mul(qbs, lby));
-    const lanes rby = add(mul(qbs, lbx), mul(qbc, lby));
+    /* The gap C = (cB + rB) - (cA + rA), and K, at the poses now. */
+    const arm_lanes arms = arms_now(world, i0, i1, a, b);
+    const lanes rax = arms.rax, ray = arms.ray, rbx = arms.rbx, rby = arms.rby;
     lanes acx = pair(a.s[0]->center.x, a.s[1]->center.x);
     lanes acy = pair(a.s[0]->center.y, a.s[1]->center.y);
     lanes bcx = pair(b.s[0]->center.x, b.s[1]->center.x);
@@ -205,14 +238,8 @@ static bool correct_two(rb_world *world, int i0, int i1, lanes slop_squared)
     const lanes gx = sub(add(bcx, rbx), add(acx, rax));
     const lanes gy = sub(add(bcy, rby), add(acy, ray));
     const bool within = _mm_movemask_pd(_mm_cmple_pd(add(mul(gx, gx), mul(gy, gy)), slop_squared)) == 3;
-
-    /* K and its determinant. */
-    const lanes m = add(inv_mass_a, inv_mass_b);
-    const lanes k11 = add(add(m, mul(mul(inv_inertia_a, ray), ray)), mul(mul(inv_inertia_b, rby), rby));
-    const lanes k12 = sub(mul(mul(negate(inv_inertia_a), rax), ray), mul(mul(inv_inertia_b, rbx), rby));
-    const lanes k22 = add(add(m, mul(mul(inv_inertia_a, rax), rax)), mul(mul(inv_inertia_b, rbx), rbx));
-    const lanes det = sub(mul(k11, k22), mul(k12, k12));
-    if (_mm_movemask_pd(_mm_cmpgt_pd(det, _mm_setzero_pd())) != 3) {
+    const mass_lanes k = mass_of(inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b, &arms);
+    if (_mm_movemask_pd(_mm_cmpgt_pd(k.det, _mm_setzero_pd())) != 3) {
         /* A pin that cannot move its bodies: both rows through the
          * reference, which skips it (nothing has been written yet). */
         bool first = rb_pin_correct(world, i0);
@@ -220,11 +247,11 @@ static bool correct_two(rb_world *world, int i0, int i1, lanes slop_squared)
     }
 
     /* P = -K⁻¹·C by Cramer's rule; the centres move by ∓P/m. */
-    const lanes inverse_det = divide(both(1.0), det);
+    const lanes inverse_det = divide(both(1.0), k.det);
     const lanes vx = negate(gx);
     const lanes vy = negate(gy);
-    const lanes px = mul(sub(mul(k22, vx), mul(k12, vy)), inverse_det);
-    const lanes py = mul(sub(mul(k11, vy), mul(k12, vx)), inverse_det);
+    const lanes px = mul(sub(mul(k.k22, vx), mul(k.k12, vy)), inverse_det);
+    const lanes py = mul(sub(mul(k.k11, vy), mul(k.k12, vx)), inverse_det);
     acx = sub(acx, mul(inv_mass_a, px));
     acy = sub(acy, mul(inv_mass_a, py));
     bcx = add(bcx, mul(inv_mass_b, px));
@@ -235,8 +262,8 @@ static bool correct_two(rb_world *world, int i0, int i1, lanes slop_squared)
     store_pair(&b.s[0]->center.y, &b.s[1]->center.y, bcy);
 
     /* The turns, ∓(r × P)/I. */
-    turn_two(a, negate(mul(inv_inertia_a, sub(mul(rax, py), mul(ray, px)))), inv_inertia_a, qac, qas);
-    turn_two(b, mul(inv_inertia_b, sub(mul(rbx, py), mul(rby, px))), inv_inertia_b, qbc, qbs);
+    turn_two(a, negate(mul(inv_inertia_a, sub(mul(rax, py), mul(ray, px)))), inv_inertia_a, arms.qac, arms.qas);
+    turn_two(b, mul(inv_inertia_b, sub(mul(rbx, py), mul(rby, px))), inv_inertia_b, arms.qbc, arms.qbs);
     return within;
 }
 
@@ -244,19 +271,14 @@ void rb_pins_warm_start(rb_world *world, double h, bool backwards)
 {
     const int count = world->pin_row_count;
     const double drift_cap = rb_point_drift_cap(world, h);
-    int k = 0;
-    while (k < count) {
-        const int i0 = row_at(count, k, backwards);
-        if (k + 1 < count) {
-            const int i1 = row_at(count, k + 1, backwards);
-            if (apart(&world->pin_rows[i0], &world->pin_rows[i1])) {
-                warm_start_two(world, i0, i1, h, drift_cap);
-                k += 2;
-                continue;
-            }
+    for (int k = 0, i0, i1; k < count;) {
+        if (rows_at(world, count, k, backwards, &i0, &i1) == 2) {
+            warm_start_two(world, i0, i1, h, drift_cap);
+            k += 2;
+        } else {
+            rb_pin_warm_start(world, i0, h);
+            k += 1;
         }
-        rb_pin_warm_start(world, i0, h);
-        k += 1;
     }
 }
 
@@ -266,19 +288,14 @@ bool rb_pins_correct_positions(rb_world *world, bool backwards)
     const double slop = world->settings.linear_slop;
     const lanes slop_squared = both(slop * slop);
     bool all_within = true;
-    int k = 0;
-    while (k < count) {
-        const int i0 = row_at(count, k, backwards);
-        if (k + 1 < count) {
-            const int i1 = row_at(count, k + 1, backwards);
-            if (apart(&world->pin_rows[i0], &world->pin_rows[i1])) {
-                all_within = correct_two(world, i0, i1, slop_squared) && all_within;
-                k += 2;
-                continue;
-            }
+    for (int k = 0, i0, i1; k < count;) {
+        if (rows_at(world, count, k, backwards, &i0, &i1) == 2) {
+            all_within = correct_two(world, i0, i1, slop_squared) && all_within;
+            k += 2;
+        } else {
+            all_within = rb_pin_correct(world, i0) && all_within;
+            k += 1;
         }
-        all_within = rb_pin_correct(world, i0) && all_within;
-        k += 1;
     }
     return all_within;
 }
@@ -321,19 +338,14 @@ void rb_pins_solve_rigid(rb_world *world, bool backwards)
 {
     const int count = world->pin_row_count;
     rb_pin_row *rows = world->pin_rows;
-    int k = 0;
-    while (k < count) {
-        rb_pin_row *r0 = &rows[row_at(count, k, backwards)];
-        if (k + 1 < count) {
-            rb_pin_row *r1 = &rows[row_at(count, k + 1, backwards)];
-            if (apart(r0, r1)) {
-                solve_rigid_two(world->states, r0, r1);
-                k += 2;
-                continue;
-            }
+    for (int k = 0, i0, i1; k < count;) {
+        if (rows_at(world, count, k, backwards, &i0, &i1) == 2) {
+            solve_rigid_two(world->states, &rows[i0], &rows[i1]);
+            k += 2;
+        } else {
+            rb_pin_solve_rigid(world->states, &rows[i0]);
+            k += 1;
         }
-        rb_pin_solve_rigid(world->states, r0);
-        k += 1;
     }
 }
 
