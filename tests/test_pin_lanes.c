@@ -1,24 +1,28 @@
 // SPDX-License-Identifier: MIT
 /* The plain pins' passes two rows at a time (pin_rows_two.c:
- * rb_pins_warm_start, rb_pins_solve_rigid, rb_pins_correct_positions)
- * against the one-at-a-time reference they stand for (rb_pin_warm_start,
- * rb_pin_solve_rigid, rb_pin_correct, one row after the other in the
- * pass's order): from the same rows, poses and velocities, both ways must
- * leave the same rows and body states, byte for byte, in either
- * direction. The stated tolerance is none: two rows are solved together
- * only when their four bodies are distinct, which makes solving them
- * together solving them one after the other, and each lane does the
- * reference's arithmetic in the reference's order.
+ * rb_pins_warm_start, rb_pins_solve_rigid, rb_pins_solve,
+ * rb_pins_correct_positions) against the one-at-a-time reference they
+ * stand for (rb_pin_warm_start, rb_pin_solve_rigid, rb_pin_solve,
+ * rb_pin_correct, one row after the other in the pass's order): from the
+ * same rows, poses and velocities, both ways must leave the same rows
+ * and body states, byte for byte, in either direction. The stated
+ * tolerance is none: two rows are solved together only when their four
+ * bodies are distinct, which makes solving them together solving them
+ * one after the other, and each lane does the reference's arithmetic in
+ * the reference's order.
  *
  * The rows are those of a 12 × 12 joint grid hung from a ceiling by its
  * whole top row (so that consecutive top pins share the fixed ceiling and
  * go one at a time), with one body that cannot turn, swung for half a
  * second, in the engine's order and reordered so that rows sharing a
- * moving body follow each other; the states are then disturbed so that the branches the pairs
- * leave to the reference are met, and the test counts that they were: a
- * drift capped (bodies spinning fast), a turn beyond the Taylor series'
- * 1/32 rad (poses pulled apart), a body that cannot turn, a pin whose
- * bodies cannot move (one row's masses set to zero), and rows alone. */
+ * moving body follow each other; the states are then disturbed so that
+ * the branches the pairs leave to the reference are met, and the test
+ * counts that they were: a drift capped (bodies spinning fast), a turn
+ * beyond the Taylor series' 1/32 rad (poses pulled apart), a body that
+ * cannot turn, a pin whose bodies cannot move (one row's masses set to
+ * zero), and rows alone. The velocity passes run under the rigid
+ * response and under a soft one (a bias on the gap, a softened
+ * impulse). */
 #include <criterion/criterion.h>
 #include <math.h>
 #include <string.h>
@@ -188,7 +192,7 @@ typedef struct met {
     int cannot_move;  /* rows whose bodies cannot move */
 } met;
 
-typedef enum pass_kind { WARM_START, SOLVE_RIGID, CORRECT } pass_kind;
+typedef enum pass_kind { WARM_START, SOLVE_RIGID, SOLVE_SOFT, CORRECT } pass_kind;
 
 static int row_at(int count, int k, bool backwards) { return backwards ? count - 1 - k : k; }
 
@@ -229,6 +233,9 @@ static bool reference_pass(rb_world *world, pass_kind kind, bool backwards, met 
         case SOLVE_RIGID:
             rb_pin_solve_rigid(world->states, row);
             break;
+        case SOLVE_SOFT:
+            rb_pin_solve(world, row);
+            break;
         case CORRECT:
             all_within = rb_pin_correct(world, index) && all_within;
             m->wide_turns += paired[k] && fabs(world->states[row->body_a].angle - angle_a) > 0.03125;
@@ -252,6 +259,9 @@ static bool lanes_pass(rb_world *world, pass_kind kind, bool backwards)
         return true;
     case SOLVE_RIGID:
         rb_pins_solve_rigid(world, backwards);
+        return true;
+    case SOLVE_SOFT:
+        rb_pins_solve(world, backwards);
         return true;
     case CORRECT:
         return rb_pins_correct_positions(world, backwards);
@@ -360,6 +370,16 @@ Test(pin_lanes, the_rigid_velocity_pass_two_rows_at_a_time_is_the_reference)
 {
     rb_world *world = make_swung_grid();
     compare_every_way(world, SOLVE_RIGID, 23u);
+    destroy_world_and_expect_no_leak(world);
+}
+
+Test(pin_lanes, the_soft_velocity_pass_two_rows_at_a_time_is_the_reference)
+{
+    rb_world *world = make_swung_grid();
+    /* A soft response, as the soft step's biased passes have: a bias on
+     * the gap and a softened impulse. */
+    world->joint_response = (rb_rigid_response){.bias_rate = 30.0, .mass_scale = 0.8, .impulse_scale = 0.15};
+    compare_every_way(world, SOLVE_SOFT, 29u);
     destroy_world_and_expect_no_leak(world);
 }
 

@@ -572,15 +572,12 @@ void rb_joints_warm_start(rb_world *world, double h, bool backwards)
  * rigid one of NGS and 2.4 in fewer operations (rb_pin_solve_rigid). */
 static void solve_rows(rb_world *world, bool backwards)
 {
-    const int count = world->pin_row_count;
     const rb_rigid_response *response = &world->joint_response;
     if (response->mass_scale == 1.0 && response->impulse_scale == 0.0 && response->bias_rate == 0.0) {
         rb_pins_solve_rigid(world, backwards);
         return;
     }
-    for (int k = 0; k < count; ++k) {
-        rb_pin_solve(world, &world->pin_rows[pass_index(count, k, backwards)]);
-    }
+    rb_pins_solve(world, backwards);
 }
 
 /* Whether the velocity passes leave the joint to its block: a pin and

@@ -389,10 +389,12 @@ bool rb_pin_correct(rb_world *world, int row);
  * position pass (true when every gap was within the linear slop). */
 void rb_pins_warm_start(rb_world *world, double h, bool backwards);
 bool rb_pins_correct_positions(rb_world *world, bool backwards);
-/* A velocity pass over every row under the rigid response, as
- * rb_pin_solve_rigid solves each. The two passes take two rows at once
- * where they can (pin_rows_two.c), to the same bits. */
+/* A velocity pass over every row: under the rigid response, as
+ * rb_pin_solve_rigid solves each; under any, as rb_pin_solve does. These
+ * passes take two rows at once where they can (pin_rows_two.c), to the
+ * same bits. */
 void rb_pins_solve_rigid(rb_world *world, bool backwards);
+void rb_pins_solve(rb_world *world, bool backwards);
 /* At the end of the step: the rows' impulses back into their joints. */
 void rb_pins_scatter(rb_world *world);
 /* The impulse of a plain pin's point: its row's within a step, else its

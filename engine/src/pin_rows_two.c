@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-/* The plain pins' warm start, rigid velocity pass and NGS position pass,
- * two rows at a time where they can be (joint_pin.c gives the rows and
- * the one-row reference: rb_pin_warm_start, rb_pin_correct;
- * joint_solver.h rb_pin_solve_rigid).
+/* The plain pins' warm start, velocity passes and NGS position pass, two
+ * rows at a time where they can be (joint_pin.c gives the rows and the
+ * one-row reference: rb_pin_warm_start, rb_pin_correct; joint_solver.h
+ * rb_pin_solve_rigid and rb_pin_solve).
  *
  * A pass visits the rows in order (or in reverse), each row reading the
  * poses or velocities the rows before it wrote. Two consecutive rows
@@ -300,8 +300,12 @@ bool rb_pins_correct_positions(rb_world *world, bool backwards)
     return all_within;
 }
 
-/* rb_pin_solve_rigid (joint_solver.h) on rows r0 and r1 at once. */
-static void solve_rigid_two(rb_body_state *states, rb_pin_row *r0, rb_pin_row *r1)
+/* A velocity pass of rows r0 and r1 at once: rb_pin_solve_rigid
+ * (joint_solver.h) where `soft` is NULL, else rb_pin_solve under that
+ * response (its bias on the gap, and the softening
+ * P·mass_scale - accumulated·impulse_scale). */
+static inline __attribute__((always_inline)) void solve_two(rb_body_state *states, rb_pin_row *r0, rb_pin_row *r1,
+                                                            const rb_rigid_response *soft)
 {
     const state_pair a = {{&states[r0->body_a], &states[r1->body_a]}};
     const state_pair b = {{&states[r0->body_b], &states[r1->body_b]}};
@@ -317,17 +321,32 @@ static void solve_rigid_two(rb_body_state *states, rb_pin_row *r0, rb_pin_row *r
     const lanes wb = pair(b.s[0]->angular_velocity, b.s[1]->angular_velocity);
 
     /* Cdot = (vB + ωB × rB) - (vA + ωA × rA) - drift; ω × r = (-ω·r.y, ω·r.x). */
-    const lanes cx = sub(sub(add(vbx, mul(negate(wb), rby)), add(vax, mul(negate(wa), ray))),
-                         pair(r0->point_drift.x, r1->point_drift.x));
-    const lanes cy =
-        sub(sub(add(vby, mul(wb, rbx)), add(vay, mul(wa, rax))), pair(r0->point_drift.y, r1->point_drift.y));
+    lanes cx = sub(sub(add(vbx, mul(negate(wb), rby)), add(vax, mul(negate(wa), ray))),
+                   pair(r0->point_drift.x, r1->point_drift.x));
+    lanes cy = sub(sub(add(vby, mul(wb, rbx)), add(vay, mul(wa, rax))), pair(r0->point_drift.y, r1->point_drift.y));
+    if (soft != NULL && soft->bias_rate > 0.0) {
+        /* Cdot + bias·C, the gap C = (cB + rB) - (cA + rA). */
+        const lanes bias = both(soft->bias_rate);
+        cx = add(cx, mul(bias, sub(add(pair(b.s[0]->center.x, b.s[1]->center.x), rbx),
+                                   add(pair(a.s[0]->center.x, a.s[1]->center.x), rax))));
+        cy = add(cy, mul(bias, sub(add(pair(b.s[0]->center.y, b.s[1]->center.y), rby),
+                                   add(pair(a.s[0]->center.y, a.s[1]->center.y), ray))));
+    }
     const lanes i11 = pair(r0->point_inverse11, r1->point_inverse11);
     const lanes i12 = pair(r0->point_inverse12, r1->point_inverse12);
     const lanes i22 = pair(r0->point_inverse22, r1->point_inverse22);
-    const lanes px = negate(add(mul(i11, cx), mul(i12, cy)));
-    const lanes py = negate(add(mul(i12, cx), mul(i22, cy)));
-    store_pair(&r0->impulse.x, &r1->impulse.x, add(pair(r0->impulse.x, r1->impulse.x), px));
-    store_pair(&r0->impulse.y, &r1->impulse.y, add(pair(r0->impulse.y, r1->impulse.y), py));
+    lanes px = negate(add(mul(i11, cx), mul(i12, cy)));
+    lanes py = negate(add(mul(i12, cx), mul(i22, cy)));
+    const lanes accumulated_x = pair(r0->impulse.x, r1->impulse.x);
+    const lanes accumulated_y = pair(r0->impulse.y, r1->impulse.y);
+    if (soft != NULL) {
+        const lanes mass_scale = both(soft->mass_scale);
+        const lanes impulse_scale = both(soft->impulse_scale);
+        px = sub(mul(mass_scale, px), mul(impulse_scale, accumulated_x));
+        py = sub(mul(mass_scale, py), mul(impulse_scale, accumulated_y));
+    }
+    store_pair(&r0->impulse.x, &r1->impulse.x, add(accumulated_x, px));
+    store_pair(&r0->impulse.y, &r1->impulse.y, add(accumulated_y, py));
 
     apply_two(a, b, pair(r0->inv_mass_a, r1->inv_mass_a), pair(r0->inv_inertia_a, r1->inv_inertia_a),
               pair(r0->inv_mass_b, r1->inv_mass_b), pair(r0->inv_inertia_b, r1->inv_inertia_b), rax, ray, rbx, rby, px,
@@ -340,10 +359,26 @@ void rb_pins_solve_rigid(rb_world *world, bool backwards)
     rb_pin_row *rows = world->pin_rows;
     for (int k = 0, i0, i1; k < count;) {
         if (rows_at(world, count, k, backwards, &i0, &i1) == 2) {
-            solve_rigid_two(world->states, &rows[i0], &rows[i1]);
+            solve_two(world->states, &rows[i0], &rows[i1], NULL);
             k += 2;
         } else {
             rb_pin_solve_rigid(world->states, &rows[i0]);
+            k += 1;
+        }
+    }
+}
+
+void rb_pins_solve(rb_world *world, bool backwards)
+{
+    const int count = world->pin_row_count;
+    rb_pin_row *rows = world->pin_rows;
+    const rb_rigid_response *response = &world->joint_response;
+    for (int k = 0, i0, i1; k < count;) {
+        if (rows_at(world, count, k, backwards, &i0, &i1) == 2) {
+            solve_two(world->states, &rows[i0], &rows[i1], response);
+            k += 2;
+        } else {
+            rb_pin_solve(world, &rows[i0]);
             k += 1;
         }
     }
@@ -374,6 +409,14 @@ void rb_pins_solve_rigid(rb_world *world, bool backwards)
     const int count = world->pin_row_count;
     for (int k = 0; k < count; ++k) {
         rb_pin_solve_rigid(world->states, &world->pin_rows[row_at(count, k, backwards)]);
+    }
+}
+
+void rb_pins_solve(rb_world *world, bool backwards)
+{
+    const int count = world->pin_row_count;
+    for (int k = 0; k < count; ++k) {
+        rb_pin_solve(world, &world->pin_rows[row_at(count, k, backwards)]);
     }
 }
 
