@@ -24,6 +24,7 @@
 
 #include "manifold_internal.h"
 #include "test_support.h"
+#include "world_internal.h"
 
 /* splitmix64 (Steele, Lea and Flood, "Fast splittable pseudorandom
  * number generators", 2014): a fixed seed gives the same poses on every
@@ -332,4 +333,31 @@ Test(box_manifold, recognises_boxes_and_only_boxes)
     const rb_vec2 triangle[3] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
     cr_assert_eq(rb_make_polygon(triangle, 3, &p), RB_OK);
     cr_expect(!rb_polygon_is_box(&p), "a triangle is not a box");
+}
+
+/* A world's narrow phase takes the box path for shape A by the flag the
+ * shape was made with (world_internal.h: rb_shape.box), not by testing
+ * A's vertices for every pair: the flag must say what rb_polygon_is_box
+ * says of the shape's polygon, for every kind of shape a body can have. */
+Test(box_manifold, a_shape_is_made_knowing_whether_it_is_a_box)
+{
+    rb_world *world = make_world(rb_v2(0.0, 0.0));
+    rb_body_id body = make_body(world, RB_BODY_DYNAMIC, rb_v2(0.0, 0.0), 0.0);
+    rb_polygon polygons[4];
+    cr_assert_eq(rb_make_box(0.5, 2.0, &polygons[0]), RB_OK);
+    cr_assert_eq(rb_make_offset_box(0.5, 0.25, rb_v2(3.0, -1.0), 0.0, &polygons[1]), RB_OK);
+    cr_assert_eq(rb_make_offset_box(0.5, 0.25, rb_v2(3.0, -1.0), 0.3, &polygons[2]), RB_OK);
+    const rb_vec2 trapezoid[4] = {{-1.0, 0.0}, {1.0, 0.0}, {0.5, 1.0}, {-0.5, 1.0}};
+    cr_assert_eq(rb_make_polygon(trapezoid, 4, &polygons[3]), RB_OK);
+    const bool boxes[4] = {true, true, false, false};
+    rb_shape_def def = rb_default_shape_def();
+    for (int i = 0; i < 4; ++i) {
+        rb_shape_id id;
+        cr_assert_eq(rb_shape_create_polygon(world, body, &def, &polygons[i], &id), RB_OK, "%s", rb_last_error());
+        cr_expect_eq(world->shapes[id.index].box, boxes[i], "polygon %d: box flag %d, expected %d", i,
+                     world->shapes[id.index].box, boxes[i]);
+    }
+    rb_shape_id circle = add_circle(world, body, rb_v2(0.0, 0.0), 0.5, 1.0);
+    cr_expect(!world->shapes[circle.index].box, "a circle is not a box");
+    destroy_world_and_expect_no_leak(world);
 }

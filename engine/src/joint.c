@@ -569,7 +569,7 @@ void rb_joints_warm_start(rb_world *world, double h, bool backwards)
 }
 
 /* A velocity pass over the rows alone, under the pass's response: the
- * rigid one of NGS and 2.4 in fewer operations (rb_pin_solve_rigid). */
+ * rigid one of NGS and 2.4 in fewer operations (rb_pins_solve_rigid). */
 static void solve_rows(rb_world *world, bool backwards)
 {
     const rb_rigid_response *response = &world->joint_response;
