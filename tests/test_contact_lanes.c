@@ -23,8 +23,10 @@
  * one against a fixed body, or between moving bodies): a colour's
  * constraints are otherwise all of one kind, and the lanes' choice of
  * spring would go untested. */
+#include <math.h>
 #include <string.h>
 
+#include "contact.h"
 #include "contact_blocks.h"
 #include "contact_solver.h"
 #include "joint_solver.h"
@@ -72,6 +74,26 @@ static rb_contact_softness softness_of(const rb_world *world, bool use_bias)
     };
 }
 
+/* Prepares the world's contacts as a step does
+ * (rb_contact_solver_prepare), then fills the constraints of the blocks'
+ * contacts by the reference, rb_contact_solver_fill_constraint: the
+ * blocks hold those contacts' values in their lanes and leave their
+ * constraints as they were. Returns how many constraints there are. */
+static int prepare_every_constraint(rb_world *world)
+{
+    int count = rb_contact_solver_prepare(world);
+    cr_assert_geq(count, 0, "out of memory");
+    const rb_contact_batches *batches = &world->contact_batches;
+    for (int k = 0; k < batches->block_count; ++k) {
+        const rb_contact_block_tail *tail = &batches->tails[k];
+        for (int lane = 0; lane < RB_BLOCK_LANES && tail->constraints[lane] >= 0; ++lane) {
+            rb_contact_solver_fill_constraint(world, tail->contacts[lane],
+                                              &world->constraints[tail->constraints[lane]]);
+        }
+    }
+    return count;
+}
+
 /* Whether constraint i is solved in a block. */
 static bool in_a_block(const rb_world *world, int i)
 {
@@ -108,8 +130,7 @@ static void expect_same_results(const rb_world *world, const rb_body_state *refe
         const rb_contact_constraint *r = &reference_constraints[i];
         const rb_contact_constraint *w = &world->constraints[i];
         bool in_block = in_a_block(world, i);
-        cr_expect_eq(w->in_lane, in_block, "constraint %d says it is %sin a block", i, w->in_lane ? "" : "not ");
-        const rb_manifold *m = &world->contacts[w->contact].manifold;
+        const rb_manifold *m = &world->contacts[r->contact].manifold;
         for (int j = 0; j < r->point_count; ++j) {
             double normal = in_block ? m->points[j].normal_impulse : w->points[j].normal_impulse;
             double tangent = in_block ? m->points[j].tangent_impulse : w->points[j].tangent_impulse;
@@ -124,15 +145,20 @@ static void expect_same_results(const rb_world *world, const rb_body_state *refe
 }
 
 /* The deepest overlap of the constraints in blocks at the poses now,
- * computed here from each constraint's definition: its normal turned
- * with the body whose face it is, its surface points carried with their
- * bodies, the overlap the negated distance between them along the
- * normal. */
-static double deepest_in_blocks(const rb_world *world)
+ * computed here from each constraint's definition (as the reference
+ * filled it): its normal turned with the body whose face it is, its
+ * surface points carried with their bodies, the overlap the negated
+ * distance between them along the normal. A constraint deeper than
+ * `trusted` (m) is measured again by the narrow phase at the poses now
+ * (rb_contact_deepest_overlap_now), as the step does; `refined` counts
+ * them. */
+static double deepest_in_blocks(const rb_world *world, const rb_contact_constraint *reference, double trusted,
+                                int *refined)
 {
     double deepest = 0.0;
+    *refined = 0;
     for (int i = 0; i < world->constraint_count; ++i) {
-        const rb_contact_constraint *c = &world->constraints[i];
+        const rb_contact_constraint *c = &reference[i];
         if (!in_a_block(world, i)) {
             continue;
         }
@@ -140,11 +166,17 @@ static double deepest_in_blocks(const rb_world *world)
         const rb_body_state *b = &world->states[c->body_b];
         rb_rot turn = c->normal_follows == RB_NORMAL_TURNS_WITH_A ? a->rotation : b->rotation;
         rb_vec2 normal = rb_rotate(turn, c->local_normal);
+        double overlap = 0.0;
         for (int j = 0; j < c->point_count; ++j) {
             rb_vec2 pa = rb_add(a->center, rb_rotate(a->rotation, c->points[j].local_surface_a));
             rb_vec2 pb = rb_add(b->center, rb_rotate(b->rotation, c->points[j].local_surface_b));
-            deepest = fmax(deepest, -rb_dot(normal, rb_sub(pb, pa)));
+            overlap = fmax(overlap, -rb_dot(normal, rb_sub(pb, pa)));
         }
+        if (overlap > trusted) {
+            overlap = rb_contact_deepest_overlap_now(world, &world->contacts[c->contact]);
+            ++*refined;
+        }
+        deepest = fmax(deepest, overlap);
     }
     return deepest;
 }
@@ -162,6 +194,9 @@ static int expect_same_preparation(const rb_world *world, const rb_contact_const
         const int *constraints = batches->tails[k].constraints;
         for (int lane = 0; lane < RB_BLOCK_LANES && constraints[lane] >= 0; ++lane) {
             const rb_contact_constraint *c = &reference[constraints[lane]];
+            cr_expect_eq(batches->tails[k].contacts[lane], c->contact,
+                         "lane %d of block %d holds contact %d, its constraint %d contact %d", lane, k,
+                         batches->tails[k].contacts[lane], constraints[lane], c->contact);
             double lane_values[2 + 2 * 6] = {q->normal_x.v[lane], q->normal_y.v[lane]};
             double reference_values[2 + 2 * 6] = {c->normal.x, c->normal.y};
             for (int j = 0; j < 2; ++j) {
@@ -226,10 +261,13 @@ static constraint_counts expect_passes_agree(rb_world *world, double speed, bool
             rb_body_state *s = &world->states[i];
             s->linear_velocity = rb_add(s->linear_velocity, rb_v2(speed * next_unit(&seed), speed * next_unit(&seed)));
             s->angular_velocity += speed * next_unit(&seed);
+            /* Turned too, so that no body's frame is the world's and a
+             * point taken into it and back is not always the same point. */
+            s->angle += 0.02 * speed * next_unit(&seed);
+            s->rotation = rb_rot_from_angle(s->angle);
         }
     }
-    cr_assert_geq(rb_contact_solver_prepare(world), 0, "out of memory");
-    int count = world->constraint_count;
+    int count = prepare_every_constraint(world);
     cr_assert_gt(count, 0, "the scene has contacts to solve");
     rb_contact_solver_prepare_points_range(world, h, (rb_substep_rows){.first_substep = true}, 0, count);
     if (mix) {
@@ -293,12 +331,28 @@ static constraint_counts expect_passes_agree(rb_world *world, double speed, bool
                 in_blocks += world->contact_batches.tails[k].constraints[lane] >= 0;
             }
         }
-        double deepest = deepest_in_blocks(world);
+        int refined = 0;
+        double deepest = deepest_in_blocks(world, prepared, INFINITY, &refined);
         cr_expect(in_blocks == 0 || deepest > 0.0, "some contact in a block overlaps, so the measure is tested");
         cr_expect(world->contact_batches.overlap_measured && world->contact_batches.deepest_overlap == deepest,
                   "the blocks' deepest overlap: %.17g m measured by the last pass, %.17g m from the constraints, "
                   "at width %d",
                   world->contact_batches.deepest_overlap, deepest, width);
+        /* Measured again from the lanes, as a step whose last pass came
+         * before the positions moved does; and with the deeper half
+         * measured by the narrow phase, as when some overlap is deeper
+         * than the step trusts. */
+        double again = rb_contact_blocks_deepest_overlap(world, INFINITY);
+        cr_expect(again == deepest, "the lanes' deepest overlap measured again: %.17g m, from the constraints %.17g m",
+                  again, deepest);
+        double trusted = 0.5 * deepest;
+        double refined_deepest = deepest_in_blocks(world, prepared, trusted, &refined);
+        again = rb_contact_blocks_deepest_overlap(world, trusted);
+        cr_expect(in_blocks == 0 || refined > 0, "some overlap in a block is measured again (%d were)", refined);
+        cr_expect(again == refined_deepest,
+                  "the lanes' deepest overlap, those deeper than %.17g m measured again: %.17g m, from the "
+                  "constraints %.17g m",
+                  trusted, again, refined_deepest);
         cr_expect_eq(in_blocks, two_point - bouncing,
                      "every two-point constraint without restitution is solved in a block (%d of %d were)", in_blocks,
                      two_point - bouncing);
@@ -330,8 +384,7 @@ static constraint_counts expect_passes_agree(rb_world *world, double speed, bool
  * compares the constraints byte for byte. */
 static void expect_preparations_agree(rb_world *world, rb_substep_rows rows, uint64_t seed)
 {
-    cr_assert_geq(rb_contact_solver_prepare(world), 0, "out of memory");
-    int count = world->constraint_count;
+    int count = prepare_every_constraint(world);
     cr_assert_gt(count, 0, "the scene has contacts to solve");
     for (int i = 0; i < world->body_slots; ++i) {
         if (world->bodies[i].in_use && world->bodies[i].type == RB_BODY_DYNAMIC) {
@@ -396,6 +449,14 @@ Test(contact_lanes, a_pyramid_and_balls_give_the_same_velocities_and_impulses_bo
         cr_expect(n.bouncing > 50 && n.bouncing < n.two_point / 2,
                   "some of them, not most, have restitution (%d of %d)", n.bouncing, n.two_point);
     }
+    /* A box asleep among awake ones (one that does not bounce, so that
+     * its contacts take lanes): its contacts move only the others (its
+     * inverse mass and inertia count as 0) and take the spring against a
+     * fixed body. */
+    rb_body *sleeper = &world->bodies[scene_body_at(pyramid.first_box, 7 * (pyramid.box_count / 14) + 3).index];
+    sleeper->awake = false;
+    expect_passes_agree(world, 0.5, true, false, 99u);
+    sleeper->awake = true;
     /* The rows each solver asks for: the soft step's, NGS's, Baumgarte's. */
     expect_preparations_agree(world, (rb_substep_rows){.first_substep = true}, 11u);
     expect_preparations_agree(world, (rb_substep_rows){.block_normals = true}, 12u);
@@ -415,5 +476,56 @@ Test(contact_lanes, balls_on_a_table_give_the_same_velocities_and_impulses_both_
     for (int round = 0; round < 2; ++round) {
         expect_passes_agree(world, 2.0, round == 0, false, 7u + (uint64_t)round);
     }
+    destroy_world_and_expect_no_leak(world);
+}
+
+/* A dynamic plank 100 m long carrying 80 boxes and 8 balls: the plank's
+ * contacts outnumber the colours, so some go to the overflow colour,
+ * beside the blocks (the boxes' other contacts) and the singles (the
+ * balls'). Every contact the blocks do not hold is solved from its
+ * constraint, and the step gives each constraint's impulses back to its
+ * manifold, whichever of the two kinds it is
+ * (rb_contact_solver_loose_constraint), and measures its overlap. */
+Test(contact_lanes, constraints_beside_the_blocks_give_their_impulses_back)
+{
+    rb_world *world = soft_world();
+    rb_body_id ground = make_body(world, RB_BODY_STATIC, rb_v2(0.0, -1.0), 0.0);
+    add_box(world, ground, 60.0, 1.0, 1.0);
+    rb_body_id plank = make_body(world, RB_BODY_DYNAMIC, rb_v2(0.0, 0.25), 0.0);
+    add_box(world, plank, 50.0, 0.25, 1.0);
+    for (int k = 0; k < 80; ++k) {
+        rb_body_id box = make_body(world, RB_BODY_DYNAMIC, rb_v2(-49.0 + 1.2 * k, 0.99), 0.0);
+        add_box(world, box, 0.49, 0.49, 1.0);
+    }
+    for (int k = 0; k < 8; ++k) {
+        rb_body_id ball = make_body(world, RB_BODY_DYNAMIC, rb_v2(-48.4 + 12.0 * k, 1.2), 0.0);
+        add_circle(world, ball, rb_v2(0.0, 0.0), 0.2, 1.0);
+    }
+    step_world(world, TEST_DT, 20);
+    const rb_contact_batches *batches = &world->contact_batches;
+    int overflow = world->constraint_count - batches->overflow_start;
+    cr_assert_gt(overflow, 0, "some of the plank's contacts are in the overflow colour");
+    cr_assert_gt(batches->single_count, 0, "the balls' contacts are singles");
+    cr_assert_gt(batches->block_count, 0, "the boxes' other contacts are in blocks");
+    cr_assert_eq(rb_contact_solver_loose_count(world), batches->single_count + overflow);
+    int pushing = 0;
+    for (int k = 0; k < rb_contact_solver_loose_count(world); ++k) {
+        int i = rb_contact_solver_loose_constraint(world, k);
+        cr_assert(i >= 0 && i < world->constraint_count);
+        if (k > 0) {
+            cr_expect_gt(i, rb_contact_solver_loose_constraint(world, k - 1), "in the order of their indices");
+        }
+        const rb_contact_constraint *c = &world->constraints[i];
+        const rb_manifold *m = &world->contacts[c->contact].manifold;
+        for (int j = 0; j < c->point_count; ++j) {
+            cr_expect(m->points[j].normal_impulse == c->points[j].normal_impulse &&
+                          m->points[j].tangent_impulse == c->points[j].tangent_impulse,
+                      "constraint %d point %d: impulses (%.17g, %.17g) solved, (%.17g, %.17g) in its manifold", i, j,
+                      c->points[j].normal_impulse, c->points[j].tangent_impulse, m->points[j].normal_impulse,
+                      m->points[j].tangent_impulse);
+            pushing += c->points[j].normal_impulse > 0.0;
+        }
+    }
+    cr_expect_gt(pushing, overflow, "the constraints push (%d points did)", pushing);
     destroy_world_and_expect_no_leak(world);
 }

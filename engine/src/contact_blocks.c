@@ -18,13 +18,13 @@
  * pass alone reads (where the impulses go, the normal in its body's
  * frame) goes into the block's tail, in an array beside the blocks
  * (rb_contact_block_tail), so that the other passes stream 272 bytes a
- * contact rather than 304. Each contact is copied
- * into its lane as soon as its constraint is made, while the constraint
- * is still in the processor's first cache: one pass over the contacts
- * where there were three (make the constraints, prepare their points,
- * copy them into blocks), each of which, on the base-100 pyramid's
- * 15,000 contacts, streamed 6.7 MB of constraints through the third-level
- * cache. What moves with the bodies (the normal's lever arms and the
+ * contact rather than 304. Each contact is made straight into its lane,
+ * in one pass over the contacts, and its constraint is neither written
+ * nor read: a constraint is 456 bytes, and on the base-100 pyramid's
+ * 15,000 contacts making each constraint and then copying it into its
+ * lane, or only marking it as held by a lane, made the step's
+ * preparation stream megabytes through the third-level cache (the step
+ * took 9 % longer). What moves with the bodies (the normal's lever arms and the
  * effective masses) the blocks then prepare four at a time, in the step's
  * first warm start, which reads the block anyway (contact_block_passes.h);
  * the bodies have not moved since the constraints were made. The blocks
@@ -55,11 +55,11 @@
  * through memory, they delayed every chain's first loads, and four wide
  * was then slower than two (0.140 against 0.134 ms of the step's solver
  * phases, against 0.104 ms as it is). */
-#include <assert.h>
 #include <string.h>
 
 #include "allocator.h"
 #include "constraint_colouring.h"
+#include "contact.h"
 #include "contact_blocks.h"
 
 void rb_contact_batches_free(rb_contact_batches *batches)
@@ -88,53 +88,150 @@ int rb_contact_blocks_widest(void)
     return 2;
 }
 
-/* Copies constraint `index`, between the bodies whose states are at a
- * and b, into lane `slot` of the blocks (lane slot % RB_BLOCK_LANES of
- * block slot / RB_BLOCK_LANES) and of their tails: every field the
- * block's first warm start does not prepare, so a block needs no clearing
- * before its lanes are filled. */
-static void copy_into_lane(rb_contact_batches *batches, unsigned slot, int index, const rb_contact_constraint *c,
-                           rb_body_state *a, rb_body_state *b)
+/* Block k and lane `lane` of lane `slot` of the blocks (lane slot %
+ * RB_BLOCK_LANES of block slot / RB_BLOCK_LANES). */
+static unsigned block_of(unsigned slot)
 {
-    unsigned k = slot / RB_BLOCK_LANES; /* unsigned: a shift and a mask, where a signed division takes five more */
-    unsigned lane = slot % RB_BLOCK_LANES;
+    return slot / RB_BLOCK_LANES;
+} /* unsigned: a shift, where a signed division takes five more */
+static unsigned lane_of(unsigned slot) { return slot % RB_BLOCK_LANES; }
+
+/* Contact `index`, which takes a lane, made straight into lane `slot` of
+ * the blocks and of their tails: every value rb_contact_solver_fill_constraint
+ * would give its constraint that a pass reads, by the same arithmetic,
+ * and the normal as the bodies turn it now (as
+ * rb_contact_solver_prepare_points_range turns it), so a block needs no
+ * clearing before its lanes are filled; the lever arms and masses the
+ * block's first warm start prepares. A two-point contact has no circle
+ * side, so its normal turns with the body of its reference face and its
+ * radii are 0. Its constraint, `constraint`, is left as it is: no pass
+ * reads it (rb_contact_solver_loose_constraint). */
+static void fill_lane(rb_world *world, int index, rb_contact_batches *batches, unsigned slot, int constraint)
+{
+    const rb_contact *contact = &world->contacts[index];
+    const rb_body *body_a = &world->bodies[contact->body_a];
+    const rb_body *body_b = &world->bodies[contact->body_b];
+    rb_body_state *sa = &world->states[contact->body_a];
+    rb_body_state *sb = &world->states[contact->body_b];
+    double inv_mass_a = body_a->awake ? body_a->inv_mass : 0.0;
+    double inv_inertia_a = body_a->awake ? body_a->inv_inertia : 0.0;
+    double inv_mass_b = body_b->awake ? body_b->inv_mass : 0.0;
+    double inv_inertia_b = body_b->awake ? body_b->inv_inertia : 0.0;
+    rb_vec2 normal = contact->manifold.normal;
+    bool on_b = contact->manifold.reference_on_b;
+    rb_rot turn = on_b ? sb->rotation : sa->rotation;
+    rb_vec2 local_normal = rb_inv_rotate(turn, normal);
+    rb_vec2 turned = rb_rotate(turn, local_normal);
+
+    unsigned k = block_of(slot);
+    unsigned lane = lane_of(slot);
     rb_contact_block_tail *tail = &batches->tails[k];
-    tail->constraints[lane] = index;
-    tail->contacts[lane] = c->contact;
-    tail->turns_with_a[lane] = c->normal_follows == RB_NORMAL_TURNS_WITH_A ? -1 : 0;
-    tail->local_normal_x.v[lane] = c->local_normal.x;
-    tail->local_normal_y.v[lane] = c->local_normal.y;
+    tail->constraints[lane] = constraint;
+    tail->contacts[lane] = index;
+    tail->turns_with_a[lane] = on_b ? 0 : -1;
+    tail->local_normal_x.v[lane] = local_normal.x;
+    tail->local_normal_y.v[lane] = local_normal.y;
     rb_contact_block *q = &batches->blocks[k];
-    q->body_a[lane] = a;
-    q->body_b[lane] = b;
-    q->against_fixed[lane] = c->against_fixed ? -1 : 0;
-    q->normal_x.v[lane] = c->normal.x;
-    q->normal_y.v[lane] = c->normal.y;
-    q->inv_mass_a.v[lane] = c->inv_mass_a;
-    q->inv_inertia_a.v[lane] = c->inv_inertia_a;
-    q->inv_mass_b.v[lane] = c->inv_mass_b;
-    q->inv_inertia_b.v[lane] = c->inv_inertia_b;
-    q->friction.v[lane] = c->friction;
+    q->body_a[lane] = sa;
+    q->body_b[lane] = sb;
+    bool against_fixed = (inv_mass_a == 0.0 && inv_inertia_a == 0.0) || (inv_mass_b == 0.0 && inv_inertia_b == 0.0);
+    q->against_fixed[lane] = against_fixed ? -1 : 0;
+    q->normal_x.v[lane] = turned.x;
+    q->normal_y.v[lane] = turned.y;
+    q->inv_mass_a.v[lane] = inv_mass_a;
+    q->inv_inertia_a.v[lane] = inv_inertia_a;
+    q->inv_mass_b.v[lane] = inv_mass_b;
+    q->inv_inertia_b.v[lane] = inv_inertia_b;
+    q->friction.v[lane] = contact->friction;
+    bool warm = world->settings.warm_starting;
     for (int j = 0; j < 2; ++j) {
-        const rb_constraint_point *p = &c->points[j];
+        const rb_manifold_point *mp = &contact->manifold.points[j];
+        rb_vec2 local_a;
+        rb_vec2 local_b;
+        rb_contact_local_surfaces(mp, normal, 0.0, 0.0, sa, sb, &local_a, &local_b);
         rb_block_point *w = &q->points[j];
-        w->local_surface_ax.v[lane] = p->local_surface_a.x;
-        w->local_surface_ay.v[lane] = p->local_surface_a.y;
-        w->local_surface_bx.v[lane] = p->local_surface_b.x;
-        w->local_surface_by.v[lane] = p->local_surface_b.y;
-        w->normal_impulse.v[lane] = p->normal_impulse;
-        w->tangent_impulse.v[lane] = p->tangent_impulse;
+        w->local_surface_ax.v[lane] = local_a.x;
+        w->local_surface_ay.v[lane] = local_a.y;
+        w->local_surface_bx.v[lane] = local_b.x;
+        w->local_surface_by.v[lane] = local_b.y;
+        w->normal_impulse.v[lane] = warm ? mp->normal_impulse : 0.0;
+        w->tangent_impulse.v[lane] = warm ? mp->tangent_impulse : 0.0;
     }
 }
 
-/* Empties lane `slot` of the blocks, as copy_into_lane would copy a
- * contact that cannot act: along (1, 0) between the idle bodies, with no
- * mass and no impulse, its surface points at their centres (so no lever
- * arm). */
+/* Empties lane `slot` of the blocks: a contact that cannot act, along
+ * (1, 0) between the idle bodies, with no mass and no impulse, its
+ * surface points at their centres (so no lever arm), and no normal to
+ * turn (so no overlap). */
 static void empty_lane(rb_contact_batches *batches, unsigned slot)
 {
-    static const rb_contact_constraint idle = {.normal = {1.0, 0.0}};
-    copy_into_lane(batches, slot, -1, &idle, &batches->idle_a, &batches->idle_b);
+    unsigned k = block_of(slot);
+    unsigned lane = lane_of(slot);
+    rb_contact_block_tail *tail = &batches->tails[k];
+    tail->constraints[lane] = -1;
+    tail->contacts[lane] = 0;
+    tail->turns_with_a[lane] = 0;
+    tail->local_normal_x.v[lane] = 0.0;
+    tail->local_normal_y.v[lane] = 0.0;
+    rb_contact_block *q = &batches->blocks[k];
+    q->body_a[lane] = &batches->idle_a;
+    q->body_b[lane] = &batches->idle_b;
+    q->against_fixed[lane] = 0;
+    q->normal_x.v[lane] = 1.0;
+    q->normal_y.v[lane] = 0.0;
+    q->inv_mass_a.v[lane] = 0.0;
+    q->inv_inertia_a.v[lane] = 0.0;
+    q->inv_mass_b.v[lane] = 0.0;
+    q->inv_inertia_b.v[lane] = 0.0;
+    q->friction.v[lane] = 0.0;
+    for (int j = 0; j < 2; ++j) {
+        rb_block_point *w = &q->points[j];
+        w->local_surface_ax.v[lane] = 0.0;
+        w->local_surface_ay.v[lane] = 0.0;
+        w->local_surface_bx.v[lane] = 0.0;
+        w->local_surface_by.v[lane] = 0.0;
+        w->normal_impulse.v[lane] = 0.0;
+        w->tangent_impulse.v[lane] = 0.0;
+    }
+}
+
+/* The overlap at the poses now of the contact in lane `lane` of block q,
+ * 0 if none: what carried_overlap (contact_solver.c) measures of a
+ * constraint, from the lane's values by the same arithmetic. */
+static double lane_overlap(const rb_contact_block *q, const rb_contact_block_tail *tail, unsigned lane)
+{
+    const rb_body_state *a = q->body_a[lane];
+    const rb_body_state *b = q->body_b[lane];
+    rb_vec2 local_normal = rb_v2(tail->local_normal_x.v[lane], tail->local_normal_y.v[lane]);
+    rb_vec2 normal = rb_rotate(tail->turns_with_a[lane] != 0 ? a->rotation : b->rotation, local_normal);
+    double deepest = 0.0;
+    for (int j = 0; j < 2; ++j) {
+        const rb_block_point *p = &q->points[j];
+        rb_vec2 local_a = rb_v2(p->local_surface_ax.v[lane], p->local_surface_ay.v[lane]);
+        rb_vec2 local_b = rb_v2(p->local_surface_bx.v[lane], p->local_surface_by.v[lane]);
+        rb_vec2 pa = rb_add(a->center, rb_rotate(a->rotation, local_a));
+        rb_vec2 pb = rb_add(b->center, rb_rotate(b->rotation, local_b));
+        double overlap = -rb_dot(normal, rb_sub(pb, pa));
+        deepest = overlap > deepest ? overlap : deepest;
+    }
+    return deepest;
+}
+
+double rb_contact_blocks_deepest_overlap(const rb_world *world, double trusted)
+{
+    const rb_contact_batches *batches = &world->contact_batches;
+    double deepest = 0.0;
+    for (int k = 0; k < batches->block_count; ++k) {
+        const rb_contact_block_tail *tail = &batches->tails[k];
+        for (unsigned lane = 0; lane < RB_BLOCK_LANES && tail->constraints[lane] >= 0; ++lane) {
+            double overlap = lane_overlap(&batches->blocks[k], tail, lane);
+            if (overlap > trusted) {
+                overlap = rb_contact_deepest_overlap_now(world, &world->contacts[tail->contacts[lane]]);
+            }
+            deepest = overlap > deepest ? overlap : deepest;
+        }
+    }
+    return deepest;
 }
 
 /* Makes room for the blocks and the singles, and finds where each
@@ -190,7 +287,6 @@ int rb_contact_blocks_build(rb_world *world, const int start[RB_COLOUR_COUNT + 1
         lane[colour] = RB_BLOCK_LANES * batches->block_start[colour];
         single[colour] = batches->single_start[colour];
     }
-    rb_contact_constraint *constraints = world->constraints;
     for (int i = 0; i < world->contact_count; ++i) {
         const rb_contact *contact = &world->contacts[i];
         int colour = contact->colour;
@@ -198,23 +294,14 @@ int rb_contact_blocks_build(rb_world *world, const int start[RB_COLOUR_COUNT + 1
             continue;
         }
         int index = next[colour]++;
-        rb_contact_constraint *c = &constraints[index];
-        rb_contact_solver_fill_constraint(world, i, c);
-        if (colour == RB_OVERFLOW_COLOUR) {
+        if (colour != RB_OVERFLOW_COLOUR && rb_contact_takes_a_lane(contact)) {
+            fill_lane(world, i, batches, (unsigned)lane[colour]++, index);
             continue;
         }
-        if (!rb_contact_takes_a_lane(contact)) {
+        rb_contact_solver_fill_constraint(world, i, &world->constraints[index]);
+        if (colour != RB_OVERFLOW_COLOUR) {
             batches->singles[single[colour]++] = index;
-            continue;
         }
-        rb_body_state *a = &world->states[c->body_a];
-        rb_body_state *b = &world->states[c->body_b];
-        /* The normal as the bodies turn it now, as
-         * rb_contact_solver_prepare_points_range finds it. */
-        assert(c->normal_follows != RB_NORMAL_FROM_CENTERS && c->radius_a == 0.0 && c->radius_b == 0.0);
-        c->normal = rb_rotate(c->normal_follows == RB_NORMAL_TURNS_WITH_A ? a->rotation : b->rotation, c->local_normal);
-        copy_into_lane(batches, (unsigned)lane[colour]++, index, c, a, b);
-        c->in_lane = true;
     }
     for (int colour = 0; colour < RB_COLOUR_COUNT; ++colour) {
         for (int k = lane[colour]; k < RB_BLOCK_LANES * batches->block_start[colour + 1]; ++k) {

@@ -33,6 +33,14 @@ static inline bool rb_contact_takes_a_lane(const rb_contact *contact)
  * and no singles, and no constraint is filled. */
 int rb_contact_blocks_build(rb_world *world, const int start[RB_COLOUR_COUNT + 1]);
 
+/* The deepest overlap at the poses now of the blocks' contacts, 0 if
+ * none: each lane's as carried_overlap (contact_solver.c) measures a
+ * constraint's, from the lane's values by the same arithmetic, and one
+ * deeper than `trusted` (m; INFINITY for none) measured again by the
+ * narrow phase (rb_contact_deepest_overlap_now), as
+ * rb_contact_solver_store_impulses does. */
+double rb_contact_blocks_deepest_overlap(const rb_world *world, double trusted);
+
 void rb_contact_blocks_warm_start_2(rb_world *world, bool prepare);
 void rb_contact_blocks_solve_soft_2(rb_world *world, const rb_contact_softness *softness);
 #if RB_BLOCKS_FOUR_WIDE

@@ -147,7 +147,6 @@ void rb_contact_solver_fill_constraint(rb_world *world, int index, rb_contact_co
     double inv_mass_b = body_b->awake ? body_b->inv_mass : 0.0;
     double inv_inertia_b = body_b->awake ? body_b->inv_inertia : 0.0;
     c->contact = index;
-    c->in_lane = false;
     c->body_a = contact->body_a;
     c->body_b = contact->body_b;
     c->inv_mass_a = inv_mass_a;
@@ -198,12 +197,7 @@ void rb_contact_solver_fill_constraint(rb_world *world, int index, rb_contact_co
     for (int j = 0; j < point_count; ++j) {
         const rb_manifold_point *mp = &contact->manifold.points[j];
         rb_constraint_point *p = &c->points[j];
-        /* The two surface points, half the separation either side of the
-         * manifold point; a circle side keeps its centre instead. */
-        rb_vec2 surface_a = rb_mul_sub(mp->point, 0.5 * mp->separation + radius_a, normal);
-        rb_vec2 surface_b = rb_mul_add(mp->point, 0.5 * mp->separation + radius_b, normal);
-        p->local_surface_a = rb_inv_rotate(sa->rotation, rb_sub(surface_a, sa->center));
-        p->local_surface_b = rb_inv_rotate(sb->rotation, rb_sub(surface_b, sb->center));
+        rb_contact_local_surfaces(mp, normal, radius_a, radius_b, sa, sb, &p->local_surface_a, &p->local_surface_b);
         p->normal_impulse = warm ? mp->normal_impulse : 0.0;
         p->tangent_impulse = warm ? mp->tangent_impulse : 0.0;
         p->max_normal_impulse = 0.0;
@@ -215,6 +209,11 @@ void rb_contact_solver_fill_constraint(rb_world *world, int index, rb_contact_co
 int rb_contact_solver_prepare(rb_world *world)
 {
     world->bouncing_constraint_count = 0;
+    /* No blocks until rb_contact_blocks_build lays them out: every
+     * constraint is loose (rb_contact_solver_loose_constraint). */
+    world->contact_batches.block_count = 0;
+    world->contact_batches.single_count = 0;
+    world->contact_batches.overflow_start = 0;
     int start[RB_COLOUR_COUNT + 1];
     int count = colour_contacts(world, start);
     if (count < 0) {
@@ -343,7 +342,9 @@ static rb_vec2 body_acceleration(const rb_world *world, int index, double inv_ma
  * substep. */
 static void record_approaches(rb_world *world, double h, bool first_substep)
 {
-    for (int i = 0; i < world->constraint_count; ++i) {
+    int loose = rb_contact_solver_loose_count(world); /* the blocks' contacts have no restitution */
+    for (int k = 0; k < loose; ++k) {
+        int i = rb_contact_solver_loose_constraint(world, k);
         const rb_contact_constraint *c = &world->constraints[i];
         if (c->restitution == 0.0) {
             continue;
@@ -845,8 +846,9 @@ void rb_contact_solver_apply_restitution(rb_world *world, double h)
         return; /* nothing bounces: a resting pile need not read its constraints again */
     }
     double threshold = world->settings.restitution_threshold;
-    for (int i = 0; i < world->constraint_count; ++i) {
-        rb_contact_constraint *c = &world->constraints[i];
+    int loose = rb_contact_solver_loose_count(world); /* the blocks' contacts have no restitution */
+    for (int k = 0; k < loose; ++k) {
+        rb_contact_constraint *c = &world->constraints[rb_contact_solver_loose_constraint(world, k)];
         if (c->restitution == 0.0) {
             continue;
         }
@@ -943,16 +945,16 @@ double rb_contact_solver_store_impulses(rb_world *world)
      * blocks to their manifolds, and after a relax pass measured their
      * deepest overlap too: those constraints need not be read again. */
     rb_contact_batches *batches = &world->contact_batches;
-    bool lanes_measured = batches->overlap_measured;
-    double deepest = lanes_measured ? batches->deepest_overlap : 0.0;
+    double deepest =
+        batches->overlap_measured ? batches->deepest_overlap : rb_contact_blocks_deepest_overlap(world, INFINITY);
     batches->overlap_measured = false;
-    for (int i = 0; i < world->constraint_count; ++i) {
-        const rb_contact_constraint *c = &world->constraints[i];
-        if (c->in_lane && lanes_measured) {
-            continue;
-        }
+    /* The deepest of several overlaps is the same whichever is met first
+     * (deeper never takes a NaN), so the blocks' may come first. */
+    int loose = rb_contact_solver_loose_count(world);
+    for (int k = 0; k < loose; ++k) {
+        const rb_contact_constraint *c = &world->constraints[rb_contact_solver_loose_constraint(world, k)];
         rb_manifold *m = &world->contacts[c->contact].manifold;
-        for (int j = 0; j < c->point_count && !c->in_lane; ++j) {
+        for (int j = 0; j < c->point_count; ++j) {
             m->points[j].normal_impulse = c->points[j].normal_impulse;
             m->points[j].tangent_impulse = c->points[j].tangent_impulse;
         }
@@ -961,9 +963,9 @@ double rb_contact_solver_store_impulses(rb_world *world)
     if (deepest <= trusted) {
         return deepest;
     }
-    deepest = 0.0;
-    for (int i = 0; i < world->constraint_count; ++i) {
-        const rb_contact_constraint *c = &world->constraints[i];
+    deepest = rb_contact_blocks_deepest_overlap(world, trusted);
+    for (int k = 0; k < loose; ++k) {
+        const rb_contact_constraint *c = &world->constraints[rb_contact_solver_loose_constraint(world, k)];
         double overlap = carried_overlap(world, c);
         if (overlap > trusted) {
             overlap = rb_contact_deepest_overlap_now(world, &world->contacts[c->contact]);

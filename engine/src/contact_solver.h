@@ -51,9 +51,8 @@ struct rb_contact_constraint {
     double friction, restitution;
     int point_count;
     rb_constraint_point points[RB_MAX_MANIFOLD_POINTS];
-    bool in_lane;         /* solved in a block, whose last pass writes its impulses straight to its manifold */
-    bool use_block;       /* the 2x2 normal mass matrix is well conditioned */
-    double k11, k12, k22; /* normal mass matrix K (1/kg) */
+    bool use_block;                   /* the 2x2 normal mass matrix is well conditioned */
+    double k11, k12, k22;             /* normal mass matrix K (1/kg) */
     double inv_k11, inv_k12, inv_k22; /* its inverse (kg) */
 };
 
@@ -161,6 +160,22 @@ int rb_contact_solver_prepare(rb_world *world);
 /* Fills constraint c from contact `index` at the poses now: all but what
  * rb_contact_solver_prepare_points_range prepares. */
 void rb_contact_solver_fill_constraint(rb_world *world, int index, rb_contact_constraint *c);
+
+/* A manifold point's two surface points, half the separation either
+ * side of it along the normal (a circle side keeps its centre instead,
+ * `radius` further), in the frames of the bodies at sa and sb, from their
+ * centres of mass: what a constraint keeps of the point
+ * (rb_contact_solver_fill_constraint, and the blocks' lanes,
+ * contact_blocks.c). */
+static inline void rb_contact_local_surfaces(const rb_manifold_point *mp, rb_vec2 normal, double radius_a,
+                                             double radius_b, const rb_body_state *sa, const rb_body_state *sb,
+                                             rb_vec2 *local_a, rb_vec2 *local_b)
+{
+    rb_vec2 surface_a = rb_mul_sub(mp->point, 0.5 * mp->separation + radius_a, normal);
+    rb_vec2 surface_b = rb_mul_add(mp->point, 0.5 * mp->separation + radius_b, normal);
+    *local_a = rb_inv_rotate(sa->rotation, rb_sub(surface_a, sa->center));
+    *local_b = rb_inv_rotate(sb->rotation, rb_sub(surface_b, sb->center));
+}
 /* What a solver asks of rb_contact_solver_prepare_substep. */
 typedef struct rb_substep_rows {
     /* the step's first substep: every point of a contact with restitution
@@ -234,8 +249,8 @@ typedef struct rb_contact_softness {
 } rb_contact_softness;
 /* The soft step's contacts several at a time (contact_blocks.c). The
  * two-point contacts of each colour are laid four by four into blocks
- * (world->contact_batches) as rb_contact_solver_prepare makes their
- * constraints; rb_contact_solver_prepare_singles then prepares the
+ * (world->contact_batches) as rb_contact_solver_prepare makes the other
+ * constraints (a block's contact has none); rb_contact_solver_prepare_singles then prepares the
  * points of the other constraints (those with one point, with
  * restitution, or in the overflow colour), which stay where they are and
  * are solved one at a time, and the step's first warm start prepares the
@@ -244,6 +259,21 @@ typedef struct rb_contact_softness {
  * the constraints), and only the passes below may be run on the
  * contacts. */
 void rb_contact_solver_prepare_singles(rb_world *world, double h);
+/* The constraints the blocks do not hold, the only ones filled (the
+ * blocks' lanes hold the others' contacts): k-th of
+ * rb_contact_solver_loose_count, in the order of their indices. After a
+ * soft step's rb_contact_solver_prepare, its singles and then the
+ * overflow colour's; after the others' (no blocks), every constraint. */
+static inline int rb_contact_solver_loose_count(const rb_world *world)
+{
+    const rb_contact_batches *batches = &world->contact_batches;
+    return batches->single_count + world->constraint_count - batches->overflow_start;
+}
+static inline int rb_contact_solver_loose_constraint(const rb_world *world, int k)
+{
+    const rb_contact_batches *batches = &world->contact_batches;
+    return k < batches->single_count ? batches->singles[k] : batches->overflow_start + (k - batches->single_count);
+}
 /* The warm start over the batches: rb_contact_solver_warm_start's result.
  * With `prepare` (the step's first), each block's points are first
  * prepared at the poses now, as rb_contact_solver_prepare_points_range
@@ -264,13 +294,11 @@ void rb_contact_solver_record_approaches(rb_world *world, double h);
  * others one at a time by rb_contact_solver_solve_soft_range. With
  * softness->write_back (the step's last pass), each block's impulses go
  * straight into its contacts' manifolds as soon as the block is solved,
- * while it is in the cache, and its constraints (in_lane) keep the
- * impulses they started with: no reader needs them, as restitution
- * passes over contacts without it, which all block contacts are. With
- * softness->measure_overlap too (a last pass after the last positions),
- * the pass also measures the blocks' deepest overlap, which
- * rb_contact_solver_store_impulses then takes instead of reading their
- * constraints again. */
+ * while it is in the cache (the blocks' contacts have no constraint that
+ * could hold them). With softness->measure_overlap too (a last pass after
+ * the last positions), the pass also measures the blocks' deepest
+ * overlap, which rb_contact_solver_store_impulses then takes instead of
+ * measuring the lanes again (rb_contact_blocks_deepest_overlap). */
 void rb_contact_solver_solve_soft(rb_world *world, const rb_contact_softness *softness);
 /* The same pass, one contact at a time, over constraints begin .. end - 1
  * (contact_solver.c): the reference the blocks' pass agrees with. */
