@@ -171,27 +171,20 @@ static void empty_lane(rb_contact_batches *batches, unsigned slot)
     tail->constraints[lane] = -1;
     tail->contacts[lane] = 0;
     tail->turns_with_a[lane] = 0;
-    tail->local_normal_x.v[lane] = 0.0;
-    tail->local_normal_y.v[lane] = 0.0;
+    tail->local_normal_x.v[lane] = tail->local_normal_y.v[lane] = 0.0;
     rb_contact_block *q = &batches->blocks[k];
     q->body_a[lane] = &batches->idle_a;
     q->body_b[lane] = &batches->idle_b;
     q->against_fixed[lane] = 0;
     q->normal_x.v[lane] = 1.0;
     q->normal_y.v[lane] = 0.0;
-    q->inv_mass_a.v[lane] = 0.0;
-    q->inv_inertia_a.v[lane] = 0.0;
-    q->inv_mass_b.v[lane] = 0.0;
-    q->inv_inertia_b.v[lane] = 0.0;
+    q->inv_mass_a.v[lane] = q->inv_inertia_a.v[lane] = q->inv_mass_b.v[lane] = q->inv_inertia_b.v[lane] = 0.0;
     q->friction.v[lane] = 0.0;
     for (int j = 0; j < 2; ++j) {
         rb_block_point *w = &q->points[j];
-        w->local_surface_ax.v[lane] = 0.0;
-        w->local_surface_ay.v[lane] = 0.0;
-        w->local_surface_bx.v[lane] = 0.0;
-        w->local_surface_by.v[lane] = 0.0;
-        w->normal_impulse.v[lane] = 0.0;
-        w->tangent_impulse.v[lane] = 0.0;
+        w->local_surface_ax.v[lane] = w->local_surface_ay.v[lane] = 0.0;
+        w->local_surface_bx.v[lane] = w->local_surface_by.v[lane] = 0.0;
+        w->normal_impulse.v[lane] = w->tangent_impulse.v[lane] = 0.0;
     }
 }
 
