@@ -88,12 +88,10 @@ int rb_contact_blocks_widest(void)
     return 2;
 }
 
-/* Block k and lane `lane` of lane `slot` of the blocks (lane slot %
- * RB_BLOCK_LANES of block slot / RB_BLOCK_LANES). */
-static unsigned block_of(unsigned slot)
-{
-    return slot / RB_BLOCK_LANES;
-} /* unsigned: a shift, where a signed division takes five more */
+/* Lane `slot` of the blocks, counted over all their lanes, is lane
+ * lane_of(slot) of block block_of(slot). Unsigned: a shift and a mask,
+ * where a signed division takes five more instructions. */
+static unsigned block_of(unsigned slot) { return slot / RB_BLOCK_LANES; }
 static unsigned lane_of(unsigned slot) { return slot % RB_BLOCK_LANES; }
 
 /* Contact `index`, which takes a lane, made straight into lane `slot` of
