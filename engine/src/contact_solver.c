@@ -943,7 +943,9 @@ double rb_contact_solver_store_impulses(rb_world *world)
     }
     /* The soft step's last pass wrote the impulses of the contacts in its
      * blocks to their manifolds, and after a relax pass measured their
-     * deepest overlap too: those constraints need not be read again. */
+     * deepest overlap too; after a last pass that solved, their overlap
+     * is measured here from the lanes. The blocks' contacts have no
+     * constraint to read. */
     rb_contact_batches *batches = &world->contact_batches;
     double deepest =
         batches->overlap_measured ? batches->deepest_overlap : rb_contact_blocks_deepest_overlap(world, INFINITY);
