@@ -129,6 +129,77 @@ Test(joint_block, a_weld_in_the_group_or_the_trees_turned_off_leave_it_to_gauss_
     destroy_world_and_expect_no_leak(off.world);
 }
 
+/* The limb's bodies' velocities and its joints' accumulated impulses,
+ * before a velocity pass. */
+typedef struct limb_snapshot {
+    rb_body_state states[3];
+    rb_vec2 point_impulses[4];
+    double angular_impulses[4]; /* lower less upper, N·m·s */
+} limb_snapshot;
+
+static limb_snapshot snapshot(const limb *l)
+{
+    limb_snapshot shot;
+    for (int i = 0; i < 3; ++i) {
+        shot.states[i] = l->world->states[l->bodies[i].index];
+    }
+    for (int k = 0; k < 4; ++k) {
+        const rb_revolute_data *d = &joint_of(l->world, l->hinges[k])->as.revolute;
+        shot.point_impulses[k] = d->point_impulse;
+        shot.angular_impulses[k] = d->lower_impulse - d->upper_impulse;
+    }
+    return shot;
+}
+
+/* After a pass: every pin's anchors move together up to the centripetal
+ * drift it asks for, and M·Δv = Jᵀ·Δλ: every body's momentum and angular
+ * momentum about its centre changed by the pass's impulses (each pin's at
+ * its anchors, each limit's about the centres). */
+static void expect_pins_met_by_the_impulses(const limb *l, const limb_snapshot *before)
+{
+    rb_world *world = l->world;
+    for (int k = 0; k < 4; ++k) {
+        rb_joint *joint = joint_of(world, l->hinges[k]);
+        rb_vec2 cdot =
+            rb_joint_relative_velocity(joint, rb_joint_state_a(world, joint), rb_joint_state_b(world, joint));
+        expect_vec_near(cdot, joint->frame.point_drift, 1e-10, "a pin's anchor velocity after the pass");
+    }
+    for (int i = 0; i < 3; ++i) {
+        int index = l->bodies[i].index;
+        const rb_body *body = &world->bodies[index];
+        rb_vec2 force = rb_v2(0.0, 0.0);
+        double torque = 0.0;
+        for (int k = 0; k < 4; ++k) {
+            rb_joint *joint = joint_of(world, l->hinges[k]);
+            const rb_revolute_data *d = &joint->as.revolute;
+            rb_vec2 point = rb_sub(d->point_impulse, before->point_impulses[k]);
+            double angular = d->lower_impulse - d->upper_impulse - before->angular_impulses[k];
+            if (joint->body_b == index) {
+                force = rb_add(force, point);
+                torque += rb_cross(joint->frame.rb, point) + angular;
+            } else if (joint->body_a == index) {
+                force = rb_sub(force, point);
+                torque -= rb_cross(joint->frame.ra, point) + angular;
+            }
+        }
+        const rb_body_state *after = &world->states[index];
+        const rb_body_state *was = &before->states[i];
+        rb_vec2 momentum = rb_scale(1.0 / body->inv_mass, rb_sub(after->linear_velocity, was->linear_velocity));
+        double angular = (after->angular_velocity - was->angular_velocity) / body->inv_inertia;
+        expect_vec_near(momentum, force, 1e-9 * (1.0 + rb_length(force)), "a body's momentum change");
+        expect_near(angular, torque, 1e-9 * (1.0 + fabs(torque)), "a body's angular momentum change");
+    }
+}
+
+/* The ankle's opening speed (rad/s) and its margin above the lower stop (rad). */
+static void ankle_motion(const limb *l, double *opening, double *margin)
+{
+    rb_joint *ankle = joint_of(l->world, l->hinges[2]);
+    *opening =
+        rb_joint_state_b(l->world, ankle)->angular_velocity - rb_joint_state_a(l->world, ankle)->angular_velocity;
+    *margin = rb_joint_relative_angle(l->world, ankle, ankle->as.revolute.reference_angle) - ankle->as.revolute.lower;
+}
+
 Test(joint_block, one_velocity_pass_meets_every_row_with_the_rows_impulses)
 {
     limb l = make_limb(20000.0);
@@ -151,54 +222,44 @@ Test(joint_block, one_velocity_pass_meets_every_row_with_the_rows_impulses)
     cr_assert(block->factored);
     cr_expect_eq(block->row_count, 9, "four pins and the ankle's lower limit, %d rows", block->row_count);
 
-    rb_body_state before[3];
-    for (int i = 0; i < 3; ++i) {
-        before[i] = world->states[l.bodies[i].index];
-    }
+    limb_snapshot before = snapshot(&l);
     rb_joint_blocks_solve_velocities(world);
-
-    for (int k = 0; k < 4; ++k) {
-        rb_joint *joint = joint_of(world, l.hinges[k]);
-        rb_vec2 cdot =
-            rb_joint_relative_velocity(joint, rb_joint_state_a(world, joint), rb_joint_state_b(world, joint));
-        expect_vec_near(cdot, joint->frame.point_drift, 1e-10, "a pin's anchor velocity after the pass");
-    }
+    expect_pins_met_by_the_impulses(&l, &before);
     /* The ankle's lower limit: it may close its 0.1° margin in the
      * substep, no faster, and pushes (impulse > 0). */
-    rb_joint *ankle = joint_of(world, l.hinges[2]);
-    const rb_revolute_data *r = &ankle->as.revolute;
-    double opening =
-        rb_joint_state_b(world, ankle)->angular_velocity - rb_joint_state_a(world, ankle)->angular_velocity;
-    double margin = rb_joint_relative_angle(world, ankle, r->reference_angle) - r->lower;
-    cr_expect_gt(r->lower_impulse, 0.0, "the limit holds the ankle");
+    double opening, margin;
+    ankle_motion(&l, &opening, &margin);
+    cr_expect_gt(joint_of(world, l.hinges[2])->as.revolute.lower_impulse, 0.0, "the limit holds the ankle");
     expect_near(opening, -margin / h, 1e-9, "the ankle closes on its stop at margin / h");
+    destroy_world_and_expect_no_leak(world);
+}
 
-    /* M·Δv = Jᵀ·λ: every body's momentum and angular momentum about its
-     * centre changed by the rows' impulses (each pin's at its anchors,
-     * each limit's about the centres). */
-    for (int i = 0; i < 3; ++i) {
-        int index = l.bodies[i].index;
-        const rb_body *body = &world->bodies[index];
-        rb_vec2 force = rb_v2(0.0, 0.0);
-        double torque = 0.0;
-        for (int k = 0; k < 4; ++k) {
-            rb_joint *joint = joint_of(world, l.hinges[k]);
-            const rb_revolute_data *d = &joint->as.revolute;
-            double angular = d->lower_impulse - d->upper_impulse;
-            if (joint->body_b == index) {
-                force = rb_add(force, d->point_impulse);
-                torque += rb_cross(joint->frame.rb, d->point_impulse) + angular;
-            } else if (joint->body_a == index) {
-                force = rb_sub(force, d->point_impulse);
-                torque -= rb_cross(joint->frame.ra, d->point_impulse) + angular;
-            }
-        }
-        const rb_body_state *after = &world->states[index];
-        rb_vec2 momentum = rb_scale(1.0 / body->inv_mass, rb_sub(after->linear_velocity, before[i].linear_velocity));
-        double angular = (after->angular_velocity - before[i].angular_velocity) / body->inv_inertia;
-        expect_vec_near(momentum, force, 1e-9 * (1.0 + rb_length(force)), "a body's momentum change");
-        expect_near(angular, torque, 1e-9 * (1.0 + fabs(torque)), "a body's angular momentum change");
-    }
+/* A limit warm started with a push while the limb turns its joint open:
+ * held to its bias, it would pull, so the pass releases it (its total
+ * impulse 0, its row's x minus its accumulated impulse) and solves the
+ * pins again with that push taken back through K's couplings. */
+Test(joint_block, a_limit_that_would_pull_is_released_and_the_pins_still_meet)
+{
+    limb l = make_limb(20000.0);
+    rb_world *world = l.world;
+    cr_assert_eq(rb_body_set_angular_velocity(world, l.bodies[0], -2.0), RB_OK); /* opens the ankle */
+    rb_body_state_turn(&world->states[l.bodies[2].index], -(ANKLE_RANGE - 0.1 * DEG));
+    rb_revolute_data *ankle = &joint_of(world, l.hinges[2])->as.revolute;
+    ankle->lower_impulse = 0.5;
+    double h = 1.0 / 600.0;
+    prepare(world, h);
+    cr_assert_eq(world->joint_blocks.count, 1);
+    const rb_joint_block *block = &world->joint_blocks.blocks[0];
+    cr_assert(block->factored);
+    cr_assert_eq(block->row_count, 9, "the warm-started limit keeps its row, %d rows", block->row_count);
+
+    limb_snapshot before = snapshot(&l);
+    rb_joint_blocks_solve_velocities(world);
+    cr_expect_eq(ankle->lower_impulse, 0.0, "the limit let go: %g N·m·s", ankle->lower_impulse);
+    expect_pins_met_by_the_impulses(&l, &before);
+    double opening, margin;
+    ankle_motion(&l, &opening, &margin);
+    cr_expect_gt(opening, -margin / h, "released, the ankle opens faster than its stop asks: %g rad/s", opening);
     destroy_world_and_expect_no_leak(world);
 }
 

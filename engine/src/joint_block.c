@@ -101,6 +101,14 @@ static bool needs_a_block(const rb_world *world, const rb_joint_block *block)
     return heaviest >= RB_BLOCK_MASS_RATIO * lightest;
 }
 
+/* A body's place in the block, RB_BLOCK_MAX_BODIES (no velocity, no
+ * inverse mass) for a fixed one. */
+static int slot_of(const rb_joint_block *block, int body)
+{
+    int slot = find(block->bodies, block->body_count, body);
+    return slot >= 0 ? slot : RB_BLOCK_MAX_BODIES;
+}
+
 void rb_joint_blocks_build(rb_world *world)
 {
     rb_joint_blocks *blocks = &world->joint_blocks;
@@ -130,6 +138,11 @@ void rb_joint_blocks_build(rb_world *world)
             block->inv_inertia[b] = body != NULL ? body->inv_inertia : 0.0;
         }
         for (int j = 0; j < block->joint_count; ++j) {
+            const rb_joint *joint = &world->joints[block->joints[j]];
+            block->ends[j][0] = slot_of(block, joint->body_a);
+            block->ends[j][1] = slot_of(block, joint->body_b);
+        }
+        for (int j = 0; j < block->joint_count; ++j) {
             world->joints[block->joints[j]].in_block = true;
         }
         ++blocks->count;
@@ -137,14 +150,6 @@ void rb_joint_blocks_build(rb_world *world)
 }
 
 /* ---- the rows ---------------------------------------------------------- */
-
-/* A body's place in the block, RB_BLOCK_MAX_BODIES (no velocity, no
- * inverse mass) for a fixed one. */
-static int slot_of(const rb_joint_block *block, int body)
-{
-    int slot = find(block->bodies, block->body_count, body);
-    return slot >= 0 ? slot : RB_BLOCK_MAX_BODIES;
-}
 
 /* Appends the row J·v + bias = 0 of a joint between the bodies in
  * places slot_a and slot_b, J = (ja on A, jb on B); its weights M⁻¹·Jᵀ
@@ -164,14 +169,14 @@ static void add_row(rb_joint_block *block, int slot_a, int slot_b, const double 
     row->one_sided = one_sided;
 }
 
-/* The pin's two rows, Cdot = vB + ωB × rB - vA - ωA × rA less the drift:
+/* The two rows of the block's joint j, a pin: Cdot = vB + ωB × rB - vA - ωA × rA less the drift:
  * x: (1, 0, -rB.y) on B, (-1, 0, rA.y) on A; y: (0, 1, rB.x), (0, -1, -rA.x). */
-static void add_pin(rb_joint_block *block, rb_joint *joint)
+static void add_pin(rb_joint_block *block, int j, rb_joint *joint)
 {
     const rb_joint_frame *f = &joint->frame;
     rb_revolute_data *r = &joint->as.revolute;
-    int a = slot_of(block, joint->body_a);
-    int b = slot_of(block, joint->body_b);
+    int a = block->ends[j][0];
+    int b = block->ends[j][1];
     add_row(block, a, b, (const double[3]){-1.0, 0.0, f->ra.y}, (const double[3]){1.0, 0.0, -f->rb.y},
             -f->point_drift.x, &r->point_impulse.x, false);
     add_row(block, a, b, (const double[3]){0.0, -1.0, -f->ra.x}, (const double[3]){0.0, 1.0, f->rb.x},
@@ -185,10 +190,10 @@ static void release(rb_world *world, rb_joint *joint, double sign, double *accum
     *accumulated = 0.0;
 }
 
-/* The nearer enabled limit's row, when the joint could reach it within
+/* The nearer enabled limit's row of the block's joint j, when it could reach it within
  * the substep or held it; the farther limit, a swing away, is released.
  * Returns the row's margin (rad), or INFINITY for no row. */
-static double add_limit(rb_world *world, rb_joint_block *block, rb_joint *joint, double h)
+static double add_limit(rb_world *world, rb_joint_block *block, int j, rb_joint *joint, double h)
 {
     rb_revolute_data *r = &joint->as.revolute;
     if (!r->enable_lower && !r->enable_upper) {
@@ -210,7 +215,7 @@ static double add_limit(rb_world *world, rb_joint_block *block, rb_joint *joint,
     if (margin > reach && *accumulated == 0.0) {
         return INFINITY;
     }
-    add_row(block, slot_of(block, joint->body_a), slot_of(block, joint->body_b), (const double[3]){0.0, 0.0, -sign},
+    add_row(block, block->ends[j][0], block->ends[j][1], (const double[3]){0.0, 0.0, -sign},
             (const double[3]){0.0, 0.0, sign}, rb_one_sided_bias(world, margin, h), accumulated, true);
     return margin;
 }
@@ -329,7 +334,9 @@ static bool share_a_body(const rb_joint_block *block, const rb_block_row *i, con
            (i->slot_b < block->body_count && (i->slot_b == j->slot_a || i->slot_b == j->slot_b));
 }
 
-/* K and each row's envelope; K is 0 outside it. */
+/* Each row's envelope and K's lower triangle within it: K is symmetric
+ * and 0 outside the envelopes, so neither the zeros nor the upper
+ * triangle are written (k_entry reads them). */
 static void fill_k(rb_joint_block *block)
 {
     int n = block->row_count;
@@ -343,12 +350,18 @@ static void fill_k(rb_joint_block *block)
             ++first;
         }
         block->first[i] = first;
-        for (int j = 0; j <= i; ++j) {
-            double value = j >= first ? coupling(block, row, &block->rows[j]) : 0.0;
-            block->k[i * RB_BLOCK_MAX_ROWS + j] = value;
-            block->k[j * RB_BLOCK_MAX_ROWS + i] = value;
+        for (int j = first; j <= i; ++j) {
+            block->k[i * RB_BLOCK_MAX_ROWS + j] = coupling(block, row, &block->rows[j]);
         }
     }
+}
+
+/* K_ij from the lower triangle's envelopes. */
+static double k_entry(const rb_joint_block *block, int i, int j)
+{
+    int row = i > j ? i : j;
+    int column = i > j ? j : i;
+    return column >= block->first[row] ? block->k[row * RB_BLOCK_MAX_ROWS + column] : 0.0;
 }
 
 /* Takes a limit's accumulated impulse, warm started, back from its
@@ -374,7 +387,7 @@ void rb_joint_blocks_factor(rb_world *world, double h)
         rb_joint_block *block = &blocks->blocks[n];
         block->row_count = 0;
         for (int j = 0; j < block->joint_count; ++j) {
-            add_pin(block, &world->joints[block->joints[j]]);
+            add_pin(block, j, &world->joints[block->joints[j]]);
         }
         int pins = block->row_count;
         block->pin_rows = pins;
@@ -382,7 +395,7 @@ void rb_joint_blocks_factor(rb_world *world, double h)
          * the last. */
         double margins[RB_BLOCK_MAX_JOINTS];
         for (int j = 0; j < block->joint_count; ++j) {
-            double margin = add_limit(world, block, &world->joints[block->joints[j]], h);
+            double margin = add_limit(world, block, j, &world->joints[block->joints[j]], h);
             if (margin == INFINITY) {
                 continue;
             }
@@ -438,11 +451,11 @@ static void solve_subset(const rb_joint_block *block, const bool *free, const do
         y[p] = rhs[index[p]];
         for (int j = 0; j < n; ++j) {
             if (!free[j]) {
-                y[p] -= block->k[index[p] * RB_BLOCK_MAX_ROWS + j] * x[j];
+                y[p] -= k_entry(block, index[p], j) * x[j];
             }
         }
         for (int q = 0; q < m; ++q) {
-            sub[p * RB_BLOCK_MAX_ROWS + q] = block->k[index[p] * RB_BLOCK_MAX_ROWS + index[q]];
+            sub[p * RB_BLOCK_MAX_ROWS + q] = k_entry(block, index[p], index[q]);
         }
     }
     /* A principal submatrix of a positive definite K is positive definite. */

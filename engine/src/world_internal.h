@@ -540,16 +540,17 @@ typedef struct rb_block_row {
 
 typedef struct rb_joint_block {
     int body_count, joint_count, row_count;
-    int pin_rows;                    /* the rows before the limits' */
-    int bodies[RB_BLOCK_MAX_BODIES]; /* body slots */
-    int joints[RB_BLOCK_MAX_JOINTS]; /* joint slots */
+    int pin_rows;                     /* the rows before the limits' */
+    int bodies[RB_BLOCK_MAX_BODIES];  /* body slots */
+    int joints[RB_BLOCK_MAX_JOINTS];  /* joint slots */
+    int ends[RB_BLOCK_MAX_JOINTS][2]; /* each joint's bodies' places (A, B), as rb_block_row's */
     /* 1/kg, 1/(kg·m²); the last place stands for every fixed body, 0. */
     double inv_mass[RB_BLOCK_MAX_BODIES + 1], inv_inertia[RB_BLOCK_MAX_BODIES + 1];
     rb_block_row rows[RB_BLOCK_MAX_ROWS];
     /* Row i's envelope in K: the first row it shares a moving body with
      * (i when none before it); L·D·Lᵀ fills in nothing before it. */
     int first[RB_BLOCK_MAX_ROWS];
-    double k[RB_BLOCK_MAX_ROWS * RB_BLOCK_MAX_ROWS];      /* J·M⁻¹·Jᵀ, row_count × row_count */
+    double k[RB_BLOCK_MAX_ROWS * RB_BLOCK_MAX_ROWS];      /* J·M⁻¹·Jᵀ: its lower triangle within the envelopes */
     double factor[RB_BLOCK_MAX_ROWS * RB_BLOCK_MAX_ROWS]; /* its L·D·Lᵀ: L below the diagonal, 1/D on it */
     bool factored;                                        /* false: Gauss-Seidel solves it this substep */
 } rb_joint_block;
