@@ -169,8 +169,9 @@ static void add_row(rb_joint_block *block, int slot_a, int slot_b, const double 
     row->one_sided = one_sided;
 }
 
-/* The two rows of the block's joint j, a pin: Cdot = vB + ωB × rB - vA - ωA × rA less the drift:
- * x: (1, 0, -rB.y) on B, (-1, 0, rA.y) on A; y: (0, 1, rB.x), (0, -1, -rA.x). */
+/* The two rows of the block's joint j, a pin: Cdot = vB + ωB × rB - vA -
+ * ωA × rA less the drift; x: (1, 0, -rB.y) on B, (-1, 0, rA.y) on A;
+ * y: (0, 1, rB.x), (0, -1, -rA.x). */
 static void add_pin(rb_joint_block *block, int j, rb_joint *joint)
 {
     const rb_joint_frame *f = &joint->frame;
@@ -190,9 +191,10 @@ static void release(rb_world *world, rb_joint *joint, double sign, double *accum
     *accumulated = 0.0;
 }
 
-/* The nearer enabled limit's row of the block's joint j, when it could reach it within
- * the substep or held it; the farther limit, a swing away, is released.
- * Returns the row's margin (rad), or INFINITY for no row. */
+/* The nearer enabled limit's row of the block's joint j, when the joint
+ * could reach it within the substep or held it; the farther limit, a
+ * swing away, is released. Returns the row's margin (rad), or INFINITY
+ * for no row. */
 static double add_limit(rb_world *world, rb_joint_block *block, int j, rb_joint *joint, double h)
 {
     rb_revolute_data *r = &joint->as.revolute;
