@@ -31,11 +31,8 @@ void rb_free(void *ptr, size_t size)
     free(ptr);
 }
 
-int rb_grow_array(void **array, int *capacity, int needed, size_t elem_size)
+int rb_grow_array_beyond(void **array, int *capacity, int needed, size_t elem_size)
 {
-    if (needed <= *capacity) {
-        return 0;
-    }
     int new_capacity = *capacity < 16 ? 16 : *capacity;
     while (new_capacity < needed) {
         new_capacity *= 2;
