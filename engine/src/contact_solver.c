@@ -115,6 +115,13 @@ static int colour_contacts(rb_world *world, int start[RB_COLOUR_COUNT + 1])
             ++count;
         }
     }
+    if (count == 0) {
+        /* No colour holds any: the offsets are all 0, without a pass over
+         * the colours (a world of joints alone, such as a muscle model). */
+        memset(start, 0, (RB_COLOUR_COUNT + 1) * sizeof *start);
+        world->statistics.contact_colours = 0;
+        return 0;
+    }
     if (rb_grow_array((void **)&world->constraints, &world->constraint_capacity, count, sizeof *world->constraints) !=
         0) {
         return -1;
@@ -227,7 +234,7 @@ int rb_contact_solver_prepare(rb_world *world)
     rows->colour_start[RB_COLOUR_COUNT + 1] = count;
     /* the colours up to the last that has constraints: colours fill from
      * the lowest, and most scenes use a few */
-    rows->colour_count = RB_COLOUR_COUNT + 1;
+    rows->colour_count = count > 0 ? RB_COLOUR_COUNT + 1 : 0;
     while (rows->colour_count > 0 &&
            rows->colour_start[rows->colour_count - 1] == rows->colour_start[rows->colour_count]) {
         --rows->colour_count;
