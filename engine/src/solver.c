@@ -135,14 +135,12 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
     rb_profile *profile = &world->profile;
     double t = rb_world_clock(world);
     rb_solver_call_substep_callback(world, substep, h);
-    rb_world_add_phase_time(world, &profile->substep_callback, t);
+    t = rb_world_lap(world, &profile->substep_callback, t);
     world->last_substep = h; /* after the callback, which reads the previous substep's forces */
 
-    t = rb_world_clock(world);
     rb_solver_integrate_velocities(world, h);
-    rb_world_add_phase_time(world, &profile->integrate_velocities, t);
+    t = rb_world_lap(world, &profile->integrate_velocities, t);
 
-    t = rb_world_clock(world);
     rb_cables_prepare(world, h);
     if (substep == 0) {
         rb_joints_prepare(world);
@@ -159,9 +157,8 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
     rb_joint_tree_start_substep(world);
     rb_joint_blocks_factor(world, h);
     rb_contact_solver_warm_start(world);
-    rb_world_add_phase_time(world, &profile->warm_start, t);
+    t = rb_world_lap(world, &profile->warm_start, t);
 
-    t = rb_world_clock(world);
     for (int iteration = 0; iteration < world->settings.velocity_iterations; ++iteration) {
         rb_cables_solve(world, h);
         bool backwards = iteration % 2 == 1;
@@ -170,11 +167,10 @@ void rb_solver_sequential_substep(rb_world *world, int substep, double h, bool c
         rb_joint_blocks_solve_velocities(world);
         rb_contact_solver_solve_velocities(world, backwards && !contact_bias);
     }
-    rb_world_add_phase_time(world, &profile->solve_velocities, t);
+    t = rb_world_lap(world, &profile->solve_velocities, t);
 
-    t = rb_world_clock(world);
     rb_solver_damp_and_integrate_positions(world, h);
-    rb_world_add_phase_time(world, &profile->integrate_positions, t);
+    (void)rb_world_lap(world, &profile->integrate_positions, t);
 }
 
 rb_status rb_solver_step(rb_world *world, double dt)

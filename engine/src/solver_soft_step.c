@@ -106,14 +106,12 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
     for (int substep = 0; substep < substeps; ++substep) {
         t = rb_world_clock(world);
         rb_solver_call_substep_callback(world, substep, h);
-        rb_world_add_phase_time(world, &profile->substep_callback, t);
+        t = rb_world_lap(world, &profile->substep_callback, t);
         world->last_substep = h; /* after the callback, which reads the previous substep's forces */
 
-        t = rb_world_clock(world);
         rb_solver_integrate_velocities(world, h);
-        rb_world_add_phase_time(world, &profile->integrate_velocities, t);
+        t = rb_world_lap(world, &profile->integrate_velocities, t);
 
-        t = rb_world_clock(world);
         rb_cables_prepare(world, h);
         if (substep == 0) {
             rb_joints_prepare(world);
@@ -124,34 +122,30 @@ rb_solver_counts rb_solve_soft_step(rb_world *world, double dt)
         rb_cables_warm_start(world);
         rb_joints_warm_start(world, h, JOINTS_BACKWARDS);
         rb_contact_solver_warm_start_blocks(world, substep == 0);
-        rb_world_add_phase_time(world, &profile->warm_start, t);
+        t = rb_world_lap(world, &profile->warm_start, t);
 
-        t = rb_world_clock(world);
         world->joint_response = joint_spring;
         for (int iteration = 0; iteration < settings->velocity_iterations; ++iteration) {
             bool is_last = !last_relaxes && substep == substeps - 1 && iteration == settings->velocity_iterations - 1;
             solve_pass(world, h, is_last ? &last : &springs);
         }
-        rb_world_add_phase_time(world, &profile->solve_velocities, t);
+        t = rb_world_lap(world, &profile->solve_velocities, t);
 
-        t = rb_world_clock(world);
         rb_solver_damp_and_integrate_positions(world, h);
         rb_joint_tree_poses_moved(world);
-        rb_world_add_phase_time(world, &profile->integrate_positions, t);
+        t = rb_world_lap(world, &profile->integrate_positions, t);
 
-        t = rb_world_clock(world);
         for (int iteration = 0; iteration < settings->position_iterations; ++iteration) {
             rb_joint_tree_correct_positions(world);
         }
-        rb_world_add_phase_time(world, &profile->correct_positions, t);
+        t = rb_world_lap(world, &profile->correct_positions, t);
 
-        t = rb_world_clock(world);
         world->joint_response = joint_rigid;
         for (int iteration = 0; iteration < settings->relax_iterations; ++iteration) {
             bool is_last = substep == substeps - 1 && iteration == settings->relax_iterations - 1;
             solve_pass(world, h, is_last ? &last : &relax);
         }
-        rb_world_add_phase_time(world, &profile->relax, t);
+        (void)rb_world_lap(world, &profile->relax, t);
     }
 
     t = rb_world_clock(world);

@@ -518,22 +518,19 @@ rb_status rb_world_step(rb_world *world, double dt)
     world->locked = true;
     rb_profile *profile = &world->profile;
     *profile = (rb_profile){0};
-    double start = rb_world_clock(world);
+    const double start = rb_world_clock(world);
 
-    double t = rb_world_clock(world);
     rb_status status = rb_broad_phase_update_pairs(world, dt);
     if (status == RB_OK) {
         status = rb_contacts_update(world);
     }
-    profile->pairs = rb_world_clock(world) - t;
+    double t = rb_world_lap(world, &profile->pairs, start);
 
     if (status == RB_OK) {
-        t = rb_world_clock(world);
         rb_contacts_collide(world, dt);
-        profile->collide = rb_world_clock(world) - t;
-        t = rb_world_clock(world);
+        t = rb_world_lap(world, &profile->collide, t);
         status = rb_islands_wake(world);
-        profile->islands = rb_world_clock(world) - t;
+        (void)rb_world_lap(world, &profile->islands, t);
     }
     const rb_statistics statistics = world->statistics;
     const double last_substep = world->last_substep;
@@ -554,17 +551,12 @@ rb_status rb_world_step(rb_world *world, double dt)
     if (world->solid_shape_count < world->shape_count) {
         rb_contacts_update_sensors(world); /* a world without sensors need not look for their contacts */
     }
-    profile->sensors = rb_world_clock(world) - t;
-
-    t = rb_world_clock(world);
+    t = rb_world_lap(world, &profile->sensors, t);
     finalize_step(world);
-    profile->finalize = rb_world_clock(world) - t;
-
-    t = rb_world_clock(world);
+    t = rb_world_lap(world, &profile->finalize, t);
     rb_islands_sleep(world, dt);
-    profile->islands += rb_world_clock(world) - t;
-
-    profile->step = rb_world_clock(world) - start;
+    t = rb_world_lap(world, &profile->islands, t);
+    profile->step = t - start;
     world->locked = false;
     return RB_OK;
 }

@@ -736,14 +736,19 @@ struct rb_world {
 /* Milliseconds on the monotonic clock while the world is profiling, else
  * 0 (the step's phase times then stay 0 without reading the clock). */
 double rb_world_clock(const rb_world *world);
-/* Adds the time since `start` (rb_world_clock) to a phase of the
- * profile, and only while profiling: a phase run every substep then costs
- * a world that does not profile a test, not an addition of 0 ms. */
-static inline void rb_world_add_phase_time(const rb_world *world, double *phase, double start)
+/* Adds the time since `start` (rb_world_clock, or the lap before) to a
+ * phase of the profile and returns the time now, where the next phase
+ * starts: one reading of the clock ends a phase and begins the next. Only
+ * while profiling: a phase run every substep then costs a world that does
+ * not profile a test, not an addition of 0 ms, and returns 0. */
+static inline double rb_world_lap(const rb_world *world, double *phase, double start)
 {
-    if (world->profiling) {
-        *phase += rb_world_clock(world) - start;
+    if (!world->profiling) {
+        return 0.0;
     }
+    double now = rb_world_clock(world);
+    *phase += now - start;
+    return now;
 }
 
 /* Looks up a live object; on failure records an error naming `function`. */
