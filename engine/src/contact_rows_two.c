@@ -285,7 +285,9 @@ void rb_contact_solver_warm_start(rb_world *world)
 {
     const rb_contact_rows *laid = &world->contact_rows;
     if (!laid->live || laid->row_count == 0) {
-        rb_contact_solver_warm_start_range(world, 0, world->constraint_count);
+        if (world->constraint_count > 0) { /* a world of joints and muscles has none, in every pass */
+            rb_contact_solver_warm_start_range(world, 0, world->constraint_count);
+        }
         return;
     }
     for (int colour = 0; colour < laid->colour_count; ++colour) {
@@ -306,7 +308,9 @@ void rb_contact_solver_solve_velocities(rb_world *world, bool backwards)
 {
     const rb_contact_rows *laid = &world->contact_rows;
     if (!laid->live || laid->row_count == 0) {
-        rb_contact_solver_solve_velocities_range(world, backwards, 0, world->constraint_count);
+        if (world->constraint_count > 0) {
+            rb_contact_solver_solve_velocities_range(world, backwards, 0, world->constraint_count);
+        }
         return;
     }
     for (int n = 0; n < laid->colour_count; ++n) {

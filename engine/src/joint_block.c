@@ -109,6 +109,31 @@ static int slot_of(const rb_joint_block *block, int body)
     return slot >= 0 ? slot : RB_BLOCK_MAX_BODIES;
 }
 
+/* Whether the moving bodies at the ends of the limited joints that fit a
+ * block differ in mass enough for any group of them to be a block: a
+ * group's mass ratio is at most theirs, so a world whose limbs are all
+ * even (the arm) needs no search, step after step. */
+static bool uneven_enough(const rb_world *world)
+{
+    double lightest = INFINITY, heaviest = 0.0;
+    for (int k = 0; k < world->active_joint_count; ++k) {
+        const rb_joint *joint = &world->joints[world->active_joints[k]];
+        if (!has_limit(joint) || !fits_a_block(world, joint)) {
+            continue;
+        }
+        const int ends[2] = {joint->body_a, joint->body_b};
+        for (int e = 0; e < 2; ++e) {
+            const rb_body *body = &world->bodies[ends[e]];
+            if (moves_freely(body)) {
+                double mass = 1.0 / body->inv_mass;
+                lightest = rb_min(lightest, mass);
+                heaviest = rb_max(heaviest, mass);
+            }
+        }
+    }
+    return heaviest >= RB_BLOCK_MASS_RATIO * lightest;
+}
+
 void rb_joint_blocks_build(rb_world *world)
 {
     rb_joint_blocks *blocks = &world->joint_blocks;
@@ -117,7 +142,7 @@ void rb_joint_blocks_build(rb_world *world)
     for (int k = 0; k < world->active_joint_count; ++k) {
         world->joints[world->active_joints[k]].in_block = false;
     }
-    if (world->settings.type != RB_SOLVER_NGS || !world->settings.tree_pins) {
+    if (world->settings.type != RB_SOLVER_NGS || !world->settings.tree_pins || !uneven_enough(world)) {
         return;
     }
     /* Each group is seeded by its first limited joint; a joint already
