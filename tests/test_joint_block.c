@@ -191,6 +191,21 @@ static void expect_pins_met_by_the_impulses(const limb *l, const limb_snapshot *
     }
 }
 
+/* Prepares a substep of h, in which the limb must be one factored block
+ * of four pins and the ankle's lower limit (nine rows), and runs one
+ * velocity pass over it; returns the limb as it was before the pass. */
+static limb_snapshot one_pass_over_the_block(const limb *l, double h)
+{
+    prepare(l->world, h);
+    cr_assert_eq(l->world->joint_blocks.count, 1);
+    const rb_joint_block *block = &l->world->joint_blocks.blocks[0];
+    cr_assert(block->factored);
+    cr_assert_eq(block->row_count, 9, "four pins and the ankle's lower limit, %d rows", block->row_count);
+    limb_snapshot before = snapshot(l);
+    rb_joint_blocks_solve_velocities(l->world);
+    return before;
+}
+
 /* The ankle's opening speed (rad/s) and its margin above the lower stop (rad). */
 static void ankle_motion(const limb *l, double *opening, double *margin)
 {
@@ -216,14 +231,7 @@ Test(joint_block, one_velocity_pass_meets_every_row_with_the_rows_impulses)
     rb_body_state *foot = &world->states[l.bodies[2].index];
     rb_body_state_turn(foot, -(ANKLE_RANGE - 0.1 * DEG));
     double h = 1.0 / 600.0;
-    prepare(world, h);
-    cr_assert_eq(world->joint_blocks.count, 1);
-    const rb_joint_block *block = &world->joint_blocks.blocks[0];
-    cr_assert(block->factored);
-    cr_expect_eq(block->row_count, 9, "four pins and the ankle's lower limit, %d rows", block->row_count);
-
-    limb_snapshot before = snapshot(&l);
-    rb_joint_blocks_solve_velocities(world);
+    limb_snapshot before = one_pass_over_the_block(&l, h);
     expect_pins_met_by_the_impulses(&l, &before);
     /* The ankle's lower limit: it may close its 0.1° margin in the
      * substep, no faster, and pushes (impulse > 0). */
@@ -247,14 +255,7 @@ Test(joint_block, a_limit_that_would_pull_is_released_and_the_pins_still_meet)
     rb_revolute_data *ankle = &joint_of(world, l.hinges[2])->as.revolute;
     ankle->lower_impulse = 0.5;
     double h = 1.0 / 600.0;
-    prepare(world, h);
-    cr_assert_eq(world->joint_blocks.count, 1);
-    const rb_joint_block *block = &world->joint_blocks.blocks[0];
-    cr_assert(block->factored);
-    cr_assert_eq(block->row_count, 9, "the warm-started limit keeps its row, %d rows", block->row_count);
-
-    limb_snapshot before = snapshot(&l);
-    rb_joint_blocks_solve_velocities(world);
+    limb_snapshot before = one_pass_over_the_block(&l, h);
     cr_expect_eq(ankle->lower_impulse, 0.0, "the limit let go: %g N·m·s", ankle->lower_impulse);
     expect_pins_met_by_the_impulses(&l, &before);
     double opening, margin;
