@@ -224,6 +224,36 @@ Test(joints, revolute_limits_stop_a_fast_swing)
     destroy_world_and_expect_no_leak(b.world);
 }
 
+/* The soft step at Box2D v3's budget (4 substeps of 1 solve and 1 relax
+ * pass), the bob thrown at 12 rad/s against its upper limit. A limit is
+ * speculative: a pass lets the joint close the margin left at the
+ * substep's poses, no more, so the bob meets its stop and does not pass
+ * it (to rounding). The relax pass comes after the positions moved
+ * within the substep, so it must measure the margin there: with the
+ * margin of the substep's start it let the bob pass its stop by 0.2°. */
+Test(joints, revolute_limit_holds_through_the_soft_steps_relax_pass)
+{
+    rb_revolute_joint_def def = rb_default_revolute_joint_def();
+    def.enable_lower_limit = def.enable_upper_limit = true;
+    def.lower_angle = radians(-30.0);
+    def.upper_angle = radians(30.0);
+    const double theta0 = radians(25.0);
+    bob b = make_limited_bob(rb_v2(0.0, -G), theta0, def);
+    rb_solver_settings settings = rb_world_solver_settings(b.world);
+    settings.type = RB_SOLVER_SOFT_STEP;
+    settings.substeps = 4;
+    settings.velocity_iterations = 1;
+    settings.relax_iterations = 1;
+    cr_assert_eq(rb_world_set_solver_settings(b.world, &settings), RB_OK, "%s", rb_last_error());
+    turn_about_pivot(&b, 12.0);
+    angle_record record = {.lowest = theta0, .highest = theta0};
+    record_steps(&b, 60, &record);
+    cr_expect(record.highest <= def.upper_angle + 1e-9, "the angle reached %.9f rad, upper limit %.9f rad",
+              record.highest, def.upper_angle);
+    cr_expect(record.highest >= def.upper_angle - 1e-3, "the bob never reached its limit (%.6f rad)", record.highest);
+    destroy_world_and_expect_no_leak(b.world);
+}
+
 /* Only the lower limit, at -30°; the upper angle is set to 30° but not
  * enabled. In zero gravity the bob is thrown at 3 rad/s against the
  * lower limit, which stops it, then at 3 rad/s the other way: it turns
