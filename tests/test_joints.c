@@ -183,6 +183,17 @@ static void record_steps(const bob *b, int steps, angle_record *record)
  * angle is slop/BOB_ARM (0.005 rad, 0.29°). */
 static double limit_tolerance(const rb_world *world) { return rb_world_solver_settings(world).linear_slop / BOB_ARM; }
 
+/* A bob under gravity at theta (rad) on a hinge limited to [-30°, 30°];
+ * *def is the hinge's definition. */
+static bob bob_within_30_degrees(double theta, rb_revolute_joint_def *def)
+{
+    *def = rb_default_revolute_joint_def();
+    def->enable_lower_limit = def->enable_upper_limit = true;
+    def->lower_angle = radians(-30.0);
+    def->upper_angle = radians(30.0);
+    return make_limited_bob(rb_v2(0.0, -G), theta, *def);
+}
+
 /* Limits [-30°, 30°]; released at 25° turning towards the upper limit as
  * fast as a free swing to 120° needs (½·I_p·ω0² = m·g·L·(cos 25° -
  * cos 120°), I_p = m·r²/2 + m·L²), at 60 Hz, where the bob turns up to 5°
@@ -192,12 +203,9 @@ static double limit_tolerance(const rb_world *world) { return rb_world_solver_se
  * both limits are reached. */
 Test(joints, revolute_limits_stop_a_fast_swing)
 {
-    rb_revolute_joint_def def = rb_default_revolute_joint_def();
-    def.enable_lower_limit = def.enable_upper_limit = true;
-    def.lower_angle = radians(-30.0);
-    def.upper_angle = radians(30.0);
+    rb_revolute_joint_def def;
     const double theta0 = radians(25.0);
-    bob b = make_limited_bob(rb_v2(0.0, -G), theta0, def);
+    bob b = bob_within_30_degrees(theta0, &def);
     const double m = BOB_DENSITY * RB_PI * BOB_RADIUS * BOB_RADIUS;
     const double pivot_inertia = 0.5 * m * BOB_RADIUS * BOB_RADIUS + m * BOB_ARM * BOB_ARM;
     const double omega0 = sqrt(2.0 * m * G * BOB_ARM * (cos(theta0) - cos(radians(120.0))) / pivot_inertia);
@@ -233,12 +241,9 @@ Test(joints, revolute_limits_stop_a_fast_swing)
  * margin of the substep's start it let the bob pass its stop by 0.2°. */
 Test(joints, revolute_limit_holds_through_the_soft_steps_relax_pass)
 {
-    rb_revolute_joint_def def = rb_default_revolute_joint_def();
-    def.enable_lower_limit = def.enable_upper_limit = true;
-    def.lower_angle = radians(-30.0);
-    def.upper_angle = radians(30.0);
+    rb_revolute_joint_def def;
     const double theta0 = radians(25.0);
-    bob b = make_limited_bob(rb_v2(0.0, -G), theta0, def);
+    bob b = bob_within_30_degrees(theta0, &def);
     rb_solver_settings settings = rb_world_solver_settings(b.world);
     settings.type = RB_SOLVER_SOFT_STEP;
     settings.substeps = 4;
