@@ -188,8 +188,22 @@ typedef struct read_check {
     rb_cable_id cable;
     int readings;   /* callbacks that compared */
     int mismatches; /* readings that differed from rb_cable_state and rb_cable_tension */
+    int misplaced;  /* readings whose length differed from the path's points as the bodies place them now */
     double tension; /* the law's base tension, N */
 } read_check;
+
+/* The path's length from its points as rb_cable_points places them from
+ * the bodies now, summed in the path's order as the engine sums it. */
+static double length_from_points(const rb_world *world, rb_cable_id cable)
+{
+    rb_vec2 points[8];
+    int count = rb_cable_points(world, cable, points, 8);
+    double length = 0.0;
+    for (int i = 0; i + 1 < count; ++i) {
+        length += rb_length(rb_sub(points[i + 1], points[i]));
+    }
+    return length;
+}
 
 static bool same_bits(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
 
@@ -209,6 +223,7 @@ static void compare_readings(rb_world *world, int substep, double h, void *conte
         !same_bits(reading.tension, tension)) {
         check->mismatches += 1;
     }
+    check->misplaced += same_bits(reading.length, length_from_points(world, check->cable)) ? 0 : 1;
     check->readings += 1;
     (void)rb_cable_set_tension_law(world, check->cable, check->tension, 50.0);
 }
@@ -239,8 +254,14 @@ Test(cable, one_read_gives_the_length_speed_and_tension_of_the_separate_calls)
     expect_near(reading.lengthening_speed, -2.0, 1e-15, "lengthening speed before any step");
     cr_assert_eq(rb_world_set_substep_callback(world, compare_readings, &check), RB_OK);
     step_world(world, TEST_DT, 30);
-    cr_expect_eq(check.readings, 30 * rb_world_solver_settings(world).substeps, "a reading every substep");
+    /* A second circle moves the disc's centre of mass between two steps:
+     * the points the solver locates must follow it. */
+    add_circle(world, disc, rb_v2(0.2, 0.1), 0.1, 1000.0);
+    step_world(world, TEST_DT, 30);
+    cr_expect_eq(check.readings, 60 * rb_world_solver_settings(world).substeps, "a reading every substep");
     cr_expect_eq(check.mismatches, 0, "rb_cable_read differs from rb_cable_state and rb_cable_tension");
+    cr_expect_eq(check.misplaced, 0, "%d readings measured the path elsewhere than rb_cable_points places it",
+                 check.misplaced);
     /* After the step, outside the callback, the path is measured from the bodies. */
     double length = 0.0, speed = 0.0;
     cr_assert_eq(rb_cable_read(world, check.cable, &reading), RB_OK);

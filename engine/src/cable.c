@@ -286,6 +286,16 @@ int rb_cable_points(const rb_world *world, rb_cable_id id, rb_vec2 *out, int cap
 
 /* ---- solver --------------------------------------------------------------------- */
 
+void rb_cables_prepare_step(rb_world *world)
+{
+    for (int c = 0; c < world->cable_slots; ++c) {
+        rb_cable *cable = &world->cables[c];
+        for (int i = 0; cable->in_use && i < cable->point_count; ++i) {
+            cable->from_centers[i] = rb_sub(cable->local_points[i], world->bodies[cable->bodies[i]].local_center);
+        }
+    }
+}
+
 void rb_cables_locate(rb_world *world)
 {
     for (int c = 0; c < world->cable_slots; ++c) {
@@ -293,8 +303,10 @@ void rb_cables_locate(rb_world *world)
         if (!cable->in_use) {
             continue;
         }
+        /* world_point's arithmetic, with the offsets of the step */
         for (int i = 0; i < cable->point_count; ++i) {
-            cable->points[i] = world_point(world, cable, i);
+            const rb_body_state *s = &world->states[cable->bodies[i]];
+            cable->points[i] = rb_add(s->center, rb_rotate(s->rotation, cable->from_centers[i]));
         }
         for (int i = 0; i + 1 < cable->point_count; ++i) {
             cable->segment_lengths[i] = rb_length(rb_sub(cable->points[i + 1], cable->points[i]));

@@ -5,6 +5,10 @@
 
 #include "world_internal.h"
 
+/* At the start of a step: each point's offset from its body's centre of
+ * mass in the body's frame, which no substep changes (masses and shapes
+ * stay as they are within a step). */
+void rb_cables_prepare_step(rb_world *world);
 /* At the start of a substep, before the substep callback: every cable's
  * points in the world at the poses now. The callback cannot move a body
  * (the world is locked) and integrating the velocities moves none, so

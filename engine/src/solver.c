@@ -190,6 +190,7 @@ rb_status rb_solver_step(rb_world *world, double dt)
     }
     RB_TRY(rb_joints_collect_active(world));
     rb_joint_blocks_build(world); /* before the trees, which leave its pins to it */
+    rb_cables_prepare_step(world);
     profile->prepare = rb_world_clock(world) - t;
 
     if (!world->settings.warm_starting) {

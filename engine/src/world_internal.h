@@ -407,6 +407,8 @@ typedef struct rb_cable {
     int point_count;
     int bodies[RB_MAX_CABLE_POINTS];
     rb_vec2 local_points[RB_MAX_CABLE_POINTS]; /* m, from each body's origin */
+    rb_vec2
+        from_centers[RB_MAX_CABLE_POINTS]; /* m, from each body's centre of mass, this step (rb_cables_prepare_step) */
     void *user_data;
     double base_tension;                 /* N */
     double damping;                      /* N·s/m */
