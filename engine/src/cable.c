@@ -21,13 +21,18 @@
 
 rb_cable_def rb_default_cable_def(void) { return (rb_cable_def){.internal_value = RB_DEF_COOKIE}; }
 
-/* A point of the path in the world: from its body's centre of mass,
- * turned with the body (no origin transform needed). */
+/* A point at `from_center` from a body's centre of mass in its frame,
+ * in the world: turned with the body (no origin transform needed). */
+static inline rb_vec2 place(const rb_body_state *s, rb_vec2 from_center)
+{
+    return rb_add(s->center, rb_rotate(s->rotation, from_center));
+}
+
+/* A point of the path in the world. */
 static inline rb_vec2 world_point(const rb_world *world, const rb_cable *cable, int i)
 {
-    const rb_body_state *s = &world->states[cable->bodies[i]];
-    rb_vec2 from_center = rb_sub(cable->local_points[i], world->bodies[cable->bodies[i]].local_center);
-    return rb_add(s->center, rb_rotate(s->rotation, from_center));
+    return place(&world->states[cable->bodies[i]],
+                 rb_sub(cable->local_points[i], world->bodies[cable->bodies[i]].local_center));
 }
 
 rb_status rb_cable_create(rb_world *world, const rb_cable_def *def, rb_cable_id *out)
@@ -303,10 +308,8 @@ void rb_cables_locate(rb_world *world)
         if (!cable->in_use) {
             continue;
         }
-        /* world_point's arithmetic, with the offsets of the step */
         for (int i = 0; i < cable->point_count; ++i) {
-            const rb_body_state *s = &world->states[cable->bodies[i]];
-            cable->points[i] = rb_add(s->center, rb_rotate(s->rotation, cable->from_centers[i]));
+            cable->points[i] = place(&world->states[cable->bodies[i]], cable->from_centers[i]);
         }
         for (int i = 0; i + 1 < cable->point_count; ++i) {
             cable->segment_lengths[i] = rb_length(rb_sub(cable->points[i + 1], cable->points[i]));

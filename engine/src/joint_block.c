@@ -83,8 +83,23 @@ static bool gather(const rb_world *world, int seed, rb_joint_block *block)
     return true;
 }
 
+/* The lightest and heaviest of some bodies' masses (kg), and whether
+ * they are uneven enough to defeat Gauss-Seidel. */
+typedef struct mass_range {
+    double lightest, heaviest;
+} mass_range;
+
+static void widen(mass_range *range, const rb_body *body)
+{
+    double mass = 1.0 / body->inv_mass;
+    range->lightest = rb_min(range->lightest, mass);
+    range->heaviest = rb_max(range->heaviest, mass);
+}
+
+static bool uneven(mass_range range) { return range.heaviest >= RB_BLOCK_MASS_RATIO * range.lightest; }
+
 /* Whether a gathered group is a block: every joint limited (the trees
- * take unlimited pins) and masses uneven enough to defeat Gauss-Seidel. */
+ * take unlimited pins) and masses uneven. */
 static bool needs_a_block(const rb_world *world, const rb_joint_block *block)
 {
     for (int j = 0; j < block->joint_count; ++j) {
@@ -92,13 +107,11 @@ static bool needs_a_block(const rb_world *world, const rb_joint_block *block)
             return false;
         }
     }
-    double lightest = INFINITY, heaviest = 0.0;
+    mass_range range = {INFINITY, 0.0};
     for (int b = 0; b < block->body_count; ++b) {
-        double mass = 1.0 / world->bodies[block->bodies[b]].inv_mass;
-        lightest = rb_min(lightest, mass);
-        heaviest = rb_max(heaviest, mass);
+        widen(&range, &world->bodies[block->bodies[b]]);
     }
-    return heaviest >= RB_BLOCK_MASS_RATIO * lightest;
+    return uneven(range);
 }
 
 /* A body's place in the block, RB_BLOCK_MAX_BODIES (no velocity, no
@@ -115,7 +128,7 @@ static int slot_of(const rb_joint_block *block, int body)
  * even (the arm) needs no search, step after step. */
 static bool uneven_enough(const rb_world *world)
 {
-    double lightest = INFINITY, heaviest = 0.0;
+    mass_range range = {INFINITY, 0.0};
     for (int k = 0; k < world->active_joint_count; ++k) {
         const rb_joint *joint = &world->joints[world->active_joints[k]];
         if (!has_limit(joint) || !fits_a_block(world, joint)) {
@@ -123,15 +136,12 @@ static bool uneven_enough(const rb_world *world)
         }
         const int ends[2] = {joint->body_a, joint->body_b};
         for (int e = 0; e < 2; ++e) {
-            const rb_body *body = &world->bodies[ends[e]];
-            if (moves_freely(body)) {
-                double mass = 1.0 / body->inv_mass;
-                lightest = rb_min(lightest, mass);
-                heaviest = rb_max(heaviest, mass);
+            if (moves_freely(&world->bodies[ends[e]])) {
+                widen(&range, &world->bodies[ends[e]]);
             }
         }
     }
-    return heaviest >= RB_BLOCK_MASS_RATIO * lightest;
+    return uneven(range);
 }
 
 void rb_joint_blocks_build(rb_world *world)
