@@ -10,7 +10,10 @@
  *     P = h·(T0 + c·L' + c·k·P_acc) / (1 + h·c·k),   clamped to P >= 0.
  * This is the backward-Euler step of the damper (Hairer and Wanner,
  * "Solving ODEs II", 1996, §IV.1): stable for any c, where the explicit
- * force c·L' diverges once h·c·k > 2. */
+ * force c·L' diverges once h·c·k > 2. Only L' and P_acc change within a
+ * substep, so the law's three gains are made once a substep and a pass
+ * multiplies: in a pass each cable waits on the velocities the one before
+ * it left, and a division there would lengthen that chain of waits. */
 #include <float.h>
 #include <string.h>
 
@@ -380,8 +383,8 @@ void rb_cables_prepare(rb_world *world, double h)
                 .state = &world->states[cable->path_bodies[b]],
                 .linear = linear[b],
                 .angular = angular[b],
-                .inv_mass = inv_mass,
-                .inv_inertia = inv_inertia,
+                .push_linear = rb_scale(inv_mass, linear[b]),
+                .push_angular = inv_inertia * angular[b],
             };
             if (inv_mass > 0.0 || inv_inertia > 0.0) {
                 cable->moving[cable->moving_count++] = share;
@@ -389,10 +392,12 @@ void rb_cables_prepare(rb_world *world, double h)
             cable->shares[cable->share_count++] = share;
         }
         cable->inverse_mass = k;
-        /* The tension law's terms that hold for the whole substep: the
-         * substep callback set the damping before (rb_cables_solve). */
-        cable->damping_rate = cable->damping * k;
-        cable->implicit_scale = 1.0 + h * cable->damping_rate;
+        /* The law's gains for the substep: the substep callback set T0
+         * and c before. */
+        double gain = h / (1.0 + h * cable->damping * k);
+        cable->speed_gain = gain * cable->damping;
+        cable->base_impulse = gain * cable->base_tension;
+        cable->impulse_gain = gain * cable->damping * k;
     }
 }
 
@@ -403,8 +408,8 @@ static inline void apply(const rb_cable *cable, double impulse)
     for (int m = 0; m < cable->moving_count; ++m) {
         const rb_cable_share *share = &cable->moving[m];
         rb_body_state *s = share->state;
-        s->linear_velocity = rb_mul_add(s->linear_velocity, impulse * share->inv_mass, share->linear);
-        s->angular_velocity += impulse * share->inv_inertia * share->angular;
+        s->linear_velocity = rb_mul_add(s->linear_velocity, impulse, share->push_linear);
+        s->angular_velocity += impulse * share->push_angular;
     }
 }
 
@@ -440,8 +445,7 @@ void rb_cables_solve(rb_world *world, double h)
             cable->impulse = h * fmax(cable->base_tension + cable->damping * speed, 0.0);
             continue;
         }
-        double total = h * (cable->base_tension + cable->damping * speed + cable->damping_rate * cable->impulse) /
-                       cable->implicit_scale;
+        double total = cable->speed_gain * speed + (cable->base_impulse + cable->impulse_gain * cable->impulse);
         total = total > 0.0 ? total : 0.0; /* fmax(total, 0), NaN and -0 included, without libm's call */
         apply(cable, total - cable->impulse);
         cable->impulse = total;

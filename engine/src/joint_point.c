@@ -39,19 +39,27 @@ static void apply(const rb_joint *joint, rb_body_state *a, rb_body_state *b, rb_
     rb_joint_apply_angular(joint, a, b, angular);
 }
 
-/* The cofactors of K with its angular row, once a substep: K is fixed
- * within it, and every pass solves K·(x, z) = (v, w) by Cramer's rule
- * with them (what rb_block_solve3 does from scratch in every pass). */
-static void make_cofactors(rb_point_block *p)
+/* K's inverse with its angular row, once a substep: K is fixed within
+ * it, and every pass then solves K·(x, z) = (v, w) with three dot
+ * products (where rb_block_solve3 takes K's cofactors and divides by its
+ * determinant in every pass). The inverse is the cofactors over the
+ * determinant, Cramer's rule; a determinant that is 0 to the last
+ * digits leaves the pin to be solved alone. */
+static void make_inverse(rb_point_block *p)
 {
     const rb_block_matrix *k = &p->mass;
-    p->c11 = k->k22 * k->k33 - k->k23 * k->k23;
-    p->c12 = k->k13 * k->k23 - k->k12 * k->k33;
-    p->c13 = k->k12 * k->k23 - k->k13 * k->k22;
-    p->det = k->k11 * p->c11 + k->k12 * p->c12 + k->k13 * p->c13;
-    p->c22 = k->k11 * k->k33 - k->k13 * k->k13;
-    p->c23 = k->k13 * k->k12 - k->k11 * k->k23;
+    const double c11 = k->k22 * k->k33 - k->k23 * k->k23;
+    const double c12 = k->k13 * k->k23 - k->k12 * k->k33;
+    const double c13 = k->k12 * k->k23 - k->k13 * k->k22;
+    p->det = k->k11 * c11 + k->k12 * c12 + k->k13 * c13;
     p->c33 = k->k11 * k->k22 - k->k12 * k->k12;
+    const double inverse_det = fabs(p->det) > 1e-300 ? 1.0 / p->det : 0.0;
+    p->inverse11 = inverse_det * c11;
+    p->inverse12 = inverse_det * c12;
+    p->inverse13 = inverse_det * c13;
+    p->inverse22 = inverse_det * (k->k11 * k->k33 - k->k13 * k->k13);
+    p->inverse23 = inverse_det * (k->k13 * k->k12 - k->k11 * k->k23);
+    p->inverse33 = inverse_det * p->c33;
 }
 
 /* The joint's point block, kept by the world beside the joints. */
@@ -90,7 +98,7 @@ void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double 
     p->mass = make_mass_matrix(f->inv_mass_a, f->inv_inertia_a, f->inv_mass_b, f->inv_inertia_b, f->ra, f->rb);
     const double inverse_det = point_inverse(&p->mass, &f->point_inverse11, &f->point_inverse12, &f->point_inverse22);
     if (solves_with_a_row(joint)) {
-        make_cofactors(p);
+        make_inverse(p);
         p->inverse_c33 = inverse_det; /* c33 is that 2x2's determinant, made by the same expression */
     }
     rb_point_constraint_prepare_drift(world, joint, h);
@@ -103,22 +111,22 @@ void rb_point_constraint_prepare_drift(const rb_world *world, rb_joint *joint, d
 }
 
 /* Solves K_s·(x, z) = (v, w) with K_s = K whose coupling terms k13, k23
- * take the row's sign s = ±1. Flipping them flips the cofactors c13 and
- * c23 and leaves the others and the determinant as they are (each keeps
- * its terms' products of two flipped factors), so K's cofactors serve
- * both signs, to the bit: negation is exact. The row's z comes first, by
- * itself: whether a limit holds depends on z alone, and a limit that lets
- * go discards x (solve_point). */
+ * take the row's sign s = ±1. Flipping them flips K⁻¹'s entries 13 and
+ * 23 and leaves the others as they are (each cofactor keeps its terms'
+ * products of two flipped factors, and so does the determinant), so K's
+ * inverse serves both signs. The row's z comes first, by itself: whether
+ * a limit holds depends on z alone, and a limit that lets go discards x
+ * (solve_point). */
 static double row_part(const rb_point_block *p, double sign, rb_vec2 v, double w)
 {
-    return (sign * p->c13 * v.x + sign * p->c23 * v.y + p->c33 * w) / p->det;
+    return sign * p->inverse13 * v.x + sign * p->inverse23 * v.y + p->inverse33 * w;
 }
 
 static rb_vec2 point_part(const rb_point_block *p, double sign, rb_vec2 v, double w)
 {
-    const double c13 = sign * p->c13;
-    const double c23 = sign * p->c23;
-    return rb_v2((p->c11 * v.x + p->c12 * v.y + c13 * w) / p->det, (p->c12 * v.x + p->c22 * v.y + c23 * w) / p->det);
+    const double i13 = sign * p->inverse13;
+    const double i23 = sign * p->inverse23;
+    return rb_v2(p->inverse11 * v.x + p->inverse12 * v.y + i13 * w, p->inverse12 * v.x + p->inverse22 * v.y + i23 * w);
 }
 
 /* The pin alone, K2·x = v, with K2's determinant c33 and its inverse

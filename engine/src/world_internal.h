@@ -288,10 +288,12 @@ typedef struct rb_joint_frame {
  * byte of a joint through the caches. */
 typedef struct rb_point_block {
     rb_block_matrix mass;
-    double c11, c12, c13, c22, c23, c33, det;
+    double det;                                  /* of K with its angular row */
+    double inverse11, inverse12, inverse13;      /* K⁻¹ (symmetric) when det is not 0 */
+    double inverse22, inverse23, inverse33;
     /* 1/c33 when c33 > 0, else 0: c33 = k11·k22 - k12² is also the pin
      * alone's determinant, which a limit that lets go solves with. */
-    double inverse_c33;
+    double c33, inverse_c33;
 } rb_point_block;
 
 /* A plain pin (a revolute joint with no limit, motor or spring, which no
@@ -387,15 +389,16 @@ typedef struct rb_pulley_data {
 } rb_pulley_data;
 
 /* A body's share of a cable's unit tension this substep: the direction
- * of the impulse on it and, when the impulse moves it, its inverse mass. */
+ * of the impulse on it and, when the impulse moves it, the velocity a
+ * unit impulse gives it. */
 typedef struct rb_cable_share {
     /* The body's state: the passes reach it without an index, and the
      * states do not move within a step (no body is made in one). */
     rb_body_state *state;
-    rb_vec2 linear;  /* Σ (u_i - u_{i-1}) over the body's points */
-    double angular;  /* m, Σ r_i × (u_i - u_{i-1}) */
-    double inv_mass; /* 1/kg, 0 when the impulse does not move the body (kinematic, asleep) */
-    double inv_inertia;
+    rb_vec2 linear;      /* Σ (u_i - u_{i-1}) over the body's points */
+    double angular;      /* m, Σ r_i × (u_i - u_{i-1}) */
+    rb_vec2 push_linear; /* 1/kg: linear · inverse mass, 0 when the impulse does not move the body */
+    double push_angular; /* 1/(kg·m): angular · inverse inertia, likewise */
 } rb_cable_share;
 
 /* A cable and, per substep, the direction of a unit tension's impulse on
@@ -426,8 +429,11 @@ typedef struct rb_cable {
     int moving_count;
     rb_cable_share moving[RB_MAX_CABLE_POINTS]; /* copies of those shares, which the passes push in turn */
     double inverse_mass;                        /* 1/kg: how fast a unit impulse shortens the path */
-    double damping_rate;                        /* 1/s: damping · inverse_mass, c·k in the tension law */
-    double implicit_scale;                      /* 1 + h·c·k, the implicit law's denominator this substep */
+    /* The implicit law's gains this substep (rb_cables_solve): the
+     * impulse is speed_gain·L' + base_impulse + impulse_gain·P_acc. */
+    double speed_gain;   /* kg: h·c / (1 + h·c·k) */
+    double base_impulse; /* N·s: h·T0 / (1 + h·c·k) */
+    double impulse_gain; /* h·c·k / (1 + h·c·k) */
 } rb_cable;
 
 /* Ordered by use: what every velocity pass and every walk over the slots
