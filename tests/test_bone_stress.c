@@ -138,6 +138,37 @@ Test(bone_stress, a_hanging_bone_is_in_pure_tension)
     mu_model_desc_destroy(desc);
 }
 
+/* The worst stress of a bone hanging from its top with the weight hung
+ * at the hinge's anchor, `below` metres under it. */
+static double worst_with_weight_below_the_hinge(double below)
+{
+    char weight_at[64];
+    snprintf(weight_at, sizeof weight_at, "[0, %.17g]", -below);
+    mu_model_desc *desc = NULL;
+    mu_model *model = settle(one_bone("[0, -0.2]", "[0.02, 0.4]", "", "[0, 0.2]", "", weight_at, 10.0), &desc);
+    const double stress = mu_model_bone_stress(model, 0).worst.stress;
+    mu_model_destroy(model);
+    mu_model_desc_destroy(desc);
+    return stress;
+}
+
+/* Two loads at one point, as a weight hung from the hinge's pin or a
+ * muscle inserted at a joint's anchor, reach the bone at coordinates that
+ * rounding may set a few units in the last place apart. No section lies
+ * between them: the hinge carries the weight, and the bone only its own
+ * weight, however the roundings fall. Loads a micrometre apart do have
+ * bone between them, which carries the weight. */
+Test(bone_stress, loads_at_one_point_have_no_section_between_them)
+{
+    const double outer = 0.02, inner = outer / 2.0;
+    const double area = PI * (outer * outer - inner * inner) / 4.0;
+    const double bone_weight = DENSITY * 0.4 * 0.02 * 0.02 * G, weight = 10.0 * G;
+    expect_relative(worst_with_weight_below_the_hinge(0.0), bone_weight / area, 1e-6, "weight on the pin");
+    expect_relative(worst_with_weight_below_the_hinge(1e-15), bone_weight / area, 1e-6, "weight 1e-15 m under it");
+    expect_relative(worst_with_weight_below_the_hinge(1e-6), (weight + bone_weight) / area, 1e-6,
+                    "weight 1 µm under it");
+}
+
 /* The arm with a weight, its flexors pulling hard: every bone that moves
  * balances its loads and inertia, frame by frame. */
 Test(bone_stress, every_bone_of_the_moving_arm_is_in_balance)

@@ -54,7 +54,11 @@
  * safety factor the smaller of S_t/σ_t (when σ_t > 0) and S_c/(-σ_c)
  * (when σ_c < 0), S the ultimate strengths. Shear stress is not counted.
  * Sections: both sides of every point load's coordinate, the bone's ends
- * and MU_BONE_STRESS_SECTIONS evenly spaced between them; between point
+ * and MU_BONE_STRESS_SECTIONS evenly spaced between them. Loads closer
+ * than 1e-12 of the bone's length are at one point, with no section
+ * between them (a weight on a hinge's pin, a muscle inserted at a
+ * joint's anchor: the roundings of their frames must not cut between
+ * them). Between point
  * loads the moment from the spread loads is smooth (a cubic in s), and
  * the spacing L/64 puts a maximum between two sections within
  * (L/128)²·|M''|/2 of the sections' value.
