@@ -13,8 +13,8 @@
  *
  * The tolerance, 1e-9 of each value (of 1° for an angle, of 1 N for a
  * tension, when smaller), is rounding's: the changes measured so far
- * moved the angles by at most 5e-12° and the tensions by 1e-10 of
- * themselves over the models' 10 s runs. A change to the physics (a
+ * moved the angles by at most 5e-12° and the forces by 1e-10 of their
+ * largest over the models' 10 s runs. A change to the physics (a
  * model, a law, the solver's passes) moves them by far more; this table
  * is then measured again, and the change says why.
  */

@@ -288,8 +288,8 @@ typedef struct rb_joint_frame {
  * byte of a joint through the caches. */
 typedef struct rb_point_block {
     rb_block_matrix mass;
-    double det;                                  /* of K with its angular row */
-    double inverse11, inverse12, inverse13;      /* K⁻¹ (symmetric) when det is not 0 */
+    double det;                             /* of K with its angular row */
+    double inverse11, inverse12, inverse13; /* K⁻¹ (symmetric) when det is not 0 */
     double inverse22, inverse23, inverse33;
     /* 1/c33 when c33 > 0, else 0: c33 = k11·k22 - k12² is also the pin
      * alone's determinant, which a limit that lets go solves with. */
