@@ -8,8 +8,8 @@
  * runs that hold a hinge at its stop (the arm's elbow through its limited
  * pin, the leg's ankle under 200 kg through its limb block), and compares
  * every hinge angle and every muscle's tension after 1 s and 3 s with the
- * values the engine gave before that work (sinew 0.2.0 at commit 418491e,
- * printed with 17 significant digits, every double exactly).
+ * values the engine gave before that work (commit 418491e, printed with
+ * 17 significant digits, every double exactly).
  *
  * The tolerance, 1e-9 of each value (of 1° for an angle, of 1 N for a
  * tension, when smaller), is rounding's: the changes measured so far
@@ -118,6 +118,7 @@ static void run_model(const reference_run *run, double values[2][MAX_VALUES], in
     mu_model_destroy(model);
     mu_model_desc_destroy(desc);
 }
+
 static void expect_close(const char *what, double value, double expected, double floor)
 {
     const double allowed = RELATIVE * fmax(fabs(expected), floor);
