@@ -45,6 +45,8 @@ static void apply(const rb_joint *joint, rb_body_state *a, rb_body_state *b, rb_
  * determinant in every pass). The inverse is the cofactors over the
  * determinant, Cramer's rule; a determinant that is 0 to the last
  * digits leaves the pin to be solved alone. */
+#define SINGULAR_DET 1e-300 /* |det| at or below it: K is singular, and the pin is solved alone */
+
 static void make_inverse(rb_point_block *p)
 {
     const rb_block_matrix *k = &p->mass;
@@ -53,7 +55,7 @@ static void make_inverse(rb_point_block *p)
     const double c13 = k->k12 * k->k23 - k->k13 * k->k22;
     p->det = k->k11 * c11 + k->k12 * c12 + k->k13 * c13;
     p->c33 = k->k11 * k->k22 - k->k12 * k->k12;
-    const double inverse_det = fabs(p->det) > 1e-300 ? 1.0 / p->det : 0.0;
+    const double inverse_det = fabs(p->det) > SINGULAR_DET ? 1.0 / p->det : 0.0;
     p->inverse11 = inverse_det * c11;
     p->inverse12 = inverse_det * c12;
     p->inverse13 = inverse_det * c13;
@@ -148,7 +150,7 @@ void rb_point_constraint_solve(const rb_world *world, const rb_joint *joint, rb_
     rb_vec2 cdot = rb_point_frame_velocity_error(world, &joint->frame, a, b);
 
     const rb_point_block *p = NULL;
-    if (row != NULL && fabs((p = point_block(world, joint))->det) > 1e-300) {
+    if (row != NULL && fabs((p = point_block(world, joint))->det) > SINGULAR_DET) {
         /* The row is s·(ωB - ωA) + bias = 0 with s = ±1; in K its coupling
          * terms take the sign s. A singular K (a body that cannot turn
          * makes the row redundant) leaves the pin alone. */
