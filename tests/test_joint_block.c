@@ -17,6 +17,7 @@
 #include <criterion/criterion.h>
 #include <math.h>
 
+#include "cable_solver.h"
 #include "joint_block.h"
 #include "joint_solver.h"
 #include "rb/rb.h"
@@ -81,10 +82,13 @@ static void prepare(rb_world *world, double h)
 {
     cr_assert_eq(rb_joints_collect_active(world), RB_OK);
     rb_joint_blocks_build(world);
+    rb_cables_prepare_step(world);
     world->joint_response = (rb_rigid_response){.mass_scale = 1.0};
+    rb_cables_prepare(world, h);
     rb_joints_prepare(world);
     rb_pins_gather(world);
-    rb_joints_warm_start(world, h, false); /* the frames; the impulses are still 0 */
+    rb_cables_warm_start(world);
+    rb_joints_warm_start(world, h, false); /* the frames; the joints' impulses are still 0 */
     rb_joint_blocks_factor(world, h);
 }
 
@@ -261,6 +265,180 @@ Test(joint_block, a_limit_that_would_pull_is_released_and_the_pins_still_meet)
     double opening, margin;
     ankle_motion(&l, &opening, &margin);
     cr_expect_gt(opening, -margin / h, "released, the ankle opens faster than its stop asks: %g rad/s", opening);
+    destroy_world_and_expect_no_leak(world);
+}
+
+/* A muscle's cable on the limb, as the leg's gastrocnemius: from the
+ * femur near the knee to the foot, across the knee and the ankle, or by
+ * way of the tibia (`via_tibia`: three moving bodies, which a block's row
+ * does not take). Its law: T0 N and c N·s/m. */
+static rb_cable_id add_cable(const limb *l, bool via_tibia, double base_tension, double damping)
+{
+    rb_cable_def def = rb_default_cable_def();
+    def.bodies[def.point_count] = l->bodies[0];
+    def.local_points[def.point_count++] = rb_v2(0.18, 0.02); /* (0.42, 0.02) in the world */
+    if (via_tibia) {
+        def.bodies[def.point_count] = l->bodies[1];
+        def.local_points[def.point_count++] = rb_v2(-0.02, 0.0); /* (0.46, -0.18) */
+    }
+    def.bodies[def.point_count] = l->bodies[2];
+    def.local_points[def.point_count++] = rb_v2(0.05, 0.01); /* (0.60, -0.35) */
+    rb_cable_id id;
+    cr_assert_eq(rb_cable_create(l->world, &def, &id), RB_OK, "%s", rb_last_error());
+    cr_assert_eq(rb_cable_set_tension_law(l->world, id, base_tension, damping), RB_OK, "%s", rb_last_error());
+    return id;
+}
+
+/* Velocities the joints do not allow, the ankle well within its stops;
+ * `sign` -1 reverses them all. */
+static void shake(const limb *l, double sign)
+{
+    for (int i = 0; i < 3; ++i) {
+        rb_vec2 v = rb_scale(sign, rb_v2(sin(1.7 * i + 0.3), cos(2.3 * i)));
+        cr_assert_eq(rb_body_set_linear_velocity(l->world, l->bodies[i], v), RB_OK);
+        cr_assert_eq(rb_body_set_angular_velocity(l->world, l->bodies[i], sign * (0.5 - 0.4 * i)), RB_OK);
+    }
+}
+
+/* The cable's lengthening speed L' = -J·v at the bodies' velocities now,
+ * through its bodies' shares of a unit tension (m/s). */
+static double lengthening_speed(const rb_cable *cable)
+{
+    double speed = 0.0;
+    for (int m = 0; m < cable->share_count; ++m) {
+        const rb_cable_share *share = &cable->shares[m];
+        speed -= rb_dot(share->linear, share->state->linear_velocity) + share->angular * share->state->angular_velocity;
+    }
+    return speed;
+}
+
+/* M·Δv = Jᵀ·Δλ with the cable's row among the pins': each body's
+ * momentum changed by the pins' impulses (expect_pins_met_by_the_impulses
+ * counts those) and by the cable's, its share of the tension's impulse. */
+static void expect_momentum_with_the_cable(const limb *l, const limb_snapshot *before, const rb_cable *cable,
+                                           double cable_before)
+{
+    rb_world *world = l->world;
+    double pull = cable->impulse - cable_before;
+    for (int i = 0; i < 3; ++i) {
+        int index = l->bodies[i].index;
+        const rb_body *body = &world->bodies[index];
+        rb_vec2 force = rb_v2(0.0, 0.0);
+        double torque = 0.0;
+        for (int k = 0; k < 4; ++k) {
+            rb_joint *joint = joint_of(world, l->hinges[k]);
+            const rb_revolute_data *d = &joint->as.revolute;
+            rb_vec2 point = rb_sub(d->point_impulse, before->point_impulses[k]);
+            double angular = d->lower_impulse - d->upper_impulse - before->angular_impulses[k];
+            if (joint->body_b == index) {
+                force = rb_add(force, point);
+                torque += rb_cross(joint->frame.rb, point) + angular;
+            } else if (joint->body_a == index) {
+                force = rb_sub(force, point);
+                torque -= rb_cross(joint->frame.ra, point) + angular;
+            }
+        }
+        for (int m = 0; m < cable->share_count; ++m) {
+            if (cable->shares[m].state == &world->states[index]) {
+                force = rb_mul_add(force, pull, cable->shares[m].linear);
+                torque += pull * cable->shares[m].angular;
+            }
+        }
+        const rb_body_state *after = &world->states[index];
+        const rb_body_state *was = &before->states[i];
+        rb_vec2 momentum = rb_scale(1.0 / body->inv_mass, rb_sub(after->linear_velocity, was->linear_velocity));
+        double angular = (after->angular_velocity - was->angular_velocity) / body->inv_inertia;
+        expect_vec_near(momentum, force, 1e-9 * (1.0 + rb_length(force)), "a body's momentum change");
+        expect_near(angular, torque, 1e-9 * (1.0 + fabs(torque)), "a body's angular momentum change");
+    }
+}
+
+/* The pins' anchors, after a pass, move together up to their drift. */
+static void expect_pins_met(const limb *l)
+{
+    for (int k = 0; k < 4; ++k) {
+        rb_joint *joint = joint_of(l->world, l->hinges[k]);
+        rb_vec2 cdot =
+            rb_joint_relative_velocity(joint, rb_joint_state_a(l->world, joint), rb_joint_state_b(l->world, joint));
+        expect_vec_near(cdot, joint->frame.point_drift, 1e-10, "a pin's anchor velocity after the pass");
+    }
+}
+
+Test(joint_block, a_damped_cable_on_the_block_is_one_of_its_rows_and_meets_its_law_at_the_substeps_end)
+{
+    /* The implicit law P = h·(T0 + c·L') with L' the lengthening speed
+     * after the substep's impulses (cable.c): one pass over the block
+     * meets it together with the pins, exactly, where the cable's own
+     * pass would meet it only at the velocities the pins had not yet
+     * changed. */
+    limb l = make_limb(20000.0);
+    rb_world *world = l.world;
+    const double base_tension = 500.0, damping = 100.0;
+    rb_cable_id id = add_cable(&l, false, base_tension, damping);
+    rb_cable *cable = &world->cables[id.index];
+    shake(&l, 1.0);
+    double h = 1.0 / 600.0;
+    prepare(world, h);
+    cr_assert_eq(world->joint_blocks.count, 1);
+    const rb_joint_block *block = &world->joint_blocks.blocks[0];
+    cr_assert(block->factored);
+    cr_expect(cable->in_block, "the cable is a row of the block");
+    cr_expect_eq(block->cable_rows, 1);
+    cr_expect_eq(block->row_count, 9, "four pins and the cable, %d rows", block->row_count);
+    cr_expect(block->closed, "nothing else acts on the limb");
+    limb_snapshot before = snapshot(&l);
+    rb_joint_blocks_solve_velocities(world);
+    double speed = lengthening_speed(cable);
+    cr_log_info("the cable's impulse %.9g N·s, its law at the speed after the pass %.9g N·s (L' = %.4g m/s)",
+                cable->impulse, h * (base_tension + damping * speed), speed);
+    cr_expect_gt(cable->impulse, 0.0, "the cable pulls");
+    expect_near(cable->impulse, h * (base_tension + damping * speed), 1e-12, "the law at the substep's end");
+    expect_pins_met(&l);
+    expect_momentum_with_the_cable(&l, &before, cable, 0.0);
+    cr_expect(block->settled, "nothing released: the pass solved the block");
+    destroy_world_and_expect_no_leak(world);
+}
+
+Test(joint_block, a_cable_that_would_push_lets_go_and_the_pins_still_meet)
+{
+    /* No base tension, and a warm-started pull, while the bodies shorten
+     * the path: the law asks for a push, which a cable cannot give, so
+     * the pass releases its row (its impulse 0) and solves the pins
+     * again; the passes after it must then run, not trust the first. */
+    limb l = make_limb(20000.0);
+    rb_world *world = l.world;
+    rb_cable_id id = add_cable(&l, false, 0.0, 100.0);
+    rb_cable *cable = &world->cables[id.index];
+    shake(&l, -1.0);
+    double h = 1.0 / 600.0;
+    prepare(world, h);
+    cr_assert(cable->in_block);
+    cable->impulse = 0.05;
+    rb_cables_warm_start(world);
+    limb_snapshot before = snapshot(&l);
+    rb_joint_blocks_solve_velocities(world);
+    cr_expect_eq(cable->impulse, 0.0, "the cable let go: %g N·s", cable->impulse);
+    cr_expect_lt(lengthening_speed(cable), 0.0, "released, the path shortens: the law would push");
+    expect_pins_met(&l);
+    expect_momentum_with_the_cable(&l, &before, cable, 0.05);
+    cr_expect_not(world->joint_blocks.blocks[0].settled, "a released row: the later passes solve the block again");
+    destroy_world_and_expect_no_leak(world);
+}
+
+Test(joint_block, a_cable_over_three_moving_bodies_stays_gauss_seidels_and_opens_the_block)
+{
+    /* A row of the block joins two bodies; a path over three keeps its
+     * own pass, which changes the limb's velocities after the block's, so
+     * every pass must solve the block again. */
+    limb l = make_limb(20000.0);
+    rb_world *world = l.world;
+    rb_cable_id id = add_cable(&l, true, 500.0, 100.0);
+    prepare(world, 1.0 / 600.0);
+    cr_assert_eq(world->joint_blocks.count, 1);
+    const rb_joint_block *block = &world->joint_blocks.blocks[0];
+    cr_expect_not(world->cables[id.index].in_block);
+    cr_expect_eq(block->cable_rows, 0);
+    cr_expect_not(block->closed, "the cable acts on the limb from outside the block");
     destroy_world_and_expect_no_leak(world);
 }
 

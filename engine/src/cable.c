@@ -370,6 +370,7 @@ void rb_cables_prepare(rb_world *world, double h)
         double k = 0.0;
         cable->share_count = 0;
         cable->moving_count = 0;
+        cable->in_block = false; /* until a limb block takes it (rb_joint_blocks_factor) */
         for (int b = 0; b < cable->body_count; ++b) {
             const rb_body *body = &world->bodies[cable->path_bodies[b]];
             if (body->type == RB_BODY_STATIC) {
@@ -426,8 +427,8 @@ void rb_cables_solve(rb_world *world, double h)
 {
     for (int c = 0; c < world->cable_slots; ++c) {
         rb_cable *cable = &world->cables[c];
-        if (!cable->in_use) {
-            continue;
+        if (!cable->in_use || cable->in_block) {
+            continue; /* a block's cable is solved with the block (joint_block.c) */
         }
         /* L' = -Σ (pull · v + angular · ω): the pulls point inwards. A
          * static body's velocity is 0 and would add ±0: a sum from +0

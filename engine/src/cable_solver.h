@@ -22,7 +22,8 @@ void rb_cables_locate(rb_world *world);
  * next. */
 void rb_cables_prepare(rb_world *world, double h);
 void rb_cables_warm_start(rb_world *world);
-/* One pass of the implicit tension law over the cables. */
+/* One pass of the implicit tension law over the cables, less those a
+ * limb block solves in its rows this substep (rb_cable.in_block). */
 void rb_cables_solve(rb_world *world, double h);
 void rb_cables_reset_impulses(rb_world *world);
 

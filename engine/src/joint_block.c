@@ -4,6 +4,7 @@
  * substep, the solve in every velocity pass. */
 #include <math.h>
 
+#include "contact_solver.h"
 #include "joint_block.h"
 #include "joint_solver.h"
 
@@ -144,6 +145,20 @@ static bool uneven_enough(const rb_world *world)
     return uneven(range);
 }
 
+/* Whether a contact this step acts on one of the block's bodies. */
+static bool touched_by_contacts(const rb_world *world, const rb_joint_block *block)
+{
+    for (int c = 0; c < world->constraint_count; ++c) {
+        const int ends[2] = {world->constraints[c].body_a, world->constraints[c].body_b};
+        for (int e = 0; e < 2; ++e) {
+            if (find(block->bodies, block->body_count, ends[e]) >= 0) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
 void rb_joint_blocks_build(rb_world *world)
 {
     rb_joint_blocks *blocks = &world->joint_blocks;
@@ -180,6 +195,7 @@ void rb_joint_blocks_build(rb_world *world)
         for (int j = 0; j < block->joint_count; ++j) {
             world->joints[block->joints[j]].in_block = true;
         }
+        block->touched = touched_by_contacts(world, block);
         ++blocks->count;
     }
 }
@@ -200,6 +216,7 @@ static void add_row(rb_joint_block *block, int slot_a, int slot_b, const double 
         row->jb[k] = jb[k];
     }
     row->bias = bias;
+    row->compliance = 0.0;
     row->accumulated = accumulated;
     row->one_sided = one_sided;
 }
@@ -217,6 +234,78 @@ static void add_pin(rb_joint_block *block, int j, rb_joint *joint)
             -f->point_drift.x, &r->point_impulse.x, false);
     add_row(block, a, b, (const double[3]){0.0, -1.0, -f->ra.x}, (const double[3]){0.0, 1.0, f->rb.x},
             -f->point_drift.y, &r->point_impulse.y, false);
+}
+
+/* A body's place in the block, or -1 when it is not one of the block's. */
+static int moving_slot(const rb_world *world, const rb_joint_block *block, const rb_body_state *state)
+{
+    for (int b = 0; b < block->body_count; ++b) {
+        if (&world->states[block->bodies[b]] == state) {
+            return b;
+        }
+    }
+    return -1;
+}
+
+/* The row of each damped cable that pulls on the block's bodies and on
+ * nothing else that moves, at most two of them. Its law P = h·(T0 + c·L')
+ * at the substep's end (cable.c), with J·v = -L' the rate of its row,
+ * becomes
+ *
+ *     J·v + P/(h·c) - T0/c = 0,
+ *
+ * a row whose compliance 1/(h·c) adds to K's diagonal: a soft constraint
+ * (Catto, "Soft Step", GDC 2011; Servin, Lacoursière and Melin,
+ * "Interactive simulation of elastic deformable materials", 2006), one
+ * sided because a cable only pulls. An undamped cable (c = 0) is a
+ * tension the passes apply whatever the velocities, and stays theirs. */
+static void add_cables(rb_world *world, rb_joint_block *block, double h)
+{
+    block->cable_rows = 0;
+    for (int c = 0; c < world->cable_slots && block->cable_rows < RB_BLOCK_MAX_CABLES; ++c) {
+        rb_cable *cable = &world->cables[c];
+        if (!cable->in_use || cable->in_block || !(cable->damping > 0.0) || cable->share_count == 0 ||
+            cable->share_count > 2) {
+            continue;
+        }
+        int slots[2] = {RB_BLOCK_MAX_BODIES, RB_BLOCK_MAX_BODIES};
+        double j[2][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
+        bool inside = true;
+        for (int m = 0; m < cable->share_count && inside; ++m) {
+            const rb_cable_share *share = &cable->shares[m];
+            slots[m] = moving_slot(world, block, share->state);
+            inside = slots[m] >= 0;
+            j[m][0] = share->linear.x;
+            j[m][1] = share->linear.y;
+            j[m][2] = share->angular;
+        }
+        if (!inside) {
+            continue;
+        }
+        add_row(block, slots[0], slots[1], j[0], j[1], -cable->base_tension / cable->damping, &cable->impulse, true);
+        block->rows[block->row_count - 1].compliance = 1.0 / (h * cable->damping);
+        block->cables[block->cable_rows++] = cable;
+        cable->in_block = true; /* taken: no other block adds it */
+    }
+}
+
+/* Whether a damped cable that is not the block's pulls on one of its
+ * bodies: its passes would then change their velocities after the
+ * block's. */
+static bool pulled_from_outside(const rb_world *world, const rb_joint_block *block)
+{
+    for (int c = 0; c < world->cable_slots; ++c) {
+        const rb_cable *cable = &world->cables[c];
+        if (!cable->in_use || cable->in_block || !(cable->damping > 0.0)) {
+            continue;
+        }
+        for (int m = 0; m < cable->share_count; ++m) {
+            if (moving_slot(world, block, cable->shares[m].state) >= 0) {
+                return true;
+            }
+        }
+    }
+    return false;
 }
 
 /* Releases a limit's accumulated impulse (sign +1 lower, -1 upper). */
@@ -272,71 +361,42 @@ static void weigh(const rb_joint_block *block, rb_block_row *row)
 
 static double dot3(const double *x, const double *y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
 
-/* K_ij = J_i·M⁻¹·J_jᵀ: the sum over the moving bodies the two rows
- * share (a fixed body's weights are 0, and a sum from +0 that adds 0
- * stays the same bits, so those terms are not added). */
-static double coupling(const rb_joint_block *block, const rb_block_row *i, const rb_block_row *j)
-{
-    double sum = 0.0;
-    const int moving = block->body_count;
-    if (i->slot_a < moving) {
-        if (i->slot_a == j->slot_a) {
-            sum += dot3(i->ja, j->wa);
-        }
-        if (i->slot_a == j->slot_b) {
-            sum += dot3(i->ja, j->wb);
-        }
-    }
-    if (i->slot_b < moving) {
-        if (i->slot_b == j->slot_a) {
-            sum += dot3(i->jb, j->wa);
-        }
-        if (i->slot_b == j->slot_b) {
-            sum += dot3(i->jb, j->wb);
-        }
-    }
-    return sum;
-}
-
 /* L·D·Lᵀ of the n × n symmetric `a` (row-major, RB_BLOCK_MAX_ROWS to a
  * row; its lower triangle is read) into `f`: L below the diagonal, 1/D
- * on it, so that a solve only multiplies. Column by column, each entry
- * less its products with the columns before, through v_k = L_jk·D_k.
+ * on it, so that a solve only multiplies. Row by row: with u_j = L_ij·D_j,
+ *
+ *     u_j = a_ij - Σ_{k<j} u_k·L_jk,   L_ij = u_j / D_j,
+ *     D_i = a_ii - Σ_{j<i} u_j·L_ij.
  *
  * Row i of `a` is 0 before column first[i] (its envelope), and so is row
- * i of L: L_ik = (a_ik - Σ_{m<k} L_im·D_m·L_km) / D_k vanishes for every
- * k < first[i] in turn (George and Liu, "Computer Solution of Large
- * Sparse Positive Definite Systems", 1981, §4.2). The sums therefore
- * start at the envelope, and L's entries before it are neither made nor
- * read: the leg's pins, a chain through the limb, leave a third of L
- * empty. All rows dense (first[i] = 0) is the plain factorisation.
- * False when a pivot is not positive beyond rounding (dependent rows). */
-static bool factor(const double *a, int n, const int *first, double *f)
+ * i of L: each u_j with j < first[i] sums only zeros in turn (George and
+ * Liu, "Computer Solution of Large Sparse Positive Definite Systems",
+ * 1981, §4.2). The sums therefore start at the envelope, and L's entries
+ * before it are neither made nor read: the leg's pins, a chain through
+ * the limb, leave a third of L empty. All rows dense (first[i] = 0) is
+ * the plain factorisation. False when a pivot is not positive beyond
+ * rounding (dependent rows). */
+static bool factor(const double *restrict a, int n, const int *restrict first, double *restrict f)
 {
-    double v[RB_BLOCK_MAX_ROWS], d[RB_BLOCK_MAX_ROWS];
-    for (int j = 0; j < n; ++j) {
-        double *row_j = f + j * RB_BLOCK_MAX_ROWS;
-        double pivot = a[j * RB_BLOCK_MAX_ROWS + j];
-        for (int k = first[j]; k < j; ++k) {
-            v[k] = row_j[k] * d[k];
-            pivot -= row_j[k] * v[k];
+    for (int i = 0; i < n; ++i) {
+        const double *a_i = a + i * RB_BLOCK_MAX_ROWS;
+        double *l_i = f + i * RB_BLOCK_MAX_ROWS;
+        double u[RB_BLOCK_MAX_ROWS];
+        double pivot = a_i[i];
+        for (int j = first[i]; j < i; ++j) {
+            const double *l_j = f + j * RB_BLOCK_MAX_ROWS;
+            double sum = a_i[j];
+            for (int k = first[i] > first[j] ? first[i] : first[j]; k < j; ++k) {
+                sum -= u[k] * l_j[k];
+            }
+            u[j] = sum;
+            l_i[j] = sum * l_j[j]; /* L_ij = u_j / D_j: f keeps 1/D_j */
+            pivot -= sum * l_i[j];
         }
-        if (!(pivot > 1e-12 * a[j * RB_BLOCK_MAX_ROWS + j])) {
+        if (!(pivot > 1e-12 * a_i[i])) {
             return false;
         }
-        d[j] = pivot;
-        row_j[j] = 1.0 / pivot;
-        for (int i = j + 1; i < n; ++i) {
-            if (first[i] > j) {
-                continue; /* L_ij = 0 */
-            }
-            double *row_i = f + i * RB_BLOCK_MAX_ROWS;
-            double sum = a[i * RB_BLOCK_MAX_ROWS + j];
-            for (int k = first[i] > first[j] ? first[i] : first[j]; k < j; ++k) {
-                sum -= row_i[k] * v[k];
-            }
-            row_i[j] = sum / pivot;
-        }
+        l_i[i] = 1.0 / pivot;
     }
     return true;
 }
@@ -364,31 +424,50 @@ static void solve_factored(const double *restrict f, int n, const int *restrict 
     }
 }
 
-/* Whether two rows act on a common body that moves (K_ij may be non-zero). */
-static bool share_a_body(const rb_joint_block *block, const rb_block_row *i, const rb_block_row *j)
-{
-    return (i->slot_a < block->body_count && (i->slot_a == j->slot_a || i->slot_a == j->slot_b)) ||
-           (i->slot_b < block->body_count && (i->slot_b == j->slot_a || i->slot_b == j->slot_b));
-}
-
-/* Each row's envelope and K's lower triangle within it: K is symmetric
- * and 0 outside the envelopes, so neither the zeros nor the upper
- * triangle are written (k_entry reads them). */
+/* Each row's envelope and K's lower triangle within it, body by body:
+ * K_ij = Σ_b J_ib·M_b⁻¹·J_jbᵀ over the moving bodies b that rows i and j
+ * both act on, and a cable's compliance on its diagonal. A row acts on
+ * at most two bodies, so each body's rows are listed once and each pair
+ * of them adds one product; K is symmetric and 0 outside the envelopes,
+ * so neither the zeros nor the upper triangle are written (k_entry reads
+ * them). Row i's envelope begins at the first row that acts on one of
+ * its moving bodies. */
 static void fill_k(rb_joint_block *block)
 {
-    int n = block->row_count;
+    const int n = block->row_count;
+    const int moving = block->body_count;
+    int count[RB_BLOCK_MAX_BODIES] = {0};
+    int rows_of[RB_BLOCK_MAX_BODIES][RB_BLOCK_MAX_ROWS];           /* each moving body's rows, in order */
+    const double *parts[RB_BLOCK_MAX_BODIES][RB_BLOCK_MAX_ROWS];   /* their J on that body */
+    const double *weights[RB_BLOCK_MAX_BODIES][RB_BLOCK_MAX_ROWS]; /* and M⁻¹·Jᵀ */
     for (int i = 0; i < n; ++i) {
-        weigh(block, &block->rows[i]);
-    }
-    for (int i = 0; i < n; ++i) {
-        const rb_block_row *row = &block->rows[i];
-        int first = 0;
-        while (first < i && !share_a_body(block, row, &block->rows[first])) {
-            ++first;
+        rb_block_row *row = &block->rows[i];
+        weigh(block, row);
+        int first = i;
+        const int slots[2] = {row->slot_a, row->slot_b};
+        for (int p = 0; p < 2; ++p) {
+            const int b = slots[p];
+            if (b < moving) {
+                first = count[b] > 0 && rows_of[b][0] < first ? rows_of[b][0] : first;
+                rows_of[b][count[b]] = i;
+                parts[b][count[b]] = p == 0 ? row->ja : row->jb;
+                weights[b][count[b]++] = p == 0 ? row->wa : row->wb;
+            }
         }
         block->first[i] = first;
-        for (int j = first; j <= i; ++j) {
-            block->k[i * RB_BLOCK_MAX_ROWS + j] = coupling(block, row, &block->rows[j]);
+        double *k_i = block->k + i * RB_BLOCK_MAX_ROWS;
+        for (int j = first; j < i; ++j) {
+            k_i[j] = 0.0;
+        }
+        k_i[i] = row->compliance;
+    }
+    for (int b = 0; b < moving; ++b) {
+        for (int p = 0; p < count[b]; ++p) {
+            double *k_p = block->k + rows_of[b][p] * RB_BLOCK_MAX_ROWS;
+            const double *j_p = parts[b][p];
+            for (int q = 0; q <= p; ++q) {
+                k_p[rows_of[b][q]] += dot3(j_p, weights[b][q]);
+            }
         }
     }
 }
@@ -426,10 +505,13 @@ void rb_joint_blocks_factor(rb_world *world, double h)
         for (int j = 0; j < block->joint_count; ++j) {
             add_pin(block, j, &world->joints[block->joints[j]]);
         }
-        int pins = block->row_count;
-        block->pin_rows = pins;
-        /* The limits after the pins, nearest first: a singular K drops
-         * the last. */
+        block->pin_rows = block->row_count;
+        add_cables(world, block, h);
+        block->closed = !block->touched && !pulled_from_outside(world, block);
+        block->settled = false;
+        int pins = block->row_count; /* the pins' and the cables' rows, which every substep keeps */
+        /* The limits after them, nearest first: a singular K drops the
+         * last. */
         double margins[RB_BLOCK_MAX_JOINTS];
         for (int j = 0; j < block->joint_count; ++j) {
             double margin = add_limit(world, block, j, &world->joints[block->joints[j]], h);
@@ -450,6 +532,9 @@ void rb_joint_blocks_factor(rb_world *world, double h)
                block->row_count > pins) {
             release_row(world, block, &block->rows[--block->row_count]);
         }
+        for (int c = 0; c < block->cable_rows; ++c) {
+            block->cables[c]->in_block = block->factored; /* or its own passes solve it */
+        }
         for (int j = 0; j < block->joint_count; ++j) {
             rb_joint *joint = &world->joints[block->joints[j]];
             if (joint->in_block != block->factored) {
@@ -467,6 +552,12 @@ void rb_joint_blocks_factor(rb_world *world, double h)
 static double row_rate(const rb_block_row *row, const double *v)
 {
     return row->bias + dot3(row->ja, v + 3 * row->slot_a) + dot3(row->jb, v + 3 * row->slot_b);
+}
+
+/* The same for a cable's row, whose rate grows with its impulse so far. */
+static double cable_rate(const rb_block_row *row, const double *v)
+{
+    return row_rate(row, v) + row->compliance * *row->accumulated;
 }
 
 /* Solves K_SS·x_S = rhs_S - K_SF·x_F for the rows in S (free[i]), the
@@ -507,7 +598,7 @@ static void solve_subset(const rb_joint_block *block, const bool *free, const do
 /* One velocity pass over a factored block. Out of line: its frame (some
  * 3 kB of rows and right-hand sides) is then set up only for a block, not
  * in every pass of a world that has none. */
-static __attribute__((noinline)) void solve_block_velocities(rb_world *world, const rb_joint_block *block)
+static __attribute__((noinline)) void solve_block_velocities(rb_world *world, rb_joint_block *block)
 {
     double v[3 * (RB_BLOCK_MAX_BODIES + 1)] = {0};
     for (int b = 0; b < block->body_count; ++b) {
@@ -519,14 +610,17 @@ static __attribute__((noinline)) void solve_block_velocities(rb_world *world, co
     int rows = block->row_count;
     double rhs[RB_BLOCK_MAX_ROWS], x[RB_BLOCK_MAX_ROWS];
     bool free[RB_BLOCK_MAX_ROWS];
+    const int cables_end = block->pin_rows + block->cable_rows;
     for (int i = 0; i < rows; ++i) {
-        rhs[i] = -row_rate(&block->rows[i], v);
+        const rb_block_row *row = &block->rows[i];
+        rhs[i] = -(i >= block->pin_rows && i < cables_end ? cable_rate(row, v) : row_rate(row, v));
         x[i] = rhs[i];
         free[i] = true;
     }
     solve_factored(block->factor, rows, block->first, x);
-    /* Release the limit that would pull hardest, then solve the rest
-     * again, until none pulls (the limits' rows follow the pins'). */
+    /* Release the limit or cable that would pull hardest, then solve the
+     * rest again, until none pulls (their rows follow the pins'). */
+    block->settled = true;
     for (;;) {
         int worst = -1;
         double most = 0.0;
@@ -542,6 +636,7 @@ static __attribute__((noinline)) void solve_block_velocities(rb_world *world, co
             break;
         }
         free[worst] = false;
+        block->settled = false; /* the rows left may now need what was released */
         x[worst] = -*block->rows[worst].accumulated;
         solve_subset(block, free, rhs, x);
     }
@@ -570,8 +665,9 @@ void rb_joint_blocks_solve_velocities(rb_world *world)
 {
     rb_joint_blocks *blocks = &world->joint_blocks;
     for (int n = 0; n < blocks->count; ++n) {
-        if (blocks->blocks[n].factored) {
-            solve_block_velocities(world, &blocks->blocks[n]);
+        rb_joint_block *block = &blocks->blocks[n];
+        if (block->factored && !(block->closed && block->settled)) {
+            solve_block_velocities(world, block);
         }
     }
 }

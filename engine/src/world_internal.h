@@ -434,6 +434,7 @@ typedef struct rb_cable {
     double speed_gain;   /* kg: h·c / (1 + h·c·k) */
     double base_impulse; /* N·s: h·T0 / (1 + h·c·k) */
     double impulse_gain; /* h·c·k / (1 + h·c·k) */
+    bool in_block;       /* this substep, its law is a row of a limb block (joint_block.h), not a pass of its own */
 } rb_cable;
 
 /* Ordered by use: what every velocity pass and every walk over the slots
@@ -533,22 +534,36 @@ typedef struct rb_joint_tree {
 /* The small limbs solved as one dense system (joint_block.h). */
 #define RB_BLOCK_MAX_BODIES 4
 #define RB_BLOCK_MAX_JOINTS 4
-#define RB_BLOCK_MAX_ROWS (3 * RB_BLOCK_MAX_JOINTS) /* two pin rows and one limit a joint */
-#define RB_MAX_JOINT_BLOCKS 4                       /* further blocks are left to Gauss-Seidel */
+#define RB_BLOCK_MAX_CABLES 8 /* further cables on a block's bodies are left to their own passes */
+/* two pin rows and one limit a joint, and a row a cable */
+#define RB_BLOCK_MAX_ROWS (3 * RB_BLOCK_MAX_JOINTS + RB_BLOCK_MAX_CABLES)
+#define RB_MAX_JOINT_BLOCKS 4 /* further blocks are left to Gauss-Seidel */
 
-/* One row of a block: J·v + bias = 0, its impulse kept in the joint. */
+/* One row of a block: J·v + bias + compliance·P = 0, P its accumulated
+ * impulse, kept in the joint or the cable. */
 typedef struct rb_block_row {
     int slot_a, slot_b;  /* the bodies' places in the block; RB_BLOCK_MAX_BODIES for a fixed body */
     double ja[3], jb[3]; /* the Jacobian on A and on B: (vx, vy, ω) */
     double wa[3], wb[3]; /* M⁻¹·Jᵀ: the velocity change of a unit impulse on A and on B */
     double bias;         /* m/s or rad/s */
-    double *accumulated; /* the joint's impulse of this row, N·s or N·m·s */
-    bool one_sided;      /* a limit: its accumulated impulse stays >= 0 */
+    double compliance;   /* 1/kg or 1/(kg·m²): 0 for a joint's rigid row, 1/(h·c) for a cable's */
+    double *accumulated; /* the joint's or the cable's impulse of this row, N·s or N·m·s */
+    bool one_sided;      /* a limit or a cable: its accumulated impulse stays >= 0 */
 } rb_block_row;
 
 typedef struct rb_joint_block {
     int body_count, joint_count, row_count;
-    int pin_rows;                     /* the rows before the limits' */
+    int pin_rows;                          /* the pins' rows, first */
+    int cable_rows;                        /* the cables' rows, after the pins' and before the limits' */
+    rb_cable *cables[RB_BLOCK_MAX_CABLES]; /* this substep, the cables of those rows, in their order */
+    bool touched;                          /* this step, a contact acts on one of its bodies */
+    /* This substep, nothing outside the block acts on its bodies: no
+     * contact, and no damped cable that is not one of its rows. */
+    bool closed;
+    /* This substep, the last pass released no row: it solved the block
+     * exactly, and a closed block's bodies keep those velocities through
+     * the later passes, which skip it (joint_block.h). */
+    bool settled;
     int bodies[RB_BLOCK_MAX_BODIES];  /* body slots */
     int joints[RB_BLOCK_MAX_JOINTS];  /* joint slots */
     int ends[RB_BLOCK_MAX_JOINTS][2]; /* each joint's bodies' places (A, B), as rb_block_row's */
