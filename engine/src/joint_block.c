@@ -255,7 +255,7 @@ static int moving_slot(const rb_world *world, const rb_joint_block *block, const
  *     J·v + P/(h·c) - T0/c = 0,
  *
  * a row whose compliance 1/(h·c) adds to K's diagonal: a soft constraint
- * (Catto, "Soft Step", GDC 2011; Servin, Lacoursière and Melin,
+ * (Catto, "Soft Constraints", GDC 2011; Servin, Lacoursière and Melin,
  * "Interactive simulation of elastic deformable materials", 2006), one
  * sided because a cable only pulls. An undamped cable (c = 0) is a
  * tension the passes apply whatever the velocities, and stays theirs. */

@@ -45,6 +45,22 @@
  * limits (a loop at a dead centre) leaves the joints to Gauss-Seidel for
  * the substep.
  *
+ * The muscles. A damped cable whose moving bodies (at most two) are the
+ * block's is a row of it, between the pins' and the limits': its
+ * implicit law (cable.c) at the substep's end, P = h·(T0 + c·L') with
+ * L' = -J·v, is the soft row J·v + P/(h·c) - T0/c = 0, whose compliance
+ * 1/(h·c) adds to K's diagonal; it pulls, never pushes, like a limit.
+ * Solved one at a time around the block, each cable's pass would push
+ * the bodies against their own masses and the block would take most of
+ * it back: the mass ratio again, which would leave the leg's ankle
+ * degrees from its converged course at 4 passes. A cable over more bodies, or undamped (a
+ * set tension, which its own pass applies once), keeps its own pass.
+ *
+ * The later passes. A block that nothing else acts on (no contact, no
+ * damped cable that is not its row) and whose pass released no row has
+ * its exact solution: the passes after it would find every row met, so
+ * they skip it (`closed` and `settled`).
+ *
  * The position passes stay Gauss-Seidel (rb_revolute_correct): what the
  * velocity solve leaves is a substep's drift, not a load.
  */
@@ -66,14 +82,17 @@
  * (rb_joints_collect_active), before the trees are built. */
 void rb_joint_blocks_build(rb_world *world);
 
-/* At each substep, after the joints' frames are prepared and warm
- * started (rb_joints_warm_start): chooses the rows that act and factors
+/* At each substep, after the cables are prepared and warm started
+ * (rb_cables_prepare, rb_cables_warm_start) and the joints' frames
+ * (rb_joints_warm_start): chooses the rows that act, takes the cables
+ * that pull on the block's bodies alone (rb_cable.in_block), and factors
  * each block's K at the substep's anchors. */
 void rb_joint_blocks_factor(rb_world *world, double h);
 
 /* One velocity pass over the blocks: each block's impulses solved at
- * once, applied to its bodies and added to its joints' accumulated
- * impulses. */
+ * once, applied to its bodies and added to its joints' and cables'
+ * accumulated impulses; a closed block that the last pass solved is
+ * skipped. */
 void rb_joint_blocks_solve_velocities(rb_world *world);
 
 #endif
