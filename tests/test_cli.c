@@ -132,6 +132,76 @@ Test(cli, a_bone_past_its_strength_is_warned_of)
     rmdir(dir);
 }
 
+/* The field at `column` (0-based) of a CSV line without quoted commas,
+ * as a number. */
+static double field_at(const char *line, int column)
+{
+    for (int c = 0; c < column && line != NULL; ++c) {
+        line = strchr(line, ',');
+        line = line != NULL ? line + 1 : NULL;
+    }
+    cr_assert_not_null(line, "the row has no column %d", column);
+    return strtod(line, NULL);
+}
+
+/* The column named `name` in a CSV header, or -1. */
+static int column_of(const char *header, const char *name)
+{
+    const size_t length = strlen(name);
+    int column = 0;
+    for (const char *c = header; c != NULL; c = strchr(c, ','), c = c != NULL ? c + 1 : NULL, ++column) {
+        if (strncmp(c, name, length) == 0 && (c[length] == ',' || c[length] == '\n' || c[length] == '\0')) {
+            return column;
+        }
+    }
+    return -1;
+}
+
+Test(cli, a_bone_is_warned_of_at_the_first_frame_it_would_break)
+{
+    /* The leg with every muscle at 1 drives its fibula past its strength
+     * a third of a second in, and the muscles then hold it there: its
+     * safety factor stays on a plateau, the same to 1e-12, whose lowest
+     * frame rounding alone picks. The warning gives the first frame
+     * below 1, read here from the run's own CSV. */
+    char dir[] = "/tmp/sinew-cli-XXXXXX";
+    cr_assert_not_null(mkdtemp(dir));
+    char args[512], log[600], csv[600];
+    snprintf(log, sizeof log, "%s/log.txt", dir);
+    snprintf(csv, sizeof csv, "%s/leg.csv", dir);
+    snprintf(args, sizeof args,
+             "run leg --variant 'All Muscles' --activation Soleus=1 --activation 'Gastrocnemius Lateral=1' "
+             "--activation 'Gastrocnemius Medial=1' --activation 'Tibialis Anterior=1' --duration 1 --out '%s'",
+             dir);
+    cr_assert_eq(run_sinew(args, log), 0, "sinew run failed; see %s", log);
+    static char line[1 << 16], text[1 << 16];
+    FILE *f = fopen(csv, "r");
+    cr_assert_not_null(f);
+    cr_assert_not_null(fgets(line, sizeof line, f));
+    const int time_column = column_of(line, "time_s");
+    const int factor_column = column_of(line, "Fibula.safety_factor");
+    cr_assert(time_column >= 0 && factor_column >= 0, "the CSV's header names time_s and Fibula.safety_factor");
+    double first_below = -1.0;
+    while (first_below < 0.0 && fgets(line, sizeof line, f) != NULL) {
+        first_below = field_at(line, factor_column) < 1.0 ? field_at(line, time_column) : -1.0;
+    }
+    fclose(f);
+    cr_assert_gt(first_below, 0.0, "the fibula's factor fell below 1 in the run");
+    f = fopen(log, "r");
+    cr_assert_not_null(f);
+    text[fread(text, 1, sizeof text - 1, f)] = '\0';
+    fclose(f);
+    char expected[120];
+    snprintf(expected, sizeof expected, "warning: bone \"Fibula\" would break at %.3f s:", first_below);
+    cr_expect_not_null(strstr(text, expected), "\"%s\" in: %s", expected, text);
+    remove(csv);
+    char sidecar[700];
+    snprintf(sidecar, sizeof sidecar, "%s-metadata.json", csv);
+    remove(sidecar);
+    remove(log);
+    rmdir(dir);
+}
+
 Test(cli, bad_arguments_fail_with_one_line_and_no_file)
 {
     char dir[] = "/tmp/sinew-cli-XXXXXX";

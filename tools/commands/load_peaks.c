@@ -6,6 +6,11 @@
 
 #include "load_peaks.h"
 
+/* A bone's factor is lower than the lowest so far when it is lower by
+ * more than this fraction, well above the last bits a steady load's
+ * rounding moves it by (the leg's fibula under its muscles: 1e-12). */
+#define LOWER_BY 1e-9
+
 static void reset(load_peak *peaks, int count)
 {
     for (int i = 0; i < count; ++i) {
@@ -26,7 +31,8 @@ bool load_peaks_start(load_peaks *peaks, const mu_model *model)
         return false;
     }
     for (int b = 0; b < bones; ++b) {
-        peaks->bones[b] = (stress_peak){NAN, NAN, NAN, NAN};
+        const stress_sample none = {NAN, NAN, NAN, NAN};
+        peaks->bones[b] = (stress_peak){none, none};
     }
     reset(peaks->hinges, hinges);
     reset(peaks->glues, glues);
@@ -67,9 +73,17 @@ void load_peaks_track(load_peaks *peaks, const mu_model *model, const frame_load
     for (int b = 0; b < mu_model_description(model)->bone_count; ++b) {
         const mu_bone_stress stress = frame->bones[b];
         stress_peak *peak = &peaks->bones[b];
-        /* The first frame's, then any lower (NaN: the bone does not move). */
-        if (!isnan(stress.worst.stress) && !(stress.worst.safety_factor >= peak->safety_factor)) {
-            *peak = (stress_peak){stress.worst.safety_factor, time, stress.worst.stress, stress.worst.s};
+        if (isnan(stress.worst.stress)) {
+            continue; /* the bone does not move */
+        }
+        const stress_sample now = {stress.worst.safety_factor, time, stress.worst.stress, stress.worst.s};
+        /* The first frame's, then any lower by more than rounding: a
+         * plateau keeps its first frame. */
+        if (!(now.safety_factor >= peak->lowest.safety_factor * (1.0 - LOWER_BY))) {
+            peak->lowest = now;
+        }
+        if (isnan(peak->first_break.time) && now.safety_factor < 1.0) {
+            peak->first_break = now;
         }
     }
 }
@@ -100,19 +114,19 @@ void load_peaks_print(const load_peaks *peaks, const mu_model *model)
     const mu_model_desc *desc = mu_model_description(model);
     first = true;
     for (int b = 0; b < desc->bone_count; ++b) {
-        const stress_peak *peak = &peaks->bones[b];
-        if (isnan(peak->time)) {
+        const stress_sample *lowest = &peaks->bones[b].lowest;
+        const stress_sample *breaks = &peaks->bones[b].first_break;
+        if (isnan(lowest->time)) {
             continue;
         }
-        const bool breaks = peak->safety_factor < 1.0;
         printf("%-13s%-24s safety factor %.3g at %.3f s: %.4g MPa at %+.4f m from its centre%s\n",
-               first ? "bone stress" : "", desc->bones[b].name, peak->safety_factor, peak->time, peak->stress / 1e6,
-               peak->section, breaks ? " (below 1: it would break)" : "");
-        if (breaks) {
+               first ? "bone stress" : "", desc->bones[b].name, lowest->safety_factor, lowest->time,
+               lowest->stress / 1e6, lowest->section, isnan(breaks->time) ? "" : " (below 1: it would break)");
+        if (!isnan(breaks->time)) {
             fprintf(stderr,
                     "warning: bone \"%s\" would break at %.3f s: safety factor %.3g, stress %.4g MPa at %+.4f m "
                     "from its centre\n",
-                    desc->bones[b].name, peak->time, peak->safety_factor, peak->stress / 1e6, peak->section);
+                    desc->bones[b].name, breaks->time, breaks->safety_factor, breaks->stress / 1e6, breaks->section);
         }
         first = false;
     }

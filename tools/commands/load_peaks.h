@@ -20,9 +20,18 @@ typedef struct load_peak {
     double muscle_torque, muscle_torque_time; /* N·m, s */
 } load_peak;
 
-typedef struct stress_peak {
-    double safety_factor, time; /* the lowest factor, NaN before any, and when, s */
+/* A bone's worst section in one frame. */
+typedef struct stress_sample {
+    double safety_factor, time; /* and when, s; NaN: no such frame yet */
     double stress, section;     /* Pa (> 0 tension) and m along the bone, there and then */
+} stress_sample;
+
+typedef struct stress_peak {
+    stress_sample lowest; /* the lowest factor */
+    /* The first frame whose factor fell below 1: when the bone would
+     * break. A load held steady keeps the factor on a plateau, where the
+     * lowest frame is chosen by rounding, not by the load. */
+    stress_sample first_break;
 } stress_peak;
 
 typedef struct load_peaks {
@@ -36,8 +45,9 @@ bool load_peaks_start(load_peaks *peaks, const mu_model *model);
 /* Takes the frame's loads, read at `time` (s). */
 void load_peaks_track(load_peaks *peaks, const mu_model *model, const frame_loads *frame, double time);
 /* Prints the summary's "peak load" lines, one per joint built, and its
- * "bone stress" lines, one per bone that moves; a bone whose factor fell
- * below 1 is also warned of on stderr (it would break). */
+ * "bone stress" lines, one per bone that moves, at its lowest factor; a
+ * bone whose factor fell below 1 is also warned of on stderr, at the
+ * first frame it did (it would break then). */
 void load_peaks_print(const load_peaks *peaks, const mu_model *model);
 void load_peaks_free(load_peaks *peaks);
 
