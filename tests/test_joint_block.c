@@ -403,6 +403,42 @@ Test(joint_block, a_cable_over_three_moving_bodies_stays_gauss_seidels_and_opens
     destroy_world_and_expect_no_leak(world);
 }
 
+Test(joint_block, cables_damped_as_stiffly_as_pins_are_given_back_and_the_block_keeps_its_joints)
+{
+    /* The limb's pins leave it one freedom. Two cables damped at
+     * RB_MAX_FORCE are rows of compliance 1/(h·c) = 6e-13 1/kg: K is
+     * singular to rounding, and the block gives the cables back to their
+     * own passes rather than its joints to Gauss-Seidel. A cable damped
+     * so lightly that T0/c overflows never joins. */
+    limb l = make_limb(20000.0);
+    rb_world *world = l.world;
+    rb_cable_id stiff[2] = {add_cable(&l, false, 500.0, RB_MAX_FORCE), add_cable(&l, false, 400.0, RB_MAX_FORCE)};
+    rb_cable_id slack = add_cable(&l, false, 500.0, 1e-310);
+    shake(&l, 1.0);
+    prepare(world, 1.0 / 600.0);
+    cr_assert_eq(world->joint_blocks.count, 1);
+    const rb_joint_block *block = &world->joint_blocks.blocks[0];
+    cr_expect(block->factored, "the block keeps its joints");
+    cr_expect_eq(block->cable_rows, 0);
+    cr_expect_eq(block->row_count, 8, "the four pins, %d rows", block->row_count);
+    for (int c = 0; c < 2; ++c) {
+        cr_expect_not(world->cables[stiff[c].index].in_block, "stiff cable %d is its own passes'", c);
+    }
+    cr_expect_not(world->cables[slack.index].in_block, "the slack cable is its own passes'");
+    cr_expect_not(block->closed, "the cables act on the limb from outside the block");
+    for (int step = 0; step < 30; ++step) {
+        cr_assert_eq(rb_world_step(world, TEST_DT), RB_OK, "%s", rb_last_error());
+    }
+    for (int i = 0; i < 3; ++i) {
+        const rb_body_state *s = &world->states[l.bodies[i].index];
+        cr_expect(isfinite(s->center.x) && isfinite(s->center.y) && isfinite(s->angular_velocity),
+                  "body %d finite after half a second", i);
+    }
+    cr_expect_lt(fabs(rb_revolute_joint_angle(world, l.hinges[2])), ANKLE_RANGE + 0.01 * DEG,
+                 "the ankle within its stops: %g degrees", rb_revolute_joint_angle(world, l.hinges[2]) / DEG);
+    destroy_world_and_expect_no_leak(world);
+}
+
 /* The farthest the ankle went past its stops over `seconds` of 60 Hz
  * steps of 10 substeps of 4 velocity and 1 position pass, the leg's
  * budget (rad). */

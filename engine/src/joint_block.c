@@ -258,14 +258,19 @@ static int moving_slot(const rb_world *world, const rb_joint_block *block, const
  * (Catto, "Soft Constraints", GDC 2011; Servin, Lacoursière and Melin,
  * "Interactive simulation of elastic deformable materials", 2006), one
  * sided because a cable only pulls. An undamped cable (c = 0) is a
- * tension the passes apply whatever the velocities, and stays theirs. */
+ * tension the passes apply whatever the velocities, and stays theirs, as
+ * does one so lightly damped that 1/(h·c) or T0/c overflows. */
 static void add_cables(rb_world *world, rb_joint_block *block, double h)
 {
     block->cable_rows = 0;
     for (int c = 0; c < world->cable_slots && block->cable_rows < RB_BLOCK_MAX_CABLES; ++c) {
         rb_cable *cable = &world->cables[c];
-        if (!cable->in_use || cable->in_block || !(cable->damping > 0.0) || cable->share_count == 0 ||
-            cable->share_count > 2) {
+        if (!cable->in_use || !(cable->damping > 0.0) || cable->share_count == 0 || cable->share_count > 2) {
+            continue;
+        }
+        const double compliance = 1.0 / (h * cable->damping);
+        const double bias = -cable->base_tension / cable->damping;
+        if (!isfinite(compliance) || !isfinite(bias)) {
             continue;
         }
         int slots[2] = {RB_BLOCK_MAX_BODIES, RB_BLOCK_MAX_BODIES};
@@ -282,11 +287,22 @@ static void add_cables(rb_world *world, rb_joint_block *block, double h)
         if (!inside) {
             continue;
         }
-        add_row(block, slots[0], slots[1], j[0], j[1], -cable->base_tension / cable->damping, &cable->impulse, true);
-        block->rows[block->row_count - 1].compliance = 1.0 / (h * cable->damping);
+        add_row(block, slots[0], slots[1], j[0], j[1], bias, &cable->impulse, true);
+        block->rows[block->row_count - 1].compliance = compliance;
         block->cables[block->cable_rows++] = cable;
-        cable->in_block = true; /* taken: no other block adds it */
     }
+}
+
+/* Gives the block's cables back to their own passes: their rows go, and
+ * the limits' follow the pins'. Their impulses so far stay theirs. */
+static void drop_cables(rb_joint_block *block)
+{
+    const int limits_start = block->pin_rows + block->cable_rows;
+    for (int i = limits_start; i < block->row_count; ++i) {
+        block->rows[i - block->cable_rows] = block->rows[i];
+    }
+    block->row_count -= block->cable_rows;
+    block->cable_rows = 0;
 }
 
 /* Whether a damped cable that is not the block's pulls on one of its
@@ -507,9 +523,8 @@ void rb_joint_blocks_factor(rb_world *world, double h)
         }
         block->pin_rows = block->row_count;
         add_cables(world, block, h);
-        block->closed = !block->touched && !pulled_from_outside(world, block);
         block->settled = false;
-        int pins = block->row_count; /* the pins' and the cables' rows, which every substep keeps */
+        const int pins = block->row_count; /* the pins' and the cables' rows */
         /* The limits after them, nearest first: a singular K drops the
          * last. */
         double margins[RB_BLOCK_MAX_JOINTS];
@@ -528,13 +543,23 @@ void rb_joint_blocks_factor(rb_world *world, double h)
             block->rows[pins + i] = row;
         }
         fill_k(block);
-        while (!(block->factored = factor(block->k, block->row_count, block->first, block->factor)) &&
-               block->row_count > pins) {
+        block->factored = factor(block->k, block->row_count, block->first, block->factor);
+        if (!block->factored && block->cable_rows > 0) {
+            /* Cables damped almost as stiffly as pins, more of them than
+             * the pins leave freedoms, make K singular too: the block keeps
+             * its joints and gives the cables back. */
+            drop_cables(block);
+            fill_k(block);
+            block->factored = factor(block->k, block->row_count, block->first, block->factor);
+        }
+        while (!block->factored && block->row_count > block->pin_rows) {
             release_row(world, block, &block->rows[--block->row_count]);
+            block->factored = factor(block->k, block->row_count, block->first, block->factor);
         }
         for (int c = 0; c < block->cable_rows; ++c) {
             block->cables[c]->in_block = block->factored; /* or its own passes solve it */
         }
+        block->closed = !block->touched && !pulled_from_outside(world, block);
         for (int j = 0; j < block->joint_count; ++j) {
             rb_joint *joint = &world->joints[block->joints[j]];
             if (joint->in_block != block->factored) {
