@@ -53,8 +53,10 @@
  * Solved one at a time around the block, each cable's pass would push
  * the bodies against their own masses and the block would take most of
  * it back: the mass ratio again, which would leave the leg's ankle
- * degrees from its converged course at 4 passes. A cable over more bodies, or undamped (a
- * set tension, which its own pass applies once), keeps its own pass.
+ * degrees from its converged course at 4 passes. A cable over more
+ * bodies, or undamped (a set tension, which its own pass applies once),
+ * keeps its own pass, and cables damped so stiffly that they make K
+ * singular are given back to theirs before any limit is left out.
  *
  * The later passes. A block that nothing else acts on (no contact, no
  * damped cable that is not its row) and whose pass released no row has
