@@ -388,10 +388,10 @@ static double dot3(const double *x, const double *y) { return x[0] * y[0] + x[1]
  * i of L: each u_j with j < first[i] sums only zeros in turn (George and
  * Liu, "Computer Solution of Large Sparse Positive Definite Systems",
  * 1981, §4.2). The sums therefore start at the envelope, and L's entries
- * before it are neither made nor read: the leg's pins, a chain through
- * the limb, leave a third of L empty. All rows dense (first[i] = 0) is
- * the plain factorisation. False when a pivot is not positive beyond
- * rounding (dependent rows). */
+ * before it are neither made nor read: the leg's block, its pins a chain
+ * through the limb, leaves a quarter of L empty. All rows dense
+ * (first[i] = 0) is the plain factorisation. False when a pivot is not
+ * positive beyond rounding (dependent rows). */
 static bool factor(const double *restrict a, int n, const int *restrict first, double *restrict f)
 {
     for (int i = 0; i < n; ++i) {
