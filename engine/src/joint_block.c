@@ -205,8 +205,8 @@ void rb_joint_blocks_build(rb_world *world)
 /* Appends the row J·v + bias = 0 of a joint between the bodies in
  * places slot_a and slot_b, J = (ja on A, jb on B); its weights M⁻¹·Jᵀ
  * are made with K (fill_k). */
-static void add_row(rb_joint_block *block, int slot_a, int slot_b, const double ja[3], const double jb[3], double bias,
-                    double *accumulated, bool one_sided)
+static inline void add_row(rb_joint_block *block, int slot_a, int slot_b, const double ja[3], const double jb[3],
+                           double bias, double *accumulated, bool one_sided)
 {
     rb_block_row *row = &block->rows[block->row_count++];
     row->slot_a = slot_a;
@@ -625,7 +625,9 @@ static void solve_subset(const rb_joint_block *block, const bool *free, const do
  * in every pass of a world that has none. */
 static __attribute__((noinline)) void solve_block_velocities(rb_world *world, rb_joint_block *block)
 {
-    double v[3 * (RB_BLOCK_MAX_BODIES + 1)] = {0};
+    double v[3 * (RB_BLOCK_MAX_BODIES + 1)];
+    double *fixed = v + 3 * RB_BLOCK_MAX_BODIES; /* every fixed body's place: no velocity */
+    fixed[0] = fixed[1] = fixed[2] = 0.0;
     for (int b = 0; b < block->body_count; ++b) {
         const rb_body_state *s = &world->states[block->bodies[b]];
         v[3 * b] = s->linear_velocity.x;
