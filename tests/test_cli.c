@@ -94,26 +94,54 @@ Test(cli, a_run_writes_one_row_per_frame_with_every_readout)
     cr_expect_eq(rmdir(dir), 0, "%s holds more than the run wrote", dir);
 }
 
+/* Reads the file at `path` into `text`, NUL-terminated. */
+static void read_text(const char *path, char *text, size_t size)
+{
+    FILE *f = fopen(path, "r");
+    cr_assert_not_null(f, "cannot open %s", path);
+    text[fread(text, 1, size - 1, f)] = '\0';
+    fclose(f);
+}
+
+/* A run's own folder under /tmp, its log and its CSV there. */
+typedef struct run_files {
+    char dir[32], log[600], csv[600];
+} run_files;
+
+static void make_run_files(run_files *files, const char *csv_name)
+{
+    snprintf(files->dir, sizeof files->dir, "/tmp/sinew-cli-XXXXXX");
+    cr_assert_not_null(mkdtemp(files->dir));
+    snprintf(files->log, sizeof files->log, "%s/log.txt", files->dir);
+    snprintf(files->csv, sizeof files->csv, "%s/%s", files->dir, csv_name);
+}
+
+/* Removes the CSV, its metadata sidecar and the log, then their folder. */
+static void remove_run(const run_files *files)
+{
+    remove(files->csv);
+    char sidecar[700];
+    snprintf(sidecar, sizeof sidecar, "%s-metadata.json", files->csv);
+    remove(sidecar);
+    remove(files->log);
+    rmdir(files->dir);
+}
+
 /* The forearm swung into the elbow's limit with 5 kg: the rigid stop
  * loads the ulna past its strength (docs/loads.md), and the summary and
  * stderr say so; holding 1 kg at rest breaks nothing. */
 Test(cli, a_bone_past_its_strength_is_warned_of)
 {
-    char dir[] = "/tmp/sinew-cli-XXXXXX";
-    cr_assert_not_null(mkdtemp(dir));
-    char args[512], log[600], csv[600];
-    snprintf(log, sizeof log, "%s/log.txt", dir);
-    snprintf(csv, sizeof csv, "%s/arm.csv", dir);
+    run_files files;
+    make_run_files(&files, "arm.csv");
+    char args[512];
     static char text[1 << 16];
     const char *const runs[] = {"--weight 5 --activation 'Biceps Short=1'",
                                 "--weight 1 --activation 'Biceps Long=0.3'"};
     for (int r = 0; r < 2; ++r) {
-        snprintf(args, sizeof args, "run arm %s --duration 2 --out '%s'", runs[r], dir);
-        cr_assert_eq(run_sinew(args, log), 0, "sinew run failed; see %s", log);
-        FILE *f = fopen(log, "r");
-        cr_assert_not_null(f);
-        text[fread(text, 1, sizeof text - 1, f)] = '\0';
-        fclose(f);
+        snprintf(args, sizeof args, "run arm %s --duration 2 --out '%s'", runs[r], files.dir);
+        cr_assert_eq(run_sinew(args, files.log), 0, "sinew run failed; see %s", files.log);
+        read_text(files.log, text, sizeof text);
         cr_expect_not_null(strstr(text, "bone stress  Humerus "), "a bone stress line per bone: %s", text);
         const char *warning = strstr(text, "warning: bone \"Ulna\" would break at 1.800 s: safety factor 0.6");
         const char *marked = strstr(text, "(below 1: it would break)");
@@ -124,12 +152,7 @@ Test(cli, a_bone_past_its_strength_is_warned_of)
             cr_expect(warning == NULL && marked == NULL, "nothing breaks holding 1 kg: %s", text);
         }
     }
-    remove(csv);
-    char sidecar[700];
-    snprintf(sidecar, sizeof sidecar, "%s-metadata.json", csv);
-    remove(sidecar);
-    remove(log);
-    rmdir(dir);
+    remove_run(&files);
 }
 
 /* The field at `column` (0-based) of a CSV line without quoted commas,
@@ -164,18 +187,16 @@ Test(cli, a_bone_is_warned_of_at_the_first_frame_it_would_break)
      * safety factor stays on a plateau, the same to 1e-12, whose lowest
      * frame rounding alone picks. The warning gives the first frame
      * below 1, read here from the run's own CSV. */
-    char dir[] = "/tmp/sinew-cli-XXXXXX";
-    cr_assert_not_null(mkdtemp(dir));
-    char args[512], log[600], csv[600];
-    snprintf(log, sizeof log, "%s/log.txt", dir);
-    snprintf(csv, sizeof csv, "%s/leg.csv", dir);
+    run_files files;
+    make_run_files(&files, "leg.csv");
+    char args[512];
     snprintf(args, sizeof args,
              "run leg --variant 'All Muscles' --activation Soleus=1 --activation 'Gastrocnemius Lateral=1' "
              "--activation 'Gastrocnemius Medial=1' --activation 'Tibialis Anterior=1' --duration 1 --out '%s'",
-             dir);
-    cr_assert_eq(run_sinew(args, log), 0, "sinew run failed; see %s", log);
+             files.dir);
+    cr_assert_eq(run_sinew(args, files.log), 0, "sinew run failed; see %s", files.log);
     static char line[1 << 16], text[1 << 16];
-    FILE *f = fopen(csv, "r");
+    FILE *f = fopen(files.csv, "r");
     cr_assert_not_null(f);
     cr_assert_not_null(fgets(line, sizeof line, f));
     const int time_column = column_of(line, "time_s");
@@ -187,19 +208,11 @@ Test(cli, a_bone_is_warned_of_at_the_first_frame_it_would_break)
     }
     fclose(f);
     cr_assert_gt(first_below, 0.0, "the fibula's factor fell below 1 in the run");
-    f = fopen(log, "r");
-    cr_assert_not_null(f);
-    text[fread(text, 1, sizeof text - 1, f)] = '\0';
-    fclose(f);
+    read_text(files.log, text, sizeof text);
     char expected[120];
     snprintf(expected, sizeof expected, "warning: bone \"Fibula\" would break at %.3f s:", first_below);
     cr_expect_not_null(strstr(text, expected), "\"%s\" in: %s", expected, text);
-    remove(csv);
-    char sidecar[700];
-    snprintf(sidecar, sizeof sidecar, "%s-metadata.json", csv);
-    remove(sidecar);
-    remove(log);
-    rmdir(dir);
+    remove_run(&files);
 }
 
 Test(cli, bad_arguments_fail_with_one_line_and_no_file)
