@@ -439,6 +439,60 @@ Test(joint_block, cables_damped_as_stiffly_as_pins_are_given_back_and_the_block_
     destroy_world_and_expect_no_leak(world);
 }
 
+Test(joint_block, a_block_that_cannot_factor_gives_its_pins_back_ready_to_solve)
+{
+    /* A heavy femur pinned to the ground and a light tibia hanging from
+     * it by two limited hinges at one anchor: their rows repeat, K is
+     * singular without a limit to leave out, and the block gives the
+     * pins back to Gauss-Seidel, which needs each pin's K made: the warm
+     * start leaves that to the block. Held so, the tibia stays on the
+     * femur. */
+    rb_world *world = make_world(rb_v2(0.0, -9.8));
+    rb_body_id ground = make_body(world, RB_BODY_STATIC, rb_v2(0.0, 0.0), 0.0);
+    rb_body_id femur = add_bone(world, rb_v2(0.24, 0.0), 0.48, 0.05, 20000.0);
+    rb_body_id tibia = add_bone(world, rb_v2(0.48, -0.18), 0.03, 0.36, 1000.0);
+    (void)hinge(world, ground, femur, rb_v2(0.0, 0.0), 90.0 * DEG);
+    rb_joint_id knees[2] = {hinge(world, femur, tibia, rb_v2(0.48, 0.0), 90.0 * DEG),
+                            hinge(world, femur, tibia, rb_v2(0.48, 0.0), 90.0 * DEG)};
+    rb_solver_settings settings = rb_world_solver_settings(world);
+    settings.substeps = 10;
+    settings.velocity_iterations = 4;
+    cr_assert_eq(rb_world_set_solver_settings(world, &settings), RB_OK, "%s", rb_last_error());
+    prepare(world, 1.0 / 600.0);
+    cr_assert_eq(world->joint_blocks.count, 1);
+    cr_expect_not(world->joint_blocks.blocks[0].factored, "repeated rows: K is singular");
+    for (int k = 0; k < 2; ++k) {
+        /* What the pass will read, against the same made afresh. */
+        rb_joint *knee = joint_of(world, knees[k]);
+        const rb_point_block given = world->point_blocks[knees[k].index];
+        const rb_joint_frame given_frame = knee->frame;
+        rb_point_constraint_prepare_matrices(world, knee);
+        const rb_point_block made = world->point_blocks[knees[k].index];
+        cr_expect(given.mass.k11 == made.mass.k11 && given.mass.k12 == made.mass.k12 &&
+                      given.mass.k22 == made.mass.k22 && given.mass.k33 == made.mass.k33 &&
+                      given.inverse11 == made.inverse11 && given.inverse33 == made.inverse33 &&
+                      given.inverse_c33 == made.inverse_c33 &&
+                      given_frame.point_inverse11 == knee->frame.point_inverse11 &&
+                      given_frame.point_inverse22 == knee->frame.point_inverse22,
+                  "knee %d's K and inverses made for Gauss-Seidel (k11 %g, made %g)", k, given.mass.k11, made.mass.k11);
+    }
+    double widest = 0.0;
+    for (int step = 0; step < 60; ++step) {
+        cr_assert_eq(rb_world_step(world, TEST_DT), RB_OK, "%s", rb_last_error());
+        for (int k = 0; k < 2; ++k) {
+            rb_joint *knee = joint_of(world, knees[k]);
+            rb_vec2 a = rb_add(rb_joint_state_a(world, knee)->center,
+                               rb_rotate(rb_joint_state_a(world, knee)->rotation, knee->frame.local_a));
+            rb_vec2 b = rb_add(rb_joint_state_b(world, knee)->center,
+                               rb_rotate(rb_joint_state_b(world, knee)->rotation, knee->frame.local_b));
+            widest = fmax(widest, rb_length(rb_sub(b, a)));
+        }
+    }
+    cr_log_info("the knee's anchors at most %.3g m apart over 1 s", widest);
+    cr_expect_lt(widest, 1e-3, "the knee's anchors %.3g m apart", widest);
+    destroy_world_and_expect_no_leak(world);
+}
+
 /* The farthest the ankle went past its stops over `seconds` of 60 Hz
  * steps of 10 substeps of 4 velocity and 1 position pass, the leg's
  * budget (rad). */

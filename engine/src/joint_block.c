@@ -562,6 +562,9 @@ void rb_joint_blocks_factor(rb_world *world, double h)
         block->closed = !block->touched && !pulled_from_outside(world, block);
         for (int j = 0; j < block->joint_count; ++j) {
             rb_joint *joint = &world->joints[block->joints[j]];
+            if (joint->in_block && !block->factored) {
+                rb_point_constraint_prepare_matrices(world, joint); /* which its warm start left to the block */
+            }
             if (joint->in_block != block->factored) {
                 world->velocity_joints_fresh = false; /* the velocity passes take the joint back, or leave it */
             }

@@ -93,7 +93,7 @@ static double point_inverse(const rb_block_matrix *k, double *inverse11, double 
     return inverse_det;
 }
 
-void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h)
+void rb_point_constraint_prepare_matrices(const rb_world *world, rb_joint *joint)
 {
     rb_joint_frame *f = &joint->frame;
     rb_point_block *p = point_block(world, joint);
@@ -102,6 +102,13 @@ void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double 
     if (solves_with_a_row(joint)) {
         make_inverse(p);
         p->inverse_c33 = inverse_det; /* c33 is that 2x2's determinant, made by the same expression */
+    }
+}
+
+void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h)
+{
+    if (!joint->in_block) {
+        rb_point_constraint_prepare_matrices(world, joint);
     }
     rb_point_constraint_prepare_drift(world, joint, h);
 }

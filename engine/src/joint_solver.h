@@ -273,8 +273,12 @@ static inline void rb_point_alone_solve(const rb_world *world, const rb_joint_fr
 
 /* Sets the joint's point block (K, and its cofactors for a pin with an
  * angular row) and the frame's point_drift for the substep; after
- * the frame is prepared, before any solve. */
+ * the frame is prepared, before any solve. A pin its limb block solves
+ * (joint->in_block) gets only the drift: the block makes its own K, and
+ * gives the pin the rest when it cannot factor (joint_block.h). */
 void rb_point_constraint_prepare(const rb_world *world, rb_joint *joint, double h);
+/* The point block alone, from the frame as it is. */
+void rb_point_constraint_prepare_matrices(const rb_world *world, rb_joint *joint);
 /* The largest drift rb_point_drift asks for in a substep of length h:
  * one linear slop per substep (m/s). */
 static inline double rb_point_drift_cap(const rb_world *world, double h) { return world->settings.linear_slop / h; }
