@@ -236,15 +236,11 @@ static void add_pin(rb_joint_block *block, int j, rb_joint *joint)
             -f->point_drift.y, &r->point_impulse.y, false);
 }
 
-/* A body's place in the block, or -1 when it is not one of the block's. */
-static int moving_slot(const rb_world *world, const rb_joint_block *block, const rb_body_state *state)
+/* The place in the block of a cable share's body, or -1 when the body
+ * is not one of the block's. */
+static int share_slot(const rb_world *world, const rb_joint_block *block, const rb_cable_share *share)
 {
-    for (int b = 0; b < block->body_count; ++b) {
-        if (&world->states[block->bodies[b]] == state) {
-            return b;
-        }
-    }
-    return -1;
+    return find(block->bodies, block->body_count, (int)(share->state - world->states));
 }
 
 /* The row of each damped cable that pulls on the block's bodies and on
@@ -278,7 +274,7 @@ static void add_cables(rb_world *world, rb_joint_block *block, double h)
         bool inside = true;
         for (int m = 0; m < cable->share_count && inside; ++m) {
             const rb_cable_share *share = &cable->shares[m];
-            slots[m] = moving_slot(world, block, share->state);
+            slots[m] = share_slot(world, block, share);
             inside = slots[m] >= 0;
             j[m][0] = share->linear.x;
             j[m][1] = share->linear.y;
@@ -316,7 +312,7 @@ static bool pulled_from_outside(const rb_world *world, const rb_joint_block *blo
             continue;
         }
         for (int m = 0; m < cable->share_count; ++m) {
-            if (moving_slot(world, block, cable->shares[m].state) >= 0) {
+            if (share_slot(world, block, &cable->shares[m]) >= 0) {
                 return true;
             }
         }
