@@ -6,8 +6,10 @@
  * asks for), a held limit closes no faster than its speculative bias, no
  * limit pulls, and the bodies' momentum changed by exactly the rows'
  * impulses, M·Δv = Jᵀ·λ; two limits reached in a loop, more rows than
- * freedoms, leave one out. Then the whole step: a heavy link dropping
- * onto a stop held through a light one, as in the built-in leg.
+ * freedoms, leave one out; factors kept from an earlier substep give
+ * what factoring afresh gives, or are made again. Then the whole step: a
+ * heavy link dropping onto a stop held through a light one, as in the
+ * built-in leg.
  *
  * The limb is a four-bar through the ground, the leg's shape: a heavy
  * horizontal "femur" pinned to the ground, a "tibia" hanging from its
@@ -358,6 +360,123 @@ Test(joint_block, a_damped_cable_on_the_block_is_one_of_its_rows_and_meets_its_l
     expect_near(cable->impulse, h * (base_tension + damping * speed), 1e-12, "the law at the substep's end");
     expect_pins_met_by_the_impulses(&l, &before);
     cr_expect(block->settled, "nothing released: the pass solved the block");
+    destroy_world_and_expect_no_leak(world);
+}
+
+/* The next substep of h over the limb as it stands, up to the block's
+ * factors: the cables located and prepared, the impulses warm started. */
+static void next_substep(rb_world *world, double h)
+{
+    rb_cables_locate(world);
+    rb_cables_prepare(world, h);
+    rb_cables_warm_start(world);
+    rb_joints_warm_start(world, h, false);
+    rb_joint_blocks_factor(world, h);
+}
+
+/* The limb's velocities and impulses, to run a pass twice from one state. */
+typedef struct limb_state {
+    rb_body_state states[3];
+    rb_revolute_data hinges[4];
+    double cable_impulse;
+} limb_state;
+
+static limb_state save(const limb *l)
+{
+    limb_state saved;
+    for (int i = 0; i < 3; ++i) {
+        saved.states[i] = l->world->states[l->bodies[i].index];
+    }
+    for (int k = 0; k < 4; ++k) {
+        saved.hinges[k] = joint_of(l->world, l->hinges[k])->as.revolute;
+    }
+    saved.cable_impulse = l->world->cables[l->cable.index].impulse;
+    return saved;
+}
+
+static void restore(const limb *l, const limb_state *saved)
+{
+    for (int i = 0; i < 3; ++i) {
+        l->world->states[l->bodies[i].index] = saved->states[i];
+    }
+    for (int k = 0; k < 4; ++k) {
+        joint_of(l->world, l->hinges[k])->as.revolute = saved->hinges[k];
+    }
+    l->world->cables[l->cable.index].impulse = saved->cable_impulse;
+}
+
+Test(joint_block, a_later_substep_solves_with_the_steps_factors_while_they_meet_its_rows)
+{
+    /* A block's first substep factors K; a later one whose rows are the
+     * same (the same pins, cables and limits) and whose K has barely
+     * changed solves with those factors, and its pass accepts the solve
+     * when its residual under K made now is within RB_BLOCK_KEPT_RESIDUAL.
+     * Here the foot turns by 1e-9 rad and the cable's base tension
+     * changes between the substeps: the pass with the kept factors gives
+     * the velocities and the impulse that factoring K afresh gives, to
+     * that tolerance. */
+    limb l = make_limb(20000.0);
+    rb_world *world = l.world;
+    rb_cable_id id = add_cable(&l, false, 500.0, 100.0);
+    rb_cable *cable = &world->cables[id.index];
+    shake(&l, 0.1);
+    const double h = 1.0 / 600.0;
+    prepare(world, h);
+    rb_joint_block *block = &world->joint_blocks.blocks[0];
+    cr_assert(block->factored);
+    cr_expect_not(block->kept, "a block's first substep factors K");
+    rb_joint_blocks_solve_velocities(world);
+    rb_body_state_turn(&world->states[l.bodies[2].index], 1e-9);
+    cr_assert_eq(rb_cable_set_tension_law(world, id, 520.0, 100.0), RB_OK, "%s", rb_last_error());
+    next_substep(world, h);
+    cr_assert(block->kept, "the same rows: the step's factors serve");
+    const limb_state start = save(&l);
+    rb_joint_blocks_solve_velocities(world);
+    cr_expect(block->kept, "the kept factors met the rows");
+    const limb_state kept = save(&l);
+    restore(&l, &start);
+    block->keep_factors = false;
+    rb_joint_blocks_factor(world, h);
+    cr_assert_not(block->kept);
+    rb_joint_blocks_solve_velocities(world);
+    for (int i = 0; i < 3; ++i) {
+        const rb_body_state *fresh = &world->states[l.bodies[i].index];
+        const double near = RB_BLOCK_KEPT_RESIDUAL * (1.0 + rb_length(fresh->linear_velocity));
+        expect_vec_near(kept.states[i].linear_velocity, fresh->linear_velocity, near, "a body's velocity");
+        expect_near(kept.states[i].angular_velocity, fresh->angular_velocity,
+                    RB_BLOCK_KEPT_RESIDUAL * (1.0 + fabs(fresh->angular_velocity)), "a body's angular velocity");
+    }
+    expect_near(kept.cable_impulse, cable->impulse, RB_BLOCK_KEPT_RESIDUAL * cable->impulse, "the cable's impulse");
+    destroy_world_and_expect_no_leak(world);
+}
+
+Test(joint_block, a_later_substep_that_the_steps_factors_miss_factors_k_again)
+{
+    /* The cable's damping, and so its row's compliance 1/(h·c), changes a
+     * hundredfold between two substeps: the factors of the first no
+     * longer solve the second's rows, the pass finds the residual too
+     * large and factors K made now, and the second substep meets the
+     * cable's law and the pins exactly. */
+    limb l = make_limb(20000.0);
+    rb_world *world = l.world;
+    const double base_tension = 500.0, damping = 10000.0;
+    rb_cable_id id = add_cable(&l, false, base_tension, 100.0);
+    rb_cable *cable = &world->cables[id.index];
+    shake(&l, 0.1);
+    const double h = 1.0 / 600.0;
+    prepare(world, h);
+    rb_joint_blocks_solve_velocities(world);
+    cr_assert_eq(rb_cable_set_tension_law(world, id, base_tension, damping), RB_OK, "%s", rb_last_error());
+    next_substep(world, h);
+    const rb_joint_block *block = &world->joint_blocks.blocks[0];
+    cr_assert(block->kept, "the same rows");
+    limb_snapshot before = snapshot(&l);
+    rb_joint_blocks_solve_velocities(world);
+    cr_expect_not(block->kept, "the kept factors missed: K factored again");
+    cr_expect_not(block->keep_factors, "for the rest of the step");
+    const double speed = lengthening_speed(cable);
+    expect_near(cable->impulse, h * (base_tension + damping * speed), 1e-12, "the law at the substep's end");
+    expect_pins_met_by_the_impulses(&l, &before);
     destroy_world_and_expect_no_leak(world);
 }
 

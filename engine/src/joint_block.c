@@ -3,6 +3,7 @@
  * how): the search for them once a step, the rows and factors once a
  * substep, the solve in every velocity pass. */
 #include <math.h>
+#include <string.h>
 
 #include "contact_solver.h"
 #include "joint_block.h"
@@ -159,9 +160,44 @@ static bool touched_by_contacts(const rb_world *world, const rb_joint_block *blo
     return false;
 }
 
+/* What a block's factors depend on besides its rows: its bodies, their
+ * masses and its joints, as the last step found them. */
+typedef struct block_identity {
+    bool keep_factors;
+    int body_count, joint_count;
+    int bodies[RB_BLOCK_MAX_BODIES], joints[RB_BLOCK_MAX_JOINTS];
+    double inv_mass[RB_BLOCK_MAX_BODIES + 1], inv_inertia[RB_BLOCK_MAX_BODIES + 1];
+} block_identity;
+
+static block_identity identity_of(const rb_joint_block *block)
+{
+    block_identity id = {
+        .keep_factors = block->keep_factors, .body_count = block->body_count, .joint_count = block->joint_count};
+    for (int b = 0; b < RB_BLOCK_MAX_BODIES; ++b) {
+        id.bodies[b] = b < block->body_count ? block->bodies[b] : -1;
+    }
+    for (int j = 0; j < RB_BLOCK_MAX_JOINTS; ++j) {
+        id.joints[j] = j < block->joint_count ? block->joints[j] : -1;
+    }
+    for (int b = 0; b <= RB_BLOCK_MAX_BODIES; ++b) {
+        id.inv_mass[b] = block->inv_mass[b];
+        id.inv_inertia[b] = block->inv_inertia[b];
+    }
+    return id;
+}
+
+static bool same_identity(const block_identity *a, const block_identity *b)
+{
+    return a->body_count == b->body_count && a->joint_count == b->joint_count &&
+           memcmp(a->bodies, b->bodies, sizeof a->bodies) == 0 && memcmp(a->joints, b->joints, sizeof a->joints) == 0 &&
+           memcmp(a->inv_mass, b->inv_mass, sizeof a->inv_mass) == 0 &&
+           memcmp(a->inv_inertia, b->inv_inertia, sizeof a->inv_inertia) == 0;
+}
+
 void rb_joint_blocks_build(rb_world *world)
 {
     rb_joint_blocks *blocks = &world->joint_blocks;
+    const int last_count = blocks->count;
     blocks->count = 0;
     world->velocity_joints_fresh = false; /* the velocity passes' list follows the blocks (joint.c) */
     for (int k = 0; k < world->active_joint_count; ++k) {
@@ -169,6 +205,11 @@ void rb_joint_blocks_build(rb_world *world)
     }
     if (world->settings.type != RB_SOLVER_NGS || !world->settings.tree_pins || !uneven_enough(world)) {
         return;
+    }
+    block_identity last[RB_MAX_JOINT_BLOCKS];
+    for (int n = 0; n < RB_MAX_JOINT_BLOCKS; ++n) {
+        last[n] = identity_of(&blocks->blocks[n]);
+        last[n].keep_factors = last[n].keep_factors && n < last_count;
     }
     /* Each group is seeded by its first limited joint; a joint already
      * in a block seeds nothing more. */
@@ -196,6 +237,9 @@ void rb_joint_blocks_build(rb_world *world)
             world->joints[block->joints[j]].in_block = true;
         }
         block->touched = touched_by_contacts(world, block);
+        const block_identity now = identity_of(block);
+        block->keep_factors = last[blocks->count].keep_factors && same_identity(&last[blocks->count], &now);
+        block->missed = false;
         ++blocks->count;
     }
 }
@@ -508,6 +552,46 @@ static void release_row(rb_world *world, const rb_joint_block *block, const rb_b
     *row->accumulated = 0.0;
 }
 
+/* Factors K made now, giving up rows it cannot factor with: cables damped
+ * almost as stiffly as pins, more of them than the pins leave freedoms,
+ * make K singular too, and the block keeps its joints and gives the
+ * cables back; then the farthest limits go. Records the rows the factors
+ * are for. */
+static void factor_rows(rb_world *world, rb_joint_block *block)
+{
+    fill_k(block);
+    block->factored = factor(block->k, block->row_count, block->first, block->factor);
+    if (!block->factored && block->cable_rows > 0) {
+        drop_cables(block);
+        fill_k(block);
+        block->factored = factor(block->k, block->row_count, block->first, block->factor);
+    }
+    while (!block->factored && block->row_count > block->pin_rows) {
+        release_row(world, block, &block->rows[--block->row_count]);
+        block->factored = factor(block->k, block->row_count, block->first, block->factor);
+    }
+    block->keep_factors = block->factored && !block->missed;
+    block->factored_row_count = block->row_count;
+    for (int i = 0; i < block->row_count; ++i) {
+        block->factored_rows[i] = (uintptr_t)block->rows[i].accumulated;
+    }
+}
+
+/* Whether the factors were made for the rows of this substep: the same
+ * pins, cables and limits, in the same order. */
+static bool same_rows(const rb_joint_block *block)
+{
+    if (block->row_count != block->factored_row_count) {
+        return false;
+    }
+    for (int i = 0; i < block->row_count; ++i) {
+        if ((uintptr_t)block->rows[i].accumulated != block->factored_rows[i]) {
+            return false;
+        }
+    }
+    return true;
+}
+
 void rb_joint_blocks_factor(rb_world *world, double h)
 {
     rb_joint_blocks *blocks = &world->joint_blocks;
@@ -538,19 +622,13 @@ void rb_joint_blocks_factor(rb_world *world, double h)
             margins[i] = margin;
             block->rows[pins + i] = row;
         }
-        fill_k(block);
-        block->factored = factor(block->k, block->row_count, block->first, block->factor);
-        if (!block->factored && block->cable_rows > 0) {
-            /* Cables damped almost as stiffly as pins, more of them than
-             * the pins leave freedoms, make K singular too: the block keeps
-             * its joints and gives the cables back. */
-            drop_cables(block);
-            fill_k(block);
-            block->factored = factor(block->k, block->row_count, block->first, block->factor);
-        }
-        while (!block->factored && block->row_count > block->pin_rows) {
-            release_row(world, block, &block->rows[--block->row_count]);
-            block->factored = factor(block->k, block->row_count, block->first, block->factor);
+        block->kept = block->keep_factors && same_rows(block);
+        if (block->kept) {
+            for (int i = 0; i < block->row_count; ++i) {
+                weigh(block, &block->rows[i]);
+            }
+        } else {
+            factor_rows(world, block);
         }
         for (int c = 0; c < block->cable_rows; ++c) {
             block->cables[c]->in_block = block->factored; /* or its own passes solve it */
@@ -582,6 +660,57 @@ static double row_rate(const rb_block_row *row, const double *v)
 static double cable_rate(const rb_block_row *row, const double *v)
 {
     return row_rate(row, v) + row->compliance * *row->accumulated;
+}
+
+/* v += M⁻¹·Jᵀ·x: the velocities the rows' impulses x give. */
+static void push(const rb_joint_block *block, const double *x, double *v)
+{
+    for (int i = 0; i < block->row_count; ++i) {
+        const rb_block_row *row = &block->rows[i];
+        /* A and B are two places (a fixed body's wa, wb are 0). */
+        double *restrict va = v + 3 * row->slot_a;
+        double *restrict vb = v + 3 * row->slot_b;
+        va[0] += row->wa[0] * x[i];
+        va[1] += row->wa[1] * x[i];
+        va[2] += row->wa[2] * x[i];
+        vb[0] += row->wb[0] * x[i];
+        vb[1] += row->wb[1] * x[i];
+        vb[2] += row->wb[2] * x[i];
+    }
+}
+
+/* Whether x solves K·x = rhs, K made with this substep's rows, to a
+ * relative residual of RB_BLOCK_KEPT_RESIDUAL: K·x is J·dv + C·x, dv =
+ * M⁻¹·Jᵀ·x the velocities the impulses give (left in dv), read back
+ * through the rows. */
+static bool kept_solve_holds(const rb_joint_block *block, const double *rhs, const double *x, double *dv)
+{
+    for (int m = 0; m < 3 * (RB_BLOCK_MAX_BODIES + 1); ++m) {
+        dv[m] = 0.0;
+    }
+    push(block, x, dv);
+    double residual = 0.0;
+    double scale = 0.0;
+    for (int i = 0; i < block->row_count; ++i) {
+        const rb_block_row *row = &block->rows[i];
+        const double kx =
+            dot3(row->ja, dv + 3 * row->slot_a) + dot3(row->jb, dv + 3 * row->slot_b) + row->compliance * x[i];
+        residual += (rhs[i] - kx) * (rhs[i] - kx);
+        scale += rhs[i] * rhs[i];
+    }
+    return residual <= RB_BLOCK_KEPT_RESIDUAL * RB_BLOCK_KEPT_RESIDUAL * scale;
+}
+
+/* Whether every one-sided row keeps pulling (or pushing, a limit) with
+ * the impulses x added: then no row lets go in this pass. */
+static bool pulls_only(const rb_joint_block *block, const double *x)
+{
+    for (int i = block->pin_rows; i < block->row_count; ++i) {
+        if (block->rows[i].one_sided && *block->rows[i].accumulated + x[i] < 0.0) {
+            return false;
+        }
+    }
+    return true;
 }
 
 /* Solves K_SS·x_S = rhs_S - K_SF·x_F for the rows in S (free[i]), the
@@ -644,6 +773,25 @@ static __attribute__((noinline)) void solve_block_velocities(rb_world *world, rb
         free[i] = true;
     }
     solve_factored(block->factor, rows, block->first, x);
+    double dv[3 * (RB_BLOCK_MAX_BODIES + 1)];
+    if (block->kept && !(kept_solve_holds(block, rhs, x, dv) && pulls_only(block, x))) {
+        /* The earlier factors miss here, or a row lets go, for which the
+         * subsets need K: K made now is factored, and serves the rest of
+         * the step. Should it not factor (the same rows did earlier in the
+         * step), this pass's solve stands, the substep's later passes
+         * leave the block, and the next substep factors as usual. */
+        block->kept = false;
+        block->keep_factors = false;
+        block->missed = true;
+        fill_k(block);
+        block->factored = factor(block->k, rows, block->first, block->factor);
+        if (block->factored) {
+            for (int i = 0; i < rows; ++i) {
+                x[i] = rhs[i];
+            }
+            solve_factored(block->factor, rows, block->first, x);
+        }
+    }
     /* Release the limit or cable that would pull hardest, then solve the
      * rest again, until none pulls (their rows follow the pins'). */
     block->settled = true;
@@ -667,18 +815,14 @@ static __attribute__((noinline)) void solve_block_velocities(rb_world *world, rb
         solve_subset(block, free, rhs, x);
     }
     for (int i = 0; i < rows; ++i) {
-        const rb_block_row *row = &block->rows[i];
-        const double xi = x[i];
-        *row->accumulated += xi;
-        /* A and B are two places (a fixed body's wa, wb are 0). */
-        double *restrict va = v + 3 * row->slot_a;
-        double *restrict vb = v + 3 * row->slot_b;
-        va[0] += row->wa[0] * xi;
-        va[1] += row->wa[1] * xi;
-        va[2] += row->wa[2] * xi;
-        vb[0] += row->wb[0] * xi;
-        vb[1] += row->wb[1] * xi;
-        vb[2] += row->wb[2] * xi;
+        *block->rows[i].accumulated += x[i];
+    }
+    if (block->kept) { /* the check made the velocities' change */
+        for (int m = 0; m < 3 * block->body_count; ++m) {
+            v[m] += dv[m];
+        }
+    } else {
+        push(block, x, v);
     }
     for (int b = 0; b < block->body_count; ++b) {
         rb_body_state *s = &world->states[block->bodies[b]];
