@@ -137,13 +137,12 @@ Test(joint_block, a_weld_in_the_group_or_the_trees_turned_off_leave_it_to_gauss_
     destroy_world_and_expect_no_leak(off.world);
 }
 
-/* The limb's bodies' velocities and its joints' and cable's accumulated
- * impulses, before a velocity pass. */
+/* The limb's bodies' states and its joints' and cable's accumulated
+ * impulses, before a velocity pass (or to run one twice, `restore`). */
 typedef struct limb_snapshot {
     rb_body_state states[3];
-    rb_vec2 point_impulses[4];
-    double angular_impulses[4]; /* lower less upper, N·m·s */
-    double cable_impulse;       /* N·s */
+    rb_revolute_data hinges[4];
+    double cable_impulse; /* N·s */
 } limb_snapshot;
 
 static limb_snapshot snapshot(const limb *l)
@@ -153,12 +152,23 @@ static limb_snapshot snapshot(const limb *l)
         shot.states[i] = l->world->states[l->bodies[i].index];
     }
     for (int k = 0; k < 4; ++k) {
-        const rb_revolute_data *d = &joint_of(l->world, l->hinges[k])->as.revolute;
-        shot.point_impulses[k] = d->point_impulse;
-        shot.angular_impulses[k] = d->lower_impulse - d->upper_impulse;
+        shot.hinges[k] = joint_of(l->world, l->hinges[k])->as.revolute;
     }
     shot.cable_impulse = l->has_cable ? l->world->cables[l->cable.index].impulse : 0.0;
     return shot;
+}
+
+static void restore(const limb *l, const limb_snapshot *shot)
+{
+    for (int i = 0; i < 3; ++i) {
+        l->world->states[l->bodies[i].index] = shot->states[i];
+    }
+    for (int k = 0; k < 4; ++k) {
+        joint_of(l->world, l->hinges[k])->as.revolute = shot->hinges[k];
+    }
+    if (l->has_cable) {
+        l->world->cables[l->cable.index].impulse = shot->cable_impulse;
+    }
 }
 
 /* After a pass: every pin's anchors move together up to the centripetal
@@ -183,8 +193,9 @@ static void expect_pins_met_by_the_impulses(const limb *l, const limb_snapshot *
         for (int k = 0; k < 4; ++k) {
             rb_joint *joint = joint_of(world, l->hinges[k]);
             const rb_revolute_data *d = &joint->as.revolute;
-            rb_vec2 point = rb_sub(d->point_impulse, before->point_impulses[k]);
-            double angular = d->lower_impulse - d->upper_impulse - before->angular_impulses[k];
+            const rb_revolute_data *was = &before->hinges[k];
+            rb_vec2 point = rb_sub(d->point_impulse, was->point_impulse);
+            double angular = (d->lower_impulse - d->upper_impulse) - (was->lower_impulse - was->upper_impulse);
             if (joint->body_b == index) {
                 force = rb_add(force, point);
                 torque += rb_cross(joint->frame.rb, point) + angular;
@@ -374,37 +385,6 @@ static void next_substep(rb_world *world, double h)
     rb_joint_blocks_factor(world, h);
 }
 
-/* The limb's velocities and impulses, to run a pass twice from one state. */
-typedef struct limb_state {
-    rb_body_state states[3];
-    rb_revolute_data hinges[4];
-    double cable_impulse;
-} limb_state;
-
-static limb_state save(const limb *l)
-{
-    limb_state saved;
-    for (int i = 0; i < 3; ++i) {
-        saved.states[i] = l->world->states[l->bodies[i].index];
-    }
-    for (int k = 0; k < 4; ++k) {
-        saved.hinges[k] = joint_of(l->world, l->hinges[k])->as.revolute;
-    }
-    saved.cable_impulse = l->world->cables[l->cable.index].impulse;
-    return saved;
-}
-
-static void restore(const limb *l, const limb_state *saved)
-{
-    for (int i = 0; i < 3; ++i) {
-        l->world->states[l->bodies[i].index] = saved->states[i];
-    }
-    for (int k = 0; k < 4; ++k) {
-        joint_of(l->world, l->hinges[k])->as.revolute = saved->hinges[k];
-    }
-    l->world->cables[l->cable.index].impulse = saved->cable_impulse;
-}
-
 Test(joint_block, a_later_substep_solves_with_the_steps_factors_while_they_meet_its_rows)
 {
     /* A block's first substep factors K; a later one whose rows are the
@@ -430,10 +410,10 @@ Test(joint_block, a_later_substep_solves_with_the_steps_factors_while_they_meet_
     cr_assert_eq(rb_cable_set_tension_law(world, id, 520.0, 100.0), RB_OK, "%s", rb_last_error());
     next_substep(world, h);
     cr_assert(block->kept, "the same rows: the step's factors serve");
-    const limb_state start = save(&l);
+    const limb_snapshot start = snapshot(&l);
     rb_joint_blocks_solve_velocities(world);
     cr_expect(block->kept, "the kept factors met the rows");
-    const limb_state kept = save(&l);
+    const limb_snapshot kept = snapshot(&l);
     restore(&l, &start);
     block->keep_factors = false;
     rb_joint_blocks_factor(world, h);
