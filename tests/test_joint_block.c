@@ -460,6 +460,37 @@ Test(joint_block, a_later_substep_that_the_steps_factors_miss_factors_k_again)
     destroy_world_and_expect_no_leak(world);
 }
 
+Test(joint_block, a_body_whose_mass_changed_between_steps_makes_the_kept_factors_miss)
+{
+    /* The next step's block has the same rows and keeps the factors; the
+     * foot, four times heavier now, changes K, and the pass's check finds
+     * it: the block factors again and meets the cable's law and the pins
+     * exactly. */
+    limb l = make_limb(20000.0);
+    rb_world *world = l.world;
+    const double base_tension = 500.0, damping = 100.0;
+    rb_cable_id id = add_cable(&l, false, base_tension, damping);
+    rb_cable *cable = &world->cables[id.index];
+    shake(&l, 0.1);
+    const double h = 1.0 / 600.0;
+    prepare(world, h);
+    rb_joint_blocks_solve_velocities(world);
+    rb_mass_data foot = rb_body_mass_data(world, l.bodies[2]);
+    foot.mass *= 4.0;
+    foot.rotational_inertia *= 4.0;
+    cr_assert_eq(rb_body_set_mass_data(world, l.bodies[2], &foot), RB_OK, "%s", rb_last_error());
+    prepare(world, h); /* the next step's first substep */
+    const rb_joint_block *block = &world->joint_blocks.blocks[0];
+    cr_assert(block->kept, "the same rows: the factors are kept");
+    limb_snapshot before = snapshot(&l);
+    rb_joint_blocks_solve_velocities(world);
+    cr_expect_not(block->kept, "the heavier foot: K factored again");
+    const double speed = lengthening_speed(cable);
+    expect_near(cable->impulse, h * (base_tension + damping * speed), 1e-12, "the law at the substep's end");
+    expect_pins_met_by_the_impulses(&l, &before);
+    destroy_world_and_expect_no_leak(world);
+}
+
 Test(joint_block, a_cable_that_would_push_lets_go_and_the_pins_still_meet)
 {
     /* No base tension, and a warm-started pull, while the bodies shorten

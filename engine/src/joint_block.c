@@ -3,7 +3,6 @@
  * how): the search for them once a step, the rows and factors once a
  * substep, the solve in every velocity pass. */
 #include <math.h>
-#include <string.h>
 
 #include "contact_solver.h"
 #include "joint_block.h"
@@ -160,40 +159,6 @@ static bool touched_by_contacts(const rb_world *world, const rb_joint_block *blo
     return false;
 }
 
-/* What a block's factors depend on besides its rows: its bodies, their
- * masses and its joints, as the last step found them. */
-typedef struct block_identity {
-    bool keep_factors;
-    int body_count, joint_count;
-    int bodies[RB_BLOCK_MAX_BODIES], joints[RB_BLOCK_MAX_JOINTS];
-    double inv_mass[RB_BLOCK_MAX_BODIES + 1], inv_inertia[RB_BLOCK_MAX_BODIES + 1];
-} block_identity;
-
-static block_identity identity_of(const rb_joint_block *block)
-{
-    block_identity id = {
-        .keep_factors = block->keep_factors, .body_count = block->body_count, .joint_count = block->joint_count};
-    for (int b = 0; b < RB_BLOCK_MAX_BODIES; ++b) {
-        id.bodies[b] = b < block->body_count ? block->bodies[b] : -1;
-    }
-    for (int j = 0; j < RB_BLOCK_MAX_JOINTS; ++j) {
-        id.joints[j] = j < block->joint_count ? block->joints[j] : -1;
-    }
-    for (int b = 0; b <= RB_BLOCK_MAX_BODIES; ++b) {
-        id.inv_mass[b] = block->inv_mass[b];
-        id.inv_inertia[b] = block->inv_inertia[b];
-    }
-    return id;
-}
-
-static bool same_identity(const block_identity *a, const block_identity *b)
-{
-    return a->body_count == b->body_count && a->joint_count == b->joint_count &&
-           memcmp(a->bodies, b->bodies, sizeof a->bodies) == 0 && memcmp(a->joints, b->joints, sizeof a->joints) == 0 &&
-           memcmp(a->inv_mass, b->inv_mass, sizeof a->inv_mass) == 0 &&
-           memcmp(a->inv_inertia, b->inv_inertia, sizeof a->inv_inertia) == 0;
-}
-
 void rb_joint_blocks_build(rb_world *world)
 {
     rb_joint_blocks *blocks = &world->joint_blocks;
@@ -205,11 +170,6 @@ void rb_joint_blocks_build(rb_world *world)
     }
     if (world->settings.type != RB_SOLVER_NGS || !world->settings.tree_pins || !uneven_enough(world)) {
         return;
-    }
-    block_identity last[RB_MAX_JOINT_BLOCKS];
-    for (int n = 0; n < RB_MAX_JOINT_BLOCKS; ++n) {
-        last[n] = identity_of(&blocks->blocks[n]);
-        last[n].keep_factors = last[n].keep_factors && n < last_count;
     }
     /* Each group is seeded by its first limited joint; a joint already
      * in a block seeds nothing more. */
@@ -237,8 +197,10 @@ void rb_joint_blocks_build(rb_world *world)
             world->joints[block->joints[j]].in_block = true;
         }
         block->touched = touched_by_contacts(world, block);
-        const block_identity now = identity_of(block);
-        block->keep_factors = last[blocks->count].keep_factors && same_identity(&last[blocks->count], &now);
+        /* The factors last step's block in this place kept may serve, if
+         * made for the same rows (rb_joint_blocks_factor); the residual's
+         * check answers for everything else, masses included. */
+        block->keep_factors = block->keep_factors && blocks->count < last_count;
         block->missed = false;
         ++blocks->count;
     }

@@ -66,9 +66,10 @@
  * Factors kept. K changes with the bodies' poses and the cables' laws,
  * little from one substep to the next while the limb holds a posture. A
  * substep whose rows are those its block's factors were made for (the
- * same pins, cables and limits, in the same order, the same bodies and
- * masses) solves with those factors, and its pass checks the solution
- * against K made now, matrix-free: K·λ = J·(M⁻¹·Jᵀ·λ) + C·λ. It stands
+ * same pins, cables and limits, in the same order; a body's mass changed
+ * between steps is the check's to find) solves with those factors, and
+ * its pass checks the solution against K made now, matrix-free:
+ * K·λ = J·(M⁻¹·Jᵀ·λ) + C·λ. It stands
  * when the residual |K·λ - r| is at most RB_BLOCK_KEPT_RESIDUAL of |r|;
  * otherwise (or when a row would let go, whose subsets need K) the pass
  * factors K made now and solves again, and the block factors at every

@@ -576,9 +576,9 @@ typedef struct rb_joint_block {
     double k[RB_BLOCK_MAX_ROWS * RB_BLOCK_MAX_ROWS];      /* J·M⁻¹·Jᵀ: its lower triangle within the envelopes */
     double factor[RB_BLOCK_MAX_ROWS * RB_BLOCK_MAX_ROWS]; /* its L·D·Lᵀ: L below the diagonal, 1/D on it */
     bool factored;                                        /* false: Gauss-Seidel solves it this substep */
-    /* Factors made at an earlier substep may serve the next: the block is
-     * the one they were made for, and none of the solves with them has
-     * missed RB_BLOCK_KEPT_RESIDUAL since (joint_block.h). */
+    /* Factors made at an earlier substep may serve the next: this place
+     * held a block then, and none of the solves with them has missed
+     * RB_BLOCK_KEPT_RESIDUAL since (joint_block.h). */
     bool keep_factors;
     /* This substep solves with an earlier substep's factors, made for the
      * same rows (their impulses' addresses, factored_rows), and each pass
