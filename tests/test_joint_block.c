@@ -385,6 +385,40 @@ static void next_substep(rb_world *world, double h)
     rb_joint_blocks_factor(world, h);
 }
 
+/* The limb with a cable of PULL_TENSION N and PULL_DAMPING N·s/m on it,
+ * moving a little against its joints, after a first substep's set-up
+ * (which factors K) and velocity pass. */
+#define PULL_TENSION 500.0
+#define PULL_DAMPING 100.0
+
+static limb pulled_limb_after_a_pass(double h)
+{
+    limb l = make_limb(20000.0);
+    (void)add_cable(&l, false, PULL_TENSION, PULL_DAMPING);
+    shake(&l, 0.1);
+    prepare(l.world, h);
+    cr_assert(l.world->joint_blocks.blocks[0].factored);
+    cr_expect_not(l.world->joint_blocks.blocks[0].kept, "a block's first substep factors K");
+    rb_joint_blocks_solve_velocities(l.world);
+    return l;
+}
+
+/* A substep set up with kept factors that no longer solve its rows: its
+ * pass must find the miss, factor K made now, and meet the cable's law
+ * (base tension T0 N, damping c N·s/m) and the pins exactly. */
+static void expect_kept_factors_to_miss(const limb *l, double h, double base_tension, double damping)
+{
+    const rb_joint_block *block = &l->world->joint_blocks.blocks[0];
+    const rb_cable *cable = &l->world->cables[l->cable.index];
+    cr_assert(block->kept, "the same rows: the factors are kept");
+    limb_snapshot before = snapshot(l);
+    rb_joint_blocks_solve_velocities(l->world);
+    cr_expect_not(block->kept, "the kept factors missed: K factored again");
+    const double speed = lengthening_speed(cable);
+    expect_near(cable->impulse, h * (base_tension + damping * speed), 1e-12, "the law at the substep's end");
+    expect_pins_met_by_the_impulses(l, &before);
+}
+
 Test(joint_block, a_later_substep_solves_with_the_steps_factors_while_they_meet_its_rows)
 {
     /* A block's first substep factors K; a later one whose rows are the
@@ -395,19 +429,13 @@ Test(joint_block, a_later_substep_solves_with_the_steps_factors_while_they_meet_
      * changes between the substeps: the pass with the kept factors gives
      * the velocities and the impulse that factoring K afresh gives, to
      * that tolerance. */
-    limb l = make_limb(20000.0);
-    rb_world *world = l.world;
-    rb_cable_id id = add_cable(&l, false, 500.0, 100.0);
-    rb_cable *cable = &world->cables[id.index];
-    shake(&l, 0.1);
     const double h = 1.0 / 600.0;
-    prepare(world, h);
+    limb l = pulled_limb_after_a_pass(h);
+    rb_world *world = l.world;
+    rb_cable *cable = &world->cables[l.cable.index];
     rb_joint_block *block = &world->joint_blocks.blocks[0];
-    cr_assert(block->factored);
-    cr_expect_not(block->kept, "a block's first substep factors K");
-    rb_joint_blocks_solve_velocities(world);
     rb_body_state_turn(&world->states[l.bodies[2].index], 1e-9);
-    cr_assert_eq(rb_cable_set_tension_law(world, id, 520.0, 100.0), RB_OK, "%s", rb_last_error());
+    cr_assert_eq(rb_cable_set_tension_law(world, l.cable, 520.0, PULL_DAMPING), RB_OK, "%s", rb_last_error());
     next_substep(world, h);
     cr_assert(block->kept, "the same rows: the step's factors serve");
     const limb_snapshot start = snapshot(&l);
@@ -437,26 +465,13 @@ Test(joint_block, a_later_substep_that_the_steps_factors_miss_factors_k_again)
      * longer solve the second's rows, the pass finds the residual too
      * large and factors K made now, and the second substep meets the
      * cable's law and the pins exactly. */
-    limb l = make_limb(20000.0);
+    const double h = 1.0 / 600.0, base_tension = 500.0, damping = 10000.0;
+    limb l = pulled_limb_after_a_pass(h);
     rb_world *world = l.world;
-    const double base_tension = 500.0, damping = 10000.0;
-    rb_cable_id id = add_cable(&l, false, base_tension, 100.0);
-    rb_cable *cable = &world->cables[id.index];
-    shake(&l, 0.1);
-    const double h = 1.0 / 600.0;
-    prepare(world, h);
-    rb_joint_blocks_solve_velocities(world);
-    cr_assert_eq(rb_cable_set_tension_law(world, id, base_tension, damping), RB_OK, "%s", rb_last_error());
+    cr_assert_eq(rb_cable_set_tension_law(world, l.cable, base_tension, damping), RB_OK, "%s", rb_last_error());
     next_substep(world, h);
-    const rb_joint_block *block = &world->joint_blocks.blocks[0];
-    cr_assert(block->kept, "the same rows");
-    limb_snapshot before = snapshot(&l);
-    rb_joint_blocks_solve_velocities(world);
-    cr_expect_not(block->kept, "the kept factors missed: K factored again");
-    cr_expect_not(block->keep_factors, "for the rest of the step");
-    const double speed = lengthening_speed(cable);
-    expect_near(cable->impulse, h * (base_tension + damping * speed), 1e-12, "the law at the substep's end");
-    expect_pins_met_by_the_impulses(&l, &before);
+    expect_kept_factors_to_miss(&l, h, base_tension, damping);
+    cr_expect_not(world->joint_blocks.blocks[0].keep_factors, "for the rest of the step");
     destroy_world_and_expect_no_leak(world);
 }
 
@@ -466,28 +481,15 @@ Test(joint_block, a_body_whose_mass_changed_between_steps_makes_the_kept_factors
      * foot, four times heavier now, changes K, and the pass's check finds
      * it: the block factors again and meets the cable's law and the pins
      * exactly. */
-    limb l = make_limb(20000.0);
-    rb_world *world = l.world;
-    const double base_tension = 500.0, damping = 100.0;
-    rb_cable_id id = add_cable(&l, false, base_tension, damping);
-    rb_cable *cable = &world->cables[id.index];
-    shake(&l, 0.1);
     const double h = 1.0 / 600.0;
-    prepare(world, h);
-    rb_joint_blocks_solve_velocities(world);
+    limb l = pulled_limb_after_a_pass(h);
+    rb_world *world = l.world;
     rb_mass_data foot = rb_body_mass_data(world, l.bodies[2]);
     foot.mass *= 4.0;
     foot.rotational_inertia *= 4.0;
     cr_assert_eq(rb_body_set_mass_data(world, l.bodies[2], &foot), RB_OK, "%s", rb_last_error());
     prepare(world, h); /* the next step's first substep */
-    const rb_joint_block *block = &world->joint_blocks.blocks[0];
-    cr_assert(block->kept, "the same rows: the factors are kept");
-    limb_snapshot before = snapshot(&l);
-    rb_joint_blocks_solve_velocities(world);
-    cr_expect_not(block->kept, "the heavier foot: K factored again");
-    const double speed = lengthening_speed(cable);
-    expect_near(cable->impulse, h * (base_tension + damping * speed), 1e-12, "the law at the substep's end");
-    expect_pins_met_by_the_impulses(&l, &before);
+    expect_kept_factors_to_miss(&l, h, PULL_TENSION, PULL_DAMPING);
     destroy_world_and_expect_no_leak(world);
 }
 
